@@ -1,0 +1,12 @@
+package org.kdtree.build;
+
+import org.kdtree.shape.Primitives;
+
+/** What a builder's decisions may consult besides the node itself: the whole build's inputs. */
+public interface BuildContext {
+    /** The primitives being built over. */
+    Primitives primitives();
+
+    /** The depth cap in force for this build (Kmaxdepth, or its default {@code 8 + 1.3 log2 N}). */
+    int depthCap();
+}

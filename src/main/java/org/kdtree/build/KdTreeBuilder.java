@@ -1,0 +1,180 @@
+package org.kdtree.build;
+
+import org.kdtree.geom.Box;
+import org.kdtree.geom.SplitPlane;
+import org.kdtree.shape.InvalidGeometryException;
+import org.kdtree.shape.Primitives;
+import org.kdtree.tree.CostModel;
+import org.kdtree.tree.KdTree;
+import org.kdtree.tree.KdTreeWriter;
+
+/**
+ * The talk's Algorithm 1, written once:
+ * <pre>
+ * recConst(T, V):
+ *   if terminate(T, V): return Leaf(T)
+ *   p = findPlane(T, V)
+ *   (V_L, V_R) = cut V with p
+ *   T_L = { t in T | t overlaps V_L },  T_R = { t in T | t overlaps V_R }
+ *   return Node(p, recConst(T_L, V_L), recConst(T_R, V_R))
+ * </pre>
+ * Subclasses decide {@link #terminate} and {@link #findPlane}; they may override
+ * {@link #split} (the O(N log N) SAH keeps sorted events in its nodes).
+ *
+ * <p>Two safety nets stand around the subclass's decisions, so that no input can make a
+ * build run away: the recursion never goes deeper than {@link #maxDepth()} (default
+ * {@code 8 + 1.3 log2 N}), and a split that sends every primitive to both children (it
+ * separates nothing, as with thousands of coincident triangles) makes a leaf instead.
+ *
+ * <p>A builder is configured before use and may be reused; {@link #build} is safe to call
+ * from several threads only if the subclass keeps no per-build state in fields.
+ */
+public abstract class KdTreeBuilder {
+    /** Depth beyond which no setting can go: 2^64 voxels would not fit in any memory. */
+    public static final int DEPTH_LIMIT = 64;
+
+    private int maxDepth = -1;
+    private CostModel costModel = CostModel.WALD_HAVRAN;
+    private boolean perfectSplits = true;
+
+    /** Builds the tree of {@code primitives}, starting from their bounding box (constKdTree). */
+    public final KdTree build(Primitives primitives) {
+        Box rootVoxel = rootVoxel(primitives);
+        int depthCap = maxDepth >= 0 ? maxDepth : defaultMaxDepth(primitives.size());
+        BuildNode root = makeRoot(primitives, rootVoxel);
+        Build build = new Build(primitives, depthCap);
+        KdTreeWriter out = new KdTreeWriter();
+        recConst(build, root, out);
+        return out.finish(rootVoxel, costModel, name());
+    }
+
+    /** The name under which this builder is reported, e.g. "sah". */
+    public abstract String name();
+
+    /** terminate(T, V): should this node become a leaf? */
+    protected abstract boolean terminate(BuildContext context, BuildNode node);
+
+    /** findPlane(T, V): the split plane for a node that does not terminate. */
+    protected abstract SplitPlane findPlane(BuildContext context, BuildNode node);
+
+    /**
+     * Cuts the node's voxel with {@code plane} and sends each primitive to every child voxel it
+     * overlaps. A primitive whose part in the voxel ends at the plane goes to that side only; one
+     * lying in the plane goes to the side {@link SplitPlane#planarLeft()} names; one crossing the
+     * plane goes to both, with its bounds clipped to each child ("perfect splits", unless turned
+     * off, in which case the child keeps the box of the parent's bounds cut by the plane).
+     */
+    protected Children split(BuildContext context, BuildNode node, SplitPlane plane) {
+        return Partition.split(context.primitives(), node, plane, perfectSplits);
+    }
+
+    /** Makes the root node: every primitive with its own bounds, in the scene's box. */
+    protected BuildNode makeRoot(Primitives primitives, Box rootVoxel) {
+        int n = primitives.size(), k = primitives.dimension();
+        int[] refs = new int[n];
+        double[] clipped = new double[2 * k * n];
+        Box b = new Box(k);
+        for (int i = 0; i < n; i++) {
+            refs[i] = i;
+            primitives.bounds(i, b);
+            for (int a = 0; a < k; a++) {
+                clipped[2 * k * i + a] = b.min(a);
+                clipped[2 * k * i + k + a] = b.max(a);
+            }
+        }
+        return new BuildNode(rootVoxel, refs, clipped, 0);
+    }
+
+    private void recConst(Build build, BuildNode node, KdTreeWriter out) {
+        if (node.depth() >= build.depthCap || terminate(build, node)) {
+            out.leaf(node.refs(), node.size());
+            return;
+        }
+        SplitPlane plane = checked(findPlane(build, node), node);
+        Children children = split(build, node, plane);
+        if (separatesNothing(node, children)) {
+            out.leaf(node.refs(), node.size());
+            return;
+        }
+        node.release();
+        int interior = out.interior(plane.axis(), plane.position());
+        recConst(build, children.left(), out);
+        out.setRightChild(interior);
+        recConst(build, children.right(), out);
+    }
+
+    private static boolean separatesNothing(BuildNode node, Children c) {
+        return node.size() > 0 && c.left().size() == node.size() && c.right().size() == node.size();
+    }
+
+    private SplitPlane checked(SplitPlane p, BuildNode node) {
+        if (p == null) throw new IllegalStateException(name() + ": findPlane returned null at depth " + node.depth());
+        if (p.axis() >= node.dimension())
+            throw new IllegalStateException(name() + ": findPlane chose axis " + p.axis() + " in " + node.dimension() + "-D");
+        Box v = node.voxel();
+        if (p.position() < v.min(p.axis()) || p.position() > v.max(p.axis()))
+            throw new IllegalStateException(name() + ": findPlane chose x" + p.axis() + " = " + p.position()
+                    + ", outside the voxel " + v);
+        return p;
+    }
+
+    private static Box rootVoxel(Primitives primitives) {
+        int k = primitives.dimension();
+        Box all = new Box(k), b = new Box(k);
+        for (int i = 0; i < primitives.size(); i++) {
+            primitives.bounds(i, b);
+            if (!b.isFinite() || b.isEmpty())
+                throw new InvalidGeometryException(primitives.describe(i) + " has non-finite or empty bounds " + b);
+            all.grow(b);
+        }
+        if (all.isEmpty()) for (int a = 0; a < k; a++) all.setMin(a, 0).setMax(a, 0);
+        return all;
+    }
+
+    /** The default depth cap, {@code round(8 + 1.3 log2 N)}, as pbrt and Wald and Havran use. */
+    public static int defaultMaxDepth(int n) {
+        double log2 = n <= 1 ? 0 : Math.log(n) / Math.log(2);
+        return (int) Math.round(8 + 1.3 * log2);
+    }
+
+    // ---- settings ----
+
+    /** Kmaxdepth, or -1 for the default {@code 8 + 1.3 log2 N}. */
+    public int maxDepth() { return maxDepth; }
+
+    /** Sets Kmaxdepth (0 .. 64), or -1 for the default {@code 8 + 1.3 log2 N}. */
+    public KdTreeBuilder maxDepth(int depth) {
+        if (depth < -1 || depth > DEPTH_LIMIT)
+            throw new IllegalArgumentException("max depth must be -1 (default) or 0.." + DEPTH_LIMIT + ", got " + depth);
+        this.maxDepth = depth;
+        return this;
+    }
+
+    /** Kt and Ki: the SAH uses them to choose planes; every tree reports its expected cost with them. */
+    public CostModel costModel() { return costModel; }
+
+    /** Sets Kt and Ki (default 15 and 20). */
+    public KdTreeBuilder costModel(CostModel model) {
+        this.costModel = java.util.Objects.requireNonNull(model);
+        return this;
+    }
+
+    /** Whether straddling primitives are clipped to each child voxel (default true). */
+    public boolean perfectSplits() { return perfectSplits; }
+
+    /** Turns perfect splits on (exact clipping, the default) or off (bounding boxes only). */
+    public KdTreeBuilder perfectSplits(boolean on) {
+        this.perfectSplits = on;
+        return this;
+    }
+
+    /** A one-line summary of the settings, e.g. for the command line. */
+    public String describeSettings() {
+        return "maxDepth=" + (maxDepth < 0 ? "auto" : maxDepth) + " Kt=" + costModel.kt() + " Ki=" + costModel.ki()
+                + " perfectSplits=" + perfectSplits;
+    }
+
+    /** The per-build context that {@link BuildContext} exposes to subclasses. */
+    private record Build(Primitives primitives, int depthCap) implements BuildContext {
+    }
+}

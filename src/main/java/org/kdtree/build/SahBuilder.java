@@ -1,0 +1,84 @@
+package org.kdtree.build;
+
+import org.kdtree.geom.SplitPlane;
+import org.kdtree.tree.CostModel;
+
+/**
+ * Chooses planes by the surface area heuristic (talk, section 3.3): among the candidate
+ * planes at the clipped bounds of every primitive on every axis, the one of least cost
+ * {@code C_V(p)} (see {@link SahCost}); terminates automatically when no plane is cheaper than
+ * a leaf ({@code min C_V(p) >= |T| Ki}), and at the depth cap.
+ *
+ * <p>Defaults: Kt = 15, Ki = 20, empty-voxel weight lambda = 0.8, depth cap
+ * {@code 8 + 1.3 log2 N}, perfect splits on, plane search {@link Algorithm#SORTED}.
+ */
+public class SahBuilder extends KdTreeBuilder {
+    /** How the best plane of a node is found. Every algorithm builds the same tree. */
+    public enum Algorithm {
+        /** Count each candidate by scanning all primitives: O(N^2). */
+        NAIVE(new NaivePlaneSearch()),
+        /** Sort each node's events, then sweep: O(N log^2 N). */
+        SORTED(new SortedPlaneSearch());
+
+        private final PlaneSearch search;
+
+        Algorithm(PlaneSearch search) { this.search = search; }
+
+        PlaneSearch search() { return search; }
+    }
+
+    private double emptyWeight = 0.8;
+    private Algorithm algorithm = Algorithm.SORTED;
+
+    @Override public String name() { return "sah"; }
+
+    @Override protected boolean terminate(BuildContext context, BuildNode node) {
+        if (node.size() == 0 || node.depth() >= context.depthCap()) return true;
+        SahCost sah = new SahCost(costModel(), emptyWeight, node.voxel());
+        if (!(sah.halfArea() > 0)) return true;
+        SahSplit best = new SahSplit();
+        algorithm.search().search(node, sah, best);
+        if (!best.found() || best.cost() >= sah.leafCost(node.size())) return true;
+        node.plan(best.plane(), best.cost());
+        return false;
+    }
+
+    @Override protected SplitPlane findPlane(BuildContext context, BuildNode node) {
+        if (node.plannedPlane() == null && terminate(context, node))
+            throw new IllegalStateException("findPlane called on a node the SAH would make a leaf");
+        return node.plannedPlane();
+    }
+
+    /** lambda, the weight of a plane that leaves one child empty (default 0.8; 1 disables the bonus). */
+    public double emptyWeight() { return emptyWeight; }
+
+    /** Sets lambda, in (0, 1]. */
+    public SahBuilder emptyWeight(double lambda) {
+        if (!(lambda > 0 && lambda <= 1))
+            throw new IllegalArgumentException("empty-voxel weight must be in (0, 1], got " + lambda);
+        this.emptyWeight = lambda;
+        return this;
+    }
+
+    public Algorithm algorithm() { return algorithm; }
+
+    /** Chooses the plane-search algorithm (the tree is the same; the build time is not). */
+    public SahBuilder algorithm(Algorithm a) {
+        this.algorithm = java.util.Objects.requireNonNull(a);
+        return this;
+    }
+
+    /** Sets Kt and Ki together. */
+    public SahBuilder costs(double kt, double ki) {
+        costModel(new CostModel(kt, ki));
+        return this;
+    }
+
+    @Override public SahBuilder maxDepth(int depth) { super.maxDepth(depth); return this; }
+
+    @Override public SahBuilder perfectSplits(boolean on) { super.perfectSplits(on); return this; }
+
+    @Override public String describeSettings() {
+        return "lambda=" + emptyWeight + " algorithm=" + algorithm.name().toLowerCase() + " " + super.describeSettings();
+    }
+}

@@ -1,0 +1,75 @@
+package org.kdtree.build;
+
+import org.kdtree.geom.Box;
+import org.kdtree.tree.CostModel;
+
+/**
+ * The SAH cost of splitting one voxel (talk, section 3.3.2, with the empty-voxel weight of 3.3.4):
+ * <pre>
+ *   C_V(p) = lambda(p) * ( Kt + Ki * ( SA(V_L)/SA(V) |T_L| + SA(V_R)/SA(V) |T_R| ) )
+ *   lambda(p) = emptyWeight if |T_L| = 0 or |T_R| = 0, else 1
+ * </pre>
+ * One instance serves one voxel. Every plane-search algorithm evaluates costs through this
+ * class, so that they all compute the same numbers to the last bit and build the same tree.
+ *
+ * <p>Child areas are computed without building boxes: cutting axis n at width w leaves a box of
+ * area {@code 2 (face_n + w * side_n)}, where {@code face_n} is the product of the other extents
+ * and {@code side_n} the sum of the products of all extents but n and one other.
+ */
+public final class SahCost {
+    private final CostModel model;
+    private final double emptyWeight;
+    private final double halfArea;
+    private final double[] min, max, face, side;
+
+    public SahCost(CostModel model, double emptyWeight, Box voxel) {
+        this.model = model;
+        this.emptyWeight = emptyWeight;
+        int k = voxel.dimension();
+        min = new double[k];
+        max = new double[k];
+        face = new double[k];
+        side = new double[k];
+        for (int a = 0; a < k; a++) {
+            min[a] = voxel.min(a);
+            max[a] = voxel.max(a);
+        }
+        for (int n = 0; n < k; n++) {
+            double f = 1, s = 0;
+            for (int a = 0; a < k; a++) {
+                if (a == n) continue;
+                f *= max[a] - min[a];
+                double prod = 1;
+                for (int b = 0; b < k; b++) if (b != n && b != a) prod *= max[b] - min[b];
+                s += prod;
+            }
+            face[n] = f;
+            side[n] = s;
+        }
+        halfArea = face[0] + (max[0] - min[0]) * side[0];
+    }
+
+    /** Half the voxel's surface area; zero for a voxel no ray can meet with positive probability. */
+    public double halfArea() { return halfArea; }
+
+    /** Kt, Ki of this cost. */
+    public CostModel model() { return model; }
+
+    /** Whether a plane at {@code x} on {@code axis} is a candidate: strictly inside the voxel. */
+    public boolean inside(int axis, double x) {
+        return x > min[axis] && x < max[axis];
+    }
+
+    /** C_V(p) for the plane {@code x_axis = x} with {@code nl} and {@code nr} primitives on each side. */
+    public double cost(int axis, double x, int nl, int nr) {
+        double pl = (face[axis] + (x - min[axis]) * side[axis]) / halfArea;
+        double pr = (face[axis] + (max[axis] - x) * side[axis]) / halfArea;
+        double c = model.kt() + model.ki() * (pl * nl + pr * nr);
+        return (nl == 0 || nr == 0) ? c * emptyWeight : c;
+    }
+
+    /** The cost of making the voxel a leaf: |T| Ki. */
+    public double leafCost(int n) {
+        return n * model.ki();
+    }
+}

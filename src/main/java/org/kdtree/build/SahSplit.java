@@ -1,0 +1,45 @@
+package org.kdtree.build;
+
+import org.kdtree.geom.SplitPlane;
+
+/**
+ * The best plane a search found and its SAH cost. Searches keep the first minimum they meet
+ * in the order axis 0, 1, ..., then increasing position, then planar-left before planar-right,
+ * so that every algorithm picks the same plane among equal costs.
+ */
+public final class SahSplit {
+    private int axis = -1;
+    private double position;
+    private boolean planarLeft;
+    private double cost = Double.POSITIVE_INFINITY;
+
+    /**
+     * Offers the plane {@code x_axis = x} with {@code nl} primitives strictly left, {@code nr}
+     * strictly right and {@code np} lying in the plane; the planar ones go to the cheaper side.
+     */
+    public void offer(SahCost sah, int axis, double x, int nl, int np, int nr) {
+        if (!sah.inside(axis, x)) return;
+        double left = sah.cost(axis, x, nl + np, nr);
+        double right = np == 0 ? left : sah.cost(axis, x, nl, nr + np);
+        boolean toLeft = left <= right;
+        double c = toLeft ? left : right;
+        if (c < cost) {
+            cost = c;
+            this.axis = axis;
+            position = x;
+            planarLeft = toLeft;
+        }
+    }
+
+    /** True once some candidate has been offered. */
+    public boolean found() { return axis >= 0; }
+
+    public double cost() { return cost; }
+
+    /** The plane; call only when {@link #found()}. */
+    public SplitPlane plane() { return new SplitPlane(axis, position, planarLeft); }
+
+    @Override public String toString() {
+        return found() ? "SahSplit[" + plane() + ", cost=" + cost + "]" : "SahSplit[none]";
+    }
+}

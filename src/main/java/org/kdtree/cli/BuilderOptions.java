@@ -1,0 +1,60 @@
+package org.kdtree.cli;
+
+import org.kdtree.build.Builders;
+import org.kdtree.build.KdTreeBuilder;
+import org.kdtree.build.MedianPlaneBuilder;
+import org.kdtree.build.ObjectMedianBuilder;
+import org.kdtree.build.SahBuilder;
+import org.kdtree.tree.CostModel;
+import picocli.CommandLine.Option;
+
+/** The builder options every command shares (a picocli mixin). */
+public final class BuilderOptions {
+    @Option(names = {"-b", "--builder"}, defaultValue = "sah",
+            description = "Builder: sah, median-plane, object-median, or a registered name (default: ${DEFAULT-VALUE}).")
+    String builder;
+
+    @Option(names = "--lambda", description = "SAH empty-voxel weight in (0, 1] (default 0.8).")
+    Double lambda;
+
+    @Option(names = "--kt", description = "Traversal cost Kt (default 15).")
+    Double kt;
+
+    @Option(names = "--ki", description = "Intersection cost Ki (default 20).")
+    Double ki;
+
+    @Option(names = "--max-depth", description = "Kmaxdepth (default 8 + 1.3 log2 N).")
+    Integer maxDepth;
+
+    @Option(names = "--min-prims", description = "Kmintri for the median builders (default 2).")
+    Integer minPrims;
+
+    @Option(names = "--algorithm", description = "SAH plane search: ${COMPLETION-CANDIDATES} (same tree, different time).")
+    SahBuilder.Algorithm algorithm;
+
+    @Option(names = "--no-perfect-splits", description = "Use bounding boxes instead of exact clipping.")
+    boolean noPerfectSplits;
+
+    /** A builder configured from the options. */
+    public KdTreeBuilder create() {
+        KdTreeBuilder b = Builders.create(builder);
+        if (maxDepth != null) b.maxDepth(maxDepth);
+        if (kt != null || ki != null) {
+            CostModel m = b.costModel();
+            b.costModel(new CostModel(kt != null ? kt : m.kt(), ki != null ? ki : m.ki()));
+        }
+        if (noPerfectSplits) b.perfectSplits(false);
+        if (b instanceof SahBuilder sah) {
+            if (lambda != null) sah.emptyWeight(lambda);
+            if (algorithm != null) sah.algorithm(algorithm);
+        } else if (lambda != null || algorithm != null) {
+            throw new IllegalArgumentException("--lambda and --algorithm apply to the sah builder only");
+        }
+        if (minPrims != null) {
+            if (b instanceof MedianPlaneBuilder m) m.minPrimitives(minPrims);
+            else if (b instanceof ObjectMedianBuilder o) o.minPrimitives(minPrims);
+            else throw new IllegalArgumentException("--min-prims applies to the median builders only");
+        }
+        return b;
+    }
+}

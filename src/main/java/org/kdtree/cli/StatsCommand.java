@@ -1,0 +1,51 @@
+package org.kdtree.cli;
+
+import java.nio.file.Path;
+import java.util.Arrays;
+import java.util.Locale;
+import java.util.concurrent.Callable;
+import org.kdtree.build.KdTreeBuilder;
+import org.kdtree.io.SceneLoader;
+import org.kdtree.shape.Primitives;
+import org.kdtree.tree.KdTree;
+import picocli.CommandLine.Command;
+import picocli.CommandLine.Mixin;
+import picocli.CommandLine.Option;
+import picocli.CommandLine.Parameters;
+
+/** {@code stats SCENE}: build a tree and print its statistics and build time. */
+@Command(name = "stats", mixinStandardHelpOptions = true,
+        description = "Build a kd-tree over a scene (.obj or .scene2d) and print its statistics and build time.")
+public final class StatsCommand implements Callable<Integer> {
+    @Parameters(paramLabel = "SCENE", description = "An OBJ mesh or a .scene2d file.")
+    Path scene;
+
+    @Mixin
+    BuilderOptions options;
+
+    @Option(names = "--runs", defaultValue = "1", description = "Timed builds; the median is reported (default: ${DEFAULT-VALUE}).")
+    int runs;
+
+    @Option(names = "--warmup", defaultValue = "0", description = "Untimed builds first, to warm up the JVM (default: ${DEFAULT-VALUE}).")
+    int warmup;
+
+    @Override public Integer call() throws Exception {
+        Primitives prims = SceneLoader.load(scene);
+        KdTreeBuilder builder = options.create();
+        for (int i = 0; i < warmup; i++) builder.build(prims);
+        double[] ms = new double[Math.max(1, runs)];
+        KdTree tree = null;
+        for (int i = 0; i < ms.length; i++) {
+            long t0 = System.nanoTime();
+            tree = builder.build(prims);
+            ms[i] = (System.nanoTime() - t0) / 1e6;
+        }
+        Arrays.sort(ms);
+        System.out.printf(Locale.ROOT, "scene: %s (%d primitives, %d-D)%n", scene, prims.size(), prims.dimension());
+        System.out.printf(Locale.ROOT, "builder: %s (%s)%n", builder.name(), builder.describeSettings());
+        System.out.printf(Locale.ROOT, "build time: %.1f ms%s%n", ms[ms.length / 2],
+                ms.length > 1 ? " (median of " + ms.length + ", after " + warmup + " warm-up)" : "");
+        System.out.println(tree.stats().describe());
+        return 0;
+    }
+}

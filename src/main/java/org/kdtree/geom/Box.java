@@ -1,0 +1,174 @@
+package org.kdtree.geom;
+
+import java.util.Arrays;
+
+/**
+ * An axis-aligned box in k dimensions: a voxel of the kd-tree, or the bounds of a primitive.
+ *
+ * <p>Boxes are mutable so that hot code can write into a reused destination (as JOML does);
+ * code that keeps a box copies it with {@link #copy()}. A box is <em>empty</em> when
+ * {@code min > max} on some axis; a box of zero extent on an axis is <em>flat</em> but not
+ * empty (a triangle lying in a plane has flat bounds).
+ */
+public final class Box {
+    private final double[] min;
+    private final double[] max;
+
+    /** An empty box in {@code k} dimensions (min = +inf, max = -inf), ready to be grown. */
+    public Box(int k) {
+        if (k < 1) throw new IllegalArgumentException("dimension must be >= 1, got " + k);
+        min = new double[k];
+        max = new double[k];
+        setEmpty();
+    }
+
+    /** A box with the given corners (copied). */
+    public Box(double[] min, double[] max) {
+        if (min.length != max.length || min.length < 1)
+            throw new IllegalArgumentException("corners must have the same dimension >= 1");
+        this.min = min.clone();
+        this.max = max.clone();
+    }
+
+    /** Convenience constructor for a 2-D box. */
+    public static Box of2(double x0, double y0, double x1, double y1) {
+        return new Box(new double[] {x0, y0}, new double[] {x1, y1});
+    }
+
+    /** Convenience constructor for a 3-D box. */
+    public static Box of3(double x0, double y0, double z0, double x1, double y1, double z1) {
+        return new Box(new double[] {x0, y0, z0}, new double[] {x1, y1, z1});
+    }
+
+    public int dimension() { return min.length; }
+    public double min(int axis) { return min[axis]; }
+    public double max(int axis) { return max[axis]; }
+    public double extent(int axis) { return max[axis] - min[axis]; }
+
+    public Box setMin(int axis, double v) { min[axis] = v; return this; }
+    public Box setMax(int axis, double v) { max[axis] = v; return this; }
+
+    /** Makes this box empty, so that {@link #grow} starts afresh. */
+    public Box setEmpty() {
+        Arrays.fill(min, Double.POSITIVE_INFINITY);
+        Arrays.fill(max, Double.NEGATIVE_INFINITY);
+        return this;
+    }
+
+    public Box set(Box other) {
+        System.arraycopy(other.min, 0, min, 0, min.length);
+        System.arraycopy(other.max, 0, max, 0, max.length);
+        return this;
+    }
+
+    public Box copy() { return new Box(min, max); }
+
+    /** Grows the box to contain the point {@code p} (read from {@code p[offset..offset+k)}). */
+    public Box grow(double[] p, int offset) {
+        for (int a = 0; a < min.length; a++) {
+            double v = p[offset + a];
+            if (v < min[a]) min[a] = v;
+            if (v > max[a]) max[a] = v;
+        }
+        return this;
+    }
+
+    /** Grows the box to contain {@code other}. */
+    public Box grow(Box other) {
+        for (int a = 0; a < min.length; a++) {
+            if (other.min[a] < min[a]) min[a] = other.min[a];
+            if (other.max[a] > max[a]) max[a] = other.max[a];
+        }
+        return this;
+    }
+
+    /** Shrinks this box to its intersection with {@code other} (may become empty). */
+    public Box intersect(Box other) {
+        for (int a = 0; a < min.length; a++) {
+            min[a] = Math.max(min[a], other.min[a]);
+            max[a] = Math.min(max[a], other.max[a]);
+        }
+        return this;
+    }
+
+    /** True when min > max on some axis (the box holds no point). */
+    public boolean isEmpty() {
+        for (int a = 0; a < min.length; a++) if (!(min[a] <= max[a])) return true;
+        return false;
+    }
+
+    /** True when every coordinate is finite (no NaN, no infinity). */
+    public boolean isFinite() {
+        for (int a = 0; a < min.length; a++)
+            if (!Double.isFinite(min[a]) || !Double.isFinite(max[a])) return false;
+        return true;
+    }
+
+    /** True when the closed boxes share at least one point. */
+    public boolean overlaps(Box other) {
+        for (int a = 0; a < min.length; a++)
+            if (other.max[a] < min[a] || other.min[a] > max[a]) return false;
+        return true;
+    }
+
+    /** True when the closed box contains the point. */
+    public boolean contains(double[] p) {
+        for (int a = 0; a < min.length; a++) if (p[a] < min[a] || p[a] > max[a]) return false;
+        return true;
+    }
+
+    /**
+     * The "surface area" the SAH needs: the sum of the measures of the 2k faces.
+     * Perimeter in 2-D, area in 3-D; a flat box keeps the measure of its faces, so a
+     * zero-thickness voxel still has a well-defined, positive area.
+     */
+    public double surfaceArea() {
+        int k = min.length;
+        if (isEmpty()) return 0;
+        double sum = 0;
+        for (int skip = 0; skip < k; skip++) {
+            double face = 1;
+            for (int a = 0; a < k; a++) if (a != skip) face *= max[a] - min[a];
+            sum += face;
+        }
+        return 2 * sum;
+    }
+
+    /** The measure of the box: length, area or volume. */
+    public double volume() {
+        double v = 1;
+        for (int a = 0; a < min.length; a++) v *= Math.max(0, max[a] - min[a]);
+        return v;
+    }
+
+    /** The axis of largest extent. */
+    public int longestAxis() {
+        int best = 0;
+        for (int a = 1; a < min.length; a++) if (extent(a) > extent(best)) best = a;
+        return best;
+    }
+
+    /** The part of this box below the plane ({@code x_axis <= xi}), as a new box. */
+    public Box lowerPart(int axis, double xi) {
+        Box b = copy();
+        b.max[axis] = xi;
+        return b;
+    }
+
+    /** The part of this box above the plane ({@code x_axis >= xi}), as a new box. */
+    public Box upperPart(int axis, double xi) {
+        Box b = copy();
+        b.min[axis] = xi;
+        return b;
+    }
+
+    @Override public boolean equals(Object o) {
+        return o instanceof Box b && Arrays.equals(min, b.min) && Arrays.equals(max, b.max);
+    }
+
+    @Override public int hashCode() { return 31 * Arrays.hashCode(min) + Arrays.hashCode(max); }
+
+    @Override public String toString() {
+        return "Box" + Arrays.toString(min) + ".." + Arrays.toString(max);
+    }
+}

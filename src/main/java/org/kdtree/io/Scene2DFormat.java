@@ -1,0 +1,111 @@
+package org.kdtree.io;
+
+import java.io.BufferedReader;
+import java.io.IOException;
+import java.io.Reader;
+import java.io.StringReader;
+import java.io.Writer;
+import java.nio.charset.StandardCharsets;
+import java.nio.file.Files;
+import java.nio.file.Path;
+import java.util.ArrayList;
+import java.util.List;
+import java.util.Locale;
+import org.kdtree.shape.Shape2D;
+import org.kdtree.shape.Shapes2D;
+
+/**
+ * The 2-D scene format of the workbench: one shape per line, {@code #} starts a comment.
+ * <pre>
+ * point    x y
+ * segment  x0 y0 x1 y1
+ * rect     x0 y0 x1 y1          (two opposite corners)
+ * triangle ax ay bx by cx cy
+ * </pre>
+ * Files end in {@code .scene2d}. See docs/scene-format.md.
+ */
+public final class Scene2DFormat {
+    private Scene2DFormat() {
+    }
+
+    public static Shapes2D read(Path file) throws IOException {
+        if (!Files.isRegularFile(file)) throw new SceneFormatException(file.toString(), 0, "no such file");
+        try (Reader r = Files.newBufferedReader(file, StandardCharsets.UTF_8)) {
+            return read(r, file.toString());
+        }
+    }
+
+    public static Shapes2D parse(String text, String name) throws SceneFormatException {
+        try {
+            return read(new StringReader(text), name);
+        } catch (SceneFormatException e) {
+            throw e;
+        } catch (IOException e) {
+            throw new IllegalStateException(e);
+        }
+    }
+
+    public static Shapes2D read(Reader reader, String name) throws IOException {
+        BufferedReader in = new BufferedReader(reader);
+        List<Shape2D> shapes = new ArrayList<>();
+        String line;
+        int lineNo = 0;
+        while ((line = in.readLine()) != null) {
+            lineNo++;
+            int hash = line.indexOf('#');
+            String s = (hash >= 0 ? line.substring(0, hash) : line).strip();
+            if (s.isEmpty()) continue;
+            String[] t = s.split("\\s+");
+            shapes.add(shape(t, name, lineNo));
+        }
+        return new Shapes2D(shapes);
+    }
+
+    private static Shape2D shape(String[] t, String name, int line) throws SceneFormatException {
+        String kw = t[0].toLowerCase(Locale.ROOT);
+        int need = switch (kw) {
+            case "point" -> 2;
+            case "segment", "rect" -> 4;
+            case "triangle" -> 6;
+            default -> throw new SceneFormatException(name, line,
+                    "unknown shape '" + t[0] + "' (expected point, segment, rect or triangle)");
+        };
+        if (t.length - 1 != need)
+            throw new SceneFormatException(name, line, kw + " needs " + need + " numbers, got " + (t.length - 1));
+        double[] c = new double[need];
+        for (int i = 0; i < need; i++) {
+            try {
+                c[i] = Double.parseDouble(t[i + 1]);
+            } catch (NumberFormatException e) {
+                throw new SceneFormatException(name, line, "'" + t[i + 1] + "' is not a number");
+            }
+            if (!Double.isFinite(c[i])) throw new SceneFormatException(name, line, "coordinate " + t[i + 1] + " is not finite");
+        }
+        return switch (kw) {
+            case "point" -> new Shape2D.Point(c[0], c[1]);
+            case "segment" -> new Shape2D.Segment(c[0], c[1], c[2], c[3]);
+            case "rect" -> new Shape2D.Rect(c[0], c[1], c[2], c[3]);
+            default -> new Shape2D.Triangle(c[0], c[1], c[2], c[3], c[4], c[5]);
+        };
+    }
+
+    /** Writes the shapes in the format {@link #read} accepts. */
+    public static void write(Shapes2D scene, Writer out) throws IOException {
+        for (Shape2D s : scene.shapes()) {
+            StringBuilder b = new StringBuilder(s.keyword());
+            for (double c : s.coords()) b.append(' ').append(format(c));
+            out.write(b.append('\n').toString());
+        }
+        out.flush();
+    }
+
+    public static void write(Shapes2D scene, Path file) throws IOException {
+        try (Writer w = Files.newBufferedWriter(file, StandardCharsets.UTF_8)) {
+            write(scene, w);
+        }
+    }
+
+    private static String format(double c) {
+        return c == Math.rint(c) && Math.abs(c) < 1e15 ? Long.toString((long) c) : Double.toString(c);
+    }
+}

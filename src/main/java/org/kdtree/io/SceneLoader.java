@@ -1,0 +1,19 @@
+package org.kdtree.io;
+
+import java.io.IOException;
+import java.nio.file.Path;
+import java.util.Locale;
+import org.kdtree.shape.Primitives;
+
+/** Loads the primitives of a file by its extension: {@code .obj} meshes and {@code .scene2d} 2-D scenes. */
+public final class SceneLoader {
+    private SceneLoader() {
+    }
+
+    public static Primitives load(Path file) throws IOException {
+        String name = file.getFileName().toString().toLowerCase(Locale.ROOT);
+        if (name.endsWith(".obj")) return ObjMeshReader.read(file);
+        if (name.endsWith(".scene2d")) return Scene2DFormat.read(file);
+        throw new SceneFormatException(file.toString(), 0, "unknown file type (expected .obj or .scene2d)");
+    }
+}

@@ -1,0 +1,43 @@
+package org.kdtree.shape;
+
+import org.kdtree.geom.Box;
+
+/**
+ * The only view a builder has of the geometry: a numbered set of primitives in k dimensions.
+ *
+ * <p>Implementations write into destination boxes so that builders allocate nothing per
+ * query, and must be safe for concurrent reads (a parallel build queries from many threads).
+ */
+public interface Primitives {
+    /** k, the dimension of the space. */
+    int dimension();
+
+    /** The number of primitives; they are numbered {@code 0 .. size()-1}. */
+    int size();
+
+    /** Writes the bounds of primitive {@code i} into {@code dest}. */
+    void bounds(int i, Box dest);
+
+    /**
+     * Writes the bounds of the part of primitive {@code i} inside {@code voxel} into
+     * {@code dest} ("perfect splits"), or makes {@code dest} empty if no part is inside.
+     * The bounds may be conservative by a few units in the last place, never smaller.
+     */
+    void clip(int i, Box voxel, Box dest);
+
+    /** A short description of primitive {@code i} for error messages, e.g. "triangle 17". */
+    default String describe(int i) {
+        return "primitive " + i;
+    }
+
+    /** The bounds of all primitives (empty box when there are none). */
+    default Box bounds() {
+        Box all = new Box(dimension());
+        Box b = new Box(dimension());
+        for (int i = 0; i < size(); i++) {
+            bounds(i, b);
+            all.grow(b);
+        }
+        return all;
+    }
+}

@@ -1,0 +1,73 @@
+package org.kdtree.shape;
+
+import org.kdtree.geom.Box;
+import org.kdtree.geom.PolygonClipper;
+
+/**
+ * A 3-D triangle mesh in flat arrays: vertex coordinates (x, y, z per vertex) and vertex
+ * indices (three per triangle). A million triangles take about 36 MB plus 24 MB per
+ * million vertices.
+ *
+ * <p>Degenerate (zero-area) triangles are kept: builders handle them and ray queries
+ * never report a hit on them. Non-finite coordinates are rejected, naming the triangle.
+ */
+public final class TriangleMesh implements Primitives {
+    private final double[] vertices;
+    private final int[] indices;
+
+    /**
+     * @param vertices x, y, z per vertex (not copied)
+     * @param indices  three 0-based vertex indices per triangle (not copied)
+     * @throws InvalidGeometryException for an index out of range or a non-finite coordinate
+     */
+    public TriangleMesh(double[] vertices, int[] indices) {
+        if (vertices.length % 3 != 0) throw new IllegalArgumentException("vertex array length must be a multiple of 3");
+        if (indices.length % 3 != 0) throw new IllegalArgumentException("index array length must be a multiple of 3");
+        this.vertices = vertices;
+        this.indices = indices;
+        int nv = vertices.length / 3;
+        for (int t = 0; t < indices.length / 3; t++) {
+            for (int c = 0; c < 3; c++) {
+                int v = indices[3 * t + c];
+                if (v < 0 || v >= nv)
+                    throw new InvalidGeometryException(describe(t) + " refers to vertex " + v + " of " + nv);
+                for (int a = 0; a < 3; a++)
+                    if (!Double.isFinite(vertices[3 * v + a]))
+                        throw new InvalidGeometryException(describe(t) + " has a non-finite coordinate ("
+                                + vertices[3 * v + a] + ") at vertex " + v);
+            }
+        }
+    }
+
+    /** The flat vertex array (x, y, z per vertex); do not modify. */
+    public double[] vertices() { return vertices; }
+
+    /** The flat index array (three per triangle); do not modify. */
+    public int[] indices() { return indices; }
+
+    public int vertexCount() { return vertices.length / 3; }
+
+    /** Coordinate {@code axis} of corner {@code corner} (0..2) of triangle {@code t}. */
+    public double corner(int t, int corner, int axis) {
+        return vertices[3 * indices[3 * t + corner] + axis];
+    }
+
+    @Override public int dimension() { return 3; }
+    @Override public int size() { return indices.length / 3; }
+
+    @Override public void bounds(int t, Box dest) {
+        int i0 = 3 * indices[3 * t], i1 = 3 * indices[3 * t + 1], i2 = 3 * indices[3 * t + 2];
+        for (int a = 0; a < 3; a++) {
+            double v0 = vertices[i0 + a], v1 = vertices[i1 + a], v2 = vertices[i2 + a];
+            dest.setMin(a, Math.min(v0, Math.min(v1, v2))).setMax(a, Math.max(v0, Math.max(v1, v2)));
+        }
+    }
+
+    @Override public void clip(int t, Box voxel, Box dest) {
+        double[] tri = new double[9];
+        for (int c = 0; c < 3; c++) System.arraycopy(vertices, 3 * indices[3 * t + c], tri, 3 * c, 3);
+        PolygonClipper.forThread(3).clip(tri, 3, voxel, dest);
+    }
+
+    @Override public String describe(int t) { return "triangle " + t; }
+}

@@ -1,0 +1,92 @@
+package org.kdtree.tree;
+
+import java.util.Arrays;
+import org.kdtree.geom.Box;
+
+/**
+ * Writes a kd-tree into flat arrays in depth-first order, as a builder's recursion emits it:
+ * an interior node is followed by its whole left subtree, then its right child (whose index
+ * is patched in with {@link #setRightChild}). Subtrees written by other writers (a parallel
+ * build) are spliced in with {@link #append}.
+ */
+public final class KdTreeWriter {
+    private int[] word = new int[64];
+    private double[] split = new double[64];
+    private int nodes;
+    private int[] leafStart = new int[33];
+    private int leaves;
+    private int[] refs = new int[64];
+    private int refCount;
+
+    /** Writes an interior node and returns its index; its left child is the next node written. */
+    public int interior(int axis, double xi) {
+        if (axis < 0 || axis >= KdTree.LEAF_MARK)
+            throw new IllegalArgumentException("axis " + axis + " out of range 0.." + (KdTree.LEAF_MARK - 1));
+        int n = newNode();
+        word[n] = axis; // right child patched later
+        split[n] = xi;
+        return n;
+    }
+
+    /** Sets the right child of interior node {@code node} to the next node to be written. */
+    public void setRightChild(int node) {
+        int child = nodes;
+        if (child > KdTree.MAX_NODE) throw new IllegalStateException("tree exceeds " + KdTree.MAX_NODE + " nodes");
+        word[node] = (child << KdTree.AXIS_BITS) | (word[node] & KdTree.LEAF_MARK);
+    }
+
+    /** Writes a leaf holding {@code prims[0 .. count)} and returns its node index. */
+    public int leaf(int[] prims, int count) {
+        int n = newNode();
+        if (leaves + 2 > leafStart.length) leafStart = Arrays.copyOf(leafStart, leafStart.length * 2);
+        if (refCount + count > refs.length) refs = Arrays.copyOf(refs, Math.max(refs.length * 2, refCount + count));
+        System.arraycopy(prims, 0, refs, refCount, count);
+        leafStart[leaves] = refCount;
+        refCount += count;
+        leafStart[leaves + 1] = refCount;
+        word[n] = (leaves << KdTree.AXIS_BITS) | KdTree.LEAF_MARK;
+        split[n] = 0;
+        leaves++;
+        return n;
+    }
+
+    /** Appends the whole tree written by {@code sub} as the next subtree; returns its root index. */
+    public int append(KdTreeWriter sub) {
+        int base = nodes, leafBase = leaves, refBase = refCount;
+        for (int i = 0; i < sub.nodes; i++) {
+            int n = newNode();
+            int w = sub.word[i];
+            boolean leaf = (w & KdTree.LEAF_MARK) == KdTree.LEAF_MARK;
+            int shift = leaf ? leafBase : base;
+            word[n] = (((w >>> KdTree.AXIS_BITS) + shift) << KdTree.AXIS_BITS) | (w & KdTree.LEAF_MARK);
+            split[n] = sub.split[i];
+        }
+        if (leaves + sub.leaves + 1 > leafStart.length)
+            leafStart = Arrays.copyOf(leafStart, Math.max(leafStart.length * 2, leaves + sub.leaves + 1));
+        for (int l = 0; l <= sub.leaves; l++) leafStart[leafBase + l] = sub.leafStart[l] + refBase;
+        leaves += sub.leaves;
+        if (refCount + sub.refCount > refs.length) refs = Arrays.copyOf(refs, Math.max(refs.length * 2, refCount + sub.refCount));
+        System.arraycopy(sub.refs, 0, refs, refCount, sub.refCount);
+        refCount += sub.refCount;
+        return base;
+    }
+
+    /** The number of nodes written so far. */
+    public int nodeCount() { return nodes; }
+
+    /** Finishes the tree. */
+    public KdTree finish(Box rootVoxel, CostModel cost, String builderName) {
+        if (nodes == 0) leaf(new int[0], 0);
+        return new KdTree(rootVoxel.copy(), cost, builderName,
+                Arrays.copyOf(word, nodes), Arrays.copyOf(split, nodes),
+                Arrays.copyOf(leafStart, leaves + 1), Arrays.copyOf(refs, refCount));
+    }
+
+    private int newNode() {
+        if (nodes == word.length) {
+            word = Arrays.copyOf(word, nodes * 2);
+            split = Arrays.copyOf(split, nodes * 2);
+        }
+        return nodes++;
+    }
+}
