@@ -1,0 +1,65 @@
+package org.kdtree.geom;
+
+/**
+ * A ray {@code o + t d} in k dimensions. Mutable and reusable, so that hot loops allocate
+ * nothing per ray. The direction is not normalised: t is the ray parameter. Direction
+ * components may be +0.0 or -0.0 (rays parallel to an axis plane); their inverses, kept
+ * alongside, are then +infinity or -infinity.
+ */
+public final class Ray {
+    private final double[] origin;
+    private final double[] direction;
+    private final double[] inverse;
+
+    public Ray(int k) {
+        origin = new double[k];
+        direction = new double[k];
+        inverse = new double[k];
+    }
+
+    /** A ray with the given origin and direction (copied). */
+    public Ray(double[] origin, double[] direction) {
+        this(origin.length);
+        set(origin, direction);
+    }
+
+    public int dimension() { return origin.length; }
+
+    /** Sets origin and direction (copied); the direction must not be all zero. */
+    public Ray set(double[] o, double[] d) {
+        for (int a = 0; a < origin.length; a++) {
+            origin[a] = o[a];
+            direction[a] = d[a];
+            inverse[a] = 1.0 / d[a];
+        }
+        return this;
+    }
+
+    /** Sets a 3-D ray. */
+    public Ray set(double ox, double oy, double oz, double dx, double dy, double dz) {
+        origin[0] = ox; origin[1] = oy; origin[2] = oz;
+        direction[0] = dx; direction[1] = dy; direction[2] = dz;
+        inverse[0] = 1.0 / dx; inverse[1] = 1.0 / dy; inverse[2] = 1.0 / dz;
+        return this;
+    }
+
+    /** Sets a 2-D ray. */
+    public Ray set(double ox, double oy, double dx, double dy) {
+        origin[0] = ox; origin[1] = oy;
+        direction[0] = dx; direction[1] = dy;
+        inverse[0] = 1.0 / dx; inverse[1] = 1.0 / dy;
+        return this;
+    }
+
+    public double origin(int axis) { return origin[axis]; }
+    public double direction(int axis) { return direction[axis]; }
+    /** {@code 1 / direction(axis)}, +-infinity for a zero component of either sign. */
+    public double inverseDirection(int axis) { return inverse[axis]; }
+
+    /** The point at parameter t on {@code axis}. */
+    public double at(double t, int axis) { return origin[axis] + t * direction[axis]; }
+
+    @Override public String toString() {
+        return "Ray[o=" + java.util.Arrays.toString(origin) + ", d=" + java.util.Arrays.toString(direction) + "]";
+    }
+}
