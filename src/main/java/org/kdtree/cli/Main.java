@@ -7,10 +7,11 @@ import picocli.CommandLine.Command;
 /** The command line: {@code java -jar kdtree.jar COMMAND ...}. */
 @Command(name = "kdtree", mixinStandardHelpOptions = true, version = "kdtree 0.1",
         description = "k-d trees for ray tracing: build, inspect, trace, render.",
-        subcommands = {StatsCommand.class})
+        subcommands = {StatsCommand.class, GuiCommand.class})
 public final class Main implements Runnable {
     public static void main(String[] args) {
-        System.exit(run(args));
+        int code = run(args);
+        if (code != 0 || !GuiCommand.opened()) System.exit(code); // the workbench's window keeps the JVM alive
     }
 
     /** Runs the command line and returns the exit code (for tests). */
@@ -26,7 +27,13 @@ public final class Main implements Runnable {
         return cl.execute(args);
     }
 
+    /** No command: open the workbench, or print the usage where there is no display. */
     @Override public void run() {
-        new CommandLine(this).usage(System.out);
+        if (java.awt.GraphicsEnvironment.isHeadless()) {
+            new CommandLine(this).usage(System.out);
+            System.err.println("(no display: the workbench, the default command, needs one)");
+        } else {
+            new GuiCommand().call();
+        }
     }
 }

@@ -1,0 +1,26 @@
+package org.kdtree.cli;
+
+import java.awt.GraphicsEnvironment;
+import java.util.concurrent.Callable;
+import org.kdtree.gui.Workbench;
+import picocli.CommandLine.Command;
+
+/** {@code gui}: opens the Swing workbench (also what the jar does when given no command). */
+@Command(name = "gui", mixinStandardHelpOptions = true,
+        description = "Open the workbench: watch 2-D builds, step through a traversal, compare builders.")
+public final class GuiCommand implements Callable<Integer> {
+    @Override public Integer call() {
+        if (GraphicsEnvironment.isHeadless()) {
+            System.err.println("error: no display available for the workbench (set DISPLAY, or use a command such as 'stats')");
+            return 2;
+        }
+        Workbench.open();
+        opened = true;
+        return 0;
+    }
+
+    private static volatile boolean opened;
+
+    /** Whether a workbench window was opened by this JVM (then {@code main} must not exit). */
+    static boolean opened() { return opened; }
+}

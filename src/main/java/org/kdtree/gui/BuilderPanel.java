@@ -1,0 +1,117 @@
+package org.kdtree.gui;
+
+import java.awt.GridBagConstraints;
+import java.awt.GridBagLayout;
+import java.awt.Insets;
+import javax.swing.BorderFactory;
+import javax.swing.JComboBox;
+import javax.swing.JComponent;
+import javax.swing.JLabel;
+import javax.swing.JPanel;
+import javax.swing.JSlider;
+import javax.swing.JSpinner;
+import javax.swing.SpinnerNumberModel;
+import org.kdtree.build.Builders;
+
+/**
+ * The builder controls: which builder, Kt, Ki, lambda (spinner and slider), Kmintri and
+ * Kmaxdepth. Every change rebuilds the tree at once. Controls that do not apply to the
+ * chosen builder are greyed out.
+ */
+public final class BuilderPanel extends JPanel {
+    private final WorkbenchModel model;
+    private final JComboBox<String> builder = new JComboBox<>(Builders.names().toArray(String[]::new));
+    private final JSpinner kt = spinner(new SpinnerNumberModel(15.0, 0.0, 1000.0, 1.0));
+    private final JSpinner ki = spinner(new SpinnerNumberModel(20.0, 0.5, 1000.0, 1.0));
+    private final JSpinner lambda = spinner(new SpinnerNumberModel(0.8, 0.05, 1.0, 0.05));
+    private final JSlider lambdaSlider = new JSlider(5, 100, 80);
+    private final JSpinner minPrims = spinner(new SpinnerNumberModel(2, 0, 1000, 1));
+    private final JSpinner maxDepth = spinner(new SpinnerNumberModel(-1, -1, 64, 1));
+    private boolean updating;
+
+    public BuilderPanel(WorkbenchModel model) {
+        super(new GridBagLayout());
+        this.model = model;
+        setBorder(BorderFactory.createTitledBorder("Builder"));
+        name(builder, "builder", "Builder (Alt+1/2/3): median-plane and object-median split at the middle; sah minimises the expected cost");
+        name(kt, "kt", "Kt: cost of traversing one node (SAH)");
+        name(ki, "ki", "Ki: cost of intersecting one object (SAH)");
+        name(lambda, "lambda", "lambda: weight of a plane that cuts off empty space (1 = no bonus); SAH only");
+        name(lambdaSlider, "lambdaSlider", "lambda as a slider, in hundredths");
+        name(minPrims, "kmintri", "Kmintri: a voxel with at most this many objects becomes a leaf (median builders)");
+        name(maxDepth, "kmaxdepth", "Kmaxdepth: maximum depth (-1 = 8 + 1.3 log2 N)");
+        row(0, "Builder", builder);
+        row(1, "Kt", kt);
+        row(2, "Ki", ki);
+        row(3, "lambda", lambda);
+        row(4, "", lambdaSlider);
+        row(5, "Kmintri", minPrims);
+        row(6, "Kmaxdepth", maxDepth);
+        builder.addActionListener(e -> apply());
+        for (JSpinner s : new JSpinner[] {kt, ki, lambda, minPrims, maxDepth}) s.addChangeListener(e -> apply());
+        lambdaSlider.addChangeListener(e -> {
+            if (!updating) lambda.setValue(lambdaSlider.getValue() / 100.0);
+        });
+        show(model.settings());
+    }
+
+    /** Selects the builder at {@code index} in the list (keyboard shortcut). */
+    public void selectBuilder(int index) {
+        if (index < builder.getItemCount()) builder.setSelectedIndex(index);
+    }
+
+    private void apply() {
+        if (updating) return;
+        BuilderSettings s = new BuilderSettings((String) builder.getSelectedItem(),
+                ((Number) kt.getValue()).doubleValue(), ((Number) ki.getValue()).doubleValue(),
+                ((Number) lambda.getValue()).doubleValue(), ((Number) minPrims.getValue()).intValue(),
+                ((Number) maxDepth.getValue()).intValue());
+        show(s);
+        model.setSettings(s);
+    }
+
+    private void show(BuilderSettings s) {
+        updating = true;
+        try {
+            builder.setSelectedItem(s.builder());
+            lambdaSlider.setValue((int) Math.round(s.lambda() * 100));
+            boolean sah = s.builder().equals("sah");
+            boolean median = s.builder().equals("median-plane") || s.builder().equals("object-median");
+            lambda.setEnabled(sah);
+            lambdaSlider.setEnabled(sah);
+            minPrims.setEnabled(median);
+        } finally {
+            updating = false;
+        }
+    }
+
+    private static JSpinner spinner(SpinnerNumberModel m) {
+        JSpinner s = new JSpinner(m);
+        ((JSpinner.DefaultEditor) s.getEditor()).getTextField().setColumns(5);
+        return s;
+    }
+
+    private static void name(JComponent c, String name, String tip) {
+        c.setName(name);
+        c.setToolTipText(tip);
+        if (c instanceof JSpinner s) {
+            ((JSpinner.DefaultEditor) s.getEditor()).getTextField().setToolTipText(tip);
+            ((JSpinner.DefaultEditor) s.getEditor()).getTextField().setName(name + ".text");
+        }
+    }
+
+    private void row(int y, String label, JComponent c) {
+        GridBagConstraints g = new GridBagConstraints();
+        g.gridy = y;
+        g.insets = new Insets(2, 4, 2, 4);
+        g.anchor = GridBagConstraints.WEST;
+        JLabel l = new JLabel(label);
+        l.setLabelFor(c);
+        l.setToolTipText(c.getToolTipText());
+        add(l, g);
+        g.gridx = 1;
+        g.fill = GridBagConstraints.HORIZONTAL;
+        g.weightx = 1;
+        add(c, g);
+    }
+}

@@ -1,0 +1,43 @@
+package org.kdtree.gui;
+
+import org.kdtree.build.Builders;
+import org.kdtree.build.KdTreeBuilder;
+import org.kdtree.build.MedianPlaneBuilder;
+import org.kdtree.build.ObjectMedianBuilder;
+import org.kdtree.build.SahBuilder;
+import org.kdtree.tree.CostModel;
+
+/**
+ * What the workbench's builder controls say: which builder, and the talk's constants Kt, Ki,
+ * lambda (empty-voxel weight), Kmintri and Kmaxdepth. Each builder takes the settings that
+ * apply to it and ignores the others.
+ *
+ * @param builder  a name known to {@link Builders}
+ * @param kt       traversal cost Kt
+ * @param ki       intersection cost Ki
+ * @param lambda   SAH weight of a plane that leaves one side empty, in (0, 1]
+ * @param minPrims Kmintri of the median builders
+ * @param maxDepth Kmaxdepth, or -1 for the default {@code 8 + 1.3 log2 N}
+ */
+public record BuilderSettings(String builder, double kt, double ki, double lambda, int minPrims, int maxDepth) {
+    /** SAH with Wald and Havran's constants. */
+    public static final BuilderSettings DEFAULT = new BuilderSettings("sah", 15, 20, 0.8, 2, -1);
+
+    public BuilderSettings withBuilder(String name) { return new BuilderSettings(name, kt, ki, lambda, minPrims, maxDepth); }
+    public BuilderSettings withKt(double v) { return new BuilderSettings(builder, v, ki, lambda, minPrims, maxDepth); }
+    public BuilderSettings withKi(double v) { return new BuilderSettings(builder, kt, v, lambda, minPrims, maxDepth); }
+    public BuilderSettings withLambda(double v) { return new BuilderSettings(builder, kt, ki, v, minPrims, maxDepth); }
+    public BuilderSettings withMinPrims(int v) { return new BuilderSettings(builder, kt, ki, lambda, v, maxDepth); }
+    public BuilderSettings withMaxDepth(int v) { return new BuilderSettings(builder, kt, ki, lambda, minPrims, v); }
+
+    /** A new builder configured with these settings. */
+    public KdTreeBuilder create() {
+        KdTreeBuilder b = Builders.create(builder);
+        b.costModel(new CostModel(kt, ki));
+        b.maxDepth(maxDepth);
+        if (b instanceof SahBuilder sah) sah.emptyWeight(lambda);
+        if (b instanceof MedianPlaneBuilder m) m.minPrimitives(minPrims);
+        if (b instanceof ObjectMedianBuilder o) o.minPrimitives(minPrims);
+        return b;
+    }
+}

@@ -1,0 +1,8 @@
+package org.kdtree.gui;
+
+import java.awt.Graphics2D;
+
+/** Something drawn over the scene and tree, such as the ray and the traversal's current step. */
+public interface CanvasOverlay {
+    void paint(Graphics2D g, ViewTransform view);
+}

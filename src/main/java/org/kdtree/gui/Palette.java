@@ -1,0 +1,27 @@
+package org.kdtree.gui;
+
+import java.awt.Color;
+
+/** The colours of the 2-D canvas, shared by the painter and the tests that read its pixels back. */
+public final class Palette {
+    private Palette() {
+    }
+
+    public static final Color BACKGROUND = Color.WHITE;
+    /** Fill of empty leaves: the talk's figures shade the voxels that hold nothing. */
+    public static final Color EMPTY_VOXEL = new Color(0xD8, 0xE4, 0xD0);
+    public static final Color SPLIT_LINE = new Color(0x20, 0x20, 0x20);
+    public static final Color ROOT_BOX = new Color(0x60, 0x60, 0x60);
+    public static final Color OBJECT = new Color(0x2B, 0x5C, 0xB8);
+    public static final Color OBJECT_FILL = new Color(0x9C, 0xB8, 0xE8);
+    public static final Color HIGHLIGHT_VOXEL = new Color(0xFF, 0xF2, 0xA8);
+    public static final Color HIGHLIGHT_OBJECT = new Color(0xE0, 0x6A, 0x00);
+    public static final Color SELECTED_SHAPE = new Color(0xC0, 0x00, 0xC0);
+    public static final Color RAY = new Color(0xD0, 0x10, 0x10);
+    public static final Color CURRENT_NODE = new Color(0xFF, 0xB0, 0x40);
+    public static final Color NEAR_CHILD = new Color(0x40, 0xB0, 0x40);
+    public static final Color FAR_CHILD = new Color(0x40, 0x80, 0xE0);
+    public static final Color STACKED = new Color(0xA0, 0x60, 0xE0);
+    public static final Color TESTED = new Color(0xE0, 0x30, 0x30);
+    public static final Color HIT = new Color(0x00, 0x00, 0x00);
+}

@@ -1,0 +1,16 @@
+package org.kdtree.gui;
+
+import java.awt.image.BufferedImage;
+import java.io.IOException;
+import java.nio.file.Path;
+import javax.imageio.ImageIO;
+
+/** Writes a canvas snapshot as a PNG file. */
+public final class PngExport {
+    private PngExport() {
+    }
+
+    public static void write(BufferedImage image, Path file) throws IOException {
+        if (!ImageIO.write(image, "png", file.toFile())) throw new IOException("no PNG writer available");
+    }
+}

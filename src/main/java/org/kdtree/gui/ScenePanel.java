@@ -1,0 +1,73 @@
+package org.kdtree.gui;
+
+import java.awt.FlowLayout;
+import java.awt.GridLayout;
+import java.util.List;
+import java.util.Map;
+import java.util.function.IntFunction;
+import java.util.function.Supplier;
+import javax.swing.BorderFactory;
+import javax.swing.JButton;
+import javax.swing.JComboBox;
+import javax.swing.JPanel;
+import javax.swing.JSpinner;
+import javax.swing.SpinnerNumberModel;
+import org.kdtree.shape.Shape2D;
+
+/** Picks a built-in scene, or generates a random one with a given count. */
+public final class ScenePanel extends JPanel {
+    private final Map<String, Supplier<List<Shape2D>>> builtins = BuiltinScenes.all();
+    private final Map<String, IntFunction<List<Shape2D>>> generators = BuiltinScenes.generators();
+    private final JComboBox<String> scene = new JComboBox<>(builtins.keySet().toArray(String[]::new));
+    private final JComboBox<String> generator = new JComboBox<>(generators.keySet().toArray(String[]::new));
+    private final JSpinner count = new JSpinner(new SpinnerNumberModel(500, 1, 200_000, 100));
+    private final JButton generate = new JButton("Generate");
+    private final Runnable onLoaded;
+    private final WorkbenchModel model;
+
+    /** {@code onLoaded} runs after a new scene replaced the old one (the workbench refits the view). */
+    public ScenePanel(WorkbenchModel model, Runnable onLoaded) {
+        super(new GridLayout(0, 1, 2, 2));
+        this.model = model;
+        this.onLoaded = onLoaded;
+        setBorder(BorderFactory.createTitledBorder("Scene"));
+        scene.setName("scene");
+        scene.setToolTipText("Built-in scenes (Ctrl+1 .. Ctrl+5)");
+        generator.setName("generator");
+        generator.setToolTipText("Random scene generator");
+        count.setName("count");
+        count.setToolTipText("Number of objects the generator makes");
+        generate.setName("generate");
+        generate.setToolTipText("Replace the scene by a random one (Ctrl+G)");
+        generate.setMnemonic('G');
+        add(scene);
+        JPanel row = new JPanel(new FlowLayout(FlowLayout.LEFT, 2, 0));
+        row.add(generator);
+        row.add(count);
+        row.add(generate);
+        add(row);
+        scene.addActionListener(e -> loadBuiltin((String) scene.getSelectedItem()));
+        generate.addActionListener(e -> generate());
+    }
+
+    /** Loads built-in scene number {@code index} (0-based). */
+    public void selectBuiltin(int index) {
+        if (index < scene.getItemCount()) {
+            if (scene.getSelectedIndex() == index) loadBuiltin((String) scene.getSelectedItem());
+            else scene.setSelectedIndex(index);
+        }
+    }
+
+    public void loadBuiltin(String name) {
+        model.setScene(name, builtins.get(name).get());
+        onLoaded.run();
+    }
+
+    /** Replaces the scene by the chosen generator's output for the chosen count. */
+    public void generate() {
+        String g = (String) generator.getSelectedItem();
+        int n = ((Number) count.getValue()).intValue();
+        model.setScene(g + " (" + n + ")", generators.get(g).apply(n));
+        onLoaded.run();
+    }
+}

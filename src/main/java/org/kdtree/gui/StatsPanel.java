@@ -1,0 +1,65 @@
+package org.kdtree.gui;
+
+import java.awt.GridLayout;
+import java.util.LinkedHashMap;
+import java.util.Locale;
+import java.util.Map;
+import javax.swing.BorderFactory;
+import javax.swing.JLabel;
+import javax.swing.JPanel;
+import org.kdtree.tree.KdTree;
+import org.kdtree.tree.TreeStats;
+
+/** The statistics of the current tree: build time, nodes, leaves, empty leaves, depth, refs per leaf, SAH cost. */
+public final class StatsPanel extends JPanel {
+    private final Map<String, JLabel> values = new LinkedHashMap<>();
+
+    public StatsPanel(WorkbenchModel model) {
+        super(new GridLayout(0, 2, 8, 1));
+        setBorder(BorderFactory.createTitledBorder("Statistics"));
+        add("objects", "Objects in the scene");
+        add("build time", "Wall-clock time of the last build (includes JIT warm-up at first)");
+        add("nodes", "Interior nodes plus leaves");
+        add("leaves", "Leaves");
+        add("empty leaves", "Leaves with no object: the shaded voxels");
+        add("depth", "Depth of the deepest leaf (the root has depth 0)");
+        add("refs / leaf", "Object references per non-empty leaf");
+        add("SAH cost", "Expected cost of a random ray: Kt per node visited plus Ki per object tested");
+        model.addListener(c -> {
+            if (c == WorkbenchModel.Change.TREE) show(model);
+        });
+        show(model);
+    }
+
+    private void add(String name, String tip) {
+        JLabel k = new JLabel(name + ":"), v = new JLabel("-");
+        k.setToolTipText(tip);
+        v.setToolTipText(tip);
+        v.setName("stat." + name);
+        values.put(name, v);
+        add(k);
+        add(v);
+    }
+
+    /** The text shown for statistic {@code name} (for tests). */
+    public String value(String name) {
+        return values.get(name).getText();
+    }
+
+    private void show(WorkbenchModel m) {
+        KdTree t = m.tree();
+        TreeStats s = t.stats();
+        set("objects", Integer.toString(m.scene().size()));
+        set("build time", String.format(Locale.ROOT, "%.2f ms", m.buildMillis()));
+        set("nodes", Integer.toString(s.nodes()));
+        set("leaves", Integer.toString(s.leaves()));
+        set("empty leaves", Integer.toString(s.emptyLeaves()));
+        set("depth", Integer.toString(s.maxDepth()));
+        set("refs / leaf", String.format(Locale.ROOT, "%.2f", s.averageRefsPerLeaf()));
+        set("SAH cost", String.format(Locale.ROOT, "%.2f", s.expectedCost()));
+    }
+
+    private void set(String name, String text) {
+        values.get(name).setText(text);
+    }
+}

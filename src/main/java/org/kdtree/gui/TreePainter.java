@@ -1,0 +1,185 @@
+package org.kdtree.gui;
+
+import java.awt.BasicStroke;
+import java.awt.Color;
+import java.awt.Graphics2D;
+import java.awt.RenderingHints;
+import java.awt.Shape;
+import java.awt.geom.Ellipse2D;
+import java.awt.geom.Line2D;
+import java.awt.geom.Path2D;
+import java.awt.geom.Rectangle2D;
+import java.util.BitSet;
+import org.kdtree.geom.Box;
+import org.kdtree.shape.Shape2D;
+import org.kdtree.shape.Shapes2D;
+import org.kdtree.tree.KdTree;
+import org.kdtree.tree.TreeVisitor;
+
+/**
+ * Draws a 2-D scene and its kd-tree the way the talk's figures 2-5 do: empty voxels shaded,
+ * the objects, and each split line clipped to the voxel it cuts, thicker nearer the root.
+ * Pure drawing into any {@link Graphics2D}, so that tests can paint into an image.
+ */
+public final class TreePainter {
+    private TreePainter() {
+    }
+
+    /** What to draw besides scene and tree. */
+    public record Options(int selectedNode, int selectedShape, boolean antialias) {
+        public static final Options PLAIN = new Options(-1, -1, true);
+    }
+
+    /** Pixel width of a split line at {@code depth}: 5 at the root, down to 1. */
+    public static float lineWidth(int depth) {
+        return Math.max(1f, 5f - depth);
+    }
+
+    /** Paints the background, empty voxels, selection, objects and split lines into {@code g}. */
+    public static void paint(Graphics2D g, int width, int height, Shapes2D scene, KdTree tree, ViewTransform v,
+                             Options o) {
+        g.setRenderingHint(RenderingHints.KEY_ANTIALIASING,
+                o.antialias() ? RenderingHints.VALUE_ANTIALIAS_ON : RenderingHints.VALUE_ANTIALIAS_OFF);
+        g.setColor(Palette.BACKGROUND);
+        g.fillRect(0, 0, width, height);
+        BitSet highlighted = new BitSet();
+        Box selectedVoxel = paintVoxels(g, tree, v, o.selectedNode(), highlighted);
+        paintObjects(g, scene, v, highlighted, o.selectedShape());
+        paintSplits(g, tree, v);
+        Box root = tree.bounds();
+        if (!root.isEmpty()) {
+            g.setColor(Palette.ROOT_BOX);
+            g.setStroke(new BasicStroke(lineWidth(0)));
+            g.draw(rect(v, root));
+        }
+        if (selectedVoxel != null) {
+            g.setColor(Palette.HIGHLIGHT_OBJECT);
+            g.setStroke(new BasicStroke(2f, BasicStroke.CAP_BUTT, BasicStroke.JOIN_MITER, 10, new float[] {6, 4}, 0));
+            g.draw(rect(v, selectedVoxel));
+        }
+    }
+
+    /** Shades empty leaves and the selected node; returns the selected node's voxel (or null). */
+    private static Box paintVoxels(Graphics2D g, KdTree tree, ViewTransform v, int selected, BitSet highlighted) {
+        Box[] found = new Box[1];
+        tree.walk(new TreeVisitor() {
+            @Override public void interior(int node, int depth, Box voxel, int axis, double split) {
+                if (node == selected) found[0] = voxel.copy();
+            }
+
+            @Override public void leaf(int node, int depth, Box voxel, int[] refs, int from, int to) {
+                if (node == selected) {
+                    found[0] = voxel.copy();
+                    g.setColor(Palette.HIGHLIGHT_VOXEL);
+                    g.fill(rect(v, voxel));
+                    for (int i = from; i < to; i++) highlighted.set(refs[i]);
+                } else if (from == to) {
+                    g.setColor(Palette.EMPTY_VOXEL);
+                    g.fill(rect(v, voxel));
+                }
+            }
+        });
+        if (found[0] != null && !tree.isLeaf(selected)) markAll(tree, selected, highlighted);
+        return found[0];
+    }
+
+    private static void markAll(KdTree tree, int node, BitSet out) {
+        if (tree.isLeaf(node)) {
+            for (int i = tree.leafStart(node); i < tree.leafEnd(node); i++) out.set(tree.ref(i));
+            return;
+        }
+        markAll(tree, tree.leftChild(node), out);
+        markAll(tree, tree.rightChild(node), out);
+    }
+
+    private static void paintObjects(Graphics2D g, Shapes2D scene, ViewTransform v, BitSet highlighted, int selected) {
+        BasicStroke thin = new BasicStroke(1.5f), thick = new BasicStroke(3f);
+        for (int i = 0; i < scene.size(); i++) {
+            boolean hi = highlighted.get(i);
+            paintShape(g, scene.get(i), v, hi ? Palette.HIGHLIGHT_OBJECT : Palette.OBJECT,
+                    hi ? Palette.HIGHLIGHT_OBJECT.brighter() : Palette.OBJECT_FILL, thin);
+        }
+        if (selected >= 0 && selected < scene.size())
+            paintShape(g, scene.get(selected), v, Palette.SELECTED_SHAPE, null, thick);
+    }
+
+    /** Draws one shape: filled if {@code fill} is not null, then outlined. */
+    public static void paintShape(Graphics2D g, Shape2D s, ViewTransform v, Color line, Color fill, BasicStroke stroke) {
+        Shape shape = outline(s, v);
+        boolean area = s instanceof Shape2D.Rect || s instanceof Shape2D.Triangle || s instanceof Shape2D.Point;
+        if (area && fill != null) {
+            g.setColor(s instanceof Shape2D.Point ? line : fill);
+            g.fill(shape);
+        }
+        g.setColor(line);
+        g.setStroke(stroke);
+        g.draw(shape);
+    }
+
+    /** The screen outline of a shape (a point is a small disc). */
+    public static Shape outline(Shape2D s, ViewTransform v) {
+        double[] c = s.coords();
+        if (s instanceof Shape2D.Point) {
+            double r = 3.5;
+            return new Ellipse2D.Double(v.screenX(c[0]) - r, v.screenY(c[1]) - r, 2 * r, 2 * r);
+        }
+        if (s instanceof Shape2D.Segment)
+            return new Line2D.Double(v.screenX(c[0]), v.screenY(c[1]), v.screenX(c[2]), v.screenY(c[3]));
+        if (s instanceof Shape2D.Rect) {
+            double x0 = v.screenX(c[0]), x1 = v.screenX(c[2]), y0 = v.screenY(c[3]), y1 = v.screenY(c[1]);
+            return new Rectangle2D.Double(x0, y0, Math.max(x1 - x0, 1), Math.max(y1 - y0, 1));
+        }
+        Path2D.Double p = new Path2D.Double();
+        p.moveTo(v.screenX(c[0]), v.screenY(c[1]));
+        p.lineTo(v.screenX(c[2]), v.screenY(c[3]));
+        p.lineTo(v.screenX(c[4]), v.screenY(c[5]));
+        p.closePath();
+        return p;
+    }
+
+    private static void paintSplits(Graphics2D g, KdTree tree, ViewTransform v) {
+        g.setColor(Palette.SPLIT_LINE);
+        tree.walk(new TreeVisitor() {
+            @Override public void interior(int node, int depth, Box voxel, int axis, double split) {
+                g.setStroke(new BasicStroke(lineWidth(depth), BasicStroke.CAP_BUTT, BasicStroke.JOIN_MITER));
+                if (axis == 0)
+                    g.draw(new Line2D.Double(v.screenX(split), v.screenY(voxel.min(1)), v.screenX(split), v.screenY(voxel.max(1))));
+                else
+                    g.draw(new Line2D.Double(v.screenX(voxel.min(0)), v.screenY(split), v.screenX(voxel.max(0)), v.screenY(split)));
+            }
+
+            @Override public void leaf(int node, int depth, Box voxel, int[] refs, int from, int to) {
+            }
+        });
+    }
+
+    /** The screen rectangle of a voxel. */
+    public static Rectangle2D rect(ViewTransform v, Box b) {
+        double x0 = v.screenX(b.min(0)), x1 = v.screenX(b.max(0)), y0 = v.screenY(b.max(1)), y1 = v.screenY(b.min(1));
+        return new Rectangle2D.Double(x0, y0, x1 - x0, y1 - y0);
+    }
+
+    /** The leaf whose voxel holds the scene point (x, y), or -1 outside the root voxel. */
+    public static int leafAt(KdTree tree, double x, double y) {
+        Box b = tree.bounds();
+        if (b.isEmpty() || x < b.min(0) || x > b.max(0) || y < b.min(1) || y > b.max(1)) return -1;
+        int node = 0;
+        while (!tree.isLeaf(node)) node = (tree.axis(node) == 0 ? x : y) < tree.split(node) ? tree.leftChild(node) : tree.rightChild(node);
+        return node;
+    }
+
+    /** The voxel of {@code node} (a new box), or null if there is no such node. */
+    public static Box voxelOf(KdTree tree, int node) {
+        Box[] out = new Box[1];
+        tree.walk(new TreeVisitor() {
+            @Override public void interior(int n, int depth, Box voxel, int axis, double split) {
+                if (n == node) out[0] = voxel.copy();
+            }
+
+            @Override public void leaf(int n, int depth, Box voxel, int[] refs, int from, int to) {
+                if (n == node) out[0] = voxel.copy();
+            }
+        });
+        return out[0];
+    }
+}

@@ -1,0 +1,55 @@
+package org.kdtree.gui;
+
+import java.awt.geom.Point2D;
+import org.kdtree.geom.Box;
+
+/**
+ * Maps scene coordinates (y up) to screen pixels (y down): a uniform scale and an offset.
+ * Zoom keeps the point under the mouse fixed; pan moves by pixels.
+ */
+public final class ViewTransform {
+    private double scale = 1, offsetX, offsetY;
+
+    /** Fits {@code box}, with a margin, into a {@code width x height} pixel area. */
+    public ViewTransform fit(Box box, int width, int height) {
+        double w = Math.max(box.max(0) - box.min(0), 1e-9), h = Math.max(box.max(1) - box.min(1), 1e-9);
+        if (box.isEmpty()) { w = h = 1; }
+        int margin = 24;
+        scale = Math.min((width - 2.0 * margin) / w, (height - 2.0 * margin) / h);
+        if (!(scale > 0) || !Double.isFinite(scale)) scale = 1;
+        double cx = box.isEmpty() ? 0 : 0.5 * (box.min(0) + box.max(0));
+        double cy = box.isEmpty() ? 0 : 0.5 * (box.min(1) + box.max(1));
+        offsetX = width / 2.0 - cx * scale;
+        offsetY = height / 2.0 + cy * scale;
+        return this;
+    }
+
+    public double scale() { return scale; }
+
+    public double screenX(double x) { return offsetX + x * scale; }
+    public double screenY(double y) { return offsetY - y * scale; }
+    public double worldX(double px) { return (px - offsetX) / scale; }
+    public double worldY(double py) { return (offsetY - py) / scale; }
+
+    public Point2D.Double toWorld(double px, double py) { return new Point2D.Double(worldX(px), worldY(py)); }
+
+    /** Zooms by {@code factor} around the pixel (px, py). */
+    public void zoomAt(double px, double py, double factor) {
+        double wx = worldX(px), wy = worldY(py);
+        scale *= factor;
+        offsetX = px - wx * scale;
+        offsetY = py + wy * scale;
+    }
+
+    /** Moves the view by (dx, dy) pixels. */
+    public void pan(double dx, double dy) {
+        offsetX += dx;
+        offsetY += dy;
+    }
+
+    public ViewTransform copy() {
+        ViewTransform t = new ViewTransform();
+        t.scale = scale; t.offsetX = offsetX; t.offsetY = offsetY;
+        return t;
+    }
+}

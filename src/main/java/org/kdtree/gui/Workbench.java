@@ -1,0 +1,223 @@
+package org.kdtree.gui;
+
+import java.awt.BorderLayout;
+import java.awt.Dimension;
+import java.awt.event.ActionEvent;
+import java.awt.event.InputEvent;
+import java.awt.event.KeyEvent;
+import java.io.IOException;
+import java.nio.file.Path;
+import javax.swing.AbstractAction;
+import javax.swing.Action;
+import javax.swing.BorderFactory;
+import javax.swing.BoxLayout;
+import javax.swing.ButtonGroup;
+import javax.swing.JComponent;
+import javax.swing.JFileChooser;
+import javax.swing.JFrame;
+import javax.swing.JMenu;
+import javax.swing.JMenuBar;
+import javax.swing.JOptionPane;
+import javax.swing.JPanel;
+import javax.swing.JSplitPane;
+import javax.swing.JTabbedPane;
+import javax.swing.JToggleButton;
+import javax.swing.JToolBar;
+import javax.swing.KeyStroke;
+import javax.swing.SwingUtilities;
+import javax.swing.filechooser.FileNameExtensionFilter;
+import org.kdtree.build.Builders;
+import org.kdtree.io.Scene2DFormat;
+import org.kdtree.shape.Shapes2D;
+
+/**
+ * The workbench window: the 2-D build canvas with its builder controls, statistics, tree view
+ * and traversal stepper; the builder comparison; the 3-D view. {@link #open} shows it.
+ */
+public final class Workbench extends JFrame {
+    private final WorkbenchModel model = new WorkbenchModel();
+    private final TreeCanvas canvas = new TreeCanvas(model);
+    private final BuilderPanel builderPanel = new BuilderPanel(model);
+    private final StatsPanel statsPanel = new StatsPanel(model);
+    private final ScenePanel scenePanel = new ScenePanel(model, this::sceneLoaded);
+    private final TreeNodeView treeView = new TreeNodeView(model);
+    private final JTabbedPane tabs = new JTabbedPane();
+    private final ButtonGroup toolGroup = new ButtonGroup();
+    private final JToolBar toolBar = new JToolBar("Tools", JToolBar.VERTICAL);
+    private final JMenu toolsMenu = new JMenu("Tools");
+
+    /** Builds the window on the built-in talk-figures scene (call on the event thread). */
+    public Workbench() {
+        super("kdtree workbench");
+        setDefaultCloseOperation(DISPOSE_ON_CLOSE);
+        scenePanel.selectBuiltin(0);
+        tabs.setName("tabs");
+        tabs.addTab("2-D build", buildTab());
+        tabs.setMnemonicAt(0, KeyEvent.VK_B);
+        tabs.setToolTipTextAt(0, "Watch a 2-D build and step through a traversal (Alt+B)");
+        setContentPane(tabs);
+        setJMenuBar(menus());
+        setPreferredSize(new Dimension(1280, 860));
+        pack();
+        setLocationRelativeTo(null);
+    }
+
+    /** Opens the workbench on the event thread and returns at once. */
+    public static void open() {
+        SwingUtilities.invokeLater(() -> new Workbench().setVisible(true));
+    }
+
+    public WorkbenchModel model() { return model; }
+    public TreeCanvas canvas() { return canvas; }
+    public StatsPanel stats() { return statsPanel; }
+    public JTabbedPane tabs() { return tabs; }
+
+    private JComponent buildTab() {
+        JPanel side = new JPanel();
+        side.setLayout(new BoxLayout(side, BoxLayout.Y_AXIS));
+        side.add(scenePanel);
+        side.add(builderPanel);
+        side.add(statsPanel);
+        treeView.setBorder(BorderFactory.createTitledBorder("Tree"));
+        treeView.setPreferredSize(new Dimension(320, 220));
+        side.add(treeView);
+        for (EditTool t : EditTool.values()) addTool(t, KeyStroke.getKeyStroke(KeyEvent.VK_F2 + t.ordinal(), 0));
+        JPanel centre = new JPanel(new BorderLayout());
+        centre.add(toolBar, BorderLayout.WEST);
+        centre.add(canvas, BorderLayout.CENTER);
+        JSplitPane split = new JSplitPane(JSplitPane.HORIZONTAL_SPLIT, centre, side);
+        split.setResizeWeight(1);
+        JPanel tab = new JPanel(new BorderLayout());
+        tab.add(split, BorderLayout.CENTER);
+        return tab;
+    }
+
+    private void addTool(EditTool t, KeyStroke key) {
+        Action a = action(t.label(), key, t.help() + " (" + KeyEvent.getKeyText(key.getKeyCode()) + ")", () -> {
+            canvas.setTool(t);
+            for (java.util.Enumeration<javax.swing.AbstractButton> e = toolGroup.getElements(); e.hasMoreElements(); ) {
+                javax.swing.AbstractButton b = e.nextElement();
+                b.setSelected(b.getName().equals("tool." + t.name()));
+            }
+        });
+        JToggleButton b = new JToggleButton(a);
+        b.setName("tool." + t.name());
+        b.setSelected(t == EditTool.SELECT);
+        b.setFocusable(false);
+        toolGroup.add(b);
+        toolBar.add(b);
+        toolsMenu.add(a);
+    }
+
+    private JMenuBar menus() {
+        JMenuBar bar = new JMenuBar();
+        JMenu file = new JMenu("File");
+        file.setMnemonic('F');
+        file.add(action("Open scene...", ctrl(KeyEvent.VK_O), "Open a .scene2d file", this::openScene));
+        file.add(action("Save scene...", ctrl(KeyEvent.VK_S), "Save the scene as a .scene2d file", this::saveScene));
+        file.add(action("Export canvas as PNG...", ctrl(KeyEvent.VK_E), "Save the canvas as a PNG image", this::exportPng));
+        file.addSeparator();
+        file.add(action("Quit", ctrl(KeyEvent.VK_Q), "Close the workbench", this::dispose));
+        bar.add(file);
+
+        JMenu scene = new JMenu("Scene");
+        scene.setMnemonic('S');
+        int i = 0;
+        for (String name : BuiltinScenes.all().keySet()) {
+            int index = i++;
+            scene.add(action(name, ctrl(KeyEvent.VK_1 + index), "Load the built-in scene '" + name + "'",
+                    () -> scenePanel.selectBuiltin(index)));
+        }
+        scene.addSeparator();
+        scene.add(action("Generate random scene", ctrl(KeyEvent.VK_G), "Replace the scene by a random one", scenePanel::generate));
+        scene.add(action("Delete selected object", KeyStroke.getKeyStroke(KeyEvent.VK_DELETE, 0), "Remove the selected object",
+                () -> { if (model.selectedShape() >= 0) model.removeShape(model.selectedShape()); }));
+        bar.add(scene);
+
+        JMenu builders = new JMenu("Builder");
+        builders.setMnemonic('U');
+        i = 0;
+        for (String name : Builders.names()) {
+            int index = i++;
+            builders.add(action(name, KeyStroke.getKeyStroke(KeyEvent.VK_1 + index, InputEvent.ALT_DOWN_MASK),
+                    "Build with " + name, () -> builderPanel.selectBuilder(index)));
+        }
+        bar.add(builders);
+
+        toolsMenu.setMnemonic('T');
+        bar.add(toolsMenu);
+
+        JMenu view = new JMenu("View");
+        view.setMnemonic('V');
+        view.add(action("Fit scene", ctrl(KeyEvent.VK_0), "Fit the whole scene in the canvas", canvas::fit));
+        view.add(action("Zoom in", ctrl(KeyEvent.VK_EQUALS), "Zoom in (or the mouse wheel)", () -> canvas.zoom(1.25)));
+        view.add(action("Zoom out", ctrl(KeyEvent.VK_MINUS), "Zoom out (or the mouse wheel)", () -> canvas.zoom(0.8)));
+        bar.add(view);
+        return bar;
+    }
+
+    /** An action with a name, a shortcut and a tooltip that names the shortcut. */
+    static Action action(String name, KeyStroke key, String tip, Runnable r) {
+        AbstractAction a = new AbstractAction(name) {
+            @Override public void actionPerformed(ActionEvent e) { r.run(); }
+        };
+        a.putValue(Action.ACCELERATOR_KEY, key);
+        a.putValue(Action.SHORT_DESCRIPTION, tip);
+        return a;
+    }
+
+    static KeyStroke ctrl(int key) {
+        return KeyStroke.getKeyStroke(key, InputEvent.CTRL_DOWN_MASK);
+    }
+
+    private void sceneLoaded() {
+        canvas.fit();
+    }
+
+    private JFileChooser chooser(String ext, String what) {
+        JFileChooser c = new JFileChooser(Path.of("scenes").toAbsolutePath().toFile());
+        c.setFileFilter(new FileNameExtensionFilter(what, ext));
+        return c;
+    }
+
+    private void openScene() {
+        JFileChooser c = chooser("scene2d", "2-D scenes (.scene2d)");
+        if (c.showOpenDialog(this) != JFileChooser.APPROVE_OPTION) return;
+        try {
+            Shapes2D s = Scene2DFormat.read(c.getSelectedFile().toPath());
+            model.setScene(c.getSelectedFile().getName(), s.shapes());
+            canvas.fit();
+        } catch (IOException | RuntimeException e) {
+            error("Cannot open the scene", e);
+        }
+    }
+
+    private void saveScene() {
+        JFileChooser c = chooser("scene2d", "2-D scenes (.scene2d)");
+        if (c.showSaveDialog(this) != JFileChooser.APPROVE_OPTION) return;
+        Path p = withExtension(c.getSelectedFile().toPath(), ".scene2d");
+        try {
+            Scene2DFormat.write(model.scene(), p);
+        } catch (IOException e) {
+            error("Cannot save the scene", e);
+        }
+    }
+
+    private void exportPng() {
+        JFileChooser c = chooser("png", "PNG images");
+        if (c.showSaveDialog(this) != JFileChooser.APPROVE_OPTION) return;
+        try {
+            PngExport.write(canvas.snapshot(), withExtension(c.getSelectedFile().toPath(), ".png"));
+        } catch (IOException e) {
+            error("Cannot export the image", e);
+        }
+    }
+
+    private static Path withExtension(Path p, String ext) {
+        return p.getFileName().toString().endsWith(ext) ? p : p.resolveSibling(p.getFileName() + ext);
+    }
+
+    private void error(String what, Exception e) {
+        JOptionPane.showMessageDialog(this, what + ":\n" + e.getMessage(), "kdtree", JOptionPane.ERROR_MESSAGE);
+    }
+}
