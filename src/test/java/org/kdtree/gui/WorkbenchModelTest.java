@@ -1,0 +1,55 @@
+package org.kdtree.gui;
+
+import static org.assertj.core.api.Assertions.assertThat;
+
+import java.util.ArrayList;
+import java.util.List;
+import javax.swing.tree.TreePath;
+import org.junit.jupiter.api.Test;
+import org.kdtree.shape.Shape2D;
+
+class WorkbenchModelTest {
+    @Test void everyChangeRebuildsTheTree() {
+        WorkbenchModel m = new WorkbenchModel();
+        List<WorkbenchModel.Change> heard = new ArrayList<>();
+        m.addListener(heard::add);
+        m.setScene("t", BuiltinScenes.clustered(300, 3));
+        int sahNodes = m.tree().nodeCount();
+        m.setSettings(m.settings().withLambda(1.0));
+        assertThat(m.tree()).isNotNull();
+        m.setSettings(m.settings().withBuilder("median-plane").withMinPrims(1));
+        assertThat(m.tree().builderName()).isEqualTo("median-plane");
+        m.addShape(new Shape2D.Point(5, 5));
+        assertThat(m.scene().size()).isEqualTo(301);
+        assertThat(m.selectedShape()).isEqualTo(300);
+        m.removeShape(300);
+        assertThat(m.scene().size()).isEqualTo(300);
+        assertThat(heard).containsOnly(WorkbenchModel.Change.TREE).hasSize(5);
+        assertThat(sahNodes).isGreaterThan(1);
+    }
+
+    @Test void editingMovesShapesAndCorners() {
+        Shape2D r = new Shape2D.Rect(0, 0, 2, 1);
+        assertThat(ShapeEditing.translate(r, 1, 1)).isEqualTo(new Shape2D.Rect(1, 1, 3, 2));
+        int corner = ShapeEditing.vertexNear(r, 2, 1, 0.1);
+        assertThat(ShapeEditing.moveHandle(r, corner, 4, 3)).isEqualTo(new Shape2D.Rect(0, 0, 4, 3));
+        List<Shape2D> shapes = List.of(r, new Shape2D.Segment(5, 5, 6, 6));
+        assertThat(ShapeEditing.pick(shapes, 5.5, 5.5, 0.01)).isEqualTo(1);
+        assertThat(ShapeEditing.pick(shapes, 1, 0.5, 0.01)).isZero();
+        assertThat(ShapeEditing.pick(shapes, 8, 8, 0.01)).isEqualTo(-1);
+        assertThat(ShapeEditing.created(EditTool.TRIANGLE, 0, 0, 2, 0)).isInstanceOf(Shape2D.Triangle.class);
+    }
+
+    @Test void treeViewPathsFollowTheTree() {
+        WorkbenchModel m = new WorkbenchModel();
+        m.setScene("t", BuiltinScenes.uniform(100, 1));
+        var tree = m.tree();
+        KdTreeModel tm = new KdTreeModel(tree);
+        for (int n = 0; n < tree.nodeCount(); n++) {
+            TreePath p = tm.pathTo(n);
+            assertThat(((KdTreeModel.NodeRef) p.getLastPathComponent()).node()).isEqualTo(n);
+            for (int i = 1; i < p.getPathCount(); i++)
+                assertThat(tm.getIndexOfChild(p.getPathComponent(i - 1), p.getPathComponent(i))).isNotNegative();
+        }
+    }
+}
