@@ -45,10 +45,21 @@ public final class Workbench extends JFrame {
     private final ButtonGroup toolGroup = new ButtonGroup();
     private final JToolBar toolBar = new JToolBar("Tools", JToolBar.VERTICAL);
     private final JMenu toolsMenu = new JMenu("Tools");
+    private final StepperPanel stepper;
 
     /** Builds the window on the built-in talk-figures scene (call on the event thread). */
     public Workbench() {
+        this(TRACER);
+    }
+
+    /** The library's traversal, recorded for the stepper. */
+    static final StepperPanel.Tracer TRACER = (tree, scene, ray) -> TraversalTrace.EMPTY;
+
+    /** Builds the window with a given tracer (tests may pass their own). */
+    Workbench(StepperPanel.Tracer tracer) {
         super("kdtree workbench");
+        stepper = new StepperPanel(model, tracer);
+        canvas.addOverlay(stepper);
         setDefaultCloseOperation(DISPOSE_ON_CLOSE);
         scenePanel.selectBuiltin(0);
         tabs.setName("tabs");
@@ -71,6 +82,7 @@ public final class Workbench extends JFrame {
     public TreeCanvas canvas() { return canvas; }
     public StatsPanel stats() { return statsPanel; }
     public JTabbedPane tabs() { return tabs; }
+    public StepperPanel stepper() { return stepper; }
 
     private JComponent buildTab() {
         JPanel side = new JPanel();
@@ -89,6 +101,7 @@ public final class Workbench extends JFrame {
         split.setResizeWeight(1);
         JPanel tab = new JPanel(new BorderLayout());
         tab.add(split, BorderLayout.CENTER);
+        tab.add(stepper, BorderLayout.SOUTH);
         return tab;
     }
 
@@ -146,6 +159,16 @@ public final class Workbench extends JFrame {
 
         toolsMenu.setMnemonic('T');
         bar.add(toolsMenu);
+
+        JMenu trav = new JMenu("Traversal");
+        trav.setMnemonic('R');
+        trav.add(action("First step", ctrl(KeyEvent.VK_HOME), "Go to the first step", stepper::first));
+        trav.add(action("Step back", ctrl(KeyEvent.VK_LEFT), "Go one step back", stepper::back));
+        trav.add(action("Step forward", ctrl(KeyEvent.VK_RIGHT), "Go one step forward", stepper::forward));
+        trav.add(action("Last step", ctrl(KeyEvent.VK_END), "Go to the result", stepper::last));
+        trav.add(action("Play / pause", ctrl(KeyEvent.VK_P), "Play the traversal step by step", stepper::togglePlay));
+        trav.add(action("Clear ray", ctrl(KeyEvent.VK_K), "Remove the cast ray", model::clearRay));
+        bar.add(trav);
 
         JMenu view = new JMenu("View");
         view.setMnemonic('V');

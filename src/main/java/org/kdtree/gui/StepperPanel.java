@@ -1,0 +1,270 @@
+package org.kdtree.gui;
+
+import java.awt.BasicStroke;
+import java.awt.BorderLayout;
+import java.awt.Color;
+import java.awt.FlowLayout;
+import java.awt.Graphics2D;
+import java.awt.GridLayout;
+import java.awt.geom.Ellipse2D;
+import java.util.Locale;
+import java.util.stream.Collectors;
+import javax.swing.BorderFactory;
+import javax.swing.JButton;
+import javax.swing.JLabel;
+import javax.swing.JPanel;
+import javax.swing.JSlider;
+import javax.swing.Timer;
+import org.kdtree.geom.Box;
+import org.kdtree.shape.Shapes2D;
+import org.kdtree.tree.KdTree;
+
+/**
+ * The traversal stepper: replays the recorded traversal of the cast ray (see {@link
+ * TraversalTrace}) one event at a time, forward, back or playing, with Algorithm 2's state in
+ * labels and on the canvas (current voxel, [tMin, tMax] on the ray, tSplit, near and far
+ * children, stacked voxels, objects tested, the hit).
+ */
+public final class StepperPanel extends JPanel implements CanvasOverlay {
+    /** Records a ray's traversal of a tree: the library's traverser behind a listener. */
+    public interface Tracer {
+        TraversalTrace trace(KdTree tree, Shapes2D scene, double[] ray);
+    }
+
+    private final WorkbenchModel model;
+    private final Tracer tracer;
+    private final JLabel stepLabel = label("step.label", "Which event of the traversal is shown");
+    private final JLabel nodeLabel = label("step.node", "The node Algorithm 2 is at");
+    private final JLabel intervalLabel = label("step.interval", "The ray's interval in the node, and where it meets the split plane");
+    private final JLabel childrenLabel = label("step.children", "Near child (green), far child (blue), and which the ray visits");
+    private final JLabel stackLabel = label("step.stack", "Far children saved for later (purple, dashed), bottom first");
+    private final JLabel testedLabel = label("step.tested", "Objects tested in the current leaf (red); + marks a hit closer than the best so far");
+    private final JLabel resultLabel = label("step.result", "The closest hit and the ray's traversal cost");
+    private final JSlider slider = new JSlider(0, 0, 0);
+    private final Timer player = new Timer(350, e -> playStep());
+    private final JButton play;
+    private TraversalTrace trace = TraversalTrace.EMPTY;
+    private int index;
+    private Box[] voxels = new Box[0];
+    private KdTree voxelsOf;
+    private boolean updating;
+
+    public StepperPanel(WorkbenchModel model, Tracer tracer) {
+        super(new BorderLayout());
+        this.model = model;
+        this.tracer = tracer;
+        setBorder(BorderFactory.createTitledBorder("Traversal stepper (Algorithm 2) - cast a ray with the Cast ray tool (F3)"));
+        JPanel buttons = new JPanel(new FlowLayout(FlowLayout.LEFT, 2, 0));
+        buttons.add(button("|<", "step.first", "First step (Ctrl+Home)", this::first));
+        buttons.add(button("<", "step.prev", "Step back (Ctrl+Left)", this::back));
+        buttons.add(button(">", "step.next", "Step forward (Ctrl+Right)", this::forward));
+        buttons.add(button(">|", "step.last", "Last step: the result (Ctrl+End)", this::last));
+        play = button("Play", "step.play", "Play or pause the traversal (Ctrl+P)", this::togglePlay);
+        buttons.add(play);
+        slider.setName("step.slider");
+        slider.setToolTipText("Drag to any step of the traversal");
+        slider.addChangeListener(e -> {
+            if (!updating) show(slider.getValue());
+        });
+        buttons.add(slider);
+        buttons.add(stepLabel);
+        JPanel labels = new JPanel(new GridLayout(0, 2, 12, 0));
+        for (JLabel l : new JLabel[] {nodeLabel, intervalLabel, childrenLabel, stackLabel, testedLabel, resultLabel}) labels.add(l);
+        add(buttons, BorderLayout.NORTH);
+        add(labels, BorderLayout.CENTER);
+        model.addListener(c -> {
+            if (c != WorkbenchModel.Change.SELECTION) retrace();
+        });
+        retrace();
+    }
+
+    public TraversalTrace trace() { return trace; }
+    public int index() { return index; }
+
+    public void first() { show(0); }
+    public void back() { show(index - 1); }
+    public void forward() { show(index + 1); }
+    public void last() { show(trace.size() - 1); }
+
+    public void togglePlay() {
+        if (player.isRunning()) {
+            player.stop();
+        } else {
+            if (index >= trace.size() - 1) show(0);
+            player.start();
+        }
+        play.setText(player.isRunning() ? "Pause" : "Play");
+    }
+
+    private void playStep() {
+        if (index >= trace.size() - 1) togglePlay();
+        else forward();
+    }
+
+    private void retrace() {
+        KdTree tree = model.tree();
+        trace = tracer.trace(tree, model.scene(), model.ray());
+        if (voxelsOf != tree) {
+            voxels = voxelIndex(tree);
+            voxelsOf = tree;
+        }
+        updating = true;
+        slider.setMaximum(Math.max(0, trace.size() - 1));
+        updating = false;
+        show(0);
+        resultLabel.setText(resultText());
+    }
+
+    private void show(int i) {
+        index = Math.max(0, Math.min(i, trace.size() - 1));
+        updating = true;
+        slider.setValue(index);
+        updating = false;
+        if (trace.size() == 0) {
+            stepLabel.setText(model.ray() == null ? "no ray" : "no traversal");
+            for (JLabel l : new JLabel[] {nodeLabel, intervalLabel, childrenLabel, stackLabel, testedLabel}) l.setText(" ");
+        } else {
+            describe(trace.step(index));
+        }
+        repaintCanvas();
+    }
+
+    private void describe(TraversalTrace.Step s) {
+        KdTree t = model.tree();
+        stepLabel.setText(String.format(Locale.ROOT, "step %d / %d: %s", index + 1, trace.size(), kindText(s.kind())));
+        nodeLabel.setText(s.node() < 0 ? "node: -" : "node #" + s.node() + (t.isLeaf(s.node())
+                ? " (leaf, " + t.leafSize(s.node()) + " objects)"
+                : String.format(Locale.ROOT, " (%s = %.3f)", t.axis(s.node()) == 0 ? "x" : "y", t.split(s.node()))));
+        intervalLabel.setText(String.format(Locale.ROOT, "tMin = %s   tMax = %s   tSplit = %s", num(s.tMin()), num(s.tMax()), num(s.tSplit())));
+        childrenLabel.setText(s.near() < 0 ? "near / far: -" : "near #" + s.near() + ", far #" + s.far() + ": " + s.visit());
+        stackLabel.setText("stack: " + (s.stack().isEmpty() ? "empty" : s.stack().stream()
+                .map(e -> "#" + e.node() + " [" + num(e.tMin()) + ", " + num(e.tMax()) + "]").collect(Collectors.joining("  "))));
+        testedLabel.setText("tested: " + (s.tested().isEmpty() ? "-" : s.tested().stream().map(String::valueOf)
+                .collect(Collectors.joining(", "))) + (s.bestObject() >= 0 ? "   best: object " + s.bestObject() + " at t = " + num(s.bestT()) : ""));
+    }
+
+    private String resultText() {
+        if (model.ray() == null) return "result: cast a ray (drag with the Cast ray tool)";
+        String hit = trace.hitObject() >= 0 ? "hit object " + trace.hitObject() + " at t = " + num(trace.hitT()) : "no hit";
+        return String.format(Locale.ROOT, "result: %s  (%d nodes, %d leaves, %d tests)", hit, trace.nodes(), trace.leaves(), trace.tests());
+    }
+
+    private static String kindText(TraversalTrace.Kind k) {
+        return switch (k) {
+            case BEGIN -> "the ray enters the scene box";
+            case MISSED_SCENE -> "the ray misses the scene box";
+            case INTERIOR -> "interior node: compare tSplit with [tMin, tMax]";
+            case PUSH_FAR -> "push the far child, go to the near one";
+            case POP -> "pop a far child from the stack";
+            case SKIP -> "pop a far child: beyond the hit, skipped";
+            case LEAF -> "leaf: test its objects";
+            case TEST -> "test an object";
+            case MAILBOXED -> "object already tested (mailbox)";
+            case END -> "done";
+        };
+    }
+
+    private static String num(double v) {
+        if (Double.isNaN(v)) return "-";
+        if (Double.isInfinite(v)) return v > 0 ? "inf" : "-inf";
+        return String.format(Locale.ROOT, "%.3f", v);
+    }
+
+    private void repaintCanvas() {
+        java.awt.Window w = javax.swing.SwingUtilities.getWindowAncestor(this);
+        if (w != null) w.repaint();
+    }
+
+    // ---- drawing on the canvas ----
+
+    @Override public void paint(Graphics2D g, ViewTransform v) {
+        double[] ray = model.ray();
+        if (ray == null) return;
+        KdTree tree = model.tree();
+        double tEnd = rayEnd(tree.bounds(), ray);
+        g.setColor(Palette.RAY);
+        g.setStroke(new BasicStroke(1.5f));
+        g.draw(TreeCanvas.line(v, ray[0], ray[1], ray[0] + tEnd * ray[2], ray[1] + tEnd * ray[3]));
+        dot(g, v, ray[0], ray[1], Palette.RAY, 4);
+        if (trace.size() == 0 || voxelsOf != tree) return;
+        TraversalTrace.Step s = trace.step(index);
+        BasicStroke dashed = new BasicStroke(2f, BasicStroke.CAP_BUTT, BasicStroke.JOIN_MITER, 10, new float[] {6, 4}, 0);
+        for (TraversalTrace.Entry e : s.stack()) outline(g, v, e.node(), Palette.STACKED, dashed);
+        if (s.near() >= 0) {
+            tint(g, v, s.near(), Palette.NEAR_CHILD);
+            tint(g, v, s.far(), Palette.FAR_CHILD);
+        }
+        if (s.node() >= 0) outline(g, v, s.node(), Palette.CURRENT_NODE, new BasicStroke(3f));
+        if (!Double.isNaN(s.tMin()) && !Double.isNaN(s.tMax())) {
+            double a = Math.max(0, s.tMin()), b = Math.min(s.tMax(), tEnd);
+            g.setColor(Palette.CURRENT_NODE);
+            g.setStroke(new BasicStroke(5f, BasicStroke.CAP_ROUND, BasicStroke.JOIN_ROUND));
+            if (b >= a) g.draw(TreeCanvas.line(v, ray[0] + a * ray[2], ray[1] + a * ray[3], ray[0] + b * ray[2], ray[1] + b * ray[3]));
+        }
+        if (Double.isFinite(s.tSplit())) dot(g, v, ray[0] + s.tSplit() * ray[2], ray[1] + s.tSplit() * ray[3], Palette.FAR_CHILD, 5);
+        Shapes2D scene = model.scene();
+        BasicStroke thick = new BasicStroke(3f);
+        for (int obj : s.tested())
+            if (obj < scene.size()) TreePainter.paintShape(g, scene.get(obj), v, Palette.TESTED, null, thick);
+        if (s.bestObject() >= 0 && s.bestObject() < scene.size()) {
+            TreePainter.paintShape(g, scene.get(s.bestObject()), v, Palette.HIT, null, thick);
+            dot(g, v, ray[0] + s.bestT() * ray[2], ray[1] + s.bestT() * ray[3], Palette.HIT, 5);
+        }
+    }
+
+    private void tint(Graphics2D g, ViewTransform v, int node, Color c) {
+        if (node < 0 || node >= voxels.length || voxels[node] == null) return;
+        g.setColor(new Color(c.getRed(), c.getGreen(), c.getBlue(), 70));
+        g.fill(TreePainter.rect(v, voxels[node]));
+    }
+
+    private void outline(Graphics2D g, ViewTransform v, int node, Color c, BasicStroke stroke) {
+        if (node < 0 || node >= voxels.length || voxels[node] == null) return;
+        g.setColor(c);
+        g.setStroke(stroke);
+        g.draw(TreePainter.rect(v, voxels[node]));
+    }
+
+    private static void dot(Graphics2D g, ViewTransform v, double x, double y, Color c, double r) {
+        g.setColor(c);
+        g.fill(new Ellipse2D.Double(v.screenX(x) - r, v.screenY(y) - r, 2 * r, 2 * r));
+    }
+
+    /** Where to stop drawing the ray: past the scene box, or at the drag's end if farther. */
+    static double rayEnd(Box b, double[] ray) {
+        double t = 1;
+        for (int cx = 0; cx < 2; cx++)
+            for (int cy = 0; cy < 2; cy++) {
+                double px = cx == 0 ? b.min(0) : b.max(0), py = cy == 0 ? b.min(1) : b.max(1);
+                double along = ((px - ray[0]) * ray[2] + (py - ray[1]) * ray[3]) / (ray[2] * ray[2] + ray[3] * ray[3]);
+                t = Math.max(t, along * 1.05);
+            }
+        return t;
+    }
+
+    /** The voxel of every node, indexed by node. */
+    static Box[] voxelIndex(KdTree tree) {
+        Box[] out = new Box[tree.nodeCount()];
+        tree.walk(new org.kdtree.tree.TreeVisitor() {
+            @Override public void interior(int node, int depth, Box voxel, int axis, double split) { out[node] = voxel.copy(); }
+            @Override public void leaf(int node, int depth, Box voxel, int[] refs, int from, int to) { out[node] = voxel.copy(); }
+        });
+        return out;
+    }
+
+    private JButton button(String text, String name, String tip, Runnable r) {
+        JButton b = new JButton(text);
+        b.setName(name);
+        b.setToolTipText(tip);
+        b.setFocusable(false);
+        b.addActionListener(e -> r.run());
+        return b;
+    }
+
+    private static JLabel label(String name, String tip) {
+        JLabel l = new JLabel(" ");
+        l.setName(name);
+        l.setToolTipText(tip);
+        return l;
+    }
+}

@@ -1,0 +1,54 @@
+package org.kdtree.gui;
+
+import java.util.List;
+
+/**
+ * One ray's traversal, recorded event by event so that the stepper can go forward and back:
+ * each {@link Step} is the state of Algorithm 2 just after one event (current node, interval,
+ * tSplit, near and far child, the stack, the primitives tested in the current leaf, the best
+ * hit so far).
+ *
+ * @param steps      the steps, in order
+ * @param nodes      nodes visited (interior and leaves)
+ * @param leaves     leaves visited
+ * @param tests      ray/object tests performed
+ * @param hitObject  the object finally hit, or -1
+ * @param hitT       its ray parameter (NaN without a hit)
+ */
+public record TraversalTrace(List<Step> steps, long nodes, long leaves, long tests, int hitObject, double hitT) {
+    /** What happened at a step. */
+    public enum Kind { BEGIN, MISSED_SCENE, INTERIOR, PUSH_FAR, POP, SKIP, LEAF, TEST, MAILBOXED, END }
+
+    /** A node saved on the stack with its interval. */
+    public record Entry(int node, double tMin, double tMax) {
+    }
+
+    /**
+     * The state after one event.
+     *
+     * @param kind     the event
+     * @param node     the current node (-1 before the root and after the end)
+     * @param tMin     the ray's entry into the current node
+     * @param tMax     the ray's exit from it
+     * @param tSplit   where the ray meets the node's split plane (NaN unless at an interior node)
+     * @param near     the near child (-1 unless at an interior node)
+     * @param far      the far child (-1 unless at an interior node)
+     * @param visit    which children the ray visits: "near", "far", "both", "both (in plane)", or ""
+     * @param stack    the stack, bottom first
+     * @param tested   objects tested in the current leaf so far
+     * @param object   the object of a TEST or MAILBOXED step (-1 otherwise)
+     * @param hit      whether that test hit
+     * @param bestObject the closest object hit so far, or -1
+     * @param bestT    its t (NaN if none)
+     */
+    public record Step(Kind kind, int node, double tMin, double tMax, double tSplit, int near, int far, String visit,
+                       List<Entry> stack, List<Integer> tested, int object, boolean hit, int bestObject, double bestT) {
+    }
+
+    /** A trace with no steps, for when there is no ray. */
+    public static final TraversalTrace EMPTY = new TraversalTrace(List.of(), 0, 0, 0, -1, Double.NaN);
+
+    public int size() { return steps.size(); }
+
+    public Step step(int i) { return steps.get(i); }
+}
