@@ -46,6 +46,7 @@ public final class Workbench extends JFrame {
     private final JToolBar toolBar = new JToolBar("Tools", JToolBar.VERTICAL);
     private final JMenu toolsMenu = new JMenu("Tools");
     private final StepperPanel stepper;
+    private final CompareView compare;
 
     /** Builds the window on the built-in talk-figures scene (call on the event thread). */
     public Workbench() {
@@ -66,6 +67,13 @@ public final class Workbench extends JFrame {
         tabs.addTab("2-D build", buildTab());
         tabs.setMnemonicAt(0, KeyEvent.VK_B);
         tabs.setToolTipTextAt(0, "Watch a 2-D build and step through a traversal (Alt+B)");
+        compare = new CompareView(model, tracer);
+        tabs.addTab("Compare builders", compare);
+        tabs.setMnemonicAt(1, KeyEvent.VK_C);
+        tabs.setToolTipTextAt(1, "The three builders side by side on the same scene, with the ray's cost in each (Alt+C)");
+        tabs.addTab("3-D", new View3D(model, Path.of("scenes")));
+        tabs.setMnemonicAt(2, KeyEvent.VK_3);
+        tabs.setToolTipTextAt(2, "Build a 3-D scene from scenes/ and see its tree (Alt+3)");
         setContentPane(tabs);
         setJMenuBar(menus());
         setPreferredSize(new Dimension(1280, 860));
@@ -83,6 +91,7 @@ public final class Workbench extends JFrame {
     public StatsPanel stats() { return statsPanel; }
     public JTabbedPane tabs() { return tabs; }
     public StepperPanel stepper() { return stepper; }
+    public CompareView compare() { return compare; }
 
     private JComponent buildTab() {
         JPanel side = new JPanel();

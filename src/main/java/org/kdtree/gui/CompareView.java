@@ -1,0 +1,142 @@
+package org.kdtree.gui;
+
+import java.awt.BasicStroke;
+import java.awt.BorderLayout;
+import java.awt.Dimension;
+import java.awt.Graphics;
+import java.awt.Graphics2D;
+import java.awt.GridLayout;
+import java.awt.event.HierarchyEvent;
+import java.util.List;
+import java.util.Locale;
+import javax.swing.BorderFactory;
+import javax.swing.JComponent;
+import javax.swing.JLabel;
+import javax.swing.JPanel;
+import org.kdtree.shape.Shapes2D;
+import org.kdtree.tree.KdTree;
+import org.kdtree.tree.TreeStats;
+
+/**
+ * The three builders side by side on the workbench's scene, with the same Kt, Ki, lambda,
+ * Kmintri and Kmaxdepth: each tree drawn, its statistics, and the cast ray's traversal cost in it.
+ */
+public final class CompareView extends JPanel {
+    /** The builders compared, in column order. */
+    public static final List<String> BUILDERS = List.of("median-plane", "object-median", "sah");
+
+    private final WorkbenchModel model;
+    private final StepperPanel.Tracer tracer;
+    private final Column[] columns = new Column[BUILDERS.size()];
+    private boolean stale = true;
+
+    public CompareView(WorkbenchModel model, StepperPanel.Tracer tracer) {
+        super(new GridLayout(1, BUILDERS.size(), 6, 0));
+        this.model = model;
+        this.tracer = tracer;
+        for (int i = 0; i < columns.length; i++) {
+            columns[i] = new Column(BUILDERS.get(i));
+            add(columns[i]);
+        }
+        model.addListener(c -> {
+            if (c != WorkbenchModel.Change.SELECTION) {
+                stale = true;
+                if (isShowing()) refresh();
+            }
+        });
+        addHierarchyListener(e -> {
+            if ((e.getChangeFlags() & HierarchyEvent.SHOWING_CHANGED) != 0 && isShowing() && stale) refresh();
+        });
+    }
+
+    /** Rebuilds the three trees and retraces the ray (done lazily, when the view is visible). */
+    public void refresh() {
+        stale = false;
+        Shapes2D scene = model.scene();
+        double[] ray = model.ray();
+        for (Column c : columns) c.update(scene, ray);
+    }
+
+    /** The statistics text of a builder's column (for tests). */
+    public String statsText(String builder) {
+        return columns[BUILDERS.indexOf(builder)].stats.getText();
+    }
+
+    /** One builder: its canvas, statistics and ray cost. */
+    private final class Column extends JPanel {
+        private final String builder;
+        private final JLabel stats = new JLabel();
+        private final Mini canvas = new Mini();
+
+        Column(String builder) {
+            super(new BorderLayout());
+            this.builder = builder;
+            setBorder(BorderFactory.createTitledBorder(builder));
+            stats.setName("compare." + builder);
+            stats.setToolTipText("Statistics of the " + builder + " tree, and the cast ray's traversal in it");
+            canvas.setToolTipText("The " + builder + " tree over the same scene");
+            add(canvas, BorderLayout.CENTER);
+            add(stats, BorderLayout.SOUTH);
+        }
+
+        void update(Shapes2D scene, double[] ray) {
+            BuilderSettings s = model.settings().withBuilder(builder);
+            long t0 = System.nanoTime();
+            KdTree tree = s.create().build(scene);
+            double ms = (System.nanoTime() - t0) / 1e6;
+            TraversalTrace trace = tracer.trace(tree, scene, ray);
+            TreeStats st = tree.stats();
+            StringBuilder b = new StringBuilder("<html>");
+            b.append(String.format(Locale.ROOT, "build time: %.2f ms<br>nodes: %d, leaves: %d, empty: %d<br>"
+                            + "depth: %d, refs / leaf: %.2f<br>SAH cost: %.2f", ms, st.nodes(), st.leaves(), st.emptyLeaves(),
+                    st.maxDepth(), st.averageRefsPerLeaf(), st.expectedCost()));
+            if (ray != null && trace.size() > 0) {
+                double cost = tree.costModel().kt() * (trace.nodes() - trace.leaves()) + tree.costModel().ki() * trace.tests();
+                b.append(String.format(Locale.ROOT, "<br><b>ray:</b> %d nodes, %d leaves, %d tests<br>"
+                        + "ray cost (Kt per interior node + Ki per test): %.0f<br>%s", trace.nodes(), trace.leaves(),
+                        trace.tests(), cost, trace.hitObject() >= 0 ? "hit object " + trace.hitObject() : "no hit"));
+            } else if (ray == null) {
+                b.append("<br>ray: cast one in the 2-D build view");
+            }
+            stats.setText(b.append("</html>").toString());
+            canvas.set(scene, tree, ray, trace);
+        }
+    }
+
+    /** A canvas without interaction, fitted to the scene. */
+    private static final class Mini extends JComponent {
+        private Shapes2D scene;
+        private KdTree tree;
+        private double[] ray;
+        private TraversalTrace trace;
+
+        Mini() {
+            setPreferredSize(new Dimension(360, 360));
+        }
+
+        void set(Shapes2D s, KdTree t, double[] r, TraversalTrace tr) {
+            scene = s;
+            tree = t;
+            ray = r;
+            trace = tr;
+            repaint();
+        }
+
+        @Override protected void paintComponent(Graphics g0) {
+            if (tree == null) return;
+            Graphics2D g = (Graphics2D) g0.create();
+            ViewTransform v = new ViewTransform().fit(tree.bounds(), getWidth(), getHeight());
+            TreePainter.paint(g, getWidth(), getHeight(), scene, tree, v, TreePainter.Options.PLAIN);
+            if (ray != null) {
+                double end = StepperPanel.rayEnd(tree.bounds(), ray);
+                g.setColor(Palette.RAY);
+                g.setStroke(new BasicStroke(2f));
+                g.draw(TreeCanvas.line(v, ray[0], ray[1], ray[0] + end * ray[2], ray[1] + end * ray[3]));
+                if (trace.hitObject() >= 0) {
+                    TreePainter.paintShape(g, scene.get(trace.hitObject()), v, Palette.HIT, null, new BasicStroke(3f));
+                }
+            }
+            g.dispose();
+        }
+    }
+}
