@@ -35,17 +35,21 @@ public final class TreePainter {
         return Math.max(1f, 5f - depth);
     }
 
+    /** Above this many objects (or four times as many nodes), drawing is without antialiasing: a repaint must stay interactive. */
+    public static final int ANTIALIAS_LIMIT = 2000;
+
     /** Paints the background, empty voxels, selection, objects and split lines into {@code g}. */
     public static void paint(Graphics2D g, int width, int height, Shapes2D scene, KdTree tree, ViewTransform v,
                              Options o) {
-        g.setRenderingHint(RenderingHints.KEY_ANTIALIASING,
-                o.antialias() ? RenderingHints.VALUE_ANTIALIAS_ON : RenderingHints.VALUE_ANTIALIAS_OFF);
+        boolean aa = o.antialias() && scene.size() <= ANTIALIAS_LIMIT && tree.nodeCount() <= 4 * ANTIALIAS_LIMIT;
+        g.setRenderingHint(RenderingHints.KEY_ANTIALIASING, aa ? RenderingHints.VALUE_ANTIALIAS_ON : RenderingHints.VALUE_ANTIALIAS_OFF);
         g.setColor(Palette.BACKGROUND);
         g.fillRect(0, 0, width, height);
         BitSet highlighted = new BitSet();
-        Box selectedVoxel = paintVoxels(g, tree, v, o.selectedNode(), highlighted);
+        Path2D.Double[] splits = new Path2D.Double[(int) lineWidth(0) + 1];
+        Box selectedVoxel = paintVoxels(g, tree, v, o.selectedNode(), highlighted, splits);
         paintObjects(g, scene, v, highlighted, o.selectedShape());
-        paintSplits(g, tree, v);
+        paintSplits(g, splits);
         Box root = tree.bounds();
         if (!root.isEmpty()) {
             g.setColor(Palette.ROOT_BOX);
@@ -59,27 +63,48 @@ public final class TreePainter {
         }
     }
 
-    /** Shades empty leaves and the selected node; returns the selected node's voxel (or null). */
-    private static Box paintVoxels(Graphics2D g, KdTree tree, ViewTransform v, int selected, BitSet highlighted) {
+    /**
+     * One walk of the tree: shades empty leaves (integer rectangles, the fast path), finds the
+     * selected node, and collects the split lines, one path per line width, into {@code splits}.
+     * Returns the selected node's voxel (or null).
+     */
+    private static Box paintVoxels(Graphics2D g, KdTree tree, ViewTransform v, int selected, BitSet highlighted,
+                                   Path2D.Double[] splits) {
         Box[] found = new Box[1];
+        for (int i = 0; i < splits.length; i++) splits[i] = new Path2D.Double();
+        g.setColor(Palette.EMPTY_VOXEL);
         tree.walk(new TreeVisitor() {
             @Override public void interior(int node, int depth, Box voxel, int axis, double split) {
                 if (node == selected) found[0] = voxel.copy();
+                Path2D.Double p = splits[(int) lineWidth(depth)];
+                if (axis == 0) {
+                    p.moveTo(v.screenX(split), v.screenY(voxel.min(1)));
+                    p.lineTo(v.screenX(split), v.screenY(voxel.max(1)));
+                } else {
+                    p.moveTo(v.screenX(voxel.min(0)), v.screenY(split));
+                    p.lineTo(v.screenX(voxel.max(0)), v.screenY(split));
+                }
             }
 
             @Override public void leaf(int node, int depth, Box voxel, int[] refs, int from, int to) {
                 if (node == selected) {
                     found[0] = voxel.copy();
-                    g.setColor(Palette.HIGHLIGHT_VOXEL);
-                    g.fill(rect(v, voxel));
                     for (int i = from; i < to; i++) highlighted.set(refs[i]);
                 } else if (from == to) {
-                    g.setColor(Palette.EMPTY_VOXEL);
-                    g.fill(rect(v, voxel));
+                    int x0 = (int) Math.round(v.screenX(voxel.min(0))), x1 = (int) Math.round(v.screenX(voxel.max(0)));
+                    int y0 = (int) Math.round(v.screenY(voxel.max(1))), y1 = (int) Math.round(v.screenY(voxel.min(1)));
+                    g.fillRect(x0, y0, x1 - x0, y1 - y0);
                 }
             }
         });
-        if (found[0] != null && !tree.isLeaf(selected)) markAll(tree, selected, highlighted);
+        if (found[0] != null) {
+            if (tree.isLeaf(selected)) {
+                g.setColor(Palette.HIGHLIGHT_VOXEL);
+                g.fill(rect(v, found[0]));
+            } else {
+                markAll(tree, selected, highlighted);
+            }
+        }
         return found[0];
     }
 
@@ -92,13 +117,26 @@ public final class TreePainter {
         markAll(tree, tree.rightChild(node), out);
     }
 
+    /** Draws the objects: all fills as one path, all outlines as another, then the highlighted ones on top. */
     private static void paintObjects(Graphics2D g, Shapes2D scene, ViewTransform v, BitSet highlighted, int selected) {
-        BasicStroke thin = new BasicStroke(1.5f), thick = new BasicStroke(3f);
+        Path2D.Double fills = new Path2D.Double(Path2D.WIND_NON_ZERO, 8 * scene.size() + 8);
+        Path2D.Double lines = new Path2D.Double(Path2D.WIND_NON_ZERO, 8 * scene.size() + 8);
         for (int i = 0; i < scene.size(); i++) {
-            boolean hi = highlighted.get(i);
-            paintShape(g, scene.get(i), v, hi ? Palette.HIGHLIGHT_OBJECT : Palette.OBJECT,
-                    hi ? Palette.HIGHLIGHT_OBJECT.brighter() : Palette.OBJECT_FILL, thin);
+            if (highlighted.get(i)) continue;
+            Shape2D s = scene.get(i);
+            Shape shape = outline(s, v);
+            if (!(s instanceof Shape2D.Segment)) fills.append(shape, false);
+            if (!(s instanceof Shape2D.Point)) lines.append(shape, false);
         }
+        g.setColor(Palette.OBJECT_FILL);
+        g.fill(fills);
+        g.setColor(Palette.OBJECT);
+        // wide strokes of a big path are slow to rasterise: one-pixel outlines for big scenes
+        g.setStroke(new BasicStroke(scene.size() > ANTIALIAS_LIMIT ? 1f : 1.5f));
+        g.draw(lines);
+        BasicStroke thin = new BasicStroke(1.5f), thick = new BasicStroke(3f);
+        for (int i = highlighted.nextSetBit(0); i >= 0; i = highlighted.nextSetBit(i + 1))
+            paintShape(g, scene.get(i), v, Palette.HIGHLIGHT_OBJECT, Palette.HIGHLIGHT_OBJECT.brighter(), thin);
         if (selected >= 0 && selected < scene.size())
             paintShape(g, scene.get(selected), v, Palette.SELECTED_SHAPE, null, thick);
     }
@@ -137,20 +175,13 @@ public final class TreePainter {
         return p;
     }
 
-    private static void paintSplits(Graphics2D g, KdTree tree, ViewTransform v) {
+    /** Draws the split lines collected by {@link #paintVoxels}, thickest (nearest the root) last. */
+    private static void paintSplits(Graphics2D g, Path2D.Double[] byWidth) {
         g.setColor(Palette.SPLIT_LINE);
-        tree.walk(new TreeVisitor() {
-            @Override public void interior(int node, int depth, Box voxel, int axis, double split) {
-                g.setStroke(new BasicStroke(lineWidth(depth), BasicStroke.CAP_BUTT, BasicStroke.JOIN_MITER));
-                if (axis == 0)
-                    g.draw(new Line2D.Double(v.screenX(split), v.screenY(voxel.min(1)), v.screenX(split), v.screenY(voxel.max(1))));
-                else
-                    g.draw(new Line2D.Double(v.screenX(voxel.min(0)), v.screenY(split), v.screenX(voxel.max(0)), v.screenY(split)));
-            }
-
-            @Override public void leaf(int node, int depth, Box voxel, int[] refs, int from, int to) {
-            }
-        });
+        for (int w = 1; w < byWidth.length; w++) {
+            g.setStroke(new BasicStroke(w, BasicStroke.CAP_BUTT, BasicStroke.JOIN_MITER));
+            g.draw(byWidth[w]);
+        }
     }
 
     /** The screen rectangle of a voxel. */

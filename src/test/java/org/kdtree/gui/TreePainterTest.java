@@ -42,14 +42,23 @@ class TreePainterTest {
         List<double[]> mids = new ArrayList<>();
         p.tree().walk(new TreeVisitor() {
             @Override public void interior(int node, int depth, Box v, int axis, double split) {
-                mids.add(axis == 0 ? new double[] {split, 0.5 * (v.min(1) + v.max(1))}
-                        : new double[] {0.5 * (v.min(0) + v.max(0)), split});
+                mids.add(axis == 0 ? new double[] {split, 0.5 * (v.min(1) + v.max(1)), 0}
+                        : new double[] {0.5 * (v.min(0) + v.max(0)), split, 1});
             }
 
             @Override public void leaf(int node, int depth, Box v, int[] refs, int from, int to) { }
         });
         assertThat(mids).hasSizeGreaterThan(3);
-        for (double[] m : mids) assertThat(p.at(m[0], m[1])).as("split at %s", java.util.Arrays.toString(m)).isEqualTo(Palette.SPLIT_LINE);
+        for (double[] m : mids) {
+            // a one-pixel line lands on the pixel row (or column) either side of the exact position
+            int px = (int) Math.floor(p.view().screenX(m[0])), py = (int) Math.floor(p.view().screenY(m[1]));
+            boolean drawn = false;
+            for (int d = -1; d <= 1; d++) {
+                int rgb = m[2] == 0 ? p.image().getRGB(px + d, py) : p.image().getRGB(px, py + d);
+                drawn |= rgb == Palette.SPLIT_LINE.getRGB();
+            }
+            assertThat(drawn).as("split line at %s", java.util.Arrays.toString(m)).isTrue();
+        }
     }
 
     @Test void emptyVoxelsAreShadedAndFullOnesAreNot() {

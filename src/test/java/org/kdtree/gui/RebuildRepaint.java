@@ -1,0 +1,20 @@
+package org.kdtree.gui;
+
+import java.awt.Graphics2D;
+import java.awt.image.BufferedImage;
+import org.kdtree.shape.Shapes2D;
+import org.kdtree.tree.KdTree;
+
+/** One canvas repaint into an image, as the workbench does after a rebuild (shared by the benchmark and the timing test). */
+final class RebuildRepaint {
+    private RebuildRepaint() {
+    }
+
+    static BufferedImage paint(Shapes2D shapes, KdTree tree, BufferedImage image) {
+        Graphics2D g = image.createGraphics();
+        ViewTransform v = new ViewTransform().fit(tree.bounds(), image.getWidth(), image.getHeight());
+        TreePainter.paint(g, image.getWidth(), image.getHeight(), shapes, tree, v, TreePainter.Options.PLAIN);
+        g.dispose();
+        return image;
+    }
+}

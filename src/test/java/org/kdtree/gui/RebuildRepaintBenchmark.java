@@ -1,0 +1,54 @@
+package org.kdtree.gui;
+
+import java.awt.Graphics2D;
+import java.awt.image.BufferedImage;
+import java.util.concurrent.TimeUnit;
+import org.kdtree.shape.Shapes2D;
+import org.kdtree.tree.KdTree;
+import org.openjdk.jmh.annotations.Benchmark;
+import org.openjdk.jmh.annotations.BenchmarkMode;
+import org.openjdk.jmh.annotations.Fork;
+import org.openjdk.jmh.annotations.Measurement;
+import org.openjdk.jmh.annotations.Mode;
+import org.openjdk.jmh.annotations.OutputTimeUnit;
+import org.openjdk.jmh.annotations.Param;
+import org.openjdk.jmh.annotations.Scope;
+import org.openjdk.jmh.annotations.Setup;
+import org.openjdk.jmh.annotations.State;
+import org.openjdk.jmh.annotations.Warmup;
+
+/**
+ * Interactive speed of the workbench: what one edit costs on a 10,000-object 2-D scene with the
+ * SAH (rebuild the tree, then repaint the canvas into a 1000 x 800 image, as Swing would).
+ * Target: under 50 ms. Run on a quiet machine (see docs/workbench.md for the command).
+ */
+@State(Scope.Benchmark)
+@BenchmarkMode(Mode.AverageTime)
+@OutputTimeUnit(TimeUnit.MILLISECONDS)
+@Warmup(iterations = 5, time = 1)
+@Measurement(iterations = 10, time = 1)
+@Fork(1)
+public class RebuildRepaintBenchmark {
+    @Param({"uniform", "clustered"})
+    public String scene;
+
+    @Param({"10000"})
+    public int objects;
+
+    private Shapes2D shapes;
+    private BufferedImage image;
+
+    @Setup public void setUp() {
+        shapes = new Shapes2D(scene.equals("uniform") ? BuiltinScenes.uniform(objects, 1) : BuiltinScenes.clustered(objects, 1));
+        image = new BufferedImage(1000, 800, BufferedImage.TYPE_INT_RGB);
+    }
+
+    @Benchmark public KdTree rebuild() {
+        return BuilderSettings.DEFAULT.create().build(shapes);
+    }
+
+    @Benchmark public BufferedImage rebuildAndRepaint() {
+        KdTree tree = BuilderSettings.DEFAULT.create().build(shapes);
+        return RebuildRepaint.paint(shapes, tree, image);
+    }
+}

@@ -1,0 +1,83 @@
+package org.kdtree.gui;
+
+import static org.assertj.core.api.Assertions.assertThat;
+import static org.junit.jupiter.api.Assumptions.assumeFalse;
+
+import java.awt.GraphicsEnvironment;
+import java.awt.Point;
+import java.util.List;
+import org.assertj.swing.core.MouseButton;
+import org.assertj.swing.edt.GuiActionRunner;
+import org.assertj.swing.fixture.FrameFixture;
+import org.junit.jupiter.api.AfterEach;
+import org.junit.jupiter.api.BeforeEach;
+import org.junit.jupiter.api.Tag;
+import org.junit.jupiter.api.Test;
+
+/**
+ * Drives the real workbench window with a Swing test robot. Needs a display (CI runs it
+ * under Xvfb, see .ci/run); skipped where there is none. Surefire runs it in its own
+ * execution, without -Djava.awt.headless.
+ */
+@Tag("gui")
+class WorkbenchGuiTest {
+    private FrameFixture window;
+    private Workbench bench;
+
+    @BeforeEach void open() {
+        assumeFalse(GraphicsEnvironment.isHeadless(), "no display");
+        bench = GuiActionRunner.execute(() -> new Workbench());
+        window = new FrameFixture(bench);
+        window.show();
+    }
+
+    @AfterEach void close() {
+        if (window != null) window.cleanUp();
+    }
+
+    private List<String> stats() {
+        return List.of("nodes", "leaves", "empty leaves", "depth", "SAH cost").stream()
+                .map(s -> window.label("stat." + s).text()).toList();
+    }
+
+    @Test void switchBuilderChangeLambdaCastARayAndStep() {
+        window.menuItemWithPath("Scene", "Clustered (200)").click();
+        List<String> sah = stats();
+
+        window.comboBox("builder").selectItem("median-plane");
+        assertThat(bench.model().tree().builderName()).isEqualTo("median-plane");
+        assertThat(stats()).isNotEqualTo(sah);
+        assertThat(window.spinner("lambda").target().isEnabled()).isFalse();
+
+        window.comboBox("builder").selectItem("sah");
+        assertThat(stats()).isEqualTo(sah);
+        window.spinner("lambda").select(0.2);
+        assertThat(bench.model().settings().lambda()).isEqualTo(0.2);
+        assertThat(stats()).as("lambda 0.2 cuts off more empty space than 0.8").isNotEqualTo(sah);
+
+        window.toggleButton("tool.RAY").click();
+        int w = bench.canvas().getWidth(), h = bench.canvas().getHeight();
+        Point from = new Point(8, h * 2 / 5), to = new Point(w - 8, h * 3 / 5);
+        window.robot().pressMouse(bench.canvas(), from, MouseButton.LEFT_BUTTON);
+        window.robot().moveMouse(bench.canvas(), new Point((from.x + to.x) / 2, (from.y + to.y) / 2));
+        window.robot().moveMouse(bench.canvas(), to);
+        window.robot().releaseMouse(MouseButton.LEFT_BUTTON);
+        assertThat(bench.model().ray()).isNotNull();
+
+        String first = window.label("step.label").text();
+        assertThat(first).startsWith("step 1 /");
+        assertThat(window.label("step.result").text()).contains("nodes").contains("tests");
+        window.button("step.next").click();
+        assertThat(window.label("step.label").text()).startsWith("step 2 /");
+        assertThat(window.label("step.node").text()).startsWith("node #0");
+        assertThat(window.label("step.interval").text()).contains("tSplit = ").doesNotContain("tSplit = -  ");
+        window.button("step.last").click();
+        assertThat(window.label("step.label").text()).endsWith("done");
+        window.button("step.prev").click();
+        assertThat(window.label("step.label").text()).doesNotEndWith("done");
+
+        window.tabbedPane("tabs").selectTab("Compare builders");
+        assertThat(bench.compare().statsText("sah")).contains("ray:").contains("tests");
+        assertThat(bench.compare().statsText("median-plane")).contains("ray:");
+    }
+}
