@@ -54,7 +54,7 @@ public final class Workbench extends JFrame {
     }
 
     /** The library's traversal, recorded for the stepper. */
-    static final StepperPanel.Tracer TRACER = (tree, scene, ray) -> TraversalTrace.EMPTY;
+    static final StepperPanel.Tracer TRACER = TraversalRecorder::record;
 
     /** Builds the window with a given tracer (tests may pass their own). */
     Workbench(StepperPanel.Tracer tracer) {

@@ -1,0 +1,56 @@
+package org.kdtree.gui;
+
+import static org.assertj.core.api.Assertions.assertThat;
+
+import java.util.Random;
+import org.junit.jupiter.api.Test;
+import org.kdtree.geom.Ray;
+import org.kdtree.shape.Shapes2D;
+import org.kdtree.traverse.BruteForce;
+import org.kdtree.traverse.Hit;
+import org.kdtree.traverse.Shape2DIntersector;
+import org.kdtree.tree.KdTree;
+
+/** The stepper's recording of the library's traversal: consistent steps, and the same hit as brute force. */
+class TraversalRecorderTest {
+    @Test void recordedTracesEndWithTheBruteForceHit() {
+        Shapes2D scene = new Shapes2D(BuiltinScenes.clustered(300, 5));
+        Random r = new Random(2);
+        for (String b : CompareView.BUILDERS) {
+            KdTree tree = BuilderSettings.DEFAULT.withBuilder(b).create().build(scene);
+            BruteForce brute = new BruteForce(new Shape2DIntersector(scene));
+            for (int i = 0; i < 200; i++) {
+                double[] ray = {r.nextDouble() * 12 - 1, r.nextDouble() * 12 - 1, r.nextGaussian(), r.nextGaussian()};
+                TraversalTrace t = TraversalRecorder.record(tree, scene, ray);
+                Hit h = new Hit();
+                boolean found = brute.closestHit(new Ray(2).set(ray[0], ray[1], ray[2], ray[3]), 0, Double.POSITIVE_INFINITY, h);
+                assertThat(t.hitObject() >= 0).isEqualTo(found);
+                if (found) assertThat(t.hitT()).isCloseTo(h.t, org.assertj.core.data.Offset.offset(1e-9));
+                TraversalTrace.Step last = t.step(t.size() - 1);
+                assertThat(last.kind()).isEqualTo(TraversalTrace.Kind.END);
+                assertThat(last.bestObject()).isEqualTo(t.hitObject());
+                long tests = t.steps().stream().filter(s -> s.kind() == TraversalTrace.Kind.TEST).count();
+                assertThat(tests).isEqualTo(t.tests());
+                long visits = t.steps().stream().filter(s -> s.kind() == TraversalTrace.Kind.INTERIOR || s.kind() == TraversalTrace.Kind.LEAF).count();
+                assertThat(visits).isEqualTo(t.nodes());
+            }
+        }
+    }
+
+    @Test void theStackGrowsOnPushAndShrinksOnPop() {
+        Shapes2D scene = new Shapes2D(BuiltinScenes.uniform(200, 3));
+        KdTree tree = BuilderSettings.DEFAULT.create().build(scene);
+        TraversalTrace t = TraversalRecorder.record(tree, scene, new double[] {-1, 0.3, 1, 0.02});
+        int pushes = 0;
+        for (int i = 1; i < t.size(); i++) {
+            int before = t.step(i - 1).stack().size(), after = t.step(i).stack().size();
+            switch (t.step(i).kind()) {
+                case PUSH_FAR -> { assertThat(after).isEqualTo(before + 1); pushes++; }
+                case POP, SKIP -> assertThat(after).isEqualTo(before - 1);
+                default -> assertThat(after).isEqualTo(before);
+            }
+        }
+        assertThat(pushes).as("a long ray across 200 objects visits both children somewhere").isPositive();
+        assertThat(TraversalRecorder.record(tree, scene, null).size()).isZero();
+    }
+}
