@@ -69,7 +69,7 @@ public final class StepperPanel extends JPanel implements CanvasOverlay {
         buttons.add(slider);
         buttons.add(stepLabel);
         JPanel labels = new JPanel(new GridLayout(0, 2, 12, 0));
-        for (JLabel l : new JLabel[] {nodeLabel, intervalLabel, childrenLabel, stackLabel, testedLabel, resultLabel}) labels.add(l);
+        for (JLabel l : new JLabel[] {nodeLabel, intervalLabel, childrenLabel, testedLabel, stackLabel, resultLabel}) labels.add(l);
         add(buttons, BorderLayout.NORTH);
         add(labels, BorderLayout.CENTER);
         model.addListener(c -> {
@@ -133,14 +133,25 @@ public final class StepperPanel extends JPanel implements CanvasOverlay {
         KdTree t = model.tree();
         stepLabel.setText(String.format(Locale.ROOT, "step %d / %d: %s", index + 1, trace.size(), kindText(s.kind())));
         nodeLabel.setText(s.node() < 0 ? "node: -" : "node #" + s.node() + (t.isLeaf(s.node())
-                ? " (leaf, " + t.leafSize(s.node()) + " objects)"
+                ? " (leaf, " + t.leafSize(s.node()) + (t.leafSize(s.node()) == 1 ? " object)" : " objects)")
                 : String.format(Locale.ROOT, " (%s = %.3f)", t.axis(s.node()) == 0 ? "x" : "y", t.split(s.node()))));
         intervalLabel.setText(String.format(Locale.ROOT, "tMin = %s   tMax = %s   tSplit = %s", num(s.tMin()), num(s.tMax()), num(s.tSplit())));
         childrenLabel.setText(s.near() < 0 ? "near / far: -" : "near #" + s.near() + ", far #" + s.far() + ": " + s.visit());
-        stackLabel.setText("stack: " + (s.stack().isEmpty() ? "empty" : s.stack().stream()
-                .map(e -> "#" + e.node() + " [" + num(e.tMin()) + ", " + num(e.tMax()) + "]").collect(Collectors.joining("  "))));
+        stackLabel.setText(stackText(s.stack()));
         testedLabel.setText("tested: " + (s.tested().isEmpty() ? "-" : s.tested().stream().map(String::valueOf)
                 .collect(Collectors.joining(", "))) + (s.bestObject() >= 0 ? "   best: object " + s.bestObject() + " at t = " + num(s.bestT()) : ""));
+    }
+
+    /** The stack, top first; only the top three entries, as the next pops take them. */
+    private static String stackText(java.util.List<TraversalTrace.Entry> stack) {
+        if (stack.isEmpty()) return "stack: empty";
+        StringBuilder b = new StringBuilder("stack (" + stack.size() + "), top first: ");
+        for (int i = stack.size() - 1; i >= Math.max(0, stack.size() - 3); i--) {
+            TraversalTrace.Entry e = stack.get(i);
+            b.append(i == stack.size() - 1 ? "" : ", ").append('#').append(e.node())
+                    .append(" [").append(num(e.tMin())).append(", ").append(num(e.tMax())).append(']');
+        }
+        return b.append(stack.size() > 3 ? ", ..." : "").toString();
     }
 
     private String resultText() {

@@ -92,16 +92,19 @@ public final class Workbench extends JFrame {
     public JTabbedPane tabs() { return tabs; }
     public StepperPanel stepper() { return stepper; }
     public CompareView compare() { return compare; }
+    public ScenePanel scenes() { return scenePanel; }
 
     private JComponent buildTab() {
-        JPanel side = new JPanel();
-        side.setLayout(new BoxLayout(side, BoxLayout.Y_AXIS));
-        side.add(scenePanel);
-        side.add(builderPanel);
-        side.add(statsPanel);
+        JPanel controls = new JPanel();
+        controls.setLayout(new BoxLayout(controls, BoxLayout.Y_AXIS));
+        controls.add(scenePanel);
+        controls.add(builderPanel);
+        controls.add(statsPanel);
         treeView.setBorder(BorderFactory.createTitledBorder("Tree"));
         treeView.setPreferredSize(new Dimension(320, 220));
-        side.add(treeView);
+        JPanel side = new JPanel(new BorderLayout());
+        side.add(controls, BorderLayout.NORTH);
+        side.add(treeView, BorderLayout.CENTER);
         for (EditTool t : EditTool.values()) addTool(t, KeyStroke.getKeyStroke(KeyEvent.VK_F2 + t.ordinal(), 0));
         JPanel centre = new JPanel(new BorderLayout());
         centre.add(toolBar, BorderLayout.WEST);

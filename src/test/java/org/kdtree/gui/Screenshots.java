@@ -1,0 +1,86 @@
+package org.kdtree.gui;
+
+import java.nio.file.Files;
+import java.nio.file.Path;
+import javax.swing.SwingUtilities;
+
+/**
+ * Takes the screenshots of docs/workbench.md from the real window: opens the workbench, sets
+ * up each view, and grabs the screen with ImageMagick's {@code import}. Run under Xvfb:
+ * <pre>
+ * Xvfb :99 -screen 0 1300x900x24 &amp;
+ * DISPLAY=:99 java -cp target/classes:target/test-classes:$(cat cp.txt) org.kdtree.gui.Screenshots docs/images
+ * </pre>
+ */
+public final class Screenshots {
+    private Screenshots() {
+    }
+
+    public static void main(String[] args) throws Exception {
+        Path out = Path.of(args.length > 0 ? args[0] : "docs/images");
+        Files.createDirectories(out);
+        Workbench[] w = new Workbench[1];
+        SwingUtilities.invokeAndWait(() -> {
+            w[0] = new Workbench();
+            w[0].setSize(1280, 880);
+            w[0].setLocation(0, 0);
+            w[0].setVisible(true);
+        });
+        Workbench b = w[0];
+        WorkbenchModel m = b.model();
+        on(() -> m.selectNode(TreePainter.leafAt(m.tree(), 3.2, 6.5)));
+        shot(out, "build-2d.png");
+
+        on(() -> b.tabs().setSelectedIndex(0));
+        on(() -> {
+            b.scenes().selectBuiltin(2);
+            m.selectNode(-1);
+        });
+        shot(out, "clustered-sah.png");
+
+        on(() -> m.setSettings(m.settings().withBuilder("median-plane")));
+        shot(out, "clustered-median.png");
+
+        on(() -> {
+            m.setSettings(m.settings().withBuilder("sah"));
+            StepperPanel s = b.stepper();
+            int target = 0;
+            // a ray that hits something, shown at an object test with far children on the stack
+            for (double y = 1.0; y < 9 && target == 0; y += 0.25) {
+                m.setRay(0.2, y, 9.8, 9.5 - y);
+                if (s.trace().hitObject() < 0) continue;
+                for (int i = 0; i < s.trace().size(); i++) {
+                    TraversalTrace.Step st = s.trace().step(i);
+                    if (st.kind() == TraversalTrace.Kind.TEST && st.stack().size() >= 2) { target = i; break; }
+                }
+            }
+            s.first();
+            for (int i = 0; i < target; i++) s.forward();
+        });
+        shot(out, "stepper.png");
+
+        on(() -> b.tabs().setSelectedIndex(1));
+        shot(out, "compare.png");
+
+        on(() -> b.tabs().setSelectedIndex(2));
+        on(() -> {
+            View3D v = (View3D) b.tabs().getComponentAt(2);
+            v.build();
+        });
+        Thread.sleep(4000);
+        shot(out, "view3d.png");
+        on(b::dispose);
+        System.exit(0);
+    }
+
+    private static void on(Runnable r) throws Exception {
+        SwingUtilities.invokeAndWait(r);
+    }
+
+    private static void shot(Path dir, String name) throws Exception {
+        Thread.sleep(1200);
+        Process p = new ProcessBuilder("import", "-window", "root", "-crop", "1280x880+0+0", dir.resolve(name).toString())
+                .inheritIO().start();
+        if (p.waitFor() != 0) throw new IllegalStateException("import failed for " + name);
+    }
+}
