@@ -53,6 +53,9 @@ public final class BuilderPanel extends JPanel {
             if (!updating) lambda.setValue(lambdaSlider.getValue() / 100.0);
         });
         show(model.settings());
+        model.addListener(c -> {
+            if (c == WorkbenchModel.Change.TREE) show(model.settings());
+        });
     }
 
     /** Selects the builder at {@code index} in the list (keyboard shortcut). */
@@ -74,6 +77,11 @@ public final class BuilderPanel extends JPanel {
         updating = true;
         try {
             builder.setSelectedItem(s.builder());
+            kt.setValue(s.kt());
+            ki.setValue(s.ki());
+            lambda.setValue(s.lambda());
+            minPrims.setValue(s.minPrims());
+            maxDepth.setValue(s.maxDepth());
             lambdaSlider.setValue((int) Math.round(s.lambda() * 100));
             boolean sah = s.builder().equals("sah");
             boolean median = s.builder().equals("median-plane") || s.builder().equals("object-median");

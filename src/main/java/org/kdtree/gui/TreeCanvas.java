@@ -91,6 +91,7 @@ public final class TreeCanvas extends JComponent {
     /** The canvas as it looks now, at its current size (for PNG export). */
     public BufferedImage snapshot() {
         int w = Math.max(getWidth(), 1), h = Math.max(getHeight(), 1);
+        if (!fitted) fit();
         BufferedImage img = new BufferedImage(w, h, BufferedImage.TYPE_INT_RGB);
         Graphics2D g = img.createGraphics();
         paintScene(g, view, w, h);

@@ -27,8 +27,6 @@ import javax.swing.KeyStroke;
 import javax.swing.SwingUtilities;
 import javax.swing.filechooser.FileNameExtensionFilter;
 import org.kdtree.build.Builders;
-import org.kdtree.io.Scene2DFormat;
-import org.kdtree.shape.Shapes2D;
 
 /**
  * The workbench window: the 2-D build canvas with its builder controls, statistics, tree view
@@ -219,8 +217,7 @@ public final class Workbench extends JFrame {
         JFileChooser c = chooser("scene2d", "2-D scenes (.scene2d)");
         if (c.showOpenDialog(this) != JFileChooser.APPROVE_OPTION) return;
         try {
-            Shapes2D s = Scene2DFormat.read(c.getSelectedFile().toPath());
-            model.setScene(c.getSelectedFile().getName(), s.shapes());
+            model.load(c.getSelectedFile().toPath());
             canvas.fit();
         } catch (IOException | RuntimeException e) {
             error("Cannot open the scene", e);
@@ -232,7 +229,7 @@ public final class Workbench extends JFrame {
         if (c.showSaveDialog(this) != JFileChooser.APPROVE_OPTION) return;
         Path p = withExtension(c.getSelectedFile().toPath(), ".scene2d");
         try {
-            Scene2DFormat.write(model.scene(), p);
+            model.save(p);
         } catch (IOException e) {
             error("Cannot save the scene", e);
         }

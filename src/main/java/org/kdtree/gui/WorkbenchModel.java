@@ -52,6 +52,16 @@ public final class WorkbenchModel {
         rebuild();
     }
 
+    /** Opens a .scene2d file (errors name the file and line). */
+    public void load(java.nio.file.Path file) throws java.io.IOException {
+        setScene(file.getFileName().toString(), org.kdtree.io.Scene2DFormat.read(file).shapes());
+    }
+
+    /** Saves the scene as a .scene2d file. */
+    public void save(java.nio.file.Path file) throws java.io.IOException {
+        org.kdtree.io.Scene2DFormat.write(scene, file);
+    }
+
     public void addShape(Shape2D s) {
         shapes.add(s);
         selectedShape = shapes.size() - 1;

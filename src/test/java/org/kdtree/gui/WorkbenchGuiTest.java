@@ -76,6 +76,22 @@ class WorkbenchGuiTest {
         window.button("step.prev").click();
         assertThat(window.label("step.label").text()).doesNotEndWith("done");
 
+        // editing: drag a rectangle in, then select it and delete it
+        int objects = bench.model().scene().size();
+        window.toggleButton("tool.RECT").click();
+        Point a = new Point(w / 2 - 30, h / 2 - 20), c = new Point(w / 2 + 30, h / 2 + 20);
+        window.robot().pressMouse(bench.canvas(), a, MouseButton.LEFT_BUTTON);
+        window.robot().moveMouse(bench.canvas(), new Point(w / 2, h / 2));
+        window.robot().moveMouse(bench.canvas(), c);
+        window.robot().releaseMouse(MouseButton.LEFT_BUTTON);
+        assertThat(bench.model().scene().size()).isEqualTo(objects + 1);
+        assertThat(window.label("stat.objects").text()).isEqualTo(Integer.toString(objects + 1));
+        window.toggleButton("tool.SELECT").click();
+        window.robot().click(bench.canvas(), new Point(w / 2 + 29, h / 2));
+        assertThat(bench.model().selectedShape()).isEqualTo(objects);
+        window.menuItemWithPath("Scene", "Delete selected object").click();
+        assertThat(bench.model().scene().size()).isEqualTo(objects);
+
         window.tabbedPane("tabs").selectTab("Compare builders");
         assertThat(bench.compare().statsText("sah")).contains("ray:").contains("tests");
         assertThat(bench.compare().statsText("median-plane")).contains("ray:");

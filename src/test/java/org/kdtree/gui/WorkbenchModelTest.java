@@ -28,6 +28,35 @@ class WorkbenchModelTest {
         assertThat(sahNodes).isGreaterThan(1);
     }
 
+    @Test void scenesSaveAndLoadBack(@org.junit.jupiter.api.io.TempDir java.nio.file.Path dir) throws Exception {
+        WorkbenchModel m = new WorkbenchModel();
+        m.setScene("mixed", BuiltinScenes.mixed(40, 2));
+        java.nio.file.Path f = dir.resolve("mixed.scene2d");
+        m.save(f);
+        WorkbenchModel n = new WorkbenchModel();
+        n.load(f);
+        assertThat(n.scene().shapes()).isEqualTo(m.scene().shapes());
+        assertThat(n.sceneName()).isEqualTo("mixed.scene2d");
+        java.nio.file.Files.writeString(dir.resolve("bad.scene2d"), "rect 1 2 3\n");
+        org.assertj.core.api.Assertions.assertThatThrownBy(() -> n.load(dir.resolve("bad.scene2d")))
+                .hasMessageContaining("bad.scene2d").hasMessageContaining("1");
+    }
+
+    @Test void theCanvasExportsAsPng(@org.junit.jupiter.api.io.TempDir java.nio.file.Path dir) throws Exception {
+        WorkbenchModel m = new WorkbenchModel();
+        m.setScene("talk", BuiltinScenes.talkFigures());
+        TreeCanvas c = new TreeCanvas(m);
+        c.setSize(400, 300);
+        java.nio.file.Path f = dir.resolve("canvas.png");
+        PngExport.write(c.snapshot(), f);
+        java.awt.image.BufferedImage back = javax.imageio.ImageIO.read(f.toFile());
+        assertThat(back.getWidth()).isEqualTo(400);
+        assertThat(back.getHeight()).isEqualTo(300);
+        boolean shaded = false;
+        for (int y = 0; y < 300; y++) for (int x = 0; x < 400; x++) shaded |= back.getRGB(x, y) == Palette.EMPTY_VOXEL.getRGB();
+        assertThat(shaded).isTrue();
+    }
+
     @Test void editingMovesShapesAndCorners() {
         Shape2D r = new Shape2D.Rect(0, 0, 2, 1);
         assertThat(ShapeEditing.translate(r, 1, 1)).isEqualTo(new Shape2D.Rect(1, 1, 3, 2));
