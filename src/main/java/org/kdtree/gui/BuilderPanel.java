@@ -33,7 +33,7 @@ public final class BuilderPanel extends JPanel {
         super(new GridBagLayout());
         this.model = model;
         setBorder(BorderFactory.createTitledBorder("Builder"));
-        name(builder, "builder", "Builder (Alt+1/2/3): median-plane and object-median split at the middle; sah minimises the expected cost");
+        name(builder, "builder", "Builder (Alt+1, Alt+2, ...): median-plane splits the voxel in the middle, object-median at the median object; sah minimises the expected cost; others are registered builders");
         name(kt, "kt", "Kt: cost of traversing one node (SAH)");
         name(ki, "ki", "Ki: cost of intersecting one object (SAH)");
         name(lambda, "lambda", "lambda: weight of a plane that cuts off empty space (1 = no bonus); SAH only");
@@ -83,8 +83,8 @@ public final class BuilderPanel extends JPanel {
             minPrims.setValue(s.minPrims());
             maxDepth.setValue(s.maxDepth());
             lambdaSlider.setValue((int) Math.round(s.lambda() * 100));
-            boolean sah = s.builder().equals("sah");
-            boolean median = s.builder().equals("median-plane") || s.builder().equals("object-median");
+            boolean sah = BuilderSettings.usesLambda(s.builder());
+            boolean median = BuilderSettings.usesMinPrims(s.builder());
             lambda.setEnabled(sah);
             lambdaSlider.setEnabled(sah);
             minPrims.setEnabled(median);

@@ -2,8 +2,7 @@ package org.kdtree.gui;
 
 import org.kdtree.build.Builders;
 import org.kdtree.build.KdTreeBuilder;
-import org.kdtree.build.MedianPlaneBuilder;
-import org.kdtree.build.ObjectMedianBuilder;
+import org.kdtree.build.CyclingAxisBuilder;
 import org.kdtree.build.SahBuilder;
 import org.kdtree.tree.CostModel;
 
@@ -36,8 +35,17 @@ public record BuilderSettings(String builder, double kt, double ki, double lambd
         b.costModel(new CostModel(kt, ki));
         b.maxDepth(maxDepth);
         if (b instanceof SahBuilder sah) sah.emptyWeight(lambda);
-        if (b instanceof MedianPlaneBuilder m) m.minPrimitives(minPrims);
-        if (b instanceof ObjectMedianBuilder o) o.minPrimitives(minPrims);
+        if (b instanceof CyclingAxisBuilder c) c.minPrimitives(minPrims);
         return b;
+    }
+
+    /** Whether lambda applies to the builder of that name (an SAH builder). */
+    public static boolean usesLambda(String builder) {
+        return Builders.create(builder) instanceof SahBuilder;
+    }
+
+    /** Whether Kmintri applies to the builder of that name (the talk's basic, axis-cycling builders). */
+    public static boolean usesMinPrims(String builder) {
+        return Builders.create(builder) instanceof CyclingAxisBuilder;
     }
 }
