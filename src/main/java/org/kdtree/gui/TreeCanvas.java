@@ -79,9 +79,22 @@ public final class TreeCanvas extends JComponent {
         }
     }
 
+    /** The scene and tree without selection, kept while tree, view and size stay the same. */
+    private BufferedImage base;
+    private Object baseTree;
+    private ViewTransform baseView;
+
     private void paintScene(Graphics2D g, ViewTransform v, int w, int h) {
-        TreePainter.paint(g, w, h, model.scene(), model.tree(), v,
-                new TreePainter.Options(model.selectedNode(), model.selectedShape(), true));
+        if (base == null || base.getWidth() != w || base.getHeight() != h || baseTree != model.tree() || !v.sameAs(baseView)) {
+            base = new BufferedImage(w, h, BufferedImage.TYPE_INT_RGB);
+            Graphics2D bg = base.createGraphics();
+            TreePainter.paint(bg, w, h, model.scene(), model.tree(), v, TreePainter.Options.PLAIN);
+            bg.dispose();
+            baseTree = model.tree();
+            baseView = v.copy();
+        }
+        g.drawImage(base, 0, 0, null);
+        TreePainter.paintSelection(g, model.scene(), model.tree(), v, model.selectedNode(), model.selectedShape());
         for (CanvasOverlay o : overlays) o.paint(g, v);
         if (preview != null)
             TreePainter.paintShape(g, preview, v, Palette.SELECTED_SHAPE, null,

@@ -64,6 +64,31 @@ public final class TreePainter {
     }
 
     /**
+     * Draws only the selection over an already painted scene (translucent voxel, its objects, the
+     * selected shape): the canvas keeps the rest in an image, so hovering stays fast on big scenes.
+     */
+    public static void paintSelection(Graphics2D g, Shapes2D scene, KdTree tree, ViewTransform v, int selectedNode,
+                                      int selectedShape) {
+        g.setRenderingHint(RenderingHints.KEY_ANTIALIASING, RenderingHints.VALUE_ANTIALIAS_ON);
+        if (selectedNode >= 0 && selectedNode < tree.nodeCount()) {
+            Box voxel = voxelOf(tree, selectedNode);
+            BitSet objects = new BitSet();
+            markAll(tree, selectedNode, objects);
+            Color h = Palette.HIGHLIGHT_VOXEL;
+            g.setColor(new Color(h.getRed(), h.getGreen(), h.getBlue(), 150));
+            g.fill(rect(v, voxel));
+            BasicStroke thin = new BasicStroke(1.5f);
+            for (int i = objects.nextSetBit(0); i >= 0; i = objects.nextSetBit(i + 1))
+                paintShape(g, scene.get(i), v, Palette.HIGHLIGHT_OBJECT, Palette.HIGHLIGHT_OBJECT.brighter(), thin);
+            g.setColor(Palette.HIGHLIGHT_OBJECT);
+            g.setStroke(new BasicStroke(2f, BasicStroke.CAP_BUTT, BasicStroke.JOIN_MITER, 10, new float[] {6, 4}, 0));
+            g.draw(rect(v, voxel));
+        }
+        if (selectedShape >= 0 && selectedShape < scene.size())
+            paintShape(g, scene.get(selectedShape), v, Palette.SELECTED_SHAPE, null, new BasicStroke(3f));
+    }
+
+    /**
      * One walk of the tree: shades empty leaves (integer rectangles, the fast path), finds the
      * selected node, and collects the split lines, one path per line width, into {@code splits}.
      * Returns the selected node's voxel (or null).

@@ -47,6 +47,11 @@ public final class ViewTransform {
         offsetY += dy;
     }
 
+    /** Whether {@code o} maps every point as this one does. */
+    public boolean sameAs(ViewTransform o) {
+        return o != null && o.scale == scale && o.offsetX == offsetX && o.offsetY == offsetY;
+    }
+
     public ViewTransform copy() {
         ViewTransform t = new ViewTransform();
         t.scale = scale; t.offsetX = offsetX; t.offsetY = offsetY;

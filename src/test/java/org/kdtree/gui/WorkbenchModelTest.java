@@ -55,6 +55,14 @@ class WorkbenchModelTest {
         boolean shaded = false;
         for (int y = 0; y < 300; y++) for (int x = 0; x < 400; x++) shaded |= back.getRGB(x, y) == Palette.EMPTY_VOXEL.getRGB();
         assertThat(shaded).isTrue();
+
+        // hovering the small rectangle's leaf highlights it over the cached picture
+        m.selectNode(TreePainter.leafAt(m.tree(), 1.5, 1.5));
+        java.awt.image.BufferedImage hover = c.snapshot();
+        ViewTransform v = c.view();
+        assertThat(hover.getRGB((int) v.screenX(1.5), (int) v.screenY(1.5))).isEqualTo(Palette.HIGHLIGHT_OBJECT.brighter().getRGB());
+        m.selectNode(-1);
+        assertThat(c.snapshot().getRGB((int) v.screenX(1.5), (int) v.screenY(1.5))).isEqualTo(Palette.OBJECT_FILL.getRGB());
     }
 
     @Test void editingMovesShapesAndCorners() {
