@@ -12,8 +12,12 @@ public final class ViewTransform {
 
     /** Fits {@code box}, with a margin, into a {@code width x height} pixel area. */
     public ViewTransform fit(Box box, int width, int height) {
-        double w = Math.max(box.max(0) - box.min(0), 1e-9), h = Math.max(box.max(1) - box.min(1), 1e-9);
-        if (box.isEmpty()) { w = h = 1; }
+        double w = box.isEmpty() ? 0 : box.max(0) - box.min(0), h = box.isEmpty() ? 0 : box.max(1) - box.min(1);
+        // a point-sized scene (or none) gets a 10 x 10 window; a flat one the extent of its long side
+        double longest = Math.max(w, h);
+        double least = longest > 0 ? longest * 1e-3 : 10;
+        w = Math.max(w, least);
+        h = Math.max(h, least);
         int margin = 24;
         scale = Math.min((width - 2.0 * margin) / w, (height - 2.0 * margin) / h);
         if (!(scale > 0) || !Double.isFinite(scale)) scale = 1;

@@ -65,6 +65,23 @@ class WorkbenchModelTest {
         assertThat(c.snapshot().getRGB((int) v.screenX(1.5), (int) v.screenY(1.5))).isEqualTo(Palette.OBJECT_FILL.getRGB());
     }
 
+    @Test void anEmptySceneAndASinglePointStillBuildDrawAndTrace() {
+        WorkbenchModel m = new WorkbenchModel();
+        m.setScene("empty", List.of());
+        TreeCanvas c = new TreeCanvas(m);
+        c.setSize(300, 200);
+        c.fit();
+        assertThat(c.view().scale()).isBetween(1.0, 100.0);
+        assertThat(c.snapshot().getWidth()).isEqualTo(300);
+        assertThat(TraversalRecorder.record(m.tree(), m.scene(), new double[] {-1, 0, 1, 0}).hitObject()).isEqualTo(-1);
+        m.addShape(new Shape2D.Point(2, 3));
+        c.fit();
+        assertThat(c.view().scale()).isBetween(1.0, 100.0);
+        assertThat(TraversalRecorder.record(m.tree(), m.scene(), new double[] {0, 3, 1, 0}).hitObject()).isZero();
+        m.addShape(new Shape2D.Rect(1, 1, 4, 1)); // zero height: never hit, still drawn and built
+        assertThat(c.snapshot().getHeight()).isEqualTo(200);
+    }
+
     @Test void editingMovesShapesAndCorners() {
         Shape2D r = new Shape2D.Rect(0, 0, 2, 1);
         assertThat(ShapeEditing.translate(r, 1, 1)).isEqualTo(new Shape2D.Rect(1, 1, 3, 2));
