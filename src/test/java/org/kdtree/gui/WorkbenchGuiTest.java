@@ -96,4 +96,32 @@ class WorkbenchGuiTest {
         assertThat(bench.compare().statsText("sah")).contains("ray:").contains("tests");
         assertThat(bench.compare().statsText("median-plane")).contains("ray:");
     }
+
+    @Test void everyControlHasATooltipAndEveryMenuItemAShortcut() {
+        java.util.List<String> missing = new java.util.ArrayList<>();
+        walk(bench.getContentPane(), missing);
+        javax.swing.JMenuBar bar = bench.getJMenuBar();
+        for (int i = 0; i < bar.getMenuCount(); i++) {
+            javax.swing.JMenu menu = bar.getMenu(i);
+            for (int j = 0; j < menu.getItemCount(); j++) {
+                javax.swing.JMenuItem item = menu.getItem(j);
+                if (item == null) continue;
+                if (item.getAccelerator() == null) missing.add("shortcut of " + item.getText());
+                if (item.getToolTipText() == null) missing.add("tooltip of " + item.getText());
+            }
+        }
+        assertThat(missing).isEmpty();
+    }
+
+    private static void walk(java.awt.Container c, java.util.List<String> missing) {
+        for (java.awt.Component k : c.getComponents()) {
+            boolean control = k instanceof javax.swing.AbstractButton || k instanceof javax.swing.JComboBox
+                    || k instanceof javax.swing.JSpinner || k instanceof javax.swing.JSlider || k instanceof javax.swing.JTree;
+            if (control && ((javax.swing.JComponent) k).getToolTipText() == null)
+                missing.add(k.getClass().getSimpleName() + " " + k.getName());
+            if (k instanceof java.awt.Container sub && !(k instanceof javax.swing.JSpinner) && !(k instanceof javax.swing.JComboBox)
+                    && !(k instanceof javax.swing.JScrollBar))
+                walk(sub, missing);
+        }
+    }
 }
