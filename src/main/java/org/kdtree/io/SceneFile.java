@@ -23,6 +23,8 @@ import org.kdtree.render.Vec3;
  * in one mesh with a material per triangle. Every error names the file, the line and the field.
  */
 public final class SceneFile {
+    /** Generated triangles allowed in one scene (about 1.5 GB with the tree): a typo must not exhaust memory. */
+    static final long MAX_TRIANGLES = 20_000_000;
     private final String file;
     private final Path dir;
     private final List<Material> materials = new ArrayList<>();
@@ -135,6 +137,7 @@ public final class SceneFile {
                 o.allowOnly("type", "center", "radius", "segments", "rings", "material", "transform");
                 int seg = o.has("segments") ? o.get("segments").integer(3, 4096) : 48;
                 int rings = o.has("rings") ? o.get("rings").integer(2, 4096) : Math.max(2, seg / 2);
+                limit(o, 2L * seg * (rings - 1));
                 Tessellation.sphere(geometry, vec(o.get("center")), positive(o.get("radius")), seg, rings, materialOf(o));
                 return true;
             }
@@ -156,8 +159,10 @@ public final class SceneFile {
                 o.allowOnly("type", "center", "radius", "levels", "segments", "rings", "material", "transform");
                 int seg = o.has("segments") ? o.get("segments").integer(3, 4096) : 12;
                 int rings = o.has("rings") ? o.get("rings").integer(2, 4096) : Math.max(2, seg / 2);
-                Tessellation.sphereflake(geometry, vec(o.get("center")), positive(o.get("radius")),
-                        o.get("levels").integer(0, 6), seg, rings, materialOf(o));
+                int levels = o.get("levels").integer(0, 6);
+                limit(o, ((long) Math.pow(9, levels + 1) - 1) / 8 * 2L * seg * (rings - 1));
+                Tessellation.sphereflake(geometry, vec(o.get("center")), positive(o.get("radius")), levels, seg, rings,
+                        materialOf(o));
                 return false;
             }
             case "obj" -> {
@@ -167,6 +172,12 @@ public final class SceneFile {
             }
             default -> throw o.get("type").error("unknown object type '" + type + "' (sphere, box, plane, sphereflake, obj)");
         }
+    }
+
+    /** Refuses an object that would not fit in memory, before generating it. */
+    private void limit(JsonNode o, long triangles) throws SceneFormatException {
+        if (geometry.triangleCount() + triangles > MAX_TRIANGLES)
+            throw o.error("would make " + triangles + " triangles; a scene holds at most " + MAX_TRIANGLES);
     }
 
     private void obj(JsonNode o) throws IOException {

@@ -33,12 +33,6 @@ public final class Camera {
         return new Camera(eye, eye.plus(forward), up, Math.toDegrees(2 * Math.atan(tanHalfFov)), w, h);
     }
 
-    /** The same camera with every position multiplied by {@code s} (scale tests). */
-    public Camera scaled(double s) {
-        return new Camera(eye.times(s), eye.times(s).plus(forward), up, Math.toDegrees(2 * Math.atan(tanHalfFov)),
-                width, height);
-    }
-
     /** The unit direction of the ray through image point (px, py), in pixels from the top-left. */
     public Vec3 direction(double px, double py) {
         double aspect = (double) width / height;

@@ -71,6 +71,12 @@ class SceneFileTest {
         assertThatThrownBy(() -> SceneFile.read(missing)).hasMessageContaining("$.camera: missing field 'lookAt'");
     }
 
+    @Test void hugeGeneratedObjectsAreRefusedBeforeTheyExhaustMemory() throws Exception {
+        Path f = write("big.json", "{" + CAMERA + ",\n \"objects\": [{\"type\": \"sphereflake\", \"center\": [0,0,0], \"radius\": 1, \"levels\": 6, \"segments\": 64}]}");
+        assertThatThrownBy(() -> SceneFile.read(f)).hasMessageContaining(":2: $.objects[0]: would make")
+                .hasMessageContaining("a scene holds at most 20000000");
+    }
+
     @Test void objFacesTakeTheirUsemtlMaterialFromTheLibrary() throws Exception {
         write("m.mtl", "newmtl red\nKd 1 0 0\nillum 1\n\nnewmtl glass\nKs 1 1 1\nNi 1.5\nTf 0.9 0.9 0.9\nillum 7\n");
         write("a.obj", "mtllib m.mtl\nv 0 0 0\nv 1 0 0\nv 1 1 0\nv 0 1 0\nf 1 2 3\nusemtl glass\nf 1 3 4\nusemtl red\nf 4 3 2\n");
