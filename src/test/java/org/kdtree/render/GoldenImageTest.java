@@ -27,7 +27,7 @@ class GoldenImageTest {
     static final int SIZE = 64;
 
     @ParameterizedTest
-    @ValueSource(strings = {"cornell-box", "diffuse-only", "shadows-only"})
+    @ValueSource(strings = {"cornell-box", "diffuse-only", "shadows-only", "obj-materials"})
     void renderMatchesStoredReference(String name) throws Exception {
         Scene scene = TestRenders.scene(name + ".json", SIZE, SIZE, 2);
         RenderResult r = RenderJob.run(scene, Builders.create("sah"), Renderer.Options.defaults()).result();
