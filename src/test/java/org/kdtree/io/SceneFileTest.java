@@ -54,6 +54,10 @@ class SceneFileTest {
         Path f = write("bad.json", "{\n  \"camera\": {\n    \"eye\": [0, 0 5]\n  }\n}\n");
         assertThatThrownBy(() -> SceneFile.read(f)).isInstanceOf(SceneFormatException.class)
                 .hasMessageStartingWith(f + ":3: malformed JSON");
+        Path empty = write("empty.json", "");
+        assertThatThrownBy(() -> SceneFile.read(empty)).hasMessageStartingWith(empty + ":1: unexpected end of file");
+        Path array = write("array.json", "[1, 2]");
+        assertThatThrownBy(() -> SceneFile.read(array)).hasMessage(array + ":1: $: expected an object");
     }
 
     @Test void wrongFieldValueNamesFileLineAndField() throws Exception {
