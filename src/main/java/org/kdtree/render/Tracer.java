@@ -65,42 +65,52 @@ public final class Tracer {
         counts.add(kind);
         ray.set(origin.x(), origin.y(), origin.z(), dir.x(), dir.y(), dir.z());
         if (!query.closestHit(ray, 0, Double.POSITIVE_INFINITY, hit)) return scene.background();
+        Surface s = surface(dir);
+        Material m = materials.get(s.material);
+        Vec3 color = m.emission().plus(scene.ambient().times(m.diffuse()));
+        if (plan.lit(s.material)) color = color.plus(direct(m, s.p, s.ng, s.ns, dir.negate(), s.scale));
+        if (depth >= plan.maxDepth()) return color;
+        return secondary(s, m, dir, depth, weight, color);
+    }
+
+    /** What shading needs of the current hit; both normals face the incoming ray. */
+    private record Surface(int material, Vec3 p, Vec3 ng, Vec3 ns, boolean entering, double scale) {
+    }
+
+    private Surface surface(Vec3 dir) {
         int tri = hit.primitive;
-        int mi = geometry.materialOf(tri);
-        Material m = materials.get(mi);
         Vec3 p = geometry.point(tri, hit.u, hit.v);
         Vec3 ng = geometry.geometricNormal(tri).normalized();
         Vec3 ns = geometry.shadingNormal(tri, hit.u, hit.v);
         boolean entering = ng.dot(dir) < 0;
-        if (!entering) ng = ng.negate();          // both normals face the incoming ray from here on
+        if (!entering) ng = ng.negate();
         if (ns.dot(ng) < 0) ns = ns.negate();
-        double scale = Math.max(p.maxAbs(), triangleMagnitude(tri));
+        return new Surface(geometry.materialOf(tri), p, ng, ns, entering, Math.max(p.maxAbs(), triangleMagnitude(tri)));
+    }
 
-        Vec3 color = m.emission().plus(scene.ambient().times(m.diffuse()));
-        if (plan.lit(mi)) color = color.plus(direct(m, p, ng, ns, dir.negate(), scale));
-        if (depth >= plan.maxDepth()) return color;
-
-        Vec3 kr = plan.reflects(mi) ? m.reflectivity() : Vec3.ZERO;
+    /** Adds to {@code color} the reflection and refraction rays the plan allows and the path's weight justifies. */
+    private Vec3 secondary(Surface s, Material m, Vec3 dir, int depth, double weight, Vec3 color) {
+        Vec3 kr = plan.reflects(s.material) ? m.reflectivity() : Vec3.ZERO;
         Vec3 kt = Vec3.ZERO;
         Vec3 refracted = null;
-        if (plan.refracts(mi)) {
-            double eta = entering ? 1 / m.ior() : m.ior();
-            refracted = refract(dir, ns, eta);
+        if (plan.refracts(s.material)) {
+            double eta = s.entering ? 1 / m.ior() : m.ior();
+            refracted = refract(dir, s.ns, eta);
             if (refracted != null) {       // else total internal reflection: kr keeps everything
-                double f = m.fresnel() ? fresnel(dir, ns, refracted, eta) : 0;
+                double f = m.fresnel() ? fresnel(dir, s.ns, refracted, eta) : 0;
                 if (m.fresnel()) kr = kr.times(f);
                 kt = m.transmission().times(1 - f);
             }
         }
         double wr = weight * kr.max();
         if (wr >= EffectPlan.NEGLIGIBLE_WEIGHT) {
-            Vec3 r = reflect(dir, ns);
-            if (r.dot(ng) <= 0) r = reflect(dir, ng);   // the interpolated normal bent it under the facet
-            color = color.plus(kr.times(trace(leave(p, ng, r, scale), r, depth + 1, wr, RayKind.REFLECTION)));
+            Vec3 r = reflect(dir, s.ns);
+            if (r.dot(s.ng) <= 0) r = reflect(dir, s.ng);   // the interpolated normal bent it under the facet
+            color = color.plus(kr.times(trace(leave(s.p, s.ng, r, s.scale), r, depth + 1, wr, RayKind.REFLECTION)));
         }
         double wt = weight * kt.max();
         if (refracted != null && wt >= EffectPlan.NEGLIGIBLE_WEIGHT)
-            color = color.plus(kt.times(trace(leave(p, ng, refracted, scale), refracted, depth + 1, wt,
+            color = color.plus(kt.times(trace(leave(s.p, s.ng, refracted, s.scale), refracted, depth + 1, wt,
                     RayKind.REFRACTION)));
         return color;
     }
