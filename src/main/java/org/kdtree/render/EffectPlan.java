@@ -86,8 +86,8 @@ public final class EffectPlan {
         if (effects.isEmpty()) s.append("none (flat colours)");
         else effects.forEach(e -> s.append(e.label()).append(", "));
         if (!effects.isEmpty()) s.setLength(s.length() - 2);
-        s.append(String.format(java.util.Locale.ROOT, "%nmax depth: %d, negligible path weight: %g", maxDepth,
-                NEGLIGIBLE_WEIGHT));
+        s.append(System.lineSeparator()).append("max depth: ").append(maxDepth)
+                .append(", negligible path weight: ").append(NEGLIGIBLE_WEIGHT);
         for (String n : notes) s.append(System.lineSeparator()).append(n);
         return s.toString();
     }

@@ -90,21 +90,23 @@ public final class Tracer {
 
     /** Adds to {@code color} the reflection and refraction rays the plan allows and the path's weight justifies. */
     private Vec3 secondary(Surface s, Material m, Vec3 dir, int depth, double weight, Vec3 color) {
+        // near silhouettes an interpolated normal can face away from the ray: use the facet's there
+        Vec3 n = dir.dot(s.ns) < 0 ? s.ns : s.ng;
         Vec3 kr = plan.reflects(s.material) ? m.reflectivity() : Vec3.ZERO;
         Vec3 kt = Vec3.ZERO;
         Vec3 refracted = null;
         if (plan.refracts(s.material)) {
             double eta = s.entering ? 1 / m.ior() : m.ior();
-            refracted = refract(dir, s.ns, eta);
+            refracted = refract(dir, n, eta);
             if (refracted != null) {       // else total internal reflection: kr keeps everything
-                double f = m.fresnel() ? fresnel(dir, s.ns, refracted, eta) : 0;
+                double f = m.fresnel() ? fresnel(dir, n, refracted, eta) : 0;
                 if (m.fresnel()) kr = kr.times(f);
                 kt = m.transmission().times(1 - f);
             }
         }
         double wr = weight * kr.max();
         if (wr >= EffectPlan.NEGLIGIBLE_WEIGHT) {
-            Vec3 r = reflect(dir, s.ns);
+            Vec3 r = reflect(dir, n);
             if (r.dot(s.ng) <= 0) r = reflect(dir, s.ng);   // the interpolated normal bent it under the facet
             color = color.plus(kr.times(trace(leave(s.p, s.ng, r, s.scale), r, depth + 1, wr, RayKind.REFLECTION)));
         }
