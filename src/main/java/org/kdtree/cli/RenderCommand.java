@@ -31,6 +31,10 @@ public final class RenderCommand implements Callable<Integer> {
     @Option(names = "--spp", description = "Samples per pixel (default: the scene's).")
     Integer spp;
 
+    @Option(names = "--ray-depth", description = "Maximum reflection/refraction depth (default: the scene's maxDepth; "
+            + "--max-depth is the tree's).")
+    Integer rayDepth;
+
     @Option(names = "--width", description = "Image width (default: the scene's).")
     Integer width;
 
@@ -45,6 +49,10 @@ public final class RenderCommand implements Callable<Integer> {
         if (spp != null) {
             if (spp < 1) throw new IllegalArgumentException("--spp must be at least 1");
             s = s.withSamplesPerPixel(spp);
+        }
+        if (rayDepth != null) {
+            if (rayDepth < 0) throw new IllegalArgumentException("--ray-depth must be at least 0");
+            s = s.withMaxDepth(rayDepth);
         }
         if (width != null || height != null) {
             int w = width != null ? width : s.camera().width(), h = height != null ? height : s.camera().height();

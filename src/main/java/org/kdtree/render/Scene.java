@@ -35,6 +35,11 @@ public record Scene(String name, Camera camera, List<Light> lights, Vec3 backgro
                 geometryMayOcclude, seed);
     }
 
+    public Scene withMaxDepth(int depth) {
+        return new Scene(name, camera, lights, background, ambient, geometry, materials, samplesPerPixel, depth,
+                geometryMayOcclude, seed);
+    }
+
     public Scene withMaterials(List<Material> newMaterials) {
         return new Scene(name, camera, lights, background, ambient, geometry, List.copyOf(newMaterials),
                 samplesPerPixel, maxDepth, geometryMayOcclude, seed);

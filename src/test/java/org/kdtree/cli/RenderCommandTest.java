@@ -45,6 +45,15 @@ class RenderCommandTest {
         assertThat(r.err()).contains("100% (4/4 tiles)");
     }
 
+    @Test void rayDepthZeroTurnsReflectionAndRefractionOff() throws Exception {
+        Run r = run("render", "scenes/cornell-box.json", "-o", dir.resolve("c.png").toString(), "--ray-depth", "0",
+                "--spp", "1", "--width", "16", "--height", "16", "-q");
+        assertThat(r.code()).as(r.err()).isZero();
+        assertThat(r.out()).contains("max depth: 0").doesNotContain("reflection,").doesNotContain("refraction,")
+                .containsPattern("reflection +0 ").containsPattern("refraction +0 ");
+        assertThat(r.err()).isEmpty();
+    }
+
     @Test void aMalformedSceneGivesOneClearLineAndNoStackTrace() throws Exception {
         Path bad = dir.resolve("bad.json");
         Files.writeString(bad, "{\"camera\": {\"eye\": [0, 0, 5], \"lookAt\": [0, 0, 0], \"fov\": 400,\n \"width\": 8, \"height\": 8}}");
@@ -54,6 +63,8 @@ class RenderCommandTest {
         r = run("render", dir.resolve("missing.json").toString());
         assertThat(r.code()).isEqualTo(2);
         assertThat(r.err()).contains("missing.json: no such file").doesNotContain("Exception");
+        r = run("render", "scenes/diffuse-only.json", "--ray-depth", "-1");
+        assertThat(r.err()).contains("--ray-depth must be at least 0");
         r = run("render", "scenes/diffuse-only.json", "--threads", "0");
         assertThat(r.err()).contains("--threads must be at least 1");
     }
