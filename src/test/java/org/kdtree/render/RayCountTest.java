@@ -7,6 +7,7 @@ import java.util.List;
 import org.junit.jupiter.api.Test;
 import org.kdtree.geom.Ray;
 import org.kdtree.traverse.BruteForce;
+import org.kdtree.traverse.TriangleIntersector;
 import org.kdtree.traverse.Hit;
 
 /** The effect plan decides which rays are cast: counted by kind. */
@@ -57,7 +58,7 @@ class RayCountTest {
         RenderResult r = TestRenders.bruteForce(mirror, 2);
         assertThat(r.plan().effects()).contains(Effect.REFLECTION);
 
-        BruteForce oracle = new BruteForce(new SimpleTriangleIntersector(mirror.mesh()));
+        BruteForce oracle = new BruteForce(new TriangleIntersector(mirror.mesh()));
         Camera cam = mirror.camera();
         Ray ray = new Ray(3);
         Hit hit = new Hit();

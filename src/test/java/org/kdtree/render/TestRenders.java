@@ -5,6 +5,7 @@ import java.io.StringReader;
 import java.nio.file.Path;
 import org.kdtree.io.SceneFile;
 import org.kdtree.traverse.BruteForce;
+import org.kdtree.traverse.TriangleIntersector;
 
 /** Scene loading and rendering shortcuts for the render tests. */
 final class TestRenders {
@@ -19,9 +20,9 @@ final class TestRenders {
         return SceneFile.read(new StringReader(text), "test.json", Path.of("."));
     }
 
-    /** Renders with brute force (the oracle), recording per-pixel rays. */
+    /** Renders with brute force over the watertight triangle test (the oracle), recording per-pixel rays. */
     static RenderResult bruteForce(Scene s, int threads) {
-        SimpleTriangleIntersector in = new SimpleTriangleIntersector(s.mesh());
+        TriangleIntersector in = new TriangleIntersector(s.mesh());
         return Renderer.render(s, () -> new BruteForce(in), Renderer.Options.defaults().withThreads(threads).recordingPixelRays());
     }
 }
