@@ -182,6 +182,7 @@ public final class SceneFile {
 
     private void obj(JsonNode o) throws IOException {
         Path path = dir.resolve(o.get("file").string());
+        if (!Files.isRegularFile(path)) throw o.get("file").error("no such file: " + path);
         ObjMaterialMesh mesh = ObjMaterialMesh.read(path);
         Map<String, Material> library = new LinkedHashMap<>();
         for (Path lib : mesh.libraries()) library.putAll(MtlMaterials.read(lib));

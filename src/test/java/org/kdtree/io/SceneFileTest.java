@@ -110,6 +110,9 @@ class SceneFileTest {
         Path g = write("t.json", "{" + CAMERA + ", \"objects\": [{\"type\": \"obj\", \"file\": \"b.obj\"}]}");
         assertThatThrownBy(() -> SceneFile.read(g)).hasMessageStartingWith(dir.resolve("b.obj") + ":5: usemtl b: no such material");
 
+        Path none = write("n.json", "{" + CAMERA + ",\n \"objects\": [{\"type\": \"obj\", \"file\": \"nope.obj\"}]}");
+        assertThatThrownBy(() -> SceneFile.read(none)).hasMessageStartingWith(none + ":2: $.objects[0].file: no such file");
+
         write("c.obj", "v 0 0 0\nv 1 0 0\nf 1 2 7\n");
         Path h = write("u.json", "{" + CAMERA + ", \"objects\": [{\"type\": \"obj\", \"file\": \"c.obj\"}]}");
         assertThatThrownBy(() -> SceneFile.read(h)).hasMessageStartingWith(dir.resolve("c.obj") + ":3: vertex index 7 out of range");
