@@ -185,7 +185,11 @@ public final class SceneFile {
         if (!Files.isRegularFile(path)) throw o.get("file").error("no such file: " + path);
         ObjMaterialMesh mesh = ObjMaterialMesh.read(path);
         Map<String, Material> library = new LinkedHashMap<>();
-        for (Path lib : mesh.libraries()) library.putAll(MtlMaterials.read(lib));
+        for (Path lib : mesh.libraries()) {
+            if (!Files.isRegularFile(lib))
+                throw new SceneFormatException(path.toString(), 0, "mtllib " + lib.getFileName() + ": no such file (" + lib + ")");
+            library.putAll(MtlMaterials.read(lib));
+        }
         int[] global = new int[mesh.materialNames().size()];
         for (int i = 0; i < global.length; i++) {
             String m = mesh.materialNames().get(i);
