@@ -1,112 +1,268 @@
 package org.kdtree.gui;
 
 import java.awt.BorderLayout;
+import java.awt.Dimension;
 import java.awt.FlowLayout;
 import java.awt.Font;
+import java.awt.Graphics;
+import java.awt.image.BufferedImage;
 import java.io.IOException;
 import java.nio.file.Files;
 import java.nio.file.Path;
+import java.util.ArrayList;
 import java.util.List;
 import java.util.Locale;
+import java.util.concurrent.atomic.AtomicInteger;
 import java.util.stream.Stream;
 import javax.swing.BorderFactory;
 import javax.swing.JButton;
 import javax.swing.JComboBox;
+import javax.swing.JComponent;
 import javax.swing.JLabel;
 import javax.swing.JPanel;
 import javax.swing.JScrollPane;
+import javax.swing.JSpinner;
+import javax.swing.JSplitPane;
 import javax.swing.JTextArea;
-import javax.swing.SwingWorker;
+import javax.swing.SpinnerNumberModel;
+import javax.swing.SwingUtilities;
+import javax.swing.Timer;
 import org.kdtree.build.Builders;
 import org.kdtree.build.KdTreeBuilder;
+import org.kdtree.io.SceneFile;
 import org.kdtree.io.SceneLoader;
+import org.kdtree.render.EffectPlan;
+import org.kdtree.render.Image;
+import org.kdtree.render.RayCounts;
+import org.kdtree.render.RayKind;
+import org.kdtree.render.Scene;
+import org.kdtree.render.Tracer;
 import org.kdtree.shape.Primitives;
+import org.kdtree.traverse.Traverser;
+import org.kdtree.traverse.TriangleIntersector;
 import org.kdtree.tree.KdTree;
 
 /**
- * The 3-D view: pick a scene from scenes/ and a builder, build its tree in the background and
- * show the tree's statistics.
+ * The 3-D view: pick a scene from scenes/ and a builder. A JSON scene is rendered with the
+ * library's ray tracer ({@link Tracer} over a {@link Traverser} per thread), tile by tile, the
+ * image shown as it fills in, then the render's statistics (rays by kind, times, the tree). An
+ * OBJ mesh, which has no camera, gets its tree built and its statistics shown.
  */
 public final class View3D extends JPanel {
     private final JComboBox<String> scene = new JComboBox<>();
     private final JComboBox<String> builder = new JComboBox<>(Builders.names().toArray(String[]::new));
-    private final JButton build = new JButton("Build");
-    private final JTextArea output = new JTextArea(20, 60);
+    private final JSpinner width = new JSpinner(new SpinnerNumberModel(480, 16, 4096, 16));
+    private final JButton build = new JButton("Render");
+    private final JButton stop = new JButton("Stop");
+    private final JTextArea output = new JTextArea(20, 40);
     private final JLabel status = new JLabel(" ");
+    private final Picture picture = new Picture();
     private final Path dir;
     private final WorkbenchModel model;
+    private volatile boolean cancelled;
+    private Thread running;
 
     public View3D(WorkbenchModel model, Path scenesDir) {
         super(new BorderLayout());
         this.model = model;
         this.dir = scenesDir;
         scene.setName("view3d.scene");
-        scene.setToolTipText("A 3-D scene from " + scenesDir);
+        scene.setToolTipText("A 3-D scene from " + scenesDir + ": JSON scenes are rendered, OBJ meshes get their tree's statistics");
         builder.setName("view3d.builder");
         builder.setToolTipText("The builder (with the Kt, Ki, lambda, Kmintri, Kmaxdepth of the 2-D view)");
+        width.setName("view3d.width");
+        width.setToolTipText("Image width in pixels (the height follows the scene's aspect ratio)");
         build.setName("view3d.build");
-        build.setToolTipText("Build the scene's tree in the background (Alt+D)");
+        build.setToolTipText("Build the tree and render the scene, showing the image as it fills in (Alt+D)");
         build.setMnemonic('D');
+        stop.setName("view3d.stop");
+        stop.setToolTipText("Stop the render");
+        stop.setEnabled(false);
         output.setEditable(false);
         output.setName("view3d.output");
-        output.setFont(new Font(Font.MONOSPACED, Font.PLAIN, 13));
-        output.setToolTipText("The 3-D tree's statistics");
+        output.setFont(new Font(Font.MONOSPACED, Font.PLAIN, 12));
+        output.setToolTipText("The render's statistics and the tree's");
         status.setName("view3d.status");
+        picture.setToolTipText("The rendered image");
         JPanel top = new JPanel(new FlowLayout(FlowLayout.LEFT));
         top.add(new JLabel("Scene"));
         top.add(scene);
         top.add(new JLabel("Builder"));
         top.add(builder);
+        top.add(new JLabel("Width"));
+        top.add(width);
         top.add(build);
+        top.add(stop);
         top.add(status);
         add(top, BorderLayout.NORTH);
-        JScrollPane sp = new JScrollPane(output);
-        sp.setBorder(BorderFactory.createTitledBorder("3-D tree"));
-        add(sp, BorderLayout.CENTER);
+        JScrollPane text = new JScrollPane(output);
+        text.setBorder(BorderFactory.createTitledBorder("Statistics"));
+        JScrollPane pic = new JScrollPane(picture);
+        pic.setBorder(BorderFactory.createTitledBorder("Image"));
+        JSplitPane split = new JSplitPane(JSplitPane.HORIZONTAL_SPLIT, pic, text);
+        split.setResizeWeight(0.65);
+        add(split, BorderLayout.CENTER);
         for (String s : sceneFiles(scenesDir)) scene.addItem(s);
         if (scene.getItemCount() == 0) status.setText("no 3-D scene in " + scenesDir.toAbsolutePath());
+        scene.addActionListener(e -> build.setText(isJson((String) scene.getSelectedItem()) ? "Render" : "Build"));
         build.addActionListener(e -> build());
+        stop.addActionListener(e -> cancelled = true);
     }
 
-    /** The .obj files of {@code dir}, by name. */
+    /** The JSON scenes, then the .obj meshes of {@code dir}, by name. */
     static List<String> sceneFiles(Path dir) {
         if (!Files.isDirectory(dir)) return List.of();
         try (Stream<Path> s = Files.list(dir)) {
-            return s.map(p -> p.getFileName().toString()).filter(n -> n.toLowerCase(Locale.ROOT).endsWith(".obj")).sorted().toList();
+            List<String> names = s.map(p -> p.getFileName().toString()).sorted().toList();
+            List<String> out = new ArrayList<>(names.stream().filter(View3D::isJson).toList());
+            out.addAll(names.stream().filter(n -> n.toLowerCase(Locale.ROOT).endsWith(".obj")).toList());
+            return out;
         } catch (IOException e) {
             return List.of();
         }
     }
 
-    /** Builds the chosen scene's tree in a background thread and shows its statistics. */
+    private static boolean isJson(String name) {
+        return name != null && name.toLowerCase(Locale.ROOT).endsWith(".json");
+    }
+
+    /** Renders (JSON) or builds (OBJ) the chosen scene in the background. */
     public void build() {
         String name = (String) scene.getSelectedItem();
-        if (name == null) return;
+        if (name == null || running != null) return;
         Path file = dir.resolve(name);
         KdTreeBuilder b = model.settings().withBuilder((String) builder.getSelectedItem()).create();
+        int w = ((Number) width.getValue()).intValue();
+        cancelled = false;
         build.setEnabled(false);
-        status.setText("building " + name + " ...");
-        new SwingWorker<String, Void>() {
-            @Override protected String doInBackground() throws Exception {
-                Primitives p = SceneLoader.load(file);
-                long t0 = System.nanoTime();
-                KdTree tree = b.build(p);
-                double ms = (System.nanoTime() - t0) / 1e6;
-                return String.format(Locale.ROOT, "scene: %s (%d primitives)%nbuilder: %s (%s)%nbuild time: %.1f ms%n%s%n",
-                        name, p.size(), b.name(), b.describeSettings(), ms, tree.stats().describe());
+        stop.setEnabled(true);
+        status.setText((isJson(name) ? "rendering " : "building ") + name + " ...");
+        running = new Thread(() -> {
+            String text;
+            try {
+                text = isJson(name) ? render(file, b, w) : statistics(file, b);
+            } catch (IOException | RuntimeException e) {
+                text = "cannot " + (isJson(name) ? "render " : "build ") + name + ": " + e.getMessage();
             }
+            String result = text;
+            SwingUtilities.invokeLater(() -> finished(name, result));
+        }, "workbench-3d");
+        running.setDaemon(true);
+        running.start();
+    }
 
-            @Override protected void done() {
-                build.setEnabled(true);
-                try {
-                    output.setText(get());
-                    status.setText("built " + name);
-                } catch (Exception e) {
-                    Throwable c = e.getCause() != null ? e.getCause() : e;
-                    output.setText("cannot build " + name + ": " + c.getMessage());
-                    status.setText("failed");
+    /** Whether a build or render is under way. */
+    public boolean busy() { return running != null; }
+
+    /** Chooses the scene (a file name in the scenes folder) and the image width. */
+    public void choose(String sceneName, int imageWidth) {
+        scene.setSelectedItem(sceneName);
+        width.setValue(imageWidth);
+    }
+
+    /** The statistics shown after the last build or render. */
+    public String statisticsText() { return output.getText(); }
+
+    /** The image rendered so far (null before any render). */
+    public BufferedImage image() { return picture.img; }
+
+    private void finished(String name, String text) {
+        running = null;
+        output.setText(text);
+        output.setCaretPosition(0);
+        status.setText((cancelled ? "stopped " : "done: ") + name);
+        build.setEnabled(true);
+        stop.setEnabled(false);
+        picture.repaint();
+    }
+
+    private String statistics(Path file, KdTreeBuilder b) throws IOException {
+        Primitives p = SceneLoader.load(file);
+        long t0 = System.nanoTime();
+        KdTree tree = b.build(p);
+        double ms = (System.nanoTime() - t0) / 1e6;
+        return String.format(Locale.ROOT, "scene: %s (%d primitives, no camera: statistics only)%nbuilder: %s (%s)%n"
+                + "build time: %.1f ms%n%s%n", file.getFileName(), p.size(), b.name(), b.describeSettings(), ms, tree.stats().describe());
+    }
+
+    /** Renders tile by tile over all cores; the picture shows the image as tiles complete. */
+    private String render(Path file, KdTreeBuilder b, int w) throws IOException {
+        Scene s = SceneFile.read(file);
+        int h = Math.max(1, (int) Math.round(w * (double) s.camera().height() / s.camera().width()));
+        Scene scene3 = s.withImageSize(w, h);
+        long t0 = System.nanoTime();
+        KdTree tree = b.build(scene3.mesh());
+        long t1 = System.nanoTime();
+        TriangleIntersector triangles = new TriangleIntersector(scene3.mesh());
+        EffectPlan plan = new EffectPlan(scene3);
+        Image image = new Image(w, h);
+        int ts = 16, tilesX = (w + ts - 1) / ts, tiles = tilesX * ((h + ts - 1) / ts);
+        AtomicInteger next = new AtomicInteger(), done = new AtomicInteger();
+        Timer refresh = new Timer(150, e -> picture.show(image.toBufferedImage(), done.get(), tiles));
+        SwingUtilities.invokeLater(refresh::start);
+        int threads = Math.max(1, Runtime.getRuntime().availableProcessors());
+        List<Thread> workers = new ArrayList<>();
+        List<RayCounts> counts = new ArrayList<>();
+        for (int i = 0; i < threads; i++) {
+            Tracer tracer = new Tracer(scene3, plan, new Traverser(tree, triangles));
+            counts.add(tracer.counts());
+            Thread t = new Thread(() -> {
+                for (int tile; !cancelled && (tile = next.getAndIncrement()) < tiles; ) {
+                    int x0 = (tile % tilesX) * ts, y0 = (tile / tilesX) * ts;
+                    for (int y = y0; y < Math.min(h, y0 + ts); y++)
+                        for (int x = x0; x < Math.min(w, x0 + ts); x++) image.set(x, y, tracer.pixel(x, y));
+                    done.incrementAndGet();
                 }
+            }, "workbench-render");
+            t.setDaemon(true);
+            workers.add(t);
+            t.start();
+        }
+        for (Thread t : workers) {
+            try {
+                t.join();
+            } catch (InterruptedException e) {
+                Thread.currentThread().interrupt();
+                cancelled = true;
             }
-        }.execute();
+        }
+        long t2 = System.nanoTime();
+        SwingUtilities.invokeLater(() -> {
+            refresh.stop();
+            picture.show(image.toBufferedImage(), done.get(), tiles);
+        });
+        RayCounts total = new RayCounts();
+        for (RayCounts c : counts) total.merge(c);
+        StringBuilder out = new StringBuilder();
+        out.append(String.format(Locale.ROOT, "scene: %s (%d triangles)%nimage: %d x %d, %d samples per pixel, %d threads%n",
+                file.getFileName(), scene3.mesh().size(), w, h, scene3.samplesPerPixel(), threads));
+        out.append(plan.describe()).append('\n');
+        out.append(String.format(Locale.ROOT, "builder: %s (%s)%nbuild time: %.1f ms%nrender time: %.1f ms%s%n",
+                b.name(), b.describeSettings(), (t1 - t0) / 1e6, (t2 - t1) / 1e6, cancelled ? " (stopped)" : ""));
+        out.append("rays:\n");
+        double sec = Math.max(1e-9, (t2 - t1) / 1e9);
+        for (RayKind k : RayKind.values())
+            out.append(String.format(Locale.ROOT, "  %-10s %,12d  %,12.0f rays/s%n", k.label(), total.get(k), total.get(k) / sec));
+        out.append(String.format(Locale.ROOT, "  %-10s %,12d  %,12.0f rays/s%n", "total", total.total(), total.total() / sec));
+        out.append("tree:\n");
+        for (String line : tree.stats().describe().split("\\R")) out.append("  ").append(line).append('\n');
+        return out.toString();
+    }
+
+    /** The image as it fills in. */
+    private final class Picture extends JComponent {
+        private BufferedImage img;
+
+        void show(BufferedImage i, int done, int total) {
+            img = i;
+            setPreferredSize(new Dimension(i.getWidth(), i.getHeight()));
+            revalidate();
+            repaint();
+            if (running != null) status.setText(String.format(Locale.ROOT, "rendering: %d / %d tiles", done, total));
+        }
+
+        @Override protected void paintComponent(Graphics g) {
+            if (img != null) g.drawImage(img, 0, 0, null);
+        }
     }
 }
