@@ -100,7 +100,7 @@ public final class View3D extends JPanel {
         JScrollPane pic = new JScrollPane(picture);
         pic.setBorder(BorderFactory.createTitledBorder("Image"));
         JSplitPane split = new JSplitPane(JSplitPane.HORIZONTAL_SPLIT, pic, text);
-        split.setResizeWeight(0.65);
+        split.setResizeWeight(0.45);
         add(split, BorderLayout.CENTER);
         for (String s : sceneFiles(scenesDir)) scene.addItem(s);
         if (scene.getItemCount() == 0) status.setText("no 3-D scene in " + scenesDir.toAbsolutePath());

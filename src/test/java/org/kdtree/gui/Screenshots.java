@@ -63,11 +63,18 @@ public final class Screenshots {
         shot(out, "compare.png");
 
         on(() -> b.tabs().setSelectedIndex(2));
+        View3D v = (View3D) b.tabs().getComponentAt(2);
         on(() -> {
-            View3D v = (View3D) b.tabs().getComponentAt(2);
+            v.choose("cornell-box.json", 400);
             v.build();
         });
-        Thread.sleep(4000);
+        Thread.sleep(2500);
+        shot(out, "view3d-progress.png");
+        boolean[] busy = {true};
+        for (int i = 0; i < 1200 && busy[0]; i++) {
+            Thread.sleep(100);
+            on(() -> busy[0] = v.busy());
+        }
         shot(out, "view3d.png");
         on(b::dispose);
         System.exit(0);
