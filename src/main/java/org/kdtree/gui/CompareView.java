@@ -74,7 +74,7 @@ public final class CompareView extends JPanel {
             setBorder(BorderFactory.createTitledBorder(builder));
             stats.setName("compare." + builder);
             stats.setToolTipText("Statistics of the " + builder + " tree, and the cast ray's traversal in it");
-            canvas.setToolTipText("The " + builder + " tree over the same scene");
+            canvas.setToolTipText("The " + builder + " tree over the same scene; the leaves the ray visits are shaded orange");
             add(canvas, BorderLayout.CENTER);
             add(stats, BorderLayout.SOUTH);
         }
@@ -109,6 +109,7 @@ public final class CompareView extends JPanel {
         private KdTree tree;
         private double[] ray;
         private TraversalTrace trace;
+        private org.kdtree.geom.Box[] voxels;
 
         Mini() {
             setPreferredSize(new Dimension(360, 360));
@@ -119,6 +120,7 @@ public final class CompareView extends JPanel {
             tree = t;
             ray = r;
             trace = tr;
+            voxels = r == null ? null : StepperPanel.voxelIndex(t);
             repaint();
         }
 
@@ -128,12 +130,19 @@ public final class CompareView extends JPanel {
             ViewTransform v = new ViewTransform().fit(tree.bounds(), getWidth(), getHeight());
             TreePainter.paint(g, getWidth(), getHeight(), scene, tree, v, TreePainter.Options.PLAIN);
             if (ray != null) {
+                // the leaves the ray visited: what it paid for in this tree
+                java.awt.Color c = Palette.CURRENT_NODE;
+                g.setColor(new java.awt.Color(c.getRed(), c.getGreen(), c.getBlue(), 90));
+                for (TraversalTrace.Step st : trace.steps())
+                    if (st.kind() == TraversalTrace.Kind.LEAF && voxels[st.node()] != null) g.fill(TreePainter.rect(v, voxels[st.node()]));
                 double end = StepperPanel.rayEnd(tree.bounds(), ray);
                 g.setColor(Palette.RAY);
                 g.setStroke(new BasicStroke(2f));
                 g.draw(TreeCanvas.line(v, ray[0], ray[1], ray[0] + end * ray[2], ray[1] + end * ray[3]));
                 if (trace.hitObject() >= 0) {
                     TreePainter.paintShape(g, scene.get(trace.hitObject()), v, Palette.HIT, null, new BasicStroke(3f));
+                    double hx = v.screenX(ray[0] + trace.hitT() * ray[2]), hy = v.screenY(ray[1] + trace.hitT() * ray[3]);
+                    g.fill(new java.awt.geom.Ellipse2D.Double(hx - 4, hy - 4, 8, 8));
                 }
             }
             g.dispose();
