@@ -1,6 +1,5 @@
 package org.kdtree.gui;
 
-import java.awt.Graphics2D;
 import java.awt.image.BufferedImage;
 import java.util.concurrent.TimeUnit;
 import org.kdtree.shape.Shapes2D;
