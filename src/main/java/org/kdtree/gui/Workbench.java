@@ -127,6 +127,7 @@ public final class Workbench extends JFrame {
         b.setName("tool." + t.name());
         b.setSelected(t == EditTool.SELECT);
         b.setFocusable(false);
+        b.setMaximumSize(new Dimension(Integer.MAX_VALUE, b.getPreferredSize().height)); // all as wide as the bar
         toolGroup.add(b);
         toolBar.add(b);
         toolsMenu.add(a);

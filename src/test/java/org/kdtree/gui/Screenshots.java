@@ -31,7 +31,13 @@ public final class Screenshots {
         on(() -> m.selectNode(TreePainter.leafAt(m.tree(), 3.2, 6.5)));
         shot(out, "build-2d.png");
 
-        on(() -> b.tabs().setSelectedIndex(0));
+        on(() -> {
+            b.scenes().selectBuiltin(3);
+            m.selectShape(m.scene().size() - 1);
+            m.selectNode(TreePainter.leafAt(m.tree(), 5.0, 5.3));
+        });
+        shot(out, "long-thin.png");
+
         on(() -> {
             b.scenes().selectBuiltin(2);
             m.selectNode(-1);
