@@ -20,7 +20,7 @@ public final class ScenePanel extends JPanel {
     private final Map<String, IntFunction<List<Shape2D>>> generators = BuiltinScenes.generators();
     private final JComboBox<String> scene = new JComboBox<>(builtins.keySet().toArray(String[]::new));
     private final JComboBox<String> generator = new JComboBox<>(generators.keySet().toArray(String[]::new));
-    private final JSpinner count = new JSpinner(new SpinnerNumberModel(500, 1, 200_000, 100));
+    private final JSpinner count = new JSpinner(new SpinnerNumberModel(500, 1, 100_000, 100));
     private final JButton generate = new JButton("Generate");
     private final Runnable onLoaded;
     private final WorkbenchModel model;
