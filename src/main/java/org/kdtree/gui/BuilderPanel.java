@@ -12,6 +12,7 @@ import javax.swing.JSlider;
 import javax.swing.JSpinner;
 import javax.swing.SpinnerNumberModel;
 import org.kdtree.build.Builders;
+import org.kdtree.build.SahBuilder;
 
 /**
  * The builder controls: which builder, Kt, Ki, lambda (spinner and slider), Kmintri and
@@ -25,6 +26,8 @@ public final class BuilderPanel extends JPanel {
     private final JSpinner ki = spinner(new SpinnerNumberModel(20.0, 0.5, 1000.0, 1.0));
     private final JSpinner lambda = spinner(new SpinnerNumberModel(0.8, 0.05, 1.0, 0.05));
     private final JSlider lambdaSlider = new JSlider(5, 100, 80);
+    private final JComboBox<SahBuilder.Algorithm> algorithm = new JComboBox<>(java.util.Arrays.stream(SahBuilder.Algorithm.values())
+            .filter(a -> a != SahBuilder.Algorithm.NAIVE).toArray(SahBuilder.Algorithm[]::new)); // O(N^2): too slow to be live
     private final JSpinner minPrims = spinner(new SpinnerNumberModel(2, 0, 1000, 1));
     private final JSpinner maxDepth = spinner(new SpinnerNumberModel(-1, -1, 64, 1));
     private boolean updating;
@@ -38,6 +41,7 @@ public final class BuilderPanel extends JPanel {
         name(ki, "ki", "Ki: cost of intersecting one object (SAH)");
         name(lambda, "lambda", "lambda: weight of a plane that cuts off empty space (1 = no bonus); SAH only");
         name(lambdaSlider, "lambdaSlider", "lambda as a slider, in hundredths");
+        name(algorithm, "algorithm", "How the SAH searches for its planes: the exact searches build the same tree at different speeds (SAH only)");
         name(minPrims, "kmintri", "Kmintri: a voxel with at most this many objects becomes a leaf (median builders)");
         name(maxDepth, "kmaxdepth", "Kmaxdepth: maximum depth (-1 = 8 + 1.3 log2 N)");
         row(0, "Builder", builder);
@@ -45,9 +49,11 @@ public final class BuilderPanel extends JPanel {
         row(2, "Ki", ki);
         row(3, "lambda", lambda);
         row(4, "", lambdaSlider);
-        row(5, "Kmintri", minPrims);
-        row(6, "Kmaxdepth", maxDepth);
+        row(5, "SAH search", algorithm);
+        row(6, "Kmintri", minPrims);
+        row(7, "Kmaxdepth", maxDepth);
         builder.addActionListener(e -> apply());
+        algorithm.addActionListener(e -> apply());
         for (JSpinner s : new JSpinner[] {kt, ki, lambda, minPrims, maxDepth}) s.addChangeListener(e -> apply());
         lambdaSlider.addChangeListener(e -> {
             if (!updating) lambda.setValue(lambdaSlider.getValue() / 100.0);
@@ -68,7 +74,7 @@ public final class BuilderPanel extends JPanel {
         BuilderSettings s = new BuilderSettings((String) builder.getSelectedItem(),
                 ((Number) kt.getValue()).doubleValue(), ((Number) ki.getValue()).doubleValue(),
                 ((Number) lambda.getValue()).doubleValue(), ((Number) minPrims.getValue()).intValue(),
-                ((Number) maxDepth.getValue()).intValue());
+                ((Number) maxDepth.getValue()).intValue(), (SahBuilder.Algorithm) algorithm.getSelectedItem());
         show(s);
         model.setSettings(s);
     }
@@ -82,11 +88,13 @@ public final class BuilderPanel extends JPanel {
             lambda.setValue(s.lambda());
             minPrims.setValue(s.minPrims());
             maxDepth.setValue(s.maxDepth());
+            algorithm.setSelectedItem(s.algorithm());
             lambdaSlider.setValue((int) Math.round(s.lambda() * 100));
             boolean sah = BuilderSettings.usesLambda(s.builder());
             boolean median = BuilderSettings.usesMinPrims(s.builder());
             lambda.setEnabled(sah);
             lambdaSlider.setEnabled(sah);
+            algorithm.setEnabled(sah);
             minPrims.setEnabled(median);
         } finally {
             updating = false;

@@ -17,24 +17,27 @@ import org.kdtree.tree.CostModel;
  * @param lambda   SAH weight of a plane that leaves one side empty, in (0, 1]
  * @param minPrims Kmintri of the median builders
  * @param maxDepth Kmaxdepth, or -1 for the default {@code 8 + 1.3 log2 N}
+ * @param algorithm how the SAH searches for its planes (the tree is the same; the build time is not)
  */
-public record BuilderSettings(String builder, double kt, double ki, double lambda, int minPrims, int maxDepth) {
-    /** SAH with Wald and Havran's constants. */
-    public static final BuilderSettings DEFAULT = new BuilderSettings("sah", 15, 20, 0.8, 2, -1);
+public record BuilderSettings(String builder, double kt, double ki, double lambda, int minPrims, int maxDepth,
+                              SahBuilder.Algorithm algorithm) {
+    /** SAH with Wald and Havran's constants and the library's default plane search. */
+    public static final BuilderSettings DEFAULT = new BuilderSettings("sah", 15, 20, 0.8, 2, -1, new SahBuilder().algorithm());
 
-    public BuilderSettings withBuilder(String name) { return new BuilderSettings(name, kt, ki, lambda, minPrims, maxDepth); }
-    public BuilderSettings withKt(double v) { return new BuilderSettings(builder, v, ki, lambda, minPrims, maxDepth); }
-    public BuilderSettings withKi(double v) { return new BuilderSettings(builder, kt, v, lambda, minPrims, maxDepth); }
-    public BuilderSettings withLambda(double v) { return new BuilderSettings(builder, kt, ki, v, minPrims, maxDepth); }
-    public BuilderSettings withMinPrims(int v) { return new BuilderSettings(builder, kt, ki, lambda, v, maxDepth); }
-    public BuilderSettings withMaxDepth(int v) { return new BuilderSettings(builder, kt, ki, lambda, minPrims, v); }
+    public BuilderSettings withBuilder(String name) { return new BuilderSettings(name, kt, ki, lambda, minPrims, maxDepth, algorithm); }
+    public BuilderSettings withKt(double v) { return new BuilderSettings(builder, v, ki, lambda, minPrims, maxDepth, algorithm); }
+    public BuilderSettings withKi(double v) { return new BuilderSettings(builder, kt, v, lambda, minPrims, maxDepth, algorithm); }
+    public BuilderSettings withLambda(double v) { return new BuilderSettings(builder, kt, ki, v, minPrims, maxDepth, algorithm); }
+    public BuilderSettings withMinPrims(int v) { return new BuilderSettings(builder, kt, ki, lambda, v, maxDepth, algorithm); }
+    public BuilderSettings withMaxDepth(int v) { return new BuilderSettings(builder, kt, ki, lambda, minPrims, v, algorithm); }
+    public BuilderSettings withAlgorithm(SahBuilder.Algorithm a) { return new BuilderSettings(builder, kt, ki, lambda, minPrims, maxDepth, a); }
 
     /** A new builder configured with these settings. */
     public KdTreeBuilder create() {
         KdTreeBuilder b = Builders.create(builder);
         b.costModel(new CostModel(kt, ki));
         b.maxDepth(maxDepth);
-        if (b instanceof SahBuilder sah) sah.emptyWeight(lambda);
+        if (b instanceof SahBuilder sah) sah.emptyWeight(lambda).algorithm(algorithm);
         if (b instanceof CyclingAxisBuilder c) c.minPrimitives(minPrims);
         return b;
     }

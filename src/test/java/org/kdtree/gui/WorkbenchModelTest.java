@@ -26,6 +26,9 @@ class WorkbenchModelTest {
         assertThat(m.scene().size()).isEqualTo(300);
         assertThat(heard).containsOnly(WorkbenchModel.Change.TREE).hasSize(5);
         assertThat(sahNodes).isGreaterThan(1);
+
+        m.setSettings(BuilderSettings.DEFAULT.withAlgorithm(org.kdtree.build.SahBuilder.Algorithm.SORTED));
+        assertThat(m.tree().nodeCount()).as("every exact plane search builds the same tree").isEqualTo(sahNodes);
     }
 
     @Test void scenesSaveAndLoadBack(@org.junit.jupiter.api.io.TempDir java.nio.file.Path dir) throws Exception {
