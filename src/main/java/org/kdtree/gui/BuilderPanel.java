@@ -54,6 +54,13 @@ public final class BuilderPanel extends JPanel {
         row(7, "Kmaxdepth", maxDepth);
         builder.addActionListener(e -> apply());
         algorithm.addActionListener(e -> apply());
+        algorithm.setRenderer(new javax.swing.DefaultListCellRenderer() {
+            @Override public java.awt.Component getListCellRendererComponent(javax.swing.JList<?> list, Object value, int index,
+                                                                       boolean selected, boolean focus) {
+                String text = value == null ? "" : value.toString().toLowerCase(java.util.Locale.ROOT);
+                return super.getListCellRendererComponent(list, text, index, selected, focus);
+            }
+        });
         for (JSpinner s : new JSpinner[] {kt, ki, lambda, minPrims, maxDepth}) s.addChangeListener(e -> apply());
         lambdaSlider.addChangeListener(e -> {
             if (!updating) lambda.setValue(lambdaSlider.getValue() / 100.0);
