@@ -1,0 +1,36 @@
+package org.kdtree.build;
+
+/**
+ * The sweep of the O(N log N) build: the node's events are already sorted, so each axis is
+ * one pass. At each position the plane is offered with |T_L| (references starting before
+ * it or lying in planes before it), |T_P| (lying in it) and |T_R| (ending after it), exactly
+ * as {@link SortedPlaneSearch#sweep} counts them, so the costs and the choice agree bit for bit.
+ */
+final class EventPlaneSearch implements PlaneSearch {
+    @Override public void search(BuildNode node, SahCost sah, SahSplit best) {
+        if (!(node instanceof EventNode e))
+            throw new IllegalArgumentException("the event search needs an EventNode (use SahBuilder with Algorithm.EVENT)");
+        for (int axis = 0; axis < node.dimension(); axis++)
+            sweep(sah, best, axis, node.size(), e.positions(axis), e.codes(axis));
+    }
+
+    /** One axis: events grouped by position; ends, planars and starts counted per group. */
+    static void sweep(SahCost sah, SahSplit best, int axis, int n, double[] pos, int[] code) {
+        int m = pos.length, i = 0;
+        int nl = 0, nr = n;
+        while (i < m) {
+            double x = pos[i];
+            int pEnd = 0, pPlanar = 0, pStart = 0;
+            for (; i < m && pos[i] == x; i++) {
+                if (x == 0) x = Math.min(x, pos[i]);   // -0.0 if the group has one, as the other searches pick
+                int kind = code[i] & 3;
+                if (kind == EventNode.END) pEnd++;
+                else if (kind == EventNode.PLANAR) pPlanar++;
+                else pStart++;
+            }
+            nr -= pPlanar + pEnd;
+            best.offer(sah, axis, x, nl, pPlanar, nr);
+            nl += pStart + pPlanar;
+        }
+    }
+}
