@@ -11,12 +11,12 @@ final class EventPlaneSearch implements PlaneSearch {
         if (!(node instanceof EventNode e))
             throw new IllegalArgumentException("the event search needs an EventNode (use SahBuilder with Algorithm.EVENT)");
         for (int axis = 0; axis < node.dimension(); axis++)
-            sweep(sah, best, axis, node.size(), e.positions(axis), e.codes(axis));
+            sweep(sah, best, axis, node.size(), e.positions(), e.codes(), e.axisStart(axis), e.axisStart(axis + 1));
     }
 
     /** One axis: events grouped by position; ends, planars and starts counted per group. */
-    static void sweep(SahCost sah, SahSplit best, int axis, int n, double[] pos, int[] code) {
-        int m = pos.length, i = 0;
+    static void sweep(SahCost sah, SahSplit best, int axis, int n, double[] pos, int[] code, int from, int m) {
+        int i = from;
         int nl = 0, nr = n;
         while (i < m) {
             double x = pos[i];

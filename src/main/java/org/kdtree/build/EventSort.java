@@ -17,6 +17,20 @@ final class EventSort {
     private EventSort() {
     }
 
+    /** Sorts {@code pos[from..to)} ascending, moving {@code code} along. */
+    static void sort(double[] pos, int[] code, int from, int to) {
+        int n = to - from;
+        if (n <= INSERTION) insertion(pos, code, from, to);
+        else if (from == 0) sort(pos, code, n);
+        else {
+            double[] p = java.util.Arrays.copyOfRange(pos, from, to);
+            int[] c = java.util.Arrays.copyOfRange(code, from, to);
+            sort(p, c, n);
+            System.arraycopy(p, 0, pos, from, n);
+            System.arraycopy(c, 0, code, from, n);
+        }
+    }
+
     /** Sorts {@code pos[0..n)} ascending, moving {@code code} along. */
     static void sort(double[] pos, int[] code, int n) {
         if (n <= INSERTION) insertion(pos, code, 0, n);

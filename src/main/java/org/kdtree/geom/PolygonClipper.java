@@ -65,6 +65,7 @@ public final class PolygonClipper {
 
     /** Keeps the part with {@code x_axis >= plane} (lower face) or {@code <= plane}; result in a. */
     private int clipHalf(int count, int axis, double plane, boolean keepAbove) {
+        if (allInside(count, axis, plane, keepAbove)) return count;   // the pass would copy a unchanged
         int out = 0;
         for (int i = 0; i < count; i++) {
             int p = i * k, q = ((i + 1) % count) * k;
@@ -82,6 +83,14 @@ public final class PolygonClipper {
         }
         double[] tmp = a; a = b; b = tmp;
         return out;
+    }
+
+    private boolean allInside(int count, int axis, double plane, boolean keepAbove) {
+        for (int i = 0; i < count; i++) {
+            double d = keepAbove ? a[i * k + axis] - plane : plane - a[i * k + axis];
+            if (!(d >= 0)) return false;
+        }
+        return true;
     }
 
     private int emit(double[] src, int at, int out) {
