@@ -32,6 +32,9 @@ public final class BuilderOptions {
     @Option(names = "--algorithm", description = "SAH plane search: ${COMPLETION-CANDIDATES} (same tree, different time).")
     SahBuilder.Algorithm algorithm;
 
+    @Option(names = "--bins", description = "Bins per axis for --algorithm BINNED (default 32).")
+    Integer bins;
+
     @Option(names = "--no-perfect-splits", description = "Use bounding boxes instead of exact clipping.")
     boolean noPerfectSplits;
 
@@ -47,8 +50,9 @@ public final class BuilderOptions {
         if (b instanceof SahBuilder sah) {
             if (lambda != null) sah.emptyWeight(lambda);
             if (algorithm != null) sah.algorithm(algorithm);
-        } else if (lambda != null || algorithm != null) {
-            throw new IllegalArgumentException("--lambda and --algorithm apply to the sah builder only");
+            if (bins != null) sah.bins(bins);
+        } else if (lambda != null || algorithm != null || bins != null) {
+            throw new IllegalArgumentException("--lambda, --algorithm and --bins apply to the sah builder only");
         }
         if (minPrims != null) {
             if (b instanceof MedianPlaneBuilder m) m.minPrimitives(minPrims);
