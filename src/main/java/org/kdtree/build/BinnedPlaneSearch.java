@@ -6,21 +6,34 @@ package org.kdtree.build;
  * come from histograms of the references' clipped minima and maxima by bin. O(k (|T| + B)) per
  * node, with no sorting; the plane found may cost a little more than the exact minimum.
  *
+ * <p>Small nodes, below a threshold (default 64 references), are searched exactly instead:
+ * there the exact sweep is as cheap as the histograms, and bin boundaries rarely fall where a
+ * few triangles can be separated (on the bunny, pure 32-bin SAH costs 10 % more than exact,
+ * with the exact sweep below 64 references under 3 %).
+ *
  * <p>A reference counts left of boundary b if its clipped minimum falls in a bin below b, and
  * right if its maximum falls in bin b or above, so straddlers and references touching the
  * boundary count on both sides: an overestimate the exact searches do not make. The split step
  * itself classifies exactly.
  */
 final class BinnedPlaneSearch implements PlaneSearch {
+    private static final SortedPlaneSearch EXACT = new SortedPlaneSearch();
     private final int bins;
+    private final int exactBelow;
 
-    BinnedPlaneSearch(int bins) {
+    /** B bins per axis; nodes with fewer than {@code exactBelow} references get the exact sweep. */
+    BinnedPlaneSearch(int bins, int exactBelow) {
         if (bins < 2) throw new IllegalArgumentException("binned SAH needs at least 2 bins, got " + bins);
         this.bins = bins;
+        this.exactBelow = exactBelow;
     }
 
     @Override public void search(BuildNode node, SahCost sah, SahSplit best) {
         int n = node.size(), k = node.dimension();
+        if (n < exactBelow) {
+            EXACT.search(node, sah, best);
+            return;
+        }
         int[] minBin = new int[bins], maxBin = new int[bins];
         double[] c = node.clippedBounds();
         for (int axis = 0; axis < k; axis++) {

@@ -25,7 +25,8 @@ public class SahBuilder extends KdTreeBuilder {
         EVENT(new EventPlaneSearch()),
         /**
          * Not exact: only the boundaries of {@link #bins()} equal bins per axis are candidates,
-         * counted from histograms. O(N log N) with a small constant, at some cost in tree quality.
+         * counted from histograms; nodes smaller than {@link #exactBelow()} get the exact sweep.
+         * No sorting, at some cost in tree quality.
          */
         BINNED(null);
 
@@ -40,9 +41,13 @@ public class SahBuilder extends KdTreeBuilder {
     /** The default number of bins per axis of {@link Algorithm#BINNED}. */
     public static final int DEFAULT_BINS = 32;
 
+    /** The default node size below which {@link Algorithm#BINNED} searches exactly. */
+    public static final int DEFAULT_EXACT_BELOW = 64;
+
     private double emptyWeight = 0.8;
     private Algorithm algorithm = Algorithm.EVENT;
     private int bins = DEFAULT_BINS;
+    private int exactBelow = DEFAULT_EXACT_BELOW;
 
     @Override public String name() { return "sah"; }
 
@@ -58,7 +63,7 @@ public class SahBuilder extends KdTreeBuilder {
     }
 
     private PlaneSearch search() {
-        return algorithm == Algorithm.BINNED ? new BinnedPlaneSearch(bins) : algorithm.search;
+        return algorithm == Algorithm.BINNED ? new BinnedPlaneSearch(bins, exactBelow) : algorithm.search;
     }
 
     /** The event build keeps sorted event lists in its nodes from the root down. */
@@ -107,6 +112,16 @@ public class SahBuilder extends KdTreeBuilder {
         return this;
     }
 
+    /** Node size below which {@link Algorithm#BINNED} uses the exact sweep (default 64; 0 = bins everywhere). */
+    public int exactBelow() { return exactBelow; }
+
+    /** Sets the node size below which {@link Algorithm#BINNED} uses the exact sweep (>= 0). */
+    public SahBuilder exactBelow(int n) {
+        if (n < 0) throw new IllegalArgumentException("exactBelow must be >= 0, got " + n);
+        this.exactBelow = n;
+        return this;
+    }
+
     /** Sets Kt and Ki together. */
     public SahBuilder costs(double kt, double ki) {
         costModel(new CostModel(kt, ki));
@@ -121,6 +136,6 @@ public class SahBuilder extends KdTreeBuilder {
 
     @Override public String describeSettings() {
         return "lambda=" + emptyWeight + " algorithm=" + algorithm.name().toLowerCase()
-                + (algorithm == Algorithm.BINNED ? " bins=" + bins : "") + " " + super.describeSettings();
+                + (algorithm == Algorithm.BINNED ? " bins=" + bins + " exactBelow=" + exactBelow : "") + " " + super.describeSettings();
     }
 }

@@ -35,6 +35,9 @@ public final class BuilderOptions {
     @Option(names = "--bins", description = "Bins per axis for --algorithm BINNED (default 32).")
     Integer bins;
 
+    @Option(names = "--exact-below", description = "BINNED: nodes with fewer references use the exact sweep (default 64; 0 = never).")
+    Integer exactBelow;
+
     @Option(names = "--no-perfect-splits", description = "Use bounding boxes instead of exact clipping.")
     boolean noPerfectSplits;
 
@@ -51,7 +54,8 @@ public final class BuilderOptions {
             if (lambda != null) sah.emptyWeight(lambda);
             if (algorithm != null) sah.algorithm(algorithm);
             if (bins != null) sah.bins(bins);
-        } else if (lambda != null || algorithm != null || bins != null) {
+            if (exactBelow != null) sah.exactBelow(exactBelow);
+        } else if (lambda != null || algorithm != null || bins != null || exactBelow != null) {
             throw new IllegalArgumentException("--lambda, --algorithm and --bins apply to the sah builder only");
         }
         if (minPrims != null) {

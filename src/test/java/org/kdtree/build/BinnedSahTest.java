@@ -18,7 +18,10 @@ class BinnedSahTest {
         for (int bins : new int[] {8, 32, 256}) {
             KdTree t = new SahBuilder().algorithm(SahBuilder.Algorithm.BINNED).bins(bins).build(SPHERE);
             assertEveryPrimitiveReferenced(t, SPHERE);
-            assertThat(t.stats().expectedCost()).as("B = %d", bins).isBetween(0.9 * exact, 1.25 * exact);
+            assertThat(t.stats().expectedCost()).as("B = %d", bins).isBetween(0.95 * exact, 1.1 * exact);
+            KdTree pure = new SahBuilder().algorithm(SahBuilder.Algorithm.BINNED).bins(bins).exactBelow(0).build(SPHERE);
+            assertEveryPrimitiveReferenced(pure, SPHERE);
+            assertThat(pure.stats().expectedCost()).as("pure, B = %d", bins).isBetween(0.95 * exact, 1.4 * exact);
         }
     }
 
