@@ -1,0 +1,69 @@
+package org.kdtree.traverse;
+
+/**
+ * Watches one ray's traversal step by step: the hook for the workbench's traversal stepper and
+ * for per-ray statistics ({@link TraversalStats} is a listener that counts).
+ *
+ * <p>Events arrive in this order for a query ({@link Traverser#closestHit(org.kdtree.geom.Ray,
+ * double, double, Hit, TraversalListener)} and its siblings):
+ * <ol>
+ * <li>{@link #begin}: the ray's interval clipped to the scene box (or {@link #missedScene} and
+ * then {@link #end}, when the ray misses the box);</li>
+ * <li>for each interior node on the way down, {@link #interior} with the node's interval
+ * {@code [tMin, tMax]}, {@code tSplit}, the near and far children, and which of them the ray
+ * visits; when it visits both, {@link #pushFar} follows (the far child, saved for later, with its
+ * interval);</li>
+ * <li>at a leaf, {@link #leaf}, then {@link #primitive} for each primitive tested (primitives
+ * already tested for this ray are skipped: mailboxing, reported by {@link #mailboxed});</li>
+ * <li>after a leaf, {@link #pop} for each saved far child taken from the stack, with
+ * {@code skipped = true} when it cannot hold anything closer than the hit found so far;</li>
+ * <li>{@link #end} with the final result.</li>
+ * </ol>
+ * To replay a traversal, record the events into a list (they carry plain values, so a recorder
+ * can copy them) and step through it. Methods default to doing nothing; listeners must not
+ * modify the hit they are given.
+ */
+public interface TraversalListener {
+    /** Which children of an interior node the ray visits. */
+    enum Visit {
+        /** Only the near child: the ray leaves the node before reaching the split plane. */
+        NEAR,
+        /** Only the far child: the ray reaches the split plane before entering the node. */
+        FAR,
+        /** Near child on {@code [tMin, tSplit]}, then far child on {@code [tSplit, tMax]}. */
+        BOTH,
+        /** The ray lies in the split plane: both children, each on the whole {@code [tMin, tMax]}. */
+        BOTH_IN_PLANE
+    }
+
+    /** A listener that ignores everything. */
+    TraversalListener NONE = new TraversalListener() { };
+
+    /** The ray enters the scene box over {@code [tMin, tMax]} (already clipped to the caller's range). */
+    default void begin(double tMin, double tMax) { }
+
+    /** The ray misses the scene box (or the caller's range is empty): nothing is visited. */
+    default void missedScene() { }
+
+    /** An interior node: its split plane, the ray's interval in it, and the decision taken. */
+    default void interior(int node, int axis, double split, double tMin, double tMax, double tSplit,
+                          int near, int far, Visit visit) { }
+
+    /** The far child is saved on the stack, to be visited over {@code [tMin, tMax]}. */
+    default void pushFar(int node, double tMin, double tMax) { }
+
+    /** A saved node is taken from the stack; {@code skipped} when it lies beyond the closest hit. */
+    default void pop(int node, double tMin, double tMax, boolean skipped) { }
+
+    /** A leaf with {@code count} primitive references, visited over {@code [tMin, tMax]}. */
+    default void leaf(int node, double tMin, double tMax, int count) { }
+
+    /** A primitive was tested; {@code hit} with its t when it was hit (NaN otherwise). */
+    default void primitive(int primitive, boolean hit, double t) { }
+
+    /** A primitive referenced again in this leaf was not tested again (mailboxing). */
+    default void mailboxed(int primitive) { }
+
+    /** The query is over; {@code hit} holds the result of a closest-hit query (none for others). */
+    default void end(boolean found, Hit hit) { }
+}

@@ -1,0 +1,50 @@
+package org.kdtree.traverse;
+
+/**
+ * Per-ray (or accumulated) traversal statistics: a {@link TraversalListener} that counts.
+ * Pass one to a query to fill it; queries without one pay nothing. Counts accumulate until
+ * {@link #reset()}.
+ */
+public final class TraversalStats implements TraversalListener {
+    /** Nodes visited, interior and leaves. */
+    public long nodes;
+    /** Leaves visited (empty ones included). */
+    public long leaves;
+    /** Ray/primitive tests performed. */
+    public long primitiveTests;
+    /** Tests that found an intersection (within the ray's range, closer than the best so far). */
+    public long hits;
+    /** Repeated references skipped by mailboxing. */
+    public long mailboxed;
+    /** Rays traced. */
+    public long rays;
+
+    public TraversalStats reset() {
+        nodes = leaves = primitiveTests = hits = mailboxed = rays = 0;
+        return this;
+    }
+
+    /** Adds another's counts to these. */
+    public TraversalStats add(TraversalStats o) {
+        nodes += o.nodes; leaves += o.leaves; primitiveTests += o.primitiveTests;
+        hits += o.hits; mailboxed += o.mailboxed; rays += o.rays;
+        return this;
+    }
+
+    @Override public void begin(double tMin, double tMax) { rays++; }
+    @Override public void missedScene() { rays++; }
+    @Override public void interior(int node, int axis, double split, double tMin, double tMax, double tSplit,
+                                   int near, int far, Visit visit) { nodes++; }
+    @Override public void leaf(int node, double tMin, double tMax, int count) { nodes++; leaves++; }
+    @Override public void primitive(int primitive, boolean hit, double t) {
+        primitiveTests++;
+        if (hit) hits++;
+    }
+    @Override public void mailboxed(int primitive) { mailboxed++; }
+
+    @Override public String toString() {
+        return String.format(java.util.Locale.ROOT,
+                "rays=%d nodes=%d leaves=%d primitiveTests=%d hits=%d mailboxed=%d", rays, nodes, leaves,
+                primitiveTests, hits, mailboxed);
+    }
+}

@@ -1,0 +1,228 @@
+package org.kdtree.traverse;
+
+import java.util.ArrayList;
+import java.util.Comparator;
+import java.util.List;
+import org.kdtree.geom.Box;
+import org.kdtree.geom.Ray;
+import org.kdtree.tree.KdTree;
+
+/**
+ * Ray queries on a {@link KdTree}: the talk's Algorithm 2 (stack-based near/far traversal with
+ * tMin, tMax and tSplit, no recursion), made robust as Havran's thesis asks. See
+ * docs/traversal.md for the case analysis; in short:
+ * <ul>
+ * <li>near and far come from the sign of the inverse direction, so a +0.0 or -0.0 component
+ * (inverse +-infinity) gives tSplit = +-infinity and the right single child;</li>
+ * <li>a ray lying exactly in the split plane (tSplit = 0 * infinity = NaN) visits both children,
+ * each over the whole interval: a primitive touching the plane from either side can be hit
+ * there;</li>
+ * <li>intervals are closed, and ties (tSplit == tMin or tMax, within a relative slack of about
+ * 1e-14 that covers rounding) visit both children, so a hit exactly on a plane or at a voxel
+ * edge is never lost;</li>
+ * <li>primitives are tested against the caller's whole range, not the leaf's: a hit beyond the
+ * current leaf is kept as a candidate and the search continues; a saved far child is skipped only
+ * when it starts beyond the closest hit so far. With mailboxing (each primitive tested once per
+ * ray) this finds exactly the closest hit among the primitives of the visited leaves.</li>
+ * </ul>
+ *
+ * <p>An instance keeps per-ray scratch state (stack, mailbox) and allocates nothing per ray in
+ * {@link #closestHit} and {@link #anyHit}: use one instance per thread (the tree and the
+ * intersector are shared). For a {@link TriangleIntersector} without a listener, the queries run
+ * a specialised 3-D loop with the triangle test inlined; every other case runs the generic
+ * k-dimensional loop, which reports each step to a {@link TraversalListener}.
+ */
+public final class Traverser implements RayQuery {
+    /** Relative slack on interval comparisons: a few hundred ulps, far above rounding of tSplit. */
+    static final double SLACK = 0x1p-46;
+
+    private static final int CLOSEST = 0, ANY = 1, ALL = 2;
+
+    private final KdTree tree;
+    private final Intersector prims;
+    private final int[] word;
+    private final double[] split;
+    private final int[] leafStart, refs;
+    private final double[] lo, hi;
+    private final Mailbox mailbox;
+    private final int[] stackNode;
+    private final double[] stackMin, stackMax;
+    private final MeshTraversal fast;
+    private final Hit scratch = new Hit();
+
+    public Traverser(KdTree tree, Intersector prims) {
+        if (tree.dimension() != prims.dimension())
+            throw new IllegalArgumentException("tree is " + tree.dimension() + "-D, primitives " + prims.dimension() + "-D");
+        this.tree = tree;
+        this.prims = prims;
+        word = tree.wordArray();
+        split = tree.splitArray();
+        leafStart = tree.leafStartArray();
+        refs = tree.refArray();
+        Box b = tree.bounds();
+        int k = tree.dimension();
+        lo = new double[k];
+        hi = new double[k];
+        for (int a = 0; a < k; a++) { lo[a] = b.min(a); hi[a] = b.max(a); }
+        mailbox = new Mailbox(prims.size());
+        int depth = tree.stats().maxDepth() + 2;
+        stackNode = new int[depth];
+        stackMin = new double[depth];
+        stackMax = new double[depth];
+        fast = prims instanceof TriangleIntersector t ? new MeshTraversal(tree, t, mailbox, depth) : null;
+    }
+
+    public KdTree tree() { return tree; }
+    public Intersector intersector() { return prims; }
+
+    @Override public boolean closestHit(Ray ray, double tMin, double tMax, Hit hit) {
+        if (fast != null) return fast.closestHit(ray, tMin, tMax, hit);
+        return closestHit(ray, tMin, tMax, hit, TraversalListener.NONE);
+    }
+
+    /** {@link #closestHit(Ray, double, double, Hit)}, reporting each step to {@code listener}. */
+    public boolean closestHit(Ray ray, double tMin, double tMax, Hit hit, TraversalListener listener) {
+        hit.reset();
+        boolean found = trace(CLOSEST, ray, tMin, tMax, hit, null, listener);
+        listener.end(found, hit);
+        return found;
+    }
+
+    @Override public boolean anyHit(Ray ray, double tMin, double tMax) {
+        if (fast != null) return fast.anyHit(ray, tMin, tMax);
+        return anyHit(ray, tMin, tMax, TraversalListener.NONE);
+    }
+
+    /** {@link #anyHit(Ray, double, double)}, reporting each step to {@code listener}. */
+    public boolean anyHit(Ray ray, double tMin, double tMax, TraversalListener listener) {
+        boolean found = trace(ANY, ray, tMin, tMax, scratch.reset(), null, listener);
+        listener.end(found, scratch);
+        return found;
+    }
+
+    /**
+     * Every intersection with {@code tMin <= t <= tMax}, one per primitive hit (its closest point
+     * in the range), sorted by t (ties by primitive). Allocates the list: for the workbench, not
+     * for hot loops.
+     */
+    public List<Hit> allHits(Ray ray, double tMin, double tMax) {
+        return allHits(ray, tMin, tMax, TraversalListener.NONE);
+    }
+
+    /** {@link #allHits(Ray, double, double)}, reporting each step to {@code listener}. */
+    public List<Hit> allHits(Ray ray, double tMin, double tMax, TraversalListener listener) {
+        List<Hit> all = new ArrayList<>();
+        trace(ALL, ray, tMin, tMax, scratch.reset(), all, listener);
+        all.sort(Comparator.<Hit>comparingDouble(h -> h.t).thenComparingInt(h -> h.primitive));
+        listener.end(!all.isEmpty(), scratch.reset());
+        return all;
+    }
+
+    /** The generic loop: Algorithm 2 over any dimension and any intersector. */
+    private boolean trace(int mode, Ray ray, double tMin, double tMax, Hit hit, List<Hit> all, TraversalListener l) {
+        checkRay(ray);
+        double t0 = tMin, t1 = tMax;
+        for (int a = 0; a < lo.length; a++) {
+            double inv = ray.inverseDirection(a), o = ray.origin(a);
+            double tNear = (lo[a] - o) * inv, tFar = (hi[a] - o) * inv;
+            if (inv < 0) { double s = tNear; tNear = tFar; tFar = s; }
+            // NaN (origin on a face of a flat slab, direction 0 on that axis) constrains nothing.
+            if (tNear > t0) t0 = tNear;
+            if (tFar < t1) t1 = tFar;
+        }
+        t0 = Math.max(tMin, t0 - Math.abs(t0) * SLACK);
+        t1 = Math.min(tMax, t1 + Math.abs(t1) * SLACK);
+        if (!(t0 <= t1)) {
+            l.missedScene();
+            return false;
+        }
+        l.begin(t0, t1);
+        int stamp = mailbox.next();
+        int[] box = mailbox.stamp;
+        boolean found = false;
+        int sp = 0, node = 0;
+        double curMin = t0, curMax = t1;
+        while (true) {
+            int w = word[node];
+            while ((w & 31) != 31) {
+                int axis = w & 31, far = w >>> 5, near = node + 1;
+                double inv = ray.inverseDirection(axis);
+                double tSplit = (split[node] - ray.origin(axis)) * inv;
+                if (!(inv > 0)) { far = near; near = w >>> 5; }
+                if (tSplit > curMax + Math.abs(curMax) * SLACK) {
+                    l.interior(node, axis, split[node], curMin, curMax, tSplit, near, far, TraversalListener.Visit.NEAR);
+                    node = near;
+                } else if (tSplit < curMin - Math.abs(curMin) * SLACK) {
+                    l.interior(node, axis, split[node], curMin, curMax, tSplit, near, far, TraversalListener.Visit.FAR);
+                    node = far;
+                } else if (tSplit != tSplit) { // the ray lies in the split plane
+                    l.interior(node, axis, split[node], curMin, curMax, tSplit, near, far,
+                            TraversalListener.Visit.BOTH_IN_PLANE);
+                    push(sp++, far, curMin, curMax, l);
+                    node = near;
+                } else {
+                    l.interior(node, axis, split[node], curMin, curMax, tSplit, near, far, TraversalListener.Visit.BOTH);
+                    push(sp++, far, tSplit, curMax, l);
+                    node = near;
+                    curMax = tSplit;
+                }
+                w = word[node];
+            }
+            int leaf = w >>> 5, from = leafStart[leaf], to = leafStart[leaf + 1];
+            l.leaf(node, curMin, curMax, to - from);
+            for (int r = from; r < to; r++) {
+                int p = refs[r];
+                if (box[p] == stamp) { l.mailboxed(p); continue; }
+                box[p] = stamp;
+                if (mode == ALL) hit.reset();
+                boolean h = prims.intersect(p, ray, tMin, tMax, hit);
+                l.primitive(p, h, h ? hit.t : Double.NaN);
+                if (!h) continue;
+                found = true;
+                if (mode == ANY) return true;
+                if (mode == ALL) all.add(copy(hit));
+            }
+            // Take the next saved far child that can still hold something closer.
+            while (true) {
+                if (sp == 0) return found;
+                sp--;
+                node = stackNode[sp];
+                curMin = stackMin[sp];
+                curMax = stackMax[sp];
+                boolean skip = mode == CLOSEST && curMin > hit.t + Math.abs(hit.t) * SLACK;
+                l.pop(node, curMin, curMax, skip);
+                if (!skip) break;
+            }
+        }
+    }
+
+    private void push(int sp, int node, double tMin, double tMax, TraversalListener l) {
+        stackNode[sp] = node;
+        stackMin[sp] = tMin;
+        stackMax[sp] = tMax;
+        l.pushFar(node, tMin, tMax);
+    }
+
+    private static Hit copy(Hit h) {
+        Hit c = new Hit();
+        c.primitive = h.primitive;
+        c.t = h.t;
+        c.u = h.u;
+        c.v = h.v;
+        return c;
+    }
+
+    /** Rejects rays that no query can answer: non-finite values or an all-zero direction. */
+    void checkRay(Ray ray) {
+        if (ray.dimension() != lo.length)
+            throw new IllegalArgumentException("a " + ray.dimension() + "-D ray in a " + lo.length + "-D tree");
+        boolean moving = false;
+        for (int a = 0; a < ray.dimension(); a++) {
+            double o = ray.origin(a), d = ray.direction(a);
+            if (!Double.isFinite(o) || !Double.isFinite(d))
+                throw new IllegalArgumentException("ray has a non-finite origin or direction: " + ray);
+            moving |= d != 0;
+        }
+        if (!moving) throw new IllegalArgumentException("ray direction is zero: " + ray);
+    }
+}
