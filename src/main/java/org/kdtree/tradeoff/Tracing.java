@@ -2,6 +2,7 @@ package org.kdtree.tradeoff;
 
 import org.kdtree.geom.Ray;
 import org.kdtree.traverse.Hit;
+import org.kdtree.traverse.RayQuery;
 import org.kdtree.traverse.TraversalStats;
 import org.kdtree.traverse.Traverser;
 
@@ -14,8 +15,8 @@ public final class Tracing {
     public record Checksum(long hits, double tSum) {
     }
 
-    /** Traces every ray (the fast path, no listener) and returns the checksum. */
-    public static Checksum trace(Traverser traverser, RaySet set) {
+    /** Traces every ray (with a Traverser: its fast path, no listener) and returns the checksum. */
+    public static Checksum trace(RayQuery traverser, RaySet set) {
         double[] r = set.rays();
         Ray ray = new Ray(3);
         Hit hit = new Hit();
