@@ -16,6 +16,8 @@ import org.kdtree.shape.Primitives;
  */
 final class EventPartition {
     private static final byte LEFT = 0, RIGHT = 1, BOTH = 2;
+    private static final double[] NO_POS = {};
+    private static final int[] NO_CODE = {};
 
     private EventPartition() {
     }
@@ -38,66 +40,85 @@ final class EventPartition {
             else if (lo >= xi) s = RIGHT;
             else s = BOTH;
             side[j] = s;
-            if (s == LEFT) { index[j] = nl++; addCounts(src, o, k, countL); }
-            else if (s == RIGHT) { index[j] = nr++; addCounts(src, o, k, countR); }
-            else { index[j] = nl++; nr++; nb++; }
+            if (s == LEFT) { nl++; addCounts(src, o, k, countL); }
+            else if (s == RIGHT) { nr++; addCounts(src, o, k, countR); }
+            else { nl++; nr++; nb++; }
         }
         Box lv = node.voxel().lowerPart(axis, xi), rv = node.voxel().upperPart(axis, xi);
         int[] lr = new int[nl], rr = new int[nr];
         double[] lc = new double[2 * k * nl], rc = new double[2 * k * nr];
-        int[] straddleL = new int[nb], straddleR = new int[nb];
+        int[] straddleL = nb > 0 ? new int[nb] : NO_CODE, straddleR = nb > 0 ? new int[nb] : NO_CODE;
         Box tmp = nb > 0 ? new Box(k) : null;
-        int il = 0, ir = 0, ib = 0;
+        int il = 0, ir = 0, bl = 0, br = 0;
         for (int j = 0; j < n; j++) {
             int prim = refs[j];
             switch (side[j]) {
-                case LEFT -> { lr[il] = prim; System.arraycopy(src, 2 * k * j, lc, 2 * k * il++, 2 * k); }
-                case RIGHT -> { rr[ir] = prim; System.arraycopy(src, 2 * k * j, rc, 2 * k * ir++, 2 * k); }
+                case LEFT -> { index[j] = il; lr[il] = prim; System.arraycopy(src, 2 * k * j, lc, 2 * k * il++, 2 * k); }
+                case RIGHT -> { index[j] = ir; rr[ir] = prim; System.arraycopy(src, 2 * k * j, rc, 2 * k * ir++, 2 * k); }
                 default -> {
-                    straddleL[ib] = il;
-                    straddleR[ib++] = ir;
-                    lr[il] = prim;
-                    Partition.childBounds(prims, prim, src, j, lv, perfect, tmp, lc, il);
-                    addCounts(lc, 2 * k * il++, k, countL);
-                    rr[ir] = prim;
-                    Partition.childBounds(prims, prim, src, j, rv, perfect, tmp, rc, ir);
-                    addCounts(rc, 2 * k * ir++, k, countR);
+                    // As in Partition: a straddler whose exact clip misses a child (it only reached
+                    // the plane through padding) does not go to that child.
+                    if (Partition.childBounds(prims, prim, src, j, lv, perfect, tmp, lc, il)) {
+                        straddleL[bl++] = il;
+                        lr[il] = prim;
+                        addCounts(lc, 2 * k * il++, k, countL);
+                    }
+                    if (Partition.childBounds(prims, prim, src, j, rv, perfect, tmp, rc, ir)) {
+                        straddleR[br++] = ir;
+                        rr[ir] = prim;
+                        addCounts(rc, 2 * k * ir++, k, countR);
+                    }
                 }
             }
         }
+        if (il < nl) { lr = java.util.Arrays.copyOf(lr, il); lc = java.util.Arrays.copyOf(lc, 2 * k * il); }
+        if (ir < nr) { rr = java.util.Arrays.copyOf(rr, ir); rc = java.util.Arrays.copyOf(rc, 2 * k * ir); }
         int[] startL = prefix(countL, k), startR = prefix(countR, k);
-        double[] lp = new double[startL[k]], rp = new double[startR[k]];
-        int[] lcode = new int[startL[k]], rcode = new int[startR[k]];
-        double[] slp = new double[2 * nb], srp = new double[2 * nb];
-        int[] slc = new int[2 * nb], src2 = new int[2 * nb];
+        // One slot of slack at the end: the branch-free copy writes every event to both sides.
+        double[] lp = new double[startL[k] + 1], rp = new double[startR[k] + 1];
+        int[] lcode = new int[startL[k] + 1], rcode = new int[startR[k] + 1];
+        double[] sp = nb > 0 ? new double[2 * nb] : NO_POS;
+        int[] sc = nb > 0 ? new int[2 * nb] : NO_CODE;
         double[] pos = node.positions();
         int[] code = node.codes();
+        int[] keep = new int[n];            // bit 0: the reference stays left only, bit 1: right only
+        for (int j = 0; j < n; j++) keep[j] = side[j] == LEFT ? 1 : side[j] == RIGHT ? 2 : 0;
         for (int a = 0; a < k; a++) {
-            int ml = straddlerEvents(lc, k, straddleL, nb, a, slp, slc);
-            int mr = straddlerEvents(rc, k, straddleR, nb, a, srp, src2);
-            int atL = startL[a], atR = startR[a], sl = 0, sr = 0;
+            int atL = startL[a], atR = startR[a];
             for (int e = node.axisStart(a), end = node.axisStart(a + 1); e < end; e++) {
                 int c = code[e];
                 int j = c >>> 2;
-                byte s = side[j];
-                if (s == BOTH) continue;
+                int bits = keep[j];
                 double x = pos[e];
                 int renumbered = index[j] << 2 | (c & 3);
-                if (s == LEFT) {
-                    while (sl < ml && slp[sl] < x) { lp[atL] = slp[sl]; lcode[atL++] = slc[sl++]; }
-                    lp[atL] = x;
-                    lcode[atL++] = renumbered;
-                } else {
-                    while (sr < mr && srp[sr] < x) { rp[atR] = srp[sr]; rcode[atR++] = src2[sr++]; }
-                    rp[atR] = x;
-                    rcode[atR++] = renumbered;
-                }
+                lp[atL] = x;
+                lcode[atL] = renumbered;
+                atL += bits & 1;
+                rp[atR] = x;
+                rcode[atR] = renumbered;
+                atR += bits >>> 1;
             }
-            while (sl < ml) { lp[atL] = slp[sl]; lcode[atL++] = slc[sl++]; }
-            while (sr < mr) { rp[atR] = srp[sr]; rcode[atR++] = src2[sr++]; }
+            if (nb > 0) {
+                int ml = straddlerEvents(lc, k, straddleL, bl, a, sp, sc);
+                mergeBackward(lp, lcode, startL[a], atL, sp, sc, ml);
+                int mr = straddlerEvents(rc, k, straddleR, br, a, sp, sc);
+                mergeBackward(rp, rcode, startR[a], atR, sp, sc, mr);
+            }
         }
         return new Children(new EventNode(lv, lr, lc, node.depth() + 1, lp, lcode, startL),
                 new EventNode(rv, rr, rc, node.depth() + 1, rp, rcode, startR));
+    }
+
+    /**
+     * Merges the sorted {@code sp[0..m)} into the sorted {@code dp[from..to)}, which has room for
+     * them right after it: from the back, so that nothing is overwritten before it is read.
+     */
+    private static void mergeBackward(double[] dp, int[] dc, int from, int to, double[] sp, int[] sc, int m) {
+        int i = to - 1, s = m - 1, at = to + m - 1;
+        while (s >= 0) {
+            if (i >= from && dp[i] > sp[s]) { dp[at] = dp[i]; dc[at--] = dc[i--]; }
+            else { dp[at] = sp[s]; dc[at--] = sc[s--]; }
+        }
     }
 
     /** Adds the event counts per axis of the reference whose bounds start at {@code o}. */

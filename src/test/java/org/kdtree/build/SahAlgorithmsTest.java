@@ -31,8 +31,8 @@ class SahAlgorithmsTest {
                 KdTree sorted = build(scene, SahBuilder.Algorithm.SORTED, perfect, lambda);
                 KdTree event = build(scene, SahBuilder.Algorithm.EVENT, perfect, lambda);
                 assertThat(naive.nodeCount()).as("%s splits somewhere", name).isGreaterThan(1);
-                assertSameTree(sorted, naive);
-                assertSameTree(event, naive);
+                assertSameTree(sorted, naive, name + " sorted perfect=" + perfect + " lambda=" + lambda);
+                assertSameTree(event, naive, name + " event perfect=" + perfect + " lambda=" + lambda);
             }
         }
     }
@@ -50,9 +50,13 @@ class SahAlgorithmsTest {
     }
 
     static void assertSameTree(KdTree actual, KdTree expected) {
-        assertThat(actual.wordArray()).as("node words").isEqualTo(expected.wordArray());
-        assertThat(actual.splitArray()).as("split positions").isEqualTo(expected.splitArray());
-        assertThat(actual.leafStartArray()).as("leaf offsets").isEqualTo(expected.leafStartArray());
-        assertThat(actual.refArray()).as("leaf references").isEqualTo(expected.refArray());
+        assertSameTree(actual, expected, "");
+    }
+
+    static void assertSameTree(KdTree actual, KdTree expected, String what) {
+        assertThat(actual.wordArray()).as("node words %s", what).isEqualTo(expected.wordArray());
+        assertThat(actual.splitArray()).as("split positions %s", what).isEqualTo(expected.splitArray());
+        assertThat(actual.leafStartArray()).as("leaf offsets %s", what).isEqualTo(expected.leafStartArray());
+        assertThat(actual.refArray()).as("leaf references %s", what).isEqualTo(expected.refArray());
     }
 }
