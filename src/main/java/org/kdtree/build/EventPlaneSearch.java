@@ -14,6 +14,25 @@ final class EventPlaneSearch implements PlaneSearch {
             sweep(sah, best, axis, node.size(), e.positions(), e.codes(), e.axisStart(axis), e.axisStart(axis + 1));
     }
 
+    /**
+     * The same search with one fork/join task per axis (for the big nodes at the top of a
+     * parallel build). Each axis keeps its own first minimum; they are then combined in axis
+     * order, keeping a later axis only if strictly cheaper: exactly the sequential choice.
+     */
+    static void searchAxesInParallel(EventNode e, SahCost sah, SahSplit best) {
+        int k = e.dimension();
+        SahSplit[] perAxis = new SahSplit[k];
+        java.util.List<java.util.concurrent.ForkJoinTask<?>> tasks = new java.util.ArrayList<>();
+        for (int a = 0; a < k; a++) {
+            int axis = a;
+            perAxis[a] = new SahSplit();
+            tasks.add(java.util.concurrent.ForkJoinTask.adapt(() -> sweep(sah, perAxis[axis], axis, e.size(),
+                    e.positions(), e.codes(), e.axisStart(axis), e.axisStart(axis + 1))));
+        }
+        java.util.concurrent.ForkJoinTask.invokeAll(tasks);
+        for (SahSplit s : perAxis) best.keepIfCheaper(s);
+    }
+
     /** One axis: events grouped by position; ends, planars and starts counted per group. */
     static void sweep(SahCost sah, SahSplit best, int axis, int n, double[] pos, int[] code, int from, int m) {
         int i = from;

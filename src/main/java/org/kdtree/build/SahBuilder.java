@@ -44,6 +44,12 @@ public class SahBuilder extends KdTreeBuilder {
     /** The default node size below which {@link Algorithm#BINNED} searches exactly. */
     public static final int DEFAULT_EXACT_BELOW = 64;
 
+    /**
+     * Nodes at least this big sweep their k axes in parallel when the build has several threads
+     * (package-private and mutable only so that a test can exercise it on a small scene).
+     */
+    static int parallelSweepMin = 50_000;
+
     private double emptyWeight = 0.8;
     private Algorithm algorithm = Algorithm.EVENT;
     private int bins = DEFAULT_BINS;
@@ -56,7 +62,10 @@ public class SahBuilder extends KdTreeBuilder {
         SahCost sah = new SahCost(costModel(), emptyWeight, node.voxel());
         if (!(sah.halfArea() > 0)) return true;
         SahSplit best = new SahSplit();
-        search().search(node, sah, best);
+        if (threads() > 1 && node instanceof EventNode e && node.size() >= parallelSweepMin)
+            EventPlaneSearch.searchAxesInParallel(e, sah, best);
+        else
+            search().search(node, sah, best);
         if (!best.found() || best.cost() >= sah.leafCost(node.size())) return true;
         node.plan(best.plane(), best.cost());
         return false;
