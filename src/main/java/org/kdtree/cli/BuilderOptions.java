@@ -55,7 +55,7 @@ public final class BuilderOptions {
             if (bins != null) sah.bins(bins);
             if (exactBelow != null) sah.exactBelow(exactBelow);
         } else if (lambda != null || algorithm != null || bins != null || exactBelow != null) {
-            throw new IllegalArgumentException("--lambda, --algorithm and --bins apply to the sah builder only");
+            throw new IllegalArgumentException("--lambda and --algorithm apply to the sah builder only (so do --bins and --exact-below)");
         }
         if (minPrims != null) {
             if (b instanceof CyclingAxisBuilder c) c.minPrimitives(minPrims);
