@@ -1,0 +1,43 @@
+package org.kdtree.render;
+
+/**
+ * A pinhole camera: eye, look-at point, up vector, vertical field of view and image size.
+ * Pixel (x, y) has its top-left corner at (x, y); a sample at (x + sx, y + sy) with
+ * sx, sy in [0, 1).
+ */
+public final class Camera {
+    private final Vec3 eye;
+    private final Vec3 forward, right, up;
+    private final double tanHalfFov;
+    private final int width, height;
+
+    /**
+     * @param fovDegrees vertical field of view, in (0, 180)
+     */
+    public Camera(Vec3 eye, Vec3 lookAt, Vec3 upHint, double fovDegrees, int width, int height) {
+        this.eye = eye;
+        this.forward = lookAt.minus(eye).normalized();
+        this.right = forward.cross(upHint).normalized();
+        this.up = right.cross(forward);
+        this.tanHalfFov = Math.tan(Math.toRadians(fovDegrees) / 2);
+        this.width = width;
+        this.height = height;
+    }
+
+    public Vec3 eye() { return eye; }
+    public int width() { return width; }
+    public int height() { return height; }
+
+    /** The same camera at another image size (the aspect ratio follows the size). */
+    public Camera withSize(int w, int h) {
+        return new Camera(eye, eye.plus(forward), up, Math.toDegrees(2 * Math.atan(tanHalfFov)), w, h);
+    }
+
+    /** The unit direction of the ray through image point (px, py), in pixels from the top-left. */
+    public Vec3 direction(double px, double py) {
+        double aspect = (double) width / height;
+        double sx = (2 * px / width - 1) * tanHalfFov * aspect;
+        double sy = (1 - 2 * py / height) * tanHalfFov;
+        return forward.plus(right.times(sx)).plus(up.times(sy)).normalized();
+    }
+}

@@ -1,0 +1,80 @@
+package org.kdtree.render;
+
+import java.util.Arrays;
+import org.joml.Matrix3d;
+import org.joml.Matrix4d;
+import org.joml.Matrix4dc;
+import org.joml.Vector3d;
+import org.kdtree.shape.TriangleMesh;
+
+/**
+ * Collects the scene's triangles into flat arrays, applying the current object's transform to
+ * every vertex (and its inverse transpose to normals).
+ */
+public final class GeometryBuilder {
+    private double[] vertices = new double[3 * 1024];
+    private double[] normals = new double[3 * 1024];
+    private int vertexCount;
+    private int[] indices = new int[3 * 1024];
+    private int[] materials = new int[1024];
+    private boolean[] smooth = new boolean[1024];
+    private int triangleCount;
+    private final Matrix4d transform = new Matrix4d();
+    private final Matrix3d normalTransform = new Matrix3d();
+    private final Vector3d tmp = new Vector3d();
+
+    /** Sets the transform applied to the vertices added from now on (identity to start). */
+    public GeometryBuilder transform(Matrix4dc m) {
+        transform.set(m);
+        m.normal(normalTransform);
+        return this;
+    }
+
+    public int vertexCount() { return vertexCount; }
+    public int triangleCount() { return triangleCount; }
+
+    /** Adds a vertex (transformed) with a normal (zero for none); returns its index. */
+    public int vertex(Vec3 p, Vec3 n) {
+        if (3 * vertexCount + 3 > vertices.length) {
+            vertices = Arrays.copyOf(vertices, vertices.length * 2);
+            normals = Arrays.copyOf(normals, normals.length * 2);
+        }
+        transform.transformPosition(tmp.set(p.x(), p.y(), p.z()));
+        int i = 3 * vertexCount;
+        vertices[i] = tmp.x; vertices[i + 1] = tmp.y; vertices[i + 2] = tmp.z;
+        normalTransform.transform(tmp.set(n.x(), n.y(), n.z()));
+        if (tmp.lengthSquared() > 0) tmp.normalize();
+        normals[i] = tmp.x; normals[i + 1] = tmp.y; normals[i + 2] = tmp.z;
+        return vertexCount++;
+    }
+
+    /** Adds triangle (a, b, c) of already added vertices. */
+    public void triangle(int a, int b, int c, int material, boolean smoothShaded) {
+        if (3 * triangleCount + 3 > indices.length) {
+            indices = Arrays.copyOf(indices, indices.length * 2);
+            materials = Arrays.copyOf(materials, materials.length * 2);
+            smooth = Arrays.copyOf(smooth, smooth.length * 2);
+        }
+        indices[3 * triangleCount] = a;
+        indices[3 * triangleCount + 1] = b;
+        indices[3 * triangleCount + 2] = c;
+        materials[triangleCount] = material;
+        smooth[triangleCount] = smoothShaded;
+        triangleCount++;
+    }
+
+    /** Adds a flat quad a-b-c-d (counter-clockwise seen from the front). */
+    public void quad(Vec3 a, Vec3 b, Vec3 c, Vec3 d, int material) {
+        int i = vertex(a, Vec3.ZERO), j = vertex(b, Vec3.ZERO), k = vertex(c, Vec3.ZERO), l = vertex(d, Vec3.ZERO);
+        triangle(i, j, k, material, false);
+        triangle(i, k, l, material, false);
+    }
+
+    /** The collected geometry. */
+    public SceneGeometry finish() {
+        TriangleMesh mesh = new TriangleMesh(Arrays.copyOf(vertices, 3 * vertexCount),
+                Arrays.copyOf(indices, 3 * triangleCount));
+        return new SceneGeometry(mesh, Arrays.copyOf(materials, triangleCount),
+                Arrays.copyOf(normals, 3 * vertexCount), Arrays.copyOf(smooth, triangleCount));
+    }
+}

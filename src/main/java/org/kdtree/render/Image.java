@@ -1,0 +1,56 @@
+package org.kdtree.render;
+
+import java.awt.image.BufferedImage;
+
+/** Linear RGB radiance per pixel, row by row from the top-left. */
+public final class Image {
+    private final int width, height;
+    private final float[] rgb;
+
+    public Image(int width, int height) {
+        this.width = width;
+        this.height = height;
+        this.rgb = new float[3 * width * height];
+    }
+
+    public int width() { return width; }
+    public int height() { return height; }
+
+    public void set(int x, int y, Vec3 c) {
+        int i = 3 * (y * width + x);
+        rgb[i] = (float) c.x();
+        rgb[i + 1] = (float) c.y();
+        rgb[i + 2] = (float) c.z();
+    }
+
+    /** Channel {@code c} (0 red, 1 green, 2 blue) of pixel (x, y). */
+    public float get(int x, int y, int c) { return rgb[3 * (y * width + x) + c]; }
+
+    /** Whether any channel of any pixel is NaN, infinite or negative: never for a correct render. */
+    public boolean hasInvalidPixels() {
+        for (float v : rgb) if (!(v >= 0) || Float.isInfinite(v)) return true;
+        return false;
+    }
+
+    /** 8-bit sRGB (gamma 2.2, clamped), as written to PNG. */
+    public BufferedImage toBufferedImage() {
+        BufferedImage img = new BufferedImage(width, height, BufferedImage.TYPE_INT_RGB);
+        for (int y = 0; y < height; y++)
+            for (int x = 0; x < width; x++)
+                img.setRGB(x, y, (toByte(get(x, y, 0)) << 16) | (toByte(get(x, y, 1)) << 8) | toByte(get(x, y, 2)));
+        return img;
+    }
+
+    private static int toByte(float linear) {
+        double v = Math.pow(Math.max(0, Math.min(1, linear)), 1 / 2.2);
+        return (int) Math.round(255 * v);
+    }
+
+    /** Writes the image as PNG. */
+    public void writePng(java.nio.file.Path file) throws java.io.IOException {
+        java.nio.file.Path parent = file.toAbsolutePath().getParent();
+        if (parent != null) java.nio.file.Files.createDirectories(parent);
+        if (!javax.imageio.ImageIO.write(toBufferedImage(), "png", file.toFile()))
+            throw new java.io.IOException(file + ": no PNG writer available");
+    }
+}

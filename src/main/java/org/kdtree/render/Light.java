@@ -1,0 +1,40 @@
+package org.kdtree.render;
+
+/** A light source. Lights are not geometry: they are never hit by rays. */
+public sealed interface Light {
+    /** Radiant colour (already multiplied by any intensity). */
+    Vec3 color();
+
+    /** Whether the scene file allows this light to cast shadows at all (default true). */
+    boolean castsShadows();
+
+    /** A point light; its contribution falls off with the squared distance. */
+    record Point(Vec3 position, Vec3 color, boolean castsShadows) implements Light {
+    }
+
+    /** A light at infinity shining along {@code direction} (unit, from the light toward the scene). */
+    record Directional(Vec3 direction, Vec3 color, boolean castsShadows) implements Light {
+    }
+
+    /**
+     * A square area light, one-sided (it shines along {@code normal}), sampled at {@code samples}
+     * points per shading point for soft shadows. {@code color} is its total power; each sample
+     * carries {@code color / samples}, falling off with the squared distance and the cosine at the light.
+     */
+    record Area(Vec3 center, Vec3 normal, double size, int samples, Vec3 color, boolean castsShadows)
+            implements Light {
+        /** A unit vector in the light's plane. */
+        public Vec3 edgeU() {
+            Vec3 a = Math.abs(normal.x()) < 0.9 ? new Vec3(1, 0, 0) : new Vec3(0, 1, 0);
+            return normal.cross(a).normalized();
+        }
+
+        /** The second unit vector in the light's plane. */
+        public Vec3 edgeV() { return normal.cross(edgeU()); }
+
+        /** The point at (s, t) in [0,1)^2 on the square. */
+        public Vec3 pointAt(double s, double t) {
+            return center.plus(edgeU().times((s - 0.5) * size)).plus(edgeV().times((t - 0.5) * size));
+        }
+    }
+}

@@ -1,0 +1,25 @@
+package org.kdtree.render;
+
+import java.util.Arrays;
+
+/** Rays cast by kind. Not thread-safe: one per thread, merged at the end. */
+public final class RayCounts {
+    private final long[] counts = new long[RayKind.values().length];
+
+    public void add(RayKind kind) { counts[kind.ordinal()]++; }
+
+    public long get(RayKind kind) { return counts[kind.ordinal()]; }
+
+    public long total() { return Arrays.stream(counts).sum(); }
+
+    /** Adds all of {@code other}'s counts to this. */
+    public void merge(RayCounts other) {
+        for (int i = 0; i < counts.length; i++) counts[i] += other.counts[i];
+    }
+
+    @Override public String toString() {
+        StringBuilder s = new StringBuilder();
+        for (RayKind k : RayKind.values()) s.append(s.length() > 0 ? ", " : "").append(k.label()).append('=').append(get(k));
+        return s.toString();
+    }
+}

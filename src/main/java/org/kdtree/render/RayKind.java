@@ -1,0 +1,15 @@
+package org.kdtree.render;
+
+/** The kinds of rays a render casts, counted separately. */
+public enum RayKind {
+    /** From the eye through a pixel sample. */
+    CAMERA,
+    /** From a surface point toward a light (any-hit query). */
+    SHADOW,
+    /** Mirror reflection (including the Fresnel-reflected part at glass). */
+    REFLECTION,
+    /** Refraction into or out of glass. */
+    REFRACTION;
+
+    public String label() { return name().toLowerCase(java.util.Locale.ROOT); }
+}

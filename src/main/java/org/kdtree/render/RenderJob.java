@@ -1,0 +1,51 @@
+package org.kdtree.render;
+
+import java.util.Locale;
+import org.kdtree.build.KdTreeBuilder;
+import org.kdtree.traverse.Traverser;
+import org.kdtree.traverse.TriangleIntersector;
+import org.kdtree.tree.KdTree;
+
+/**
+ * A whole render: build the kd-tree over the scene's mesh with the given builder, then trace it
+ * with one {@link Traverser} per thread over a shared {@link TriangleIntersector}.
+ *
+ * @param scene      the scene rendered
+ * @param tree       the tree built
+ * @param buildNanos wall-clock build time
+ * @param result     the image, the plan and the rays cast
+ */
+public record RenderJob(Scene scene, KdTree tree, long buildNanos, RenderResult result) {
+
+    /** Builds the tree and renders. */
+    public static RenderJob run(Scene scene, KdTreeBuilder builder, Renderer.Options options) {
+        long t0 = System.nanoTime();
+        KdTree tree = builder.build(scene.mesh());
+        long buildNanos = System.nanoTime() - t0;
+        TriangleIntersector triangles = new TriangleIntersector(scene.mesh());
+        RenderResult result = Renderer.render(scene, () -> new Traverser(tree, triangles), options);
+        return new RenderJob(scene, tree, buildNanos, result);
+    }
+
+    /** The summary printed after a render: scene, plan, times, rays by kind and per second, tree statistics. */
+    public String summary() {
+        StringBuilder s = new StringBuilder();
+        Camera c = scene.camera();
+        s.append(String.format(Locale.ROOT, "scene: %s (%d triangles, %d materials, %d lights)%n", scene.name(),
+                scene.mesh().size(), scene.materials().size(), scene.lights().size()));
+        s.append(String.format(Locale.ROOT, "image: %d x %d, %d samples per pixel, %d threads%n", c.width(), c.height(),
+                scene.samplesPerPixel(), result.threads()));
+        s.append(result.plan().describe()).append(System.lineSeparator());
+        s.append(String.format(Locale.ROOT, "build time: %.1f ms (%s)%n", buildNanos / 1e6, tree.builderName()));
+        s.append(String.format(Locale.ROOT, "render time: %.1f ms%n", result.renderNanos() / 1e6));
+        s.append("rays:").append(System.lineSeparator());
+        for (RayKind k : RayKind.values())
+            s.append(String.format(Locale.ROOT, "  %-10s %,14d  %,14.0f rays/s%n", k.label(), result.rays().get(k),
+                    result.raysPerSecond(k)));
+        s.append(String.format(Locale.ROOT, "  %-10s %,14d  %,14.0f rays/s%n", "total", result.rays().total(),
+                result.rays().total() / Math.max(1e-9, result.renderNanos() / 1e9)));
+        s.append("tree:").append(System.lineSeparator());
+        for (String line : tree.stats().describe().split("\\R")) s.append("  ").append(line).append(System.lineSeparator());
+        return s.toString();
+    }
+}

@@ -1,0 +1,26 @@
+package org.kdtree.render;
+
+/**
+ * What a render produced.
+ *
+ * @param image       the picture
+ * @param plan        the effects simulated
+ * @param rays        rays cast, by kind
+ * @param renderNanos wall-clock time of the tracing
+ * @param threads     threads used
+ * @param pixelRays   per kind, rays cast on behalf of each pixel (row-major), or null when not recorded
+ */
+public record RenderResult(Image image, EffectPlan plan, RayCounts rays, long renderNanos, int threads,
+                           int[][] pixelRays) {
+
+    /** Rays of {@code kind} cast for pixel (x, y); needs a render that recorded them. */
+    public int pixelRays(RayKind kind, int x, int y) {
+        if (pixelRays == null) throw new IllegalStateException("per-pixel rays were not recorded");
+        return pixelRays[kind.ordinal()][y * image.width() + x];
+    }
+
+    /** Rays per second of {@code kind} over the render's wall-clock time. */
+    public double raysPerSecond(RayKind kind) {
+        return rays.get(kind) / Math.max(1e-9, renderNanos / 1e9);
+    }
+}

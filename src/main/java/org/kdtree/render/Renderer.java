@@ -1,0 +1,96 @@
+package org.kdtree.render;
+
+import java.io.PrintStream;
+import java.util.ArrayList;
+import java.util.List;
+import java.util.concurrent.ExecutionException;
+import java.util.concurrent.ExecutorService;
+import java.util.concurrent.Executors;
+import java.util.concurrent.Future;
+import java.util.concurrent.atomic.AtomicInteger;
+import java.util.function.Supplier;
+import org.kdtree.traverse.RayQuery;
+
+/**
+ * Renders a scene in square tiles over a pool of threads. Each thread takes the next tile
+ * until none is left, with its own {@link Tracer} and so its own {@link RayQuery}. Every pixel
+ * is seeded on its own, so the image does not depend on the number of threads.
+ */
+public final class Renderer {
+    /**
+     * @param threads         worker threads (at least 1)
+     * @param tileSize        tile edge in pixels
+     * @param progress        where to draw a progress bar, or null
+     * @param recordPixelRays whether to keep per-pixel ray counts by kind (tests)
+     */
+    public record Options(int threads, int tileSize, PrintStream progress, boolean recordPixelRays) {
+        /** All cores, 16-pixel tiles, no progress bar, no per-pixel counts. */
+        public static Options defaults() {
+            return new Options(Runtime.getRuntime().availableProcessors(), 16, null, false);
+        }
+
+        public Options withThreads(int n) { return new Options(n, tileSize, progress, recordPixelRays); }
+        public Options withProgress(PrintStream p) { return new Options(threads, tileSize, p, recordPixelRays); }
+        public Options recordingPixelRays() { return new Options(threads, tileSize, progress, true); }
+    }
+
+    private Renderer() {
+    }
+
+    /** Renders {@code scene}, asking {@code queries} for one ray query per thread. */
+    public static RenderResult render(Scene scene, Supplier<? extends RayQuery> queries, Options options) {
+        EffectPlan plan = new EffectPlan(scene);
+        int w = scene.camera().width(), h = scene.camera().height(), ts = options.tileSize();
+        int tilesX = (w + ts - 1) / ts, tilesY = (h + ts - 1) / ts, tiles = tilesX * tilesY;
+        Image image = new Image(w, h);
+        int[][] pixelRays = options.recordPixelRays() ? new int[RayKind.values().length][w * h] : null;
+        ProgressBar bar = new ProgressBar(options.progress(), tiles);
+        AtomicInteger next = new AtomicInteger(), done = new AtomicInteger();
+        int threads = Math.max(1, options.threads());
+        ExecutorService pool = Executors.newFixedThreadPool(threads, r -> {
+            Thread t = new Thread(r, "render");
+            t.setDaemon(true);
+            return t;
+        });
+        long t0 = System.nanoTime();
+        List<Future<RayCounts>> workers = new ArrayList<>();
+        try {
+            for (int i = 0; i < threads; i++) {
+                workers.add(pool.submit(() -> {
+                    Tracer tracer = new Tracer(scene, plan, queries.get());
+                    for (int tile; (tile = next.getAndIncrement()) < tiles; ) {
+                        int x0 = (tile % tilesX) * ts, y0 = (tile / tilesX) * ts;
+                        renderTile(tracer, image, pixelRays, x0, y0, Math.min(w, x0 + ts), Math.min(h, y0 + ts));
+                        bar.update(done.incrementAndGet());
+                    }
+                    return tracer.counts();
+                }));
+            }
+            RayCounts total = new RayCounts();
+            for (Future<RayCounts> f : workers) total.merge(f.get());
+            return new RenderResult(image, plan, total, System.nanoTime() - t0, threads, pixelRays);
+        } catch (InterruptedException e) {
+            Thread.currentThread().interrupt();
+            throw new IllegalStateException("render interrupted", e);
+        } catch (ExecutionException e) {
+            if (e.getCause() instanceof RuntimeException re) throw re;
+            throw new IllegalStateException(e.getCause());
+        } finally {
+            pool.shutdownNow();
+        }
+    }
+
+    private static void renderTile(Tracer tracer, Image image, int[][] pixelRays, int x0, int y0, int x1, int y1) {
+        RayCounts c = tracer.counts();
+        long[] before = new long[RayKind.values().length];
+        for (int y = y0; y < y1; y++) {
+            for (int x = x0; x < x1; x++) {
+                if (pixelRays != null) for (RayKind k : RayKind.values()) before[k.ordinal()] = c.get(k);
+                image.set(x, y, tracer.pixel(x, y));
+                if (pixelRays != null)
+                    for (RayKind k : RayKind.values())
+                        pixelRays[k.ordinal()][y * image.width() + x] = (int) (c.get(k) - before[k.ordinal()]);
+            }
+        }
+    }
+}

@@ -1,0 +1,71 @@
+package org.kdtree.cli;
+
+import static org.assertj.core.api.Assertions.assertThat;
+
+import java.awt.image.BufferedImage;
+import java.io.ByteArrayOutputStream;
+import java.io.PrintStream;
+import java.nio.file.Files;
+import java.nio.file.Path;
+import javax.imageio.ImageIO;
+import org.junit.jupiter.api.Test;
+import org.junit.jupiter.api.io.TempDir;
+
+class RenderCommandTest {
+    @TempDir Path dir;
+
+    private record Run(int code, String out, String err) {
+    }
+
+    private static Run run(String... args) {
+        PrintStream oldOut = System.out, oldErr = System.err;
+        ByteArrayOutputStream out = new ByteArrayOutputStream(), err = new ByteArrayOutputStream();
+        try {
+            System.setOut(new PrintStream(out, true));
+            System.setErr(new PrintStream(err, true));
+            int code = Main.run(args);
+            return new Run(code, out.toString(), err.toString());
+        } finally {
+            System.setOut(oldOut);
+            System.setErr(oldErr);
+        }
+    }
+
+    @Test void rendersTheCornellBoxToPngWithSummaryAndProgressBar() throws Exception {
+        Path png = dir.resolve("out/cornell.png");
+        Run r = run("render", "scenes/cornell-box.json", "-o", png.toString(), "--builder", "sah", "--lambda", "0.8",
+                "--threads", "2", "--spp", "1", "--width", "32", "--height", "24");
+        assertThat(r.code()).as(r.err()).isZero();
+        BufferedImage img = ImageIO.read(png.toFile());
+        assertThat(img.getWidth()).isEqualTo(32);
+        assertThat(img.getHeight()).isEqualTo(24);
+        assertThat(r.out()).contains("effects: direct light", "reflection", "refraction", "soft shadows")
+                .contains("build time: ", "render time: ", "rays/s", "camera", "shadow", "nodes: ", "wrote " + png)
+                .contains("image: 32 x 24, 1 samples per pixel, 2 threads");
+        assertThat(r.err()).contains("100% (4/4 tiles)");
+    }
+
+    @Test void rayDepthZeroTurnsReflectionAndRefractionOff() throws Exception {
+        Run r = run("render", "scenes/cornell-box.json", "-o", dir.resolve("c.png").toString(), "--ray-depth", "0",
+                "--spp", "1", "--width", "16", "--height", "16", "-q");
+        assertThat(r.code()).as(r.err()).isZero();
+        assertThat(r.out()).contains("max depth: 0").doesNotContain("reflection,").doesNotContain("refraction,")
+                .containsPattern("reflection +0 ").containsPattern("refraction +0 ");
+        assertThat(r.err()).isEmpty();
+    }
+
+    @Test void aMalformedSceneGivesOneClearLineAndNoStackTrace() throws Exception {
+        Path bad = dir.resolve("bad.json");
+        Files.writeString(bad, "{\"camera\": {\"eye\": [0, 0, 5], \"lookAt\": [0, 0, 0], \"fov\": 400,\n \"width\": 8, \"height\": 8}}");
+        Run r = run("render", bad.toString(), "-o", dir.resolve("x.png").toString());
+        assertThat(r.code()).isEqualTo(2);
+        assertThat(r.err().strip()).isEqualTo("error: " + bad + ":1: $.camera.fov: field of view must be between 0 and 180 degrees, got 400.0");
+        r = run("render", dir.resolve("missing.json").toString());
+        assertThat(r.code()).isEqualTo(2);
+        assertThat(r.err()).contains("missing.json: no such file").doesNotContain("Exception");
+        r = run("render", "scenes/diffuse-only.json", "--ray-depth", "-1");
+        assertThat(r.err()).contains("--ray-depth must be at least 0");
+        r = run("render", "scenes/diffuse-only.json", "--threads", "0");
+        assertThat(r.err()).contains("--threads must be at least 1");
+    }
+}
