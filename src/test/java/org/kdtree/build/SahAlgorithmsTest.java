@@ -45,6 +45,15 @@ class SahAlgorithmsTest {
         assertThat(event.stats().maxDepth()).isLessThanOrEqualTo(3);
     }
 
+    /** A real (bundled) scene of 10,370 triangles: too big for NAIVE in a unit test, so SORTED is the reference. */
+    @org.junit.jupiter.api.Test
+    void sortedAndEventBuildTheSameTreeOnTheBundledScene() throws java.io.IOException {
+        Primitives scene = org.kdtree.io.ObjMeshReader.read(java.nio.file.Path.of("scenes/clustered-spheres.obj"));
+        KdTree sorted = new SahBuilder().algorithm(SahBuilder.Algorithm.SORTED).build(scene);
+        assertThat(sorted.nodeCount()).isGreaterThan(1000);
+        assertSameTree(new SahBuilder().algorithm(SahBuilder.Algorithm.EVENT).build(scene), sorted, "clustered-spheres");
+    }
+
     static KdTree build(Primitives scene, SahBuilder.Algorithm a, boolean perfect, double lambda) {
         return new SahBuilder().algorithm(a).perfectSplits(perfect).emptyWeight(lambda).build(scene);
     }
