@@ -28,8 +28,9 @@ final class EventPartition {
         boolean planarLeft = p.planarLeft();
         double[] src = node.clippedBounds();
         int[] refs = node.refs();
-        byte[] side = new byte[n];
-        int[] index = new int[n];           // the reference's index in its child (the left one for straddlers)
+        // Per reference: first its side (bit 0: left only, bit 1: right only, neither: both), then
+        // also its index in its child, as index << 2 | side, for renumbering its events.
+        int[] index = new int[n];
         int[] countL = new int[k + 1], countR = new int[k + 1];
         int nl = 0, nr = 0, nb = 0;
         for (int j = 0, o = 0; j < n; j++, o += 2 * k) {
@@ -39,7 +40,7 @@ final class EventPartition {
             else if (hi <= xi) s = LEFT;
             else if (lo >= xi) s = RIGHT;
             else s = BOTH;
-            side[j] = s;
+            index[j] = s == LEFT ? 1 : s == RIGHT ? 2 : 0;
             if (s == LEFT) { nl++; addCounts(src, o, k, countL); }
             else if (s == RIGHT) { nr++; addCounts(src, o, k, countR); }
             else { nl++; nr++; nb++; }
@@ -52,9 +53,9 @@ final class EventPartition {
         int il = 0, ir = 0, bl = 0, br = 0;
         for (int j = 0; j < n; j++) {
             int prim = refs[j];
-            switch (side[j]) {
-                case LEFT -> { index[j] = il; lr[il] = prim; System.arraycopy(src, 2 * k * j, lc, 2 * k * il++, 2 * k); }
-                case RIGHT -> { index[j] = ir; rr[ir] = prim; System.arraycopy(src, 2 * k * j, rc, 2 * k * ir++, 2 * k); }
+            switch (index[j]) {
+                case 1 -> { index[j] = il << 2 | 1; lr[il] = prim; System.arraycopy(src, 2 * k * j, lc, 2 * k * il++, 2 * k); }
+                case 2 -> { index[j] = ir << 2 | 2; rr[ir] = prim; System.arraycopy(src, 2 * k * j, rc, 2 * k * ir++, 2 * k); }
                 default -> {
                     // As in Partition: a straddler whose exact clip misses a child (it only reached
                     // the plane through padding) does not go to that child.
@@ -81,16 +82,14 @@ final class EventPartition {
         int[] sc = nb > 0 ? new int[2 * nb] : NO_CODE;
         double[] pos = node.positions();
         int[] code = node.codes();
-        int[] keep = new int[n];            // bit 0: the reference stays left only, bit 1: right only
-        for (int j = 0; j < n; j++) keep[j] = side[j] == LEFT ? 1 : side[j] == RIGHT ? 2 : 0;
         for (int a = 0; a < k; a++) {
             int atL = startL[a], atR = startR[a];
             for (int e = node.axisStart(a), end = node.axisStart(a + 1); e < end; e++) {
                 int c = code[e];
-                int j = c >>> 2;
-                int bits = keep[j];
+                int t = index[c >>> 2];
+                int bits = t & 3;
                 double x = pos[e];
-                int renumbered = index[j] << 2 | (c & 3);
+                int renumbered = (t & ~3) | (c & 3);
                 lp[atL] = x;
                 lcode[atL] = renumbered;
                 atL += bits & 1;
