@@ -9,7 +9,7 @@ package org.kdtree.build;
  * small ones (a node's straddlers) through insertion or merge sort. No objects per event.
  */
 final class EventSort {
-    private static final int INSERTION = 24;
+    private static final int INSERTION = 32;
     private static final int RADIX_MIN = 2048;
     private static final int DIGIT_BITS = 11;
     private static final int BUCKETS = 1 << DIGIT_BITS;
