@@ -39,14 +39,15 @@ final class EventPlaneSearch implements PlaneSearch {
         int nl = 0, nr = n;
         while (i < m) {
             double x = pos[i];
-            int pEnd = 0, pPlanar = 0, pStart = 0;
+            int group = 0, pPlanar = 0, pStart = 0;
             for (; i < m && pos[i] == x; i++) {
                 if (x == 0) x = Math.min(x, pos[i]);   // -0.0 if the group has one, as the other searches pick
-                int kind = code[i] & 3;
-                if (kind == EventNode.END) pEnd++;
-                else if (kind == EventNode.PLANAR) pPlanar++;
-                else pStart++;
+                int kind = code[i] & 3;                 // END 0, PLANAR 1, START 2: counted without branches
+                group++;
+                pPlanar += kind & 1;
+                pStart += kind >>> 1;
             }
+            int pEnd = group - pPlanar - pStart;
             nr -= pPlanar + pEnd;
             best.offer(sah, axis, x, nl, pPlanar, nr);
             nl += pStart + pPlanar;

@@ -19,7 +19,7 @@ import org.kdtree.tree.CostModel;
 public final class SahCost {
     private final CostModel model;
     private final double emptyWeight;
-    private final double halfArea;
+    private final double halfArea, inverseHalfArea;
     /** min, max, face and side per axis, packed in one array: {@code v[4 axis + 0..3]}. */
     private final double[] v;
 
@@ -45,6 +45,7 @@ public final class SahCost {
             v[4 * n + 3] = s;
         }
         halfArea = v[2] + extent(0) * v[3];
+        inverseHalfArea = 1 / halfArea;
     }
 
     private double extent(int a) {
@@ -66,8 +67,8 @@ public final class SahCost {
     public double cost(int axis, double x, int nl, int nr) {
         int o = 4 * axis;
         double face = v[o + 2], side = v[o + 3];
-        double pl = (face + (x - v[o]) * side) / halfArea;
-        double pr = (face + (v[o + 1] - x) * side) / halfArea;
+        double pl = (face + (x - v[o]) * side) * inverseHalfArea;
+        double pr = (face + (v[o + 1] - x) * side) * inverseHalfArea;
         double c = model.kt() + model.ki() * (pl * nl + pr * nr);
         return (nl == 0 || nr == 0) ? c * emptyWeight : c;
     }
