@@ -1,5 +1,7 @@
 package org.kdtree.build;
 
+import java.util.concurrent.ForkJoinPool;
+import java.util.concurrent.ForkJoinTask;
 import org.kdtree.geom.Box;
 import org.kdtree.geom.SplitPlane;
 import org.kdtree.shape.InvalidGeometryException;
@@ -36,16 +38,34 @@ public abstract class KdTreeBuilder {
     private int maxDepth = -1;
     private CostModel costModel = CostModel.WALD_HAVRAN;
     private boolean perfectSplits = true;
+    private int threads = 1;
 
     /** Builds the tree of {@code primitives}, starting from their bounding box (constKdTree). */
     public final KdTree build(Primitives primitives) {
         Box rootVoxel = rootVoxel(primitives);
         int depthCap = maxDepth >= 0 ? maxDepth : defaultMaxDepth(primitives.size());
-        BuildNode root = makeRoot(primitives, rootVoxel);
-        Build build = new Build(primitives, depthCap);
         KdTreeWriter out = new KdTreeWriter();
-        recConst(build, root, out);
+        if (threads == 1) {
+            recConst(new Build(primitives, depthCap, Integer.MAX_VALUE), makeRoot(primitives, rootVoxel), out);
+        } else {
+            Build build = new Build(primitives, depthCap, forkThreshold(primitives.size(), threads));
+            ForkJoinPool pool = new ForkJoinPool(threads);
+            try {
+                pool.invoke(ForkJoinTask.adapt(() -> recConst(build, makeRoot(primitives, rootVoxel), out)));
+            } finally {
+                pool.shutdown();
+            }
+        }
         return out.finish(rootVoxel, costModel, name());
+    }
+
+    /**
+     * The smallest right child handed to another thread: small enough that every thread finds
+     * work (about 32 tasks per thread), big enough that a task is worth its copy into the
+     * parent's output (at least 2,048 primitives).
+     */
+    private static int forkThreshold(int n, int threads) {
+        return Math.max(2048, n / (32 * threads));
     }
 
     /** The name under which this builder is reported, e.g. "sah". */
@@ -98,6 +118,20 @@ public abstract class KdTreeBuilder {
         }
         node.release();
         int interior = out.interior(plane.axis(), plane.position());
+        if (children.right().size() >= build.forkThreshold && children.left().size() > 0) {
+            // The right subtree is built by another thread into its own writer, then spliced in:
+            // the same recursion, so the same tree, in the same depth-first order.
+            ForkJoinTask<KdTreeWriter> right = ForkJoinTask.adapt(() -> {
+                KdTreeWriter w = new KdTreeWriter();
+                recConst(build, children.right(), w);
+                return w;
+            }).fork();
+            recConst(build, children.left(), out);
+            KdTreeWriter rightTree = right.join();
+            out.setRightChild(interior);
+            out.append(rightTree);
+            return;
+        }
         recConst(build, children.left(), out);
         out.setRightChild(interior);
         recConst(build, children.right(), out);
@@ -168,13 +202,26 @@ public abstract class KdTreeBuilder {
         return this;
     }
 
+    /** The number of threads a build uses (default 1). */
+    public int threads() { return threads; }
+
+    /**
+     * Sets the number of threads (1 .. 256). With more than one, independent subtrees are built
+     * in parallel (fork/join); the tree is the same as with one thread.
+     */
+    public KdTreeBuilder threads(int n) {
+        if (n < 1 || n > 256) throw new IllegalArgumentException("threads must be in 1..256, got " + n);
+        this.threads = n;
+        return this;
+    }
+
     /** A one-line summary of the settings, e.g. for the command line. */
     public String describeSettings() {
         return "maxDepth=" + (maxDepth < 0 ? "auto" : maxDepth) + " Kt=" + costModel.kt() + " Ki=" + costModel.ki()
-                + " perfectSplits=" + perfectSplits;
+                + " perfectSplits=" + perfectSplits + (threads > 1 ? " threads=" + threads : "");
     }
 
     /** The per-build context that {@link BuildContext} exposes to subclasses. */
-    private record Build(Primitives primitives, int depthCap) implements BuildContext {
+    private record Build(Primitives primitives, int depthCap, int forkThreshold) implements BuildContext {
     }
 }

@@ -1,6 +1,8 @@
 package org.kdtree.build;
 
+import org.kdtree.geom.Box;
 import org.kdtree.geom.SplitPlane;
+import org.kdtree.shape.Primitives;
 import org.kdtree.tree.CostModel;
 
 /**
@@ -10,7 +12,7 @@ import org.kdtree.tree.CostModel;
  * a leaf ({@code min C_V(p) >= |T| Ki}), and at the depth cap.
  *
  * <p>Defaults: Kt = 15, Ki = 20, empty-voxel weight lambda = 0.8, depth cap
- * {@code 8 + 1.3 log2 N}, perfect splits on, plane search {@link Algorithm#SORTED}.
+ * {@code 8 + 1.3 log2 N}, perfect splits on, plane search {@link Algorithm#EVENT}.
  */
 public class SahBuilder extends KdTreeBuilder {
     /** How the best plane of a node is found. Every algorithm builds the same tree. */
@@ -18,17 +20,40 @@ public class SahBuilder extends KdTreeBuilder {
         /** Count each candidate by scanning all primitives: O(N^2). */
         NAIVE(new NaivePlaneSearch()),
         /** Sort each node's events, then sweep: O(N log^2 N). */
-        SORTED(new SortedPlaneSearch());
+        SORTED(new SortedPlaneSearch()),
+        /** Sort the events once at the root, keep them sorted through every split: O(N log N). */
+        EVENT(new EventPlaneSearch()),
+        /**
+         * Not exact: only the boundaries of {@link #bins()} equal bins per axis are candidates,
+         * counted from histograms; nodes smaller than {@link #exactBelow()} get the exact sweep.
+         * No sorting, at some cost in tree quality.
+         */
+        BINNED(null);
 
         private final PlaneSearch search;
 
         Algorithm(PlaneSearch search) { this.search = search; }
 
-        PlaneSearch search() { return search; }
+        /** Whether this algorithm finds the plane of least cost (NAIVE, SORTED and EVENT do). */
+        public boolean exact() { return this != BINNED; }
     }
 
+    /** The default number of bins per axis of {@link Algorithm#BINNED}. */
+    public static final int DEFAULT_BINS = 32;
+
+    /** The default node size below which {@link Algorithm#BINNED} searches exactly. */
+    public static final int DEFAULT_EXACT_BELOW = 64;
+
+    /**
+     * Nodes at least this big sweep their k axes in parallel when the build has several threads
+     * (package-private and mutable only so that a test can exercise it on a small scene).
+     */
+    static int parallelSweepMin = 50_000;
+
     private double emptyWeight = 0.8;
-    private Algorithm algorithm = Algorithm.SORTED;
+    private Algorithm algorithm = Algorithm.EVENT;
+    private int bins = DEFAULT_BINS;
+    private int exactBelow = DEFAULT_EXACT_BELOW;
 
     @Override public String name() { return "sah"; }
 
@@ -37,10 +62,28 @@ public class SahBuilder extends KdTreeBuilder {
         SahCost sah = new SahCost(costModel(), emptyWeight, node.voxel());
         if (!(sah.halfArea() > 0)) return true;
         SahSplit best = new SahSplit();
-        algorithm.search().search(node, sah, best);
+        if (threads() > 1 && node instanceof EventNode e && node.size() >= parallelSweepMin)
+            EventPlaneSearch.searchAxesInParallel(e, sah, best);
+        else
+            search().search(node, sah, best);
         if (!best.found() || best.cost() >= sah.leafCost(node.size())) return true;
         node.plan(best.plane(), best.cost());
         return false;
+    }
+
+    private PlaneSearch search() {
+        return algorithm == Algorithm.BINNED ? new BinnedPlaneSearch(bins, exactBelow) : algorithm.search;
+    }
+
+    /** The event build keeps sorted event lists in its nodes from the root down. */
+    @Override protected BuildNode makeRoot(Primitives primitives, Box rootVoxel) {
+        BuildNode root = super.makeRoot(primitives, rootVoxel);
+        return algorithm == Algorithm.EVENT ? EventNode.of(root, threads() > 1) : root;
+    }
+
+    @Override protected Children split(BuildContext context, BuildNode node, SplitPlane plane) {
+        if (node instanceof EventNode e) return EventPartition.split(context.primitives(), e, plane, perfectSplits());
+        return super.split(context, node, plane);
     }
 
     @Override protected SplitPlane findPlane(BuildContext context, BuildNode node) {
@@ -68,6 +111,26 @@ public class SahBuilder extends KdTreeBuilder {
         return this;
     }
 
+    /** B, the number of bins per axis of {@link Algorithm#BINNED} (default 32). */
+    public int bins() { return bins; }
+
+    /** Sets B (2 .. 1,000,000) for {@link Algorithm#BINNED}; ignored by the exact algorithms. */
+    public SahBuilder bins(int b) {
+        if (b < 2 || b > 1_000_000) throw new IllegalArgumentException("bins must be in 2..1000000, got " + b);
+        this.bins = b;
+        return this;
+    }
+
+    /** Node size below which {@link Algorithm#BINNED} uses the exact sweep (default 64; 0 = bins everywhere). */
+    public int exactBelow() { return exactBelow; }
+
+    /** Sets the node size below which {@link Algorithm#BINNED} uses the exact sweep (>= 0). */
+    public SahBuilder exactBelow(int n) {
+        if (n < 0) throw new IllegalArgumentException("exactBelow must be >= 0, got " + n);
+        this.exactBelow = n;
+        return this;
+    }
+
     /** Sets Kt and Ki together. */
     public SahBuilder costs(double kt, double ki) {
         costModel(new CostModel(kt, ki));
@@ -78,7 +141,10 @@ public class SahBuilder extends KdTreeBuilder {
 
     @Override public SahBuilder perfectSplits(boolean on) { super.perfectSplits(on); return this; }
 
+    @Override public SahBuilder threads(int n) { super.threads(n); return this; }
+
     @Override public String describeSettings() {
-        return "lambda=" + emptyWeight + " algorithm=" + algorithm.name().toLowerCase() + " " + super.describeSettings();
+        return "lambda=" + emptyWeight + " algorithm=" + algorithm.name().toLowerCase()
+                + (algorithm == Algorithm.BINNED ? " bins=" + bins + " exactBelow=" + exactBelow : "") + " " + super.describeSettings();
     }
 }

@@ -19,34 +19,37 @@ import org.kdtree.tree.CostModel;
 public final class SahCost {
     private final CostModel model;
     private final double emptyWeight;
-    private final double halfArea;
-    private final double[] min, max, face, side;
+    private final double halfArea, inverseHalfArea;
+    /** min, max, face and side per axis, packed in one array: {@code v[4 axis + 0..3]}. */
+    private final double[] v;
 
     public SahCost(CostModel model, double emptyWeight, Box voxel) {
         this.model = model;
         this.emptyWeight = emptyWeight;
         int k = voxel.dimension();
-        min = new double[k];
-        max = new double[k];
-        face = new double[k];
-        side = new double[k];
+        v = new double[4 * k];
         for (int a = 0; a < k; a++) {
-            min[a] = voxel.min(a);
-            max[a] = voxel.max(a);
+            v[4 * a] = voxel.min(a);
+            v[4 * a + 1] = voxel.max(a);
         }
         for (int n = 0; n < k; n++) {
             double f = 1, s = 0;
             for (int a = 0; a < k; a++) {
                 if (a == n) continue;
-                f *= max[a] - min[a];
+                f *= extent(a);
                 double prod = 1;
-                for (int b = 0; b < k; b++) if (b != n && b != a) prod *= max[b] - min[b];
+                for (int b = 0; b < k; b++) if (b != n && b != a) prod *= extent(b);
                 s += prod;
             }
-            face[n] = f;
-            side[n] = s;
+            v[4 * n + 2] = f;
+            v[4 * n + 3] = s;
         }
-        halfArea = face[0] + (max[0] - min[0]) * side[0];
+        halfArea = v[2] + extent(0) * v[3];
+        inverseHalfArea = 1 / halfArea;
+    }
+
+    private double extent(int a) {
+        return v[4 * a + 1] - v[4 * a];
     }
 
     /** Half the voxel's surface area; zero for a voxel no ray can meet with positive probability. */
@@ -57,13 +60,15 @@ public final class SahCost {
 
     /** Whether a plane at {@code x} on {@code axis} is a candidate: strictly inside the voxel. */
     public boolean inside(int axis, double x) {
-        return x > min[axis] && x < max[axis];
+        return x > v[4 * axis] && x < v[4 * axis + 1];
     }
 
     /** C_V(p) for the plane {@code x_axis = x} with {@code nl} and {@code nr} primitives on each side. */
     public double cost(int axis, double x, int nl, int nr) {
-        double pl = (face[axis] + (x - min[axis]) * side[axis]) / halfArea;
-        double pr = (face[axis] + (max[axis] - x) * side[axis]) / halfArea;
+        int o = 4 * axis;
+        double face = v[o + 2], side = v[o + 3];
+        double pl = (face + (x - v[o]) * side) * inverseHalfArea;
+        double pr = (face + (v[o + 1] - x) * side) * inverseHalfArea;
         double c = model.kt() + model.ki() * (pl * nl + pr * nr);
         return (nl == 0 || nr == 0) ? c * emptyWeight : c;
     }

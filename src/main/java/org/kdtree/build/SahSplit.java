@@ -31,6 +31,16 @@ public final class SahSplit {
         }
     }
 
+    /** Takes {@code other}'s plane if it is strictly cheaper (combining searches made in order). */
+    public void keepIfCheaper(SahSplit other) {
+        if (other.found() && other.cost < cost) {
+            cost = other.cost;
+            axis = other.axis;
+            position = other.position;
+            planarLeft = other.planarLeft;
+        }
+    }
+
     /** True once some candidate has been offered. */
     public boolean found() { return axis >= 0; }
 

@@ -31,6 +31,12 @@ public final class BuilderOptions {
     @Option(names = "--algorithm", description = "SAH plane search: ${COMPLETION-CANDIDATES} (same tree, different time).")
     SahBuilder.Algorithm algorithm;
 
+    @Option(names = "--bins", description = "Bins per axis for --algorithm BINNED (default 32).")
+    Integer bins;
+
+    @Option(names = "--exact-below", description = "BINNED: nodes with fewer references use the exact sweep (default 64; 0 = never).")
+    Integer exactBelow;
+
     @Option(names = "--no-perfect-splits", description = "Use bounding boxes instead of exact clipping.")
     boolean noPerfectSplits;
 
@@ -46,8 +52,10 @@ public final class BuilderOptions {
         if (b instanceof SahBuilder sah) {
             if (lambda != null) sah.emptyWeight(lambda);
             if (algorithm != null) sah.algorithm(algorithm);
-        } else if (lambda != null || algorithm != null) {
-            throw new IllegalArgumentException("--lambda and --algorithm apply to the sah builder only");
+            if (bins != null) sah.bins(bins);
+            if (exactBelow != null) sah.exactBelow(exactBelow);
+        } else if (lambda != null || algorithm != null || bins != null || exactBelow != null) {
+            throw new IllegalArgumentException("--lambda and --algorithm apply to the sah builder only (so do --bins and --exact-below)");
         }
         if (minPrims != null) {
             if (b instanceof CyclingAxisBuilder c) c.minPrimitives(minPrims);

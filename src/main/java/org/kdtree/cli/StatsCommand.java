@@ -29,9 +29,12 @@ public final class StatsCommand implements Callable<Integer> {
     @Option(names = "--warmup", defaultValue = "0", description = "Untimed builds first, to warm up the JVM (default: ${DEFAULT-VALUE}).")
     int warmup;
 
+    @Option(names = "--threads", defaultValue = "1", description = "Threads for the build (default: ${DEFAULT-VALUE}; same tree).")
+    int threads;
+
     @Override public Integer call() throws Exception {
         Primitives prims = SceneLoader.load(scene);
-        KdTreeBuilder builder = options.create();
+        KdTreeBuilder builder = options.create().threads(threads);
         for (int i = 0; i < warmup; i++) builder.build(prims);
         double[] ms = new double[Math.max(1, runs)];
         KdTree tree = null;

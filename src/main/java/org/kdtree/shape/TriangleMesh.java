@@ -64,9 +64,7 @@ public final class TriangleMesh implements Primitives {
     }
 
     @Override public void clip(int t, Box voxel, Box dest) {
-        double[] tri = new double[9];
-        for (int c = 0; c < 3; c++) System.arraycopy(vertices, 3 * indices[3 * t + c], tri, 3 * c, 3);
-        PolygonClipper.forThread(3).clip(tri, 3, voxel, dest);
+        PolygonClipper.forThread(3).clipTriangle(vertices, indices[3 * t], indices[3 * t + 1], indices[3 * t + 2], voxel, dest);
     }
 
     @Override public String describe(int t) { return "triangle " + t; }

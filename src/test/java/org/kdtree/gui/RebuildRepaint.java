@@ -5,7 +5,7 @@ import java.awt.image.BufferedImage;
 import org.kdtree.shape.Shapes2D;
 import org.kdtree.tree.KdTree;
 
-/** One canvas repaint into an image, as the workbench does after a rebuild (shared by the benchmark and the timing test). */
+/** One canvas repaint into an image, as the workbench does after a rebuild (for the timing test). */
 final class RebuildRepaint {
     private RebuildRepaint() {
     }

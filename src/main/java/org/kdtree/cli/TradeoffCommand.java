@@ -1,0 +1,100 @@
+package org.kdtree.cli;
+
+import java.nio.file.Files;
+import java.nio.file.Path;
+import java.util.List;
+import java.util.Locale;
+import java.util.concurrent.Callable;
+import org.kdtree.io.ObjMeshReader;
+import org.kdtree.shape.ProceduralScenes;
+import org.kdtree.shape.TriangleMesh;
+import org.kdtree.tradeoff.RaySet;
+import org.kdtree.tradeoff.Tradeoff;
+import org.kdtree.tradeoff.TradeoffChart;
+import org.kdtree.tradeoff.TradeoffResult;
+import org.kdtree.tradeoff.Variant;
+import picocli.CommandLine.Command;
+import picocli.CommandLine.Option;
+import picocli.CommandLine.Parameters;
+
+/** {@code tradeoff MESH}: every builder variant's build time, tree quality and trace speed, with CSV and chart. */
+@Command(name = "tradeoff", mixinStandardHelpOptions = true,
+        description = "What accuracy costs in time: build MESH (.obj) with every builder variant (median plane, "
+                + "object median, SAH with lambda 1.0/0.8/0.5, exact vs binned B = 8/32/256, perfect splits on/off, "
+                + "depth caps), trace a ray workload, and report build time, expected SAH cost, nodes, memory, nodes "
+                + "visited and triangle tests per ray, rays per second and the total time for 1, 10 and 100 rays per "
+                + "triangle. Writes CSV and a PNG chart with the Pareto front of build time against trace time.")
+public final class TradeoffCommand implements Callable<Integer> {
+    @Parameters(paramLabel = "MESH", description = "An OBJ mesh.")
+    Path mesh;
+
+    @Option(names = "--grid", defaultValue = "1", description = "Repeat the mesh in a G x G grid (4: the spec's scaling scene).")
+    int grid;
+
+    @Option(names = "--rays", defaultValue = "R", description = "Ray workload: P (primary, spec), R (random, spec) (default: ${DEFAULT-VALUE}).")
+    String rays;
+
+    @Option(names = "--ray-count", defaultValue = "1000000",
+            description = "Rays in the workload: R draws this many, P uses a square image of about this many (default: ${DEFAULT-VALUE}).")
+    int rayCount;
+
+    @Option(names = "--counted-rays", defaultValue = "100000", description = "Rays traced again to count nodes and tests (default: ${DEFAULT-VALUE}).")
+    int countedRays;
+
+    @Option(names = "--runs", defaultValue = "3", description = "Timed runs per variant, after one warm-up; the median is kept (default: ${DEFAULT-VALUE}).")
+    int runs;
+
+    @Option(names = "--threads", defaultValue = "1", description = "Build threads (tracing is single-threaded) (default: ${DEFAULT-VALUE}).")
+    int threads;
+
+    @Option(names = "--quick", description = "Only median-plane, exact SAH and binned B = 8, 32.")
+    boolean quick;
+
+    @Option(names = "--variants", split = ",", description = "Only these variants (names as listed by the full run).")
+    List<String> only;
+
+    @Option(names = "--csv", description = "CSV output file (default: tradeoff-MESHNAME.csv).")
+    Path csv;
+
+    @Option(names = "--chart", description = "PNG chart file (default: tradeoff-MESHNAME.png).")
+    Path chart;
+
+    @Option(names = "--chart-rpt", defaultValue = "10", description = "Rays per triangle for the chart's trace time (default: ${DEFAULT-VALUE}).")
+    double chartRaysPerTriangle;
+
+    @Override public Integer call() throws Exception {
+        if (grid < 1 || grid > 16) throw new IllegalArgumentException("--grid must be in 1..16, got " + grid);
+        if (rayCount < 1) throw new IllegalArgumentException("--ray-count must be positive, got " + rayCount);
+        TriangleMesh m = ObjMeshReader.read(mesh);
+        if (grid > 1) m = ProceduralScenes.grid(m, grid);
+        var bounds = m.bounds();
+        RaySet set = switch (rays.toUpperCase(Locale.ROOT)) {
+            case "P" -> RaySet.primary(bounds, Math.max(1, (int) Math.round(Math.sqrt(rayCount))));
+            case "R" -> RaySet.random(bounds, rayCount);
+            default -> throw new IllegalArgumentException("--rays must be P or R, got " + rays);
+        };
+        List<Variant> variants = quick ? Variant.quick() : Variant.all();
+        if (only != null) {
+            variants = Variant.all().stream().filter(v -> only.contains(v.name())).toList();
+            if (variants.isEmpty()) throw new IllegalArgumentException("no variant named " + only + "; known: "
+                    + Variant.all().stream().map(Variant::name).toList());
+        }
+        String base = mesh.getFileName().toString().replaceFirst("\\.[^.]*$", "") + (grid > 1 ? "-grid" + grid : "");
+        Path csvOut = csv != null ? csv : Path.of("tradeoff-" + base + ".csv");
+        Path pngOut = chart != null ? chart : Path.of("tradeoff-" + base + ".png");
+
+        System.out.printf(Locale.ROOT, "scene: %s (%d triangles), rays: %s x %d, %d run(s), %d build thread(s)%n",
+                base, m.size(), set.name(), set.size(), runs, threads);
+        System.out.printf(Locale.ROOT, "%-22s %10s %10s %9s %8s %8s %9s %11s %11s %11s%n", "variant", "build ms", "SAH cost",
+                "nodes", "nodes/r", "tests/r", "Mrays/s", "1 r/tri ms", "10 r/tri", "100 r/tri");
+        Tradeoff t = new Tradeoff(m, set, runs, threads, countedRays);
+        List<TradeoffResult> results = t.run(variants, r -> System.out.printf(Locale.ROOT,
+                "%-22s %10.1f %10.2f %9d %8.1f %8.1f %9.3f %11.0f %11.0f %11.0f%n", r.variant(), r.buildMs(),
+                r.expectedCost(), r.nodes(), r.nodesPerRay(), r.testsPerRay(), r.raysPerSecond() / 1e6,
+                r.totalMs(1), r.totalMs(10), r.totalMs(100)));
+        Files.writeString(csvOut, Tradeoff.csv(results));
+        TradeoffChart.write(results, base + ": build time vs trace time (" + set.name() + " rays)", chartRaysPerTriangle, pngOut);
+        System.out.println("wrote " + csvOut + " and " + pngOut);
+        return 0;
+    }
+}

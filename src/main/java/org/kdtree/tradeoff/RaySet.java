@@ -1,0 +1,90 @@
+package org.kdtree.tradeoff;
+
+import org.kdtree.geom.Box;
+
+/**
+ * A set of 3-D rays held in one flat array (origin then direction, six doubles per ray), so that
+ * generating them is not timed with tracing. The sets of the benchmark spec
+ * (/work/shared/bench/SPEC.md): P, the primary rays of a 1024 x 1024 camera, and R, random rays
+ * from origins inside the scene's box.
+ */
+public final class RaySet {
+    private final String name;
+    private final double[] rays;
+
+    private RaySet(String name, double[] rays) {
+        this.name = name;
+        this.rays = rays;
+    }
+
+    public String name() { return name; }
+
+    public int size() { return rays.length / 6; }
+
+    /** Origin and direction of ray {@code i}: {@code rays()[6 i .. 6 i + 6)}. */
+    public double[] rays() { return rays; }
+
+    /** Set P: a {@code res x res} pinhole camera looking at the box from direction (1, 0.5, 2), 40 degrees. */
+    public static RaySet primary(Box bounds, int res) {
+        double[] c = new double[3];
+        double d = 0;
+        for (int a = 0; a < 3; a++) {
+            c[a] = (bounds.min(a) + bounds.max(a)) / 2;
+            d += bounds.extent(a) * bounds.extent(a);
+        }
+        d = Math.sqrt(d);
+        double[] w = normalize(new double[] {1, 0.5, 2});
+        double[] eye = {c[0] + 1.5 * d * w[0], c[1] + 1.5 * d * w[1], c[2] + 1.5 * d * w[2]};
+        double[] fwd = normalize(new double[] {c[0] - eye[0], c[1] - eye[1], c[2] - eye[2]});
+        double[] right = normalize(cross(fwd, new double[] {0, 1, 0}));
+        double[] up = cross(right, fwd);
+        double s = Math.tan(Math.toRadians(20));
+        double[] r = new double[6 * res * res];
+        int at = 0;
+        for (int j = 0; j < res; j++) {
+            double y = (1 - 2 * (j + 0.5) / res) * s;
+            for (int i = 0; i < res; i++) {
+                double x = (2 * (i + 0.5) / res - 1) * s;
+                double[] dir = normalize(new double[] {fwd[0] + x * right[0] + y * up[0],
+                        fwd[1] + x * right[1] + y * up[1], fwd[2] + x * right[2] + y * up[2]});
+                r[at++] = eye[0]; r[at++] = eye[1]; r[at++] = eye[2];
+                r[at++] = dir[0]; r[at++] = dir[1]; r[at++] = dir[2];
+            }
+        }
+        return new RaySet("P", r);
+    }
+
+    /** Set R: {@code n} rays with uniform origins in the box and uniform directions (splitmix64, seed 42). */
+    public static RaySet random(Box bounds, int n) {
+        long[] state = {42};
+        double[] r = new double[6 * n];
+        for (int i = 0; i < n; i++) {
+            double ux = next(state), uy = next(state), uz = next(state), u = next(state), v = next(state);
+            double zc = 1 - 2 * u, phi = 2 * Math.PI * v, rad = Math.sqrt(Math.max(0, 1 - zc * zc));
+            r[6 * i] = bounds.min(0) + ux * bounds.extent(0);
+            r[6 * i + 1] = bounds.min(1) + uy * bounds.extent(1);
+            r[6 * i + 2] = bounds.min(2) + uz * bounds.extent(2);
+            r[6 * i + 3] = rad * Math.cos(phi);
+            r[6 * i + 4] = rad * Math.sin(phi);
+            r[6 * i + 5] = zc;
+        }
+        return new RaySet("R", r);
+    }
+
+    private static double next(long[] state) {
+        long z = (state[0] += 0x9E3779B97F4A7C15L);
+        z = (z ^ (z >>> 30)) * 0xBF58476D1CE4E5B9L;
+        z = (z ^ (z >>> 27)) * 0x94D049BB133111EBL;
+        z = z ^ (z >>> 31);
+        return (z >>> 11) * 0x1.0p-53;
+    }
+
+    private static double[] normalize(double[] v) {
+        double l = Math.sqrt(v[0] * v[0] + v[1] * v[1] + v[2] * v[2]);
+        return new double[] {v[0] / l, v[1] / l, v[2] / l};
+    }
+
+    private static double[] cross(double[] a, double[] b) {
+        return new double[] {a[1] * b[2] - a[2] * b[1], a[2] * b[0] - a[0] * b[2], a[0] * b[1] - a[1] * b[0]};
+    }
+}

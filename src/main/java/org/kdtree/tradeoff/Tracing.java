@@ -1,0 +1,47 @@
+package org.kdtree.tradeoff;
+
+import org.kdtree.geom.Ray;
+import org.kdtree.traverse.Hit;
+import org.kdtree.traverse.RayQuery;
+import org.kdtree.traverse.TraversalStats;
+import org.kdtree.traverse.Traverser;
+
+/** Traces a {@link RaySet} with a {@link Traverser}: closest hit for every ray. */
+public final class Tracing {
+    private Tracing() {
+    }
+
+    /** Hits and the sum of hit distances: the spec's checksum. */
+    public record Checksum(long hits, double tSum) {
+    }
+
+    /** Traces every ray (with a Traverser: its fast path, no listener) and returns the checksum. */
+    public static Checksum trace(RayQuery traverser, RaySet set) {
+        double[] r = set.rays();
+        Ray ray = new Ray(3);
+        Hit hit = new Hit();
+        long hits = 0;
+        double sum = 0;
+        for (int i = 0; i < r.length; i += 6) {
+            ray.set(r[i], r[i + 1], r[i + 2], r[i + 3], r[i + 4], r[i + 5]);
+            if (traverser.closestHit(ray, 0, Double.POSITIVE_INFINITY, hit)) {
+                hits++;
+                sum += hit.t;
+            }
+        }
+        return new Checksum(hits, sum);
+    }
+
+    /** Traces the first {@code limit} rays with a listener that counts nodes visited and triangle tests. */
+    public static TraversalStats count(Traverser traverser, RaySet set, int limit) {
+        double[] r = set.rays();
+        Ray ray = new Ray(3);
+        Hit hit = new Hit();
+        TraversalStats stats = new TraversalStats();
+        for (int i = 0; i < Math.min(r.length, 6L * limit); i += 6) {
+            ray.set(r[i], r[i + 1], r[i + 2], r[i + 3], r[i + 4], r[i + 5]);
+            traverser.closestHit(ray, 0, Double.POSITIVE_INFINITY, hit, stats);
+        }
+        return stats;
+    }
+}

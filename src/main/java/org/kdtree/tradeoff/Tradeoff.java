@@ -1,0 +1,103 @@
+package org.kdtree.tradeoff;
+
+import java.util.ArrayList;
+import java.util.Arrays;
+import java.util.List;
+import org.kdtree.build.KdTreeBuilder;
+import org.kdtree.shape.TriangleMesh;
+import org.kdtree.traverse.TraversalStats;
+import org.kdtree.traverse.TriangleIntersector;
+import org.kdtree.traverse.Traverser;
+import org.kdtree.tree.KdTree;
+import org.kdtree.tree.TreeStats;
+
+/**
+ * "What accuracy costs in time": builds the scene with each variant, then traces the ray
+ * workload, and reports build time, tree quality (expected SAH cost) and trace speed side by side.
+ */
+public final class Tradeoff {
+    private final TriangleMesh mesh;
+    private final RaySet rays;
+    private final int runs;
+    private final int threads;
+    private final int countedRays;
+
+    /**
+     * @param runs        timed builds and traces per variant (the median is kept), after one warm-up
+     * @param threads     threads for the builds (tracing is single-threaded)
+     * @param countedRays rays traced once more with a listener to count nodes and tests per ray
+     */
+    public Tradeoff(TriangleMesh mesh, RaySet rays, int runs, int threads, int countedRays) {
+        this.mesh = mesh;
+        this.rays = rays;
+        this.runs = Math.max(1, runs);
+        this.threads = threads;
+        this.countedRays = Math.max(1, countedRays);
+    }
+
+    /** Runs every variant in turn. */
+    public List<TradeoffResult> run(List<Variant> variants, java.util.function.Consumer<TradeoffResult> progress) {
+        List<TradeoffResult> out = new ArrayList<>();
+        for (Variant v : variants) {
+            TradeoffResult r = run(v);
+            progress.accept(r);
+            out.add(r);
+        }
+        return out;
+    }
+
+    /** Measures one variant. */
+    public TradeoffResult run(Variant v) {
+        KdTreeBuilder builder = v.create().threads(threads);
+        KdTree tree = builder.build(mesh);
+        double[] buildMs = new double[runs];
+        for (int i = 0; i < runs; i++) {
+            long t0 = System.nanoTime();
+            tree = builder.build(mesh);
+            buildMs[i] = (System.nanoTime() - t0) / 1e6;
+        }
+        TreeStats s = tree.stats();
+        Traverser traverser = new Traverser(tree, new TriangleIntersector(mesh));
+        Tracing.trace(traverser, rays);
+        double[] traceS = new double[runs];
+        for (int i = 0; i < runs; i++) {
+            long t0 = System.nanoTime();
+            Tracing.trace(traverser, rays);
+            traceS[i] = (System.nanoTime() - t0) / 1e9;
+        }
+        TraversalStats counts = Tracing.count(traverser, rays, countedRays);
+        double perRay = Math.max(1, counts.rays);
+        return new TradeoffResult(v.name(), builder.describeSettings(), median(buildMs), s.expectedCost(), s.nodes(),
+                s.leaves(), s.memoryBytes(), counts.nodes / perRay, counts.primitiveTests / perRay,
+                rays.size() / median(traceS), mesh.size());
+    }
+
+    /**
+     * The Pareto front of build time against trace time: results no other result beats on both
+     * (at least as fast to build and to trace, and faster on one).
+     */
+    public static boolean[] paretoFront(List<TradeoffResult> results) {
+        boolean[] front = new boolean[results.size()];
+        for (int i = 0; i < front.length; i++) {
+            TradeoffResult a = results.get(i);
+            front[i] = results.stream().noneMatch(b -> b != a && b.buildMs() <= a.buildMs()
+                    && b.raysPerSecond() >= a.raysPerSecond()
+                    && (b.buildMs() < a.buildMs() || b.raysPerSecond() > a.raysPerSecond()));
+        }
+        return front;
+    }
+
+    /** The results as CSV, with a Pareto column. */
+    public static String csv(List<TradeoffResult> results) {
+        boolean[] front = paretoFront(results);
+        StringBuilder sb = new StringBuilder(TradeoffResult.csvHeader()).append('\n');
+        for (int i = 0; i < results.size(); i++) sb.append(results.get(i).csvRow(front[i])).append('\n');
+        return sb.toString();
+    }
+
+    private static double median(double[] xs) {
+        double[] s = xs.clone();
+        Arrays.sort(s);
+        return s[s.length / 2];
+    }
+}

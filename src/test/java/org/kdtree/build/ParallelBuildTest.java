@@ -1,0 +1,52 @@
+package org.kdtree.build;
+
+import static org.assertj.core.api.Assertions.assertThat;
+import static org.assertj.core.api.Assertions.assertThatThrownBy;
+
+import org.junit.jupiter.api.Test;
+import org.kdtree.shape.TriangleMesh;
+import org.kdtree.tree.KdTree;
+
+/** A build with several threads makes the very tree of the sequential build. */
+class ParallelBuildTest {
+    private static final TriangleMesh SPHERE = Scenes.bumpySphere(40, 70, 11);       // 5,600 triangles
+    private static final TriangleMesh CLUSTERS = Scenes.clustered(5000, 12);
+
+    @Test void eventSahWithTwoAndThreeThreadsBuildsTheSequentialTree() {
+        for (TriangleMesh scene : new TriangleMesh[] {SPHERE, CLUSTERS}) {
+            KdTree one = new SahBuilder().build(scene);
+            assertThat(one.nodeCount()).isGreaterThan(1000);
+            SahAlgorithmsTest.assertSameTree(new SahBuilder().threads(2).build(scene), one);
+            SahAlgorithmsTest.assertSameTree(new SahBuilder().threads(3).build(scene), one);
+        }
+    }
+
+    @Test void parallelSweepOfTheAxesChoosesTheSequentialPlanes() {
+        int saved = SahBuilder.parallelSweepMin;
+        SahBuilder.parallelSweepMin = 500;
+        try {
+            KdTree one = new SahBuilder().build(CLUSTERS);
+            SahAlgorithmsTest.assertSameTree(new SahBuilder().threads(2).build(CLUSTERS), one);
+        } finally {
+            SahBuilder.parallelSweepMin = saved;
+        }
+    }
+
+    @Test void otherBuildersAndAlgorithmsToo() {
+        KdTreeBuilder[] builders = {
+                new SahBuilder().algorithm(SahBuilder.Algorithm.SORTED),
+                new SahBuilder().algorithm(SahBuilder.Algorithm.BINNED),
+                new SahBuilder().perfectSplits(false),
+                new MedianPlaneBuilder(),
+                new ObjectMedianBuilder()};
+        for (KdTreeBuilder b : builders) {
+            KdTree one = b.threads(1).build(SPHERE);
+            SahAlgorithmsTest.assertSameTree(b.threads(2).build(SPHERE), one);
+        }
+    }
+
+    @Test void rejectsNonsenseThreadCounts() {
+        assertThatThrownBy(() -> new SahBuilder().threads(0)).isInstanceOf(IllegalArgumentException.class);
+        assertThat(new SahBuilder().threads(4).describeSettings()).contains("threads=4");
+    }
+}

@@ -1,0 +1,77 @@
+package org.kdtree.tradeoff;
+
+import static org.assertj.core.api.Assertions.assertThat;
+
+import java.io.IOException;
+import java.nio.file.Files;
+import java.nio.file.Path;
+import java.util.List;
+import java.util.Locale;
+import org.junit.jupiter.api.Test;
+import org.junit.jupiter.api.io.TempDir;
+import org.kdtree.cli.Main;
+import org.kdtree.shape.ProceduralScenes;
+import org.kdtree.shape.TriangleMesh;
+import org.kdtree.traverse.BruteForce;
+import org.kdtree.traverse.TriangleIntersector;
+import org.kdtree.traverse.Traverser;
+
+class TradeoffTest {
+    @TempDir Path dir;
+
+    @Test void paretoFrontKeepsOnlyUndominatedVariants() {
+        List<TradeoffResult> rs = List.of(result("fast-build", 10, 1e5), result("fast-trace", 100, 1e6),
+                result("dominated", 120, 5e5), result("balanced", 50, 6e5));
+        assertThat(Tradeoff.paretoFront(rs)).containsExactly(true, true, false, true);
+    }
+
+    @Test void totalTimeIsBuildPlusTrace() {
+        TradeoffResult r = result("x", 100, 1e6);     // 1000 triangles, 1e6 rays/s
+        assertThat(r.totalMs(10)).isEqualTo(100 + 10.0);
+    }
+
+    @Test void rayCheckSumsMatchBruteForce() {
+        TriangleMesh m = ProceduralScenes.surface(400, 5);
+        TriangleIntersector tri = new TriangleIntersector(m);
+        var tree = new org.kdtree.build.SahBuilder().build(m);
+        for (RaySet set : new RaySet[] {RaySet.primary(tree.bounds(), 30), RaySet.random(tree.bounds(), 500)}) {
+            Tracing.Checksum kd = Tracing.trace(new Traverser(tree, tri), set);
+            Tracing.Checksum brute = Tracing.trace(new BruteForce(tri), set);
+            assertThat(kd.hits()).as(set.name()).isEqualTo(brute.hits()).isPositive();
+            assertThat(kd.tSum()).isCloseTo(brute.tSum(), org.assertj.core.data.Offset.offset(1e-9 * brute.tSum()));
+        }
+    }
+
+    @Test void commandWritesCsvAndChart() throws IOException {
+        Path obj = writeObj(ProceduralScenes.surface(300, 7));
+        Path csv = dir.resolve("out.csv"), png = dir.resolve("out.png");
+        int code = Main.run("tradeoff", obj.toString(), "--quick", "--ray-count", "2000", "--runs", "1",
+                "--counted-rays", "300", "--csv", csv.toString(), "--chart", png.toString());
+        assertThat(code).isZero();
+        List<String> lines = Files.readAllLines(csv);
+        assertThat(lines).hasSize(1 + Variant.quick().size());
+        assertThat(lines.get(0)).startsWith("variant,build_ms,expected_cost");
+        assertThat(lines).anyMatch(l -> l.startsWith("sah-exact-l0.8,"));
+        assertThat(Files.size(png)).isGreaterThan(1000);
+    }
+
+    @Test void unknownVariantIsAClearError() throws IOException {
+        Path obj = writeObj(ProceduralScenes.surface(50, 7));
+        assertThat(Main.run("tradeoff", obj.toString(), "--variants", "nonsense")).isEqualTo(2);
+    }
+
+    private static TradeoffResult result(String name, double buildMs, double raysPerSecond) {
+        return new TradeoffResult(name, "", buildMs, 1, 1, 1, 1, 1, 1, raysPerSecond, 1000);
+    }
+
+    private Path writeObj(TriangleMesh m) throws IOException {
+        StringBuilder sb = new StringBuilder();
+        double[] v = m.vertices();
+        for (int i = 0; i < v.length; i += 3) sb.append(String.format(Locale.ROOT, "v %.17g %.17g %.17g%n", v[i], v[i + 1], v[i + 2]));
+        int[] f = m.indices();
+        for (int i = 0; i < f.length; i += 3) sb.append("f ").append(f[i] + 1).append(' ').append(f[i + 1] + 1).append(' ').append(f[i + 2] + 1).append('\n');
+        Path p = dir.resolve("mesh.obj");
+        Files.writeString(p, sb);
+        return p;
+    }
+}
