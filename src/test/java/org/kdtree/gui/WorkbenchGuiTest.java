@@ -26,6 +26,8 @@ class WorkbenchGuiTest {
 
     @BeforeEach void open() {
         assumeFalse(GraphicsEnvironment.isHeadless(), "no display");
+        // a tooltip popping up under the robot's mouse would swallow its clicks on the canvas
+        GuiActionRunner.execute(() -> javax.swing.ToolTipManager.sharedInstance().setEnabled(false));
         bench = GuiActionRunner.execute(() -> new Workbench());
         window = new FrameFixture(bench);
         window.show();
