@@ -51,14 +51,14 @@ public record ObjMaterialMesh(double[] vertices, int[] indices, int[] materialOf
                     case "v" -> {
                         if (t.length < 4) throw new SceneFormatException(name, lineNo, "a vertex needs x y z, got '" + s + "'");
                         if (3 * nv + 3 > v.length) v = Arrays.copyOf(v, 2 * v.length);
-                        for (int a = 1; a <= 3; a++) v[3 * nv + a - 1] = number(t[a], name, lineNo);
+                        for (int a = 1; a <= 3; a++) v[3 * nv + a - 1] = ObjMeshReader.number(t[a], name, lineNo);
                         nv++;
                     }
                     case "f" -> {
                         int n = t.length - 1;
                         if (n < 3) throw new SceneFormatException(name, lineNo, "a face needs at least 3 vertices, got " + n);
                         if (face.length < n) face = new int[n];
-                        for (int c = 0; c < n; c++) face[c] = index(t[c + 1], nv, name, lineNo);
+                        for (int c = 0; c < n; c++) face[c] = ObjMeshReader.index(t[c + 1], nv, name, lineNo);
                         for (int c = 1; c + 1 < n; c++) {
                             if (3 * nt + 3 > tris.length) {
                                 tris = Arrays.copyOf(tris, 2 * tris.length);
@@ -95,31 +95,4 @@ public record ObjMaterialMesh(double[] vertices, int[] indices, int[] materialOf
     }
 
     public int triangleCount() { return materialOf.length; }
-
-    private static double number(String token, String name, int line) throws SceneFormatException {
-        double d;
-        try {
-            d = Double.parseDouble(token);
-        } catch (NumberFormatException e) {
-            throw new SceneFormatException(name, line, "'" + token + "' is not a number");
-        }
-        if (!Double.isFinite(d)) throw new SceneFormatException(name, line, "coordinate " + token + " is not finite");
-        return d;
-    }
-
-    private static int index(String token, int vertexCount, String name, int line) throws SceneFormatException {
-        int slash = token.indexOf('/');
-        String head = slash < 0 ? token : token.substring(0, slash);
-        int i;
-        try {
-            i = Integer.parseInt(head);
-        } catch (NumberFormatException e) {
-            throw new SceneFormatException(name, line, "'" + token + "' is not a vertex index");
-        }
-        int zeroBased = i > 0 ? i - 1 : vertexCount + i;
-        if (i == 0 || zeroBased < 0 || zeroBased >= vertexCount)
-            throw new SceneFormatException(name, line, "vertex index " + i + " out of range (" + vertexCount
-                    + " vertices defined so far)");
-        return zeroBased;
-    }
 }

@@ -68,7 +68,8 @@ public final class ObjMeshReader {
         }
     }
 
-    private static double number(String token, String name, int line) throws SceneFormatException {
+    /** A finite coordinate, or an error naming the file and line. */
+    static double number(String token, String name, int line) throws SceneFormatException {
         double d;
         try {
             d = Double.parseDouble(token);
@@ -80,7 +81,7 @@ public final class ObjMeshReader {
     }
 
     /** A face corner "a", "a/b", "a//c" or "a/b/c" to a 0-based vertex index. */
-    private static int index(String token, int vertexCount, String name, int line) throws SceneFormatException {
+    static int index(String token, int vertexCount, String name, int line) throws SceneFormatException {
         int slash = token.indexOf('/');
         String head = slash < 0 ? token : token.substring(0, slash);
         int i;

@@ -3,6 +3,7 @@ package org.kdtree.build;
 import java.util.ArrayList;
 import java.util.List;
 import java.util.Random;
+import org.kdtree.shape.ProceduralScenes;
 import org.kdtree.shape.Shape2D;
 import org.kdtree.shape.Shapes2D;
 import org.kdtree.shape.TriangleMesh;
@@ -14,19 +15,7 @@ final class Scenes {
 
     /** n random triangles of size up to {@code size} in the unit cube. */
     static TriangleMesh randomTriangles(int n, double size, long seed) {
-        Random r = new Random(seed);
-        double[] v = new double[9 * n];
-        int[] idx = new int[3 * n];
-        for (int t = 0; t < n; t++) {
-            double cx = r.nextDouble(), cy = r.nextDouble(), cz = r.nextDouble();
-            for (int c = 0; c < 3; c++) {
-                v[9 * t + 3 * c] = cx + size * (r.nextDouble() - 0.5);
-                v[9 * t + 3 * c + 1] = cy + size * (r.nextDouble() - 0.5);
-                v[9 * t + 3 * c + 2] = cz + size * (r.nextDouble() - 0.5);
-                idx[3 * t + c] = 3 * t + c;
-            }
-        }
-        return new TriangleMesh(v, idx);
+        return ProceduralScenes.uniform(n, size, seed);
     }
 
     /** n small triangles in a few tight Gaussian clusters, plus a few large ones. */
@@ -56,30 +45,7 @@ final class Scenes {
      * triangles each) with radial noise, sharing vertices as a scanned mesh does.
      */
     static TriangleMesh bumpySphere(int rings, int segments, long seed) {
-        Random r = new Random(seed);
-        int nv = (rings + 1) * segments;
-        double[] v = new double[3 * nv];
-        for (int i = 0; i <= rings; i++) {
-            double theta = Math.PI * i / rings;
-            for (int j = 0; j < segments; j++) {
-                double phi = 2 * Math.PI * j / segments;
-                double rad = 1 + 0.05 * Math.sin(5 * theta) * Math.cos(7 * phi) + 0.01 * r.nextDouble();
-                int at = 3 * (i * segments + j);
-                v[at] = rad * Math.sin(theta) * Math.cos(phi);
-                v[at + 1] = rad * Math.cos(theta);
-                v[at + 2] = rad * Math.sin(theta) * Math.sin(phi);
-            }
-        }
-        int[] idx = new int[6 * rings * segments];
-        int m = 0;
-        for (int i = 0; i < rings; i++) {
-            for (int j = 0; j < segments; j++) {
-                int a = i * segments + j, b = i * segments + (j + 1) % segments, c = a + segments, d = b + segments;
-                idx[m++] = a; idx[m++] = c; idx[m++] = b;
-                idx[m++] = b; idx[m++] = c; idx[m++] = d;
-            }
-        }
-        return new TriangleMesh(v, idx);
+        return ProceduralScenes.surface(rings, segments, seed);
     }
 
     /**

@@ -3,8 +3,6 @@ package org.kdtree.cli;
 import static org.assertj.core.api.Assertions.assertThat;
 
 import java.awt.image.BufferedImage;
-import java.io.ByteArrayOutputStream;
-import java.io.PrintStream;
 import java.nio.file.Files;
 import java.nio.file.Path;
 import javax.imageio.ImageIO;
@@ -14,26 +12,13 @@ import org.junit.jupiter.api.io.TempDir;
 class RenderCommandTest {
     @TempDir Path dir;
 
-    private record Run(int code, String out, String err) {
-    }
-
-    private static Run run(String... args) {
-        PrintStream oldOut = System.out, oldErr = System.err;
-        ByteArrayOutputStream out = new ByteArrayOutputStream(), err = new ByteArrayOutputStream();
-        try {
-            System.setOut(new PrintStream(out, true));
-            System.setErr(new PrintStream(err, true));
-            int code = Main.run(args);
-            return new Run(code, out.toString(), err.toString());
-        } finally {
-            System.setOut(oldOut);
-            System.setErr(oldErr);
-        }
+    private static CliRun run(String... args) {
+        return CliRun.of(args);
     }
 
     @Test void rendersTheCornellBoxToPngWithSummaryAndProgressBar() throws Exception {
         Path png = dir.resolve("out/cornell.png");
-        Run r = run("render", "scenes/cornell-box.json", "-o", png.toString(), "--builder", "sah", "--lambda", "0.8",
+        CliRun r = run("render", "scenes/cornell-box.json", "-o", png.toString(), "--builder", "sah", "--lambda", "0.8",
                 "--threads", "2", "--spp", "1", "--width", "32", "--height", "24");
         assertThat(r.code()).as(r.err()).isZero();
         BufferedImage img = ImageIO.read(png.toFile());
@@ -46,7 +31,7 @@ class RenderCommandTest {
     }
 
     @Test void rayDepthZeroTurnsReflectionAndRefractionOff() throws Exception {
-        Run r = run("render", "scenes/cornell-box.json", "-o", dir.resolve("c.png").toString(), "--ray-depth", "0",
+        CliRun r = run("render", "scenes/cornell-box.json", "-o", dir.resolve("c.png").toString(), "--ray-depth", "0",
                 "--spp", "1", "--width", "16", "--height", "16", "-q");
         assertThat(r.code()).as(r.err()).isZero();
         assertThat(r.out()).contains("max depth: 0").doesNotContain("reflection,").doesNotContain("refraction,")
@@ -57,7 +42,7 @@ class RenderCommandTest {
     @Test void aMalformedSceneGivesOneClearLineAndNoStackTrace() throws Exception {
         Path bad = dir.resolve("bad.json");
         Files.writeString(bad, "{\"camera\": {\"eye\": [0, 0, 5], \"lookAt\": [0, 0, 0], \"fov\": 400,\n \"width\": 8, \"height\": 8}}");
-        Run r = run("render", bad.toString(), "-o", dir.resolve("x.png").toString());
+        CliRun r = run("render", bad.toString(), "-o", dir.resolve("x.png").toString());
         assertThat(r.code()).isEqualTo(2);
         assertThat(r.err().strip()).isEqualTo("error: " + bad + ":1: $.camera.fov: field of view must be between 0 and 180 degrees, got 400.0");
         r = run("render", dir.resolve("missing.json").toString());
