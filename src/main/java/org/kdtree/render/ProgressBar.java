@@ -19,7 +19,7 @@ public final class ProgressBar {
     public synchronized void update(int done) {
         if (out == null) return;
         int percent = (int) (100L * done / total);
-        if (percent == shown) return;
+        if (percent <= shown) return; // threads may report out of order: never move backwards
         shown = percent;
         int filled = WIDTH * done / total;
         out.print("\r[" + "#".repeat(filled) + "-".repeat(WIDTH - filled) + "] " + percent + "% (" + done + "/" + total
