@@ -49,7 +49,7 @@ public final class Shape2DIntersector implements Intersector {
     @Override public int size() { return kind.length; }
 
     @Override public boolean intersect(int i, Ray ray, double tMin, double tMax, Hit hit) {
-        double limit = Math.min(tMax, hit.t);
+        double limit = tMax;
         int b = 6 * i;
         double[] p = xy;
         return switch (kind[i]) {
@@ -120,18 +120,18 @@ public final class Shape2DIntersector implements Intersector {
                                        double limit, Hit hit) {
         boolean quad = !Double.isNaN(dx);
         boolean found = segment(i, ax, ay, bx, by, r, tMin, limit, hit);
-        found |= segment(i, bx, by, cx, cy, r, tMin, Math.min(limit, hit.t), hit);
+        found |= segment(i, bx, by, cx, cy, r, tMin, limit, hit);
         if (quad) {
-            found |= segment(i, cx, cy, dx, dy, r, tMin, Math.min(limit, hit.t), hit);
-            found |= segment(i, dx, dy, ax, ay, r, tMin, Math.min(limit, hit.t), hit);
+            found |= segment(i, cx, cy, dx, dy, r, tMin, limit, hit);
+            found |= segment(i, dx, dy, ax, ay, r, tMin, limit, hit);
         } else {
-            found |= segment(i, cx, cy, ax, ay, r, tMin, Math.min(limit, hit.t), hit);
+            found |= segment(i, cx, cy, ax, ay, r, tMin, limit, hit);
         }
         return found;
     }
 
     private static boolean inside(int i, double tMin, double limit, Hit hit) {
-        if (!(tMin <= limit)) return false;
+        if (!(tMin <= limit && tMin < hit.t)) return false;
         hit.primitive = i;
         hit.t = tMin;
         hit.u = hit.v = 0;
@@ -139,7 +139,7 @@ public final class Shape2DIntersector implements Intersector {
     }
 
     private static boolean record(int i, double t, double u, double tMin, double limit, Hit hit) {
-        if (!(t >= tMin && t <= limit)) return false;
+        if (!(t >= tMin && t <= limit && t < hit.t)) return false;
         hit.primitive = i;
         hit.t = t;
         hit.u = u;

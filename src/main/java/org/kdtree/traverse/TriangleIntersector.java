@@ -48,7 +48,7 @@ public final class TriangleIntersector implements Intersector {
         if (dkz < 0) { int s = kx; kx = ky; ky = s; } // keep the winding: same sign of det on both sides
         double sz = 1.0 / dkz, sx = ray.direction(kx) * sz, sy = ray.direction(ky) * sz;
         return test(corners, 9 * i, i, ray.origin(kx), ray.origin(ky), ray.origin(kz), kx, ky, kz, sx, sy, sz,
-                tMin, Math.min(tMax, hit.t), hit);
+                tMin, tMax, hit);
     }
 
     /** The axis of largest absolute direction component (the sheared frame's z). */
@@ -60,10 +60,10 @@ public final class TriangleIntersector implements Intersector {
     /**
      * The test proper, on corners {@code c[b .. b+9)}, with the origin's coordinates given in the
      * sheared frame's axis order and the per-ray shear constants. Records a hit with
-     * {@code tMin <= t <= tLimit} in {@code hit}.
+     * {@code tMin <= t <= tMax} and {@code t < hit.t} in {@code hit}. (The fast path inlines a copy.)
      */
     static boolean test(double[] c, int b, int prim, double ox, double oy, double oz, int kx, int ky, int kz,
-                        double sx, double sy, double sz, double tMin, double tLimit, Hit hit) {
+                        double sx, double sy, double sz, double tMin, double tMax, Hit hit) {
         double az = c[b + kz] - oz, bz = c[b + 3 + kz] - oz, cz = c[b + 6 + kz] - oz;
         double ax = c[b + kx] - ox - sx * az, ay = c[b + ky] - oy - sy * az;
         double bx = c[b + 3 + kx] - ox - sx * bz, by = c[b + 3 + ky] - oy - sy * bz;
@@ -73,7 +73,7 @@ public final class TriangleIntersector implements Intersector {
         double det = u + v + w;
         if (det == 0) return false; // edge-on, or NaN corners never get here as hits (below)
         double t = (u * az + v * bz + w * cz) * sz / det;
-        if (!(t >= tMin && t <= tLimit)) return false; // also rejects NaN
+        if (!(t >= tMin && t <= tMax && t < hit.t)) return false; // also rejects NaN
         hit.primitive = prim;
         hit.t = t;
         hit.u = v / det;
