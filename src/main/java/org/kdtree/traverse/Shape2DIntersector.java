@@ -76,9 +76,11 @@ public final class Shape2DIntersector implements Intersector {
         double s1 = dx * (y1 - oy) - dy * (x1 - ox);
         if ((s0 > 0 && s1 > 0) || (s0 < 0 && s1 < 0)) return false;
         if (s0 == 0 && s1 == 0) return collinear(i, x0, y0, x1, y1, r, tMin, limit, hit);
-        double lambda = s0 / (s0 - s1);
-        double ex = x1 - x0, ey = y1 - y0;
-        double t = ((x0 - ox) * ey - (y0 - oy) * ex) / (dx * ey - dy * ex);
+        // t as a convex combination of the ends' ray parameters (as Woop et al. do for depth): it
+        // stays between them however close to parallel the ray and the segment are.
+        double lambda = s0 / (s0 - s1), dd = dx * dx + dy * dy;
+        double t0 = ((x0 - ox) * dx + (y0 - oy) * dy) / dd, t1 = ((x1 - ox) * dx + (y1 - oy) * dy) / dd;
+        double t = lambda == 1 ? t1 : t0 + lambda * (t1 - t0);
         return record(i, t, lambda, tMin, limit, hit);
     }
 
