@@ -89,6 +89,8 @@ final class MeshTraversal {
         double[] c = corners;
         int sp = 0, node = 0;
         double curMin = t0, curMax = t1;
+        // The slack-widened bounds, updated only when the interval changes (not per node).
+        double lo = curMin - Math.abs(curMin) * SLACK, hi = curMax + Math.abs(curMax) * SLACK;
         boolean found = false;
         while (true) {
             long w = nodes[2 * node + 1];
@@ -98,9 +100,9 @@ final class MeshTraversal {
                 double tSplit = (Double.longBitsToDouble(nodes[2 * node]) - o[axis]) * ia;
                 int near = node + 1, far = (int) (w >>> 5);
                 if (!(ia > 0)) { far = near; near = (int) (w >>> 5); }
-                if (tSplit > curMax + Math.abs(curMax) * SLACK) {
+                if (tSplit > hi) {
                     node = near;
-                } else if (tSplit < curMin - Math.abs(curMin) * SLACK) {
+                } else if (tSplit < lo) {
                     node = far;
                 } else {
                     stackNode[sp] = far;
@@ -111,6 +113,7 @@ final class MeshTraversal {
                     } else {
                         stackMin[sp] = tSplit;
                         curMax = tSplit;
+                        hi = tSplit + Math.abs(tSplit) * SLACK;
                     }
                     sp++;
                 }
@@ -147,6 +150,8 @@ final class MeshTraversal {
             }
             node = stackNode[sp];
             curMax = stackMax[sp];
+            lo = curMin - Math.abs(curMin) * SLACK;
+            hi = curMax + Math.abs(curMax) * SLACK;
         }
     }
 }
