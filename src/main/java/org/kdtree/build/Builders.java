@@ -16,6 +16,7 @@ public final class Builders {
         register("sah", SahBuilder::new);
         register("median-plane", MedianPlaneBuilder::new);
         register("object-median", ObjectMedianBuilder::new);
+        register("centre-midpoint", org.kdtree.examples.CentreMidpointBuilder::new);
     }
 
     private Builders() {

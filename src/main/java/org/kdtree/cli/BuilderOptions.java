@@ -1,9 +1,8 @@
 package org.kdtree.cli;
 
 import org.kdtree.build.Builders;
+import org.kdtree.build.CyclingAxisBuilder;
 import org.kdtree.build.KdTreeBuilder;
-import org.kdtree.build.MedianPlaneBuilder;
-import org.kdtree.build.ObjectMedianBuilder;
 import org.kdtree.build.SahBuilder;
 import org.kdtree.tree.CostModel;
 import picocli.CommandLine.Option;
@@ -51,8 +50,7 @@ public final class BuilderOptions {
             throw new IllegalArgumentException("--lambda and --algorithm apply to the sah builder only");
         }
         if (minPrims != null) {
-            if (b instanceof MedianPlaneBuilder m) m.minPrimitives(minPrims);
-            else if (b instanceof ObjectMedianBuilder o) o.minPrimitives(minPrims);
+            if (b instanceof CyclingAxisBuilder c) c.minPrimitives(minPrims);
             else throw new IllegalArgumentException("--min-prims applies to the median builders only");
         }
         return b;

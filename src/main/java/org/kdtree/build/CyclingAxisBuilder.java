@@ -1,0 +1,38 @@
+package org.kdtree.build;
+
+/**
+ * The talk's basic methods (section 3.2): the axis cycles with the depth,
+ * {@code n = D(V) mod k}, and the build stops on the simple rule of section 3.2.3,
+ * {@code |T| <= Kmintri or D(V) >= Kmaxdepth}. Subclasses choose only the position xi.
+ */
+public abstract class CyclingAxisBuilder extends KdTreeBuilder {
+    private int minPrimitives = 2;
+
+    /** The axis for this node: {@code D(V) mod k}. */
+    protected static int axis(BuildNode node) {
+        return node.depth() % node.dimension();
+    }
+
+    @Override protected boolean terminate(BuildContext context, BuildNode node) {
+        return node.size() <= minPrimitives || node.depth() >= context.depthCap();
+    }
+
+    /** Kmintri: a node with at most this many primitives becomes a leaf (default 2). */
+    public int minPrimitives() { return minPrimitives; }
+
+    /** Sets Kmintri (>= 0). */
+    public CyclingAxisBuilder minPrimitives(int n) {
+        if (n < 0) throw new IllegalArgumentException("Kmintri must be >= 0, got " + n);
+        this.minPrimitives = n;
+        return this;
+    }
+
+    @Override public CyclingAxisBuilder maxDepth(int depth) {
+        super.maxDepth(depth);
+        return this;
+    }
+
+    @Override public String describeSettings() {
+        return "Kmintri=" + minPrimitives + " " + super.describeSettings();
+    }
+}

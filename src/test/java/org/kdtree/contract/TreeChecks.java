@@ -1,0 +1,139 @@
+package org.kdtree.contract;
+
+import static org.junit.jupiter.api.Assertions.fail;
+
+import java.util.Arrays;
+import java.util.List;
+import org.kdtree.build.KdTreeBuilder;
+import org.kdtree.geom.Box;
+import org.kdtree.shape.Primitives;
+import org.kdtree.tree.KdTree;
+
+/**
+ * The invariants every kd-tree must satisfy, checked with messages a student can act on.
+ * Coordinates are compared with a margin of 1e-9 of the scene's size, so that rounding in
+ * the sample points never raises a false alarm.
+ */
+public final class TreeChecks {
+    private TreeChecks() {
+    }
+
+    /** Checks every invariant of {@code tree}, built by {@code builder} over {@code prims}. */
+    public static void checkAll(KdTreeBuilder builder, Primitives prims, KdTree tree) {
+        TreeInspector in = new TreeInspector(tree);
+        double eps = margin(tree.bounds());
+        checkShape(builder, tree, in);
+        checkDepth(builder, prims, in);
+        checkSplitsInsideVoxels(builder, in);
+        checkLeavesTileRoot(builder, tree, in);
+        checkEveryReferenceTouchesItsLeaf(builder, prims, in, eps);
+        checkEveryPrimitiveIsInEveryLeafItOverlaps(builder, prims, in, eps);
+    }
+
+    static double margin(Box root) {
+        double size = 0;
+        for (int a = 0; a < root.dimension(); a++)
+            size = Math.max(size, Math.max(Math.abs(root.min(a)), Math.abs(root.max(a))));
+        return Math.max(1e-9 * size, Double.MIN_NORMAL);
+    }
+
+    static void checkShape(KdTreeBuilder b, KdTree tree, TreeInspector in) {
+        if (in.leaves().size() != in.interiors().size() + 1)
+            fail(b.name() + ": a kd-tree is a full binary tree, so it has one more leaf than interior nodes; this one has "
+                    + in.leaves().size() + " leaves and " + in.interiors().size() + " interior nodes.");
+        if (tree.nodeCount() != in.leaves().size() + in.interiors().size())
+            fail(b.name() + ": " + tree.nodeCount() + " nodes stored but only " + (in.leaves().size() + in.interiors().size())
+                    + " reachable from the root.");
+    }
+
+    static void checkDepth(KdTreeBuilder b, Primitives prims, TreeInspector in) {
+        int cap = b.maxDepth() >= 0 ? b.maxDepth() : KdTreeBuilder.defaultMaxDepth(prims.size());
+        for (TreeInspector.Leaf l : in.leaves())
+            if (l.depth() > cap)
+                fail(b.name() + ": leaf at depth " + l.depth() + " but the depth cap Kmaxdepth is " + cap
+                        + "; terminate() must stop the recursion at the cap.");
+    }
+
+    static void checkSplitsInsideVoxels(KdTreeBuilder b, TreeInspector in) {
+        for (TreeInspector.Interior n : in.interiors()) {
+            Box v = n.voxel();
+            if (n.split() < v.min(n.axis()) || n.split() > v.max(n.axis()))
+                fail(b.name() + ": node " + n.node() + " at depth " + n.depth() + " splits axis " + n.axis() + " at "
+                        + n.split() + ", outside its voxel " + v + "; findPlane() must choose a plane inside the voxel.");
+        }
+    }
+
+    /** The leaves' voxels cover the root voxel exactly: their measures add up to the root's. */
+    static void checkLeavesTileRoot(KdTreeBuilder b, KdTree tree, TreeInspector in) {
+        double root = tree.bounds().volume();
+        double sum = 0;
+        for (TreeInspector.Leaf l : in.leaves()) sum += l.voxel().volume();
+        if (Math.abs(sum - root) > 1e-9 * Math.max(root, Double.MIN_NORMAL) && root > 0)
+            fail(b.name() + ": the leaves' voxels should tile the root voxel (measure " + root
+                    + ") but their measures add up to " + sum + ".");
+    }
+
+    /** No leaf lists a primitive that does not touch its voxel, nor lists one twice. */
+    static void checkEveryReferenceTouchesItsLeaf(KdTreeBuilder b, Primitives prims, TreeInspector in, double eps) {
+        Box grown = new Box(prims.dimension()), clip = new Box(prims.dimension());
+        for (TreeInspector.Leaf l : in.leaves()) {
+            int[] sorted = l.refs().clone();
+            Arrays.sort(sorted);
+            for (int j = 1; j < sorted.length; j++)
+                if (sorted[j] == sorted[j - 1])
+                    fail(b.name() + ": leaf " + l.node() + " lists " + prims.describe(sorted[j]) + " twice.");
+            grown.set(l.voxel());
+            for (int a = 0; a < grown.dimension(); a++) grown.setMin(a, grown.min(a) - eps).setMax(a, grown.max(a) + eps);
+            for (int r : l.refs()) {
+                if (r < 0 || r >= prims.size()) fail(b.name() + ": leaf " + l.node() + " lists primitive " + r
+                        + ", but the scene has primitives 0.." + (prims.size() - 1) + ".");
+                prims.clip(r, grown, clip);
+                if (clip.isEmpty())
+                    fail(b.name() + ": leaf " + l.node() + " (voxel " + l.voxel() + ") lists " + prims.describe(r)
+                            + ", which does not touch that voxel; split() must send a primitive only to the child voxels it overlaps.");
+            }
+        }
+    }
+
+    /**
+     * Every point of a primitive lies in some leaf that lists it, and every leaf whose voxel holds
+     * such a point strictly inside (by a margin) lists the primitive.
+     */
+    static void checkEveryPrimitiveIsInEveryLeafItOverlaps(KdTreeBuilder b, Primitives prims, TreeInspector in,
+                                                          double eps) {
+        for (int i = 0; i < prims.size(); i++) {
+            for (double[] p : PrimitiveSamples.of(prims, i)) {
+                List<TreeInspector.Leaf> around = in.leavesContaining(p, eps);
+                boolean listed = false;
+                for (TreeInspector.Leaf l : around) {
+                    boolean has = contains(l.refs(), i);
+                    listed |= has;
+                    if (!has && strictlyInside(p, l.voxel(), eps))
+                        fail(b.name() + ": " + prims.describe(i) + " passes through point " + Arrays.toString(p)
+                                + ", inside leaf " + l.node() + " (voxel " + l.voxel() + "), but that leaf does not list it;"
+                                + " split() must send each primitive to every child voxel it overlaps.");
+                }
+                if (!listed)
+                    fail(b.name() + ": " + prims.describe(i) + " passes through point " + Arrays.toString(p)
+                            + ", but no leaf around that point lists it: a ray hitting it there would miss it.");
+            }
+        }
+    }
+
+    /**
+     * Strictly inside on every axis. A flat voxel holds no point strictly inside: a split in the
+     * plane of a flat scene leaves two leaves with the same voxel, and only one of them need list
+     * the primitives lying in it (the first check, "some leaf lists it", still covers them).
+     */
+    private static boolean strictlyInside(double[] p, Box v, double eps) {
+        for (int a = 0; a < v.dimension(); a++) {
+            if (!(p[a] > v.min(a) + eps && p[a] < v.max(a) - eps)) return false;
+        }
+        return true;
+    }
+
+    private static boolean contains(int[] refs, int i) {
+        for (int r : refs) if (r == i) return true;
+        return false;
+    }
+}

@@ -1,0 +1,9 @@
+package org.kdtree.examples;
+
+import org.kdtree.build.KdTreeBuilder;
+import org.kdtree.contract.KdTreeBuilderContract;
+
+/** The worked example of docs/write-your-own-builder.md passes the same contract as ours. */
+class CentreMidpointBuilderContractTest extends KdTreeBuilderContract {
+    @Override protected KdTreeBuilder newBuilder() { return new CentreMidpointBuilder(); }
+}

@@ -1,0 +1,48 @@
+package org.kdtree.io;
+
+import static org.assertj.core.api.Assertions.assertThat;
+import static org.assertj.core.api.Assertions.assertThatThrownBy;
+
+import java.io.StringReader;
+import org.junit.jupiter.api.Test;
+import org.kdtree.shape.TriangleMesh;
+
+class ObjMeshReaderTest {
+    private static TriangleMesh read(String text) throws Exception {
+        return ObjMeshReader.read(new StringReader(text), "test.obj");
+    }
+
+    @Test void readsEveryFaceFormAndFanTriangulatesPolygons() throws Exception {
+        TriangleMesh m = read("""
+                # a quad and a triangle
+                v 0 0 0
+                v 1 0 0
+                v 1 1 0
+                v 0 1 0
+                vt 0 0
+                vn 0 0 1
+                f 1/1/1 2/1/1 3/1/1 4/1/1
+                f -4//1 -3 -1/1
+                o ignored
+                """);
+        assertThat(m.size()).isEqualTo(3);
+        assertThat(m.indices()).containsExactly(0, 1, 2, 0, 2, 3, 0, 1, 3);
+        assertThat(m.vertexCount()).isEqualTo(4);
+    }
+
+    @Test void errorsNameTheFileAndLine() {
+        assertThatThrownBy(() -> read("v 0 0 0\nv 1 0 zero\n"))
+                .isInstanceOf(SceneFormatException.class).hasMessage("test.obj:2: 'zero' is not a number");
+        assertThatThrownBy(() -> read("v 0 0 0\nv 1 0 0\nv 0 1 0\nf 1 2 4\n"))
+                .hasMessageStartingWith("test.obj:4: vertex index 4 out of range");
+        assertThatThrownBy(() -> read("v 0 0 0\nf 1 1\n")).hasMessageContaining("test.obj:2: a face needs at least 3");
+        assertThatThrownBy(() -> read("v 0 0\n")).hasMessageContaining("test.obj:1: a vertex needs x y z");
+        assertThatThrownBy(() -> read("v 0 0 NaN\n")).hasMessageContaining("test.obj:1: coordinate NaN is not finite");
+        assertThatThrownBy(() -> read("v 0 0 0\nf 0 1 1\n")).hasMessageContaining("vertex index 0");
+    }
+
+    @Test void aMissingFileIsAClearError() {
+        assertThatThrownBy(() -> ObjMeshReader.read(java.nio.file.Path.of("no/such/mesh.obj")))
+                .isInstanceOf(SceneFormatException.class).hasMessage("no/such/mesh.obj: no such file");
+    }
+}

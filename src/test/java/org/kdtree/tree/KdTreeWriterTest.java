@@ -1,0 +1,68 @@
+package org.kdtree.tree;
+
+import static org.assertj.core.api.Assertions.assertThat;
+
+import org.junit.jupiter.api.Test;
+import org.kdtree.geom.Box;
+
+class KdTreeWriterTest {
+    /** Writes: split x=1 -> leaf{0}, split y=2 -> leaf{1,2}, leaf{}. */
+    private static void writeSample(KdTreeWriter w) {
+        int root = w.interior(0, 1);
+        w.leaf(new int[] {0}, 1);
+        w.setRightChild(root);
+        int inner = w.interior(1, 2);
+        w.leaf(new int[] {1, 2}, 2);
+        w.setRightChild(inner);
+        w.leaf(new int[0], 0);
+    }
+
+    @Test void depthFirstLayoutWithRightChildIndices() {
+        KdTreeWriter w = new KdTreeWriter();
+        writeSample(w);
+        KdTree t = w.finish(Box.of2(0, 0, 4, 4), CostModel.WALD_HAVRAN, "test");
+        assertThat(t.nodeCount()).isEqualTo(5);
+        assertThat(t.isLeaf(0)).isFalse();
+        assertThat(t.axis(0)).isZero();
+        assertThat(t.split(0)).isEqualTo(1);
+        assertThat(t.leafPrimitives(t.leftChild(0))).containsExactly(0);
+        int inner = t.rightChild(0);
+        assertThat(t.axis(inner)).isEqualTo(1);
+        assertThat(t.leafPrimitives(t.leftChild(inner))).containsExactly(1, 2);
+        assertThat(t.leafPrimitives(t.rightChild(inner))).isEmpty();
+        TreeStats s = t.stats();
+        assertThat(s.leaves()).isEqualTo(3);
+        assertThat(s.emptyLeaves()).isEqualTo(1);
+        assertThat(s.references()).isEqualTo(3);
+        assertThat(s.maxDepth()).isEqualTo(2);
+        assertThat(s.averageRefsPerLeaf()).isEqualTo(1.5);
+    }
+
+    @Test void expectedCostFollowsTheRecursiveFormula() {
+        KdTreeWriter w = new KdTreeWriter();
+        writeSample(w);
+        KdTree t = w.finish(Box.of2(0, 0, 4, 4), new CostModel(15, 20), "test");
+        // perimeters: root 16; left [0,1]x[0,4] 10; right [1,4]x[0,4] 14; its children [1,4]x[0,2] 10 and [1,4]x[2,4] 10
+        double right = 15 + 10.0 / 14 * (2 * 20) + 10.0 / 14 * 0;
+        double expected = 15 + 10.0 / 16 * (1 * 20) + 14.0 / 16 * right;
+        assertThat(t.stats().expectedCost()).isCloseTo(expected, org.assertj.core.data.Offset.offset(1e-9));
+    }
+
+    @Test void appendSplicesASubtreeWrittenElsewhere() {
+        KdTreeWriter sub = new KdTreeWriter();
+        writeSample(sub);
+        KdTreeWriter w = new KdTreeWriter();
+        int root = w.interior(0, 0.5);
+        w.leaf(new int[] {7}, 1);
+        w.setRightChild(root);
+        w.append(sub);
+        KdTree t = w.finish(Box.of2(0, 0, 4, 4), CostModel.WALD_HAVRAN, "test");
+        int r = t.rightChild(0);
+        assertThat(t.split(r)).isEqualTo(1);
+        assertThat(t.leafPrimitives(t.leftChild(r))).containsExactly(0);
+        int inner = t.rightChild(r);
+        assertThat(t.leafPrimitives(t.leftChild(inner))).containsExactly(1, 2);
+        assertThat(t.leafPrimitives(t.rightChild(inner))).isEmpty();
+        assertThat(t.leafPrimitives(1)).containsExactly(7);
+    }
+}
