@@ -136,13 +136,14 @@ class HardCases3DTest {
         List<Oracle> oracles = Oracle.allBuilders(m, new TriangleIntersector(m));
         Ray ray = new Ray(3);
         java.util.Random rnd = new java.util.Random(11);
+        int hits = 0;
         for (int i = 0; i < 3000; i++) {
             // Lie in a face plane (z = integer), a tiny tilt or none.
             double z = rnd.nextInt(5), tilt = rnd.nextBoolean() ? 0.0 : (rnd.nextBoolean() ? 1e-12 : -0.0);
             ray.set(rnd.nextDouble() * 6 - 1, rnd.nextDouble() * 6 - 1, z, rnd.nextGaussian(), rnd.nextGaussian(), tilt);
-            for (Oracle o : oracles) o.check(ray);
+            for (Oracle o : oracles) if (o.check(ray)) hits++;
         }
-        assertThat(oracles).hasSize(3);
+        assertThat(hits).isGreaterThan(1000);
     }
 
     @Test void degenerateTrianglesAreNeverReported() {
