@@ -6,24 +6,24 @@ import java.util.concurrent.Future;
 import java.util.concurrent.atomic.AtomicLong;
 import org.kdtree.geom.Ray;
 import org.kdtree.geom.Tolerance;
-import org.kdtree.traverse.BruteForce;
+import org.kdtree.traverse.TriangleIntersector;
 import org.kdtree.traverse.Hit;
 import org.kdtree.traverse.RayQuery;
 import org.kdtree.traverse.Traverser;
 
 /**
  * The hidden {@code raycast --verify STRIDE}: traces every STRIDE-th ray of a set both by brute
- * force (double precision, every triangle) and through the tree, and counts disagreements: hit
+ * force (double precision, every triangle, {@link TriangleIntersector#closestHitAll}) and through the tree, and counts disagreements: hit
  * versus miss, or closest t differing by more than 1e-9 relative. Slow by design (N rays times
  * all triangles); only the brute force runs on several threads, each with its own tree query.
  */
 final class BruteCheck {
-    private final BruteForce brute;
+    private final TriangleIntersector tris;
     private final Traverser tree;
     private final int stride, threads;
 
-    BruteCheck(BruteForce brute, Traverser tree, int stride, int threads) {
-        this.brute = brute;
+    BruteCheck(TriangleIntersector tris, Traverser tree, int stride, int threads) {
+        this.tris = tris;
         this.tree = tree;
         this.stride = stride;
         this.threads = Math.max(1, threads);
@@ -46,7 +46,7 @@ final class BruteCheck {
                     for (int i = id * stride; i < n; i += threads * stride) {
                         double[] o = rays.origins, d = rays.directions;
                         ray.set(o[3 * i], o[3 * i + 1], o[3 * i + 2], d[3 * i], d[3 * i + 1], d[3 * i + 2]);
-                        boolean x = brute.closestHit(ray, Double.MIN_VALUE, Double.POSITIVE_INFINITY, a);
+                        boolean x = tris.closestHitAll(ray, Double.MIN_VALUE, Double.POSITIVE_INFINITY, a);
                         boolean y = own.closestHit(ray, Double.MIN_VALUE, Double.POSITIVE_INFINITY, b);
                         checked.incrementAndGet();
                         if (x) { bruteHits.incrementAndGet(); sums[2 * id] += a.t; }

@@ -11,7 +11,6 @@ import java.util.concurrent.Callable;
 import org.kdtree.build.KdTreeBuilder;
 import org.kdtree.io.ObjMeshReader;
 import org.kdtree.shape.TriangleMesh;
-import org.kdtree.traverse.BruteForce;
 import org.kdtree.traverse.Traverser;
 import org.kdtree.traverse.TriangleIntersector;
 import org.kdtree.tree.KdTree;
@@ -109,7 +108,7 @@ public final class RaycastCommand implements Callable<Integer> {
         System.err.println(String.format(Locale.ROOT, "# %s, %d thread(s); references per non-empty leaf %.2f",
                 builder.describeSettings(), threads, st.averageRefsPerLeaf()));
         if (verifyStride > 0) {
-            BruteCheck check = new BruteCheck(new BruteForce(tris), new Traverser(tree, tris), verifyStride, threads);
+            BruteCheck check = new BruteCheck(tris, new Traverser(tree, tris), verifyStride, threads);
             System.err.println("# verify P: " + check.compare(p));
             System.err.println("# verify R: " + check.compare(r));
         }

@@ -110,4 +110,25 @@ class TriangleIntersectorTest {
         }
         assertThat(rays).isEqualTo(6 * sphere.size());
     }
+
+    @Test void closestHitAllIsBruteForce() {
+        TriangleMesh soup = Scenes.soup(9, 300, 0.3);
+        TriangleIntersector x = new TriangleIntersector(soup);
+        BruteForce brute = new BruteForce(x);
+        java.util.Random rnd = new java.util.Random(9);
+        Ray r = new Ray(3);
+        Hit a = new Hit(), b = new Hit();
+        int hits = 0;
+        for (int i = 0; i < 500; i++) {
+            r.set(rnd.nextDouble(), rnd.nextDouble(), rnd.nextDouble(), rnd.nextGaussian(), rnd.nextGaussian(), rnd.nextGaussian());
+            boolean want = brute.closestHit(r, 0, Double.POSITIVE_INFINITY, a);
+            assertThat(x.closestHitAll(r, 0, Double.POSITIVE_INFINITY, b)).isEqualTo(want);
+            if (want) {
+                hits++;
+                assertThat(b.t).isEqualTo(a.t);
+                assertThat(b.primitive).isEqualTo(a.primitive);
+            }
+        }
+        assertThat(hits).isGreaterThan(100);
+    }
 }
