@@ -79,7 +79,7 @@ final class MeshTraversal {
         iv[0] = ix; iv[1] = iy; iv[2] = iz;
         double dkz = ray.direction(kz);
         if (dkz < 0) { int s = kx; kx = ky; ky = s; }
-        double sz = 1.0 / dkz, sx = ray.direction(kx) * sz, sy = ray.direction(ky) * sz;
+        double sz = ray.inverseDirection(kz), sx = ray.direction(kx) * sz, sy = ray.direction(ky) * sz; // = 1 / dkz
         double okx = o[kx], oky = o[ky], okz = o[kz];
 
         int stamp = mailbox.next();

@@ -46,7 +46,7 @@ public final class TriangleIntersector implements Intersector {
         int kx = kz == 2 ? 0 : kz + 1, ky = kx == 2 ? 0 : kx + 1;
         double dkz = ray.direction(kz);
         if (dkz < 0) { int s = kx; kx = ky; ky = s; } // keep the winding: same sign of det on both sides
-        double sz = 1.0 / dkz, sx = ray.direction(kx) * sz, sy = ray.direction(ky) * sz;
+        double sz = ray.inverseDirection(kz), sx = ray.direction(kx) * sz, sy = ray.direction(ky) * sz; // = 1 / dkz
         return test(corners, 9 * i, i, ray.origin(kx), ray.origin(ky), ray.origin(kz), kx, ky, kz, sx, sy, sz,
                 tMin, tMax, hit);
     }
@@ -97,7 +97,7 @@ public final class TriangleIntersector implements Intersector {
         int kx = kz == 2 ? 0 : kz + 1, ky = kx == 2 ? 0 : kx + 1;
         double dkz = ray.direction(kz);
         if (dkz < 0) { int s = kx; kx = ky; ky = s; }
-        double sz = 1.0 / dkz, sx = ray.direction(kx) * sz, sy = ray.direction(ky) * sz;
+        double sz = ray.inverseDirection(kz), sx = ray.direction(kx) * sz, sy = ray.direction(ky) * sz; // = 1 / dkz
         double ox = ray.origin(kx), oy = ray.origin(ky), oz = ray.origin(kz);
         boolean found = false;
         for (int i = 0; i < size; i++)
