@@ -47,6 +47,7 @@ final class MeshTraversal {
     }
 
     private boolean trace(Ray ray, double tMin, double tMax, Hit hit, boolean any) {
+        if (ray.dimension() != 3) throw new IllegalArgumentException("a " + ray.dimension() + "-D ray in a 3-D tree");
         double ox = ray.origin(0), oy = ray.origin(1), oz = ray.origin(2);
         double dx = ray.direction(0), dy = ray.direction(1), dz = ray.direction(2);
         double ix = ray.inverseDirection(0), iy = ray.inverseDirection(1), iz = ray.inverseDirection(2);
