@@ -25,10 +25,11 @@ import picocli.CommandLine.Parameters;
  * {@code --rays FILE --hits FILE}, the closest hits of a user's own rays. See docs/raycast.md.
  */
 @Command(name = "raycast", mixinStandardHelpOptions = true,
-        description = {"Ray-casting benchmark (bench/SPEC.md): prints",
-                "  system mesh tris build_ms nodes leaves depth P_hits P_tsum P_mrays R_hits R_tsum R_mrays",
-                "or, with --rays FILE --hits FILE, traces the rays of FILE (one 'ox oy oz dx dy dz [tmin tmax]' per line)",
-                "and writes one 't triangle' or 'miss' line per ray."})
+        description = {"Ray-casting benchmark (bench/SPEC.md). Prints one line:",
+                "  system mesh tris build_ms nodes leaves depth",
+                "  P_hits P_tsum P_mrays R_hits R_tsum R_mrays",
+                "With --rays FILE --hits FILE: traces FILE's rays ('ox oy oz dx dy dz [tmin tmax]'",
+                "per line) and writes one 't triangle' or 'miss' line per ray."})
 public final class RaycastCommand implements Callable<Integer> {
     @Parameters(paramLabel = "MESH", description = "A Wavefront OBJ mesh.")
     Path mesh;
