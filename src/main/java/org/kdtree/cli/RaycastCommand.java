@@ -28,8 +28,9 @@ import picocli.CommandLine.Parameters;
         description = {"Ray-casting benchmark (bench/SPEC.md). Prints one line:",
                 "  system mesh tris build_ms nodes leaves depth",
                 "  P_hits P_tsum P_mrays R_hits R_tsum R_mrays",
-                "With --rays FILE --hits FILE: traces FILE's rays ('ox oy oz dx dy dz [tmin tmax]'",
-                "per line) and writes one 't triangle' or 'miss' line per ray."})
+                "With --rays FILE --hits FILE: traces the rays of FILE, one per line as",
+                "'ox oy oz dx dy dz [tmin tmax]', and writes one 't triangle' or 'miss' line",
+                "per ray."})
 public final class RaycastCommand implements Callable<Integer> {
     @Parameters(paramLabel = "MESH", description = "A Wavefront OBJ mesh.")
     Path mesh;
