@@ -7,7 +7,7 @@ import picocli.CommandLine.Command;
 /** The command line: {@code java -jar kdtree.jar COMMAND ...}. */
 @Command(name = "kdtree", mixinStandardHelpOptions = true, version = "kdtree 0.1",
         description = "k-d trees for ray tracing: build, inspect, trace, render.",
-        subcommands = {StatsCommand.class, RenderCommand.class, TradeoffCommand.class, GuiCommand.class})
+        subcommands = {GuiCommand.class, StatsCommand.class, RaycastCommand.class, RenderCommand.class, TradeoffCommand.class})
 public final class Main implements Runnable {
     public static void main(String[] args) {
         int code = run(args);

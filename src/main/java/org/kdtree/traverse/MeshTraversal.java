@@ -13,9 +13,8 @@ import org.kdtree.tree.KdTree;
 final class MeshTraversal {
     private static final double SLACK = Traverser.SLACK;
 
-    private final int[] word;
-    private final double[] split;
-    private final int[] leafStart, refs;
+    private final long[] nodes;
+    private final int[] refs;
     private final double[] corners;
     private final double lx, ly, lz, hx, hy, hz;
     private final Mailbox mailbox;
@@ -25,10 +24,9 @@ final class MeshTraversal {
     private final Hit scratch = new Hit();
 
     MeshTraversal(KdTree tree, TriangleIntersector tris, Mailbox mailbox, int stackSize) {
-        word = tree.wordArray();
-        split = tree.splitArray();
-        leafStart = tree.leafStartArray();
-        refs = tree.refArray();
+        PackedTree packed = PackedTree.of(tree);
+        nodes = packed.nodes;
+        refs = packed.refs;
         corners = tris.cornerArray();
         Box b = tree.bounds();
         lx = b.min(0); ly = b.min(1); lz = b.min(2);
@@ -49,6 +47,7 @@ final class MeshTraversal {
     }
 
     private boolean trace(Ray ray, double tMin, double tMax, Hit hit, boolean any) {
+        if (ray.dimension() != 3) throw new IllegalArgumentException("a " + ray.dimension() + "-D ray in a 3-D tree");
         double ox = ray.origin(0), oy = ray.origin(1), oz = ray.origin(2);
         double dx = ray.direction(0), dy = ray.direction(1), dz = ray.direction(2);
         double ix = ray.inverseDirection(0), iy = ray.inverseDirection(1), iz = ray.inverseDirection(2);
@@ -81,27 +80,30 @@ final class MeshTraversal {
         iv[0] = ix; iv[1] = iy; iv[2] = iz;
         double dkz = ray.direction(kz);
         if (dkz < 0) { int s = kx; kx = ky; ky = s; }
-        double sz = 1.0 / dkz, sx = ray.direction(kx) * sz, sy = ray.direction(ky) * sz;
+        double sz = ray.inverseDirection(kz), sx = ray.direction(kx) * sz, sy = ray.direction(ky) * sz; // = 1 / dkz
         double okx = o[kx], oky = o[ky], okz = o[kz];
 
         int stamp = mailbox.next();
         int[] box = mailbox.stamp;
-        int[] word = this.word, refs = this.refs, leafStart = this.leafStart;
-        double[] split = this.split, c = corners;
+        long[] nodes = this.nodes;
+        int[] refs = this.refs;
+        double[] c = corners;
         int sp = 0, node = 0;
         double curMin = t0, curMax = t1;
+        // The slack-widened bounds, updated only when the interval changes (not per node).
+        double lo = curMin - Math.abs(curMin) * SLACK, hi = curMax + Math.abs(curMax) * SLACK;
         boolean found = false;
         while (true) {
-            int w = word[node];
+            long w = nodes[2 * node + 1];
             while ((w & 31) != 31) {
-                int axis = w & 31;
+                int axis = (int) w & 31;
                 double ia = iv[axis];
-                double tSplit = (split[node] - o[axis]) * ia;
-                int near = node + 1, far = w >>> 5;
-                if (!(ia > 0)) { far = near; near = w >>> 5; }
-                if (tSplit > curMax + Math.abs(curMax) * SLACK) {
+                double tSplit = (Double.longBitsToDouble(nodes[2 * node]) - o[axis]) * ia;
+                int near = node + 1, far = (int) (w >>> 5);
+                if (!(ia > 0)) { far = near; near = (int) (w >>> 5); }
+                if (tSplit > hi) {
                     node = near;
-                } else if (tSplit < curMin - Math.abs(curMin) * SLACK) {
+                } else if (tSplit < lo) {
                     node = far;
                 } else {
                     stackNode[sp] = far;
@@ -112,21 +114,34 @@ final class MeshTraversal {
                     } else {
                         stackMin[sp] = tSplit;
                         curMax = tSplit;
+                        hi = tSplit + Math.abs(tSplit) * SLACK;
                     }
                     sp++;
                 }
-                w = word[node];
+                w = nodes[2 * node + 1];
             }
-            int leaf = w >>> 5;
-            for (int r = leafStart[leaf], end = leafStart[leaf + 1]; r < end; r++) {
+            for (int r = (int) nodes[2 * node], end = r + (int) (w >>> 5); r < end; r++) {
                 int p = refs[r];
                 if (box[p] == stamp) continue;
                 box[p] = stamp;
-                if (TriangleIntersector.test(c, 9 * p, p, okx, oky, okz, kx, ky, kz, sx, sy, sz, tMin,
-                        Math.min(tMax, hit.t), hit)) {
-                    if (any) return true;
-                    found = true;
-                }
+                // TriangleIntersector.test, inlined (the JIT will not inline a method that large).
+                int q = 9 * p;
+                double az = c[q + kz] - okz, bz = c[q + 3 + kz] - okz, cz = c[q + 6 + kz] - okz;
+                double ax = c[q + kx] - okx - sx * az, ay = c[q + ky] - oky - sy * az;
+                double bx = c[q + 3 + kx] - okx - sx * bz, by = c[q + 3 + ky] - oky - sy * bz;
+                double cx = c[q + 6 + kx] - okx - sx * cz, cy = c[q + 6 + ky] - oky - sy * cz;
+                double u = cx * by - cy * bx, v = ax * cy - ay * cx, e = bx * ay - by * ax;
+                if ((u < 0 || v < 0 || e < 0) && (u > 0 || v > 0 || e > 0)) continue;
+                double det = u + v + e;
+                if (det == 0) continue;
+                double t = (u * az + v * bz + e * cz) * sz / det;
+                if (!(t >= tMin && t <= tMax && t < hit.t)) continue;
+                if (any) return true;
+                found = true;
+                hit.primitive = p;
+                hit.t = t;
+                hit.u = v / det;
+                hit.v = e / det;
             }
             while (true) {
                 if (sp == 0) return found;
@@ -136,6 +151,8 @@ final class MeshTraversal {
             }
             node = stackNode[sp];
             curMax = stackMax[sp];
+            lo = curMin - Math.abs(curMin) * SLACK;
+            hi = curMax + Math.abs(curMax) * SLACK;
         }
     }
 }

@@ -49,7 +49,7 @@ public final class Shape2DIntersector implements Intersector {
     @Override public int size() { return kind.length; }
 
     @Override public boolean intersect(int i, Ray ray, double tMin, double tMax, Hit hit) {
-        double limit = Math.min(tMax, hit.t);
+        double limit = tMax;
         int b = 6 * i;
         double[] p = xy;
         return switch (kind[i]) {
@@ -76,9 +76,11 @@ public final class Shape2DIntersector implements Intersector {
         double s1 = dx * (y1 - oy) - dy * (x1 - ox);
         if ((s0 > 0 && s1 > 0) || (s0 < 0 && s1 < 0)) return false;
         if (s0 == 0 && s1 == 0) return collinear(i, x0, y0, x1, y1, r, tMin, limit, hit);
-        double lambda = s0 / (s0 - s1);
-        double ex = x1 - x0, ey = y1 - y0;
-        double t = ((x0 - ox) * ey - (y0 - oy) * ex) / (dx * ey - dy * ex);
+        // t as a convex combination of the ends' ray parameters (as Woop et al. do for depth): it
+        // stays between them however close to parallel the ray and the segment are.
+        double lambda = s0 / (s0 - s1), dd = dx * dx + dy * dy;
+        double t0 = ((x0 - ox) * dx + (y0 - oy) * dy) / dd, t1 = ((x1 - ox) * dx + (y1 - oy) * dy) / dd;
+        double t = lambda == 1 ? t1 : t0 + lambda * (t1 - t0);
         return record(i, t, lambda, tMin, limit, hit);
     }
 
@@ -120,18 +122,18 @@ public final class Shape2DIntersector implements Intersector {
                                        double limit, Hit hit) {
         boolean quad = !Double.isNaN(dx);
         boolean found = segment(i, ax, ay, bx, by, r, tMin, limit, hit);
-        found |= segment(i, bx, by, cx, cy, r, tMin, Math.min(limit, hit.t), hit);
+        found |= segment(i, bx, by, cx, cy, r, tMin, limit, hit);
         if (quad) {
-            found |= segment(i, cx, cy, dx, dy, r, tMin, Math.min(limit, hit.t), hit);
-            found |= segment(i, dx, dy, ax, ay, r, tMin, Math.min(limit, hit.t), hit);
+            found |= segment(i, cx, cy, dx, dy, r, tMin, limit, hit);
+            found |= segment(i, dx, dy, ax, ay, r, tMin, limit, hit);
         } else {
-            found |= segment(i, cx, cy, ax, ay, r, tMin, Math.min(limit, hit.t), hit);
+            found |= segment(i, cx, cy, ax, ay, r, tMin, limit, hit);
         }
         return found;
     }
 
     private static boolean inside(int i, double tMin, double limit, Hit hit) {
-        if (!(tMin <= limit)) return false;
+        if (!(tMin <= limit && tMin < hit.t)) return false;
         hit.primitive = i;
         hit.t = tMin;
         hit.u = hit.v = 0;
@@ -139,7 +141,7 @@ public final class Shape2DIntersector implements Intersector {
     }
 
     private static boolean record(int i, double t, double u, double tMin, double limit, Hit hit) {
-        if (!(t >= tMin && t <= limit)) return false;
+        if (!(t >= tMin && t <= limit && t < hit.t)) return false;
         hit.primitive = i;
         hit.t = t;
         hit.u = u;

@@ -49,6 +49,8 @@ public final class Traverser implements RayQuery {
     private final double[] stackMin, stackMax;
     private final MeshTraversal fast;
     private final Hit scratch = new Hit();
+    /** The ray's range clipped to the scene box, from {@link #clipToScene}. */
+    private double enter, exit;
 
     public Traverser(KdTree tree, Intersector prims) {
         if (tree.dimension() != prims.dimension())
@@ -121,27 +123,15 @@ public final class Traverser implements RayQuery {
     /** The generic loop: Algorithm 2 over any dimension and any intersector. */
     private boolean trace(int mode, Ray ray, double tMin, double tMax, Hit hit, List<Hit> all, TraversalListener l) {
         checkRay(ray);
-        double t0 = tMin, t1 = tMax;
-        for (int a = 0; a < lo.length; a++) {
-            double inv = ray.inverseDirection(a), o = ray.origin(a);
-            double tNear = (lo[a] - o) * inv, tFar = (hi[a] - o) * inv;
-            if (inv < 0) { double s = tNear; tNear = tFar; tFar = s; }
-            // NaN (origin on a face of a flat slab, direction 0 on that axis) constrains nothing.
-            if (tNear > t0) t0 = tNear;
-            if (tFar < t1) t1 = tFar;
-        }
-        t0 = Math.max(tMin, t0 - Math.abs(t0) * SLACK);
-        t1 = Math.min(tMax, t1 + Math.abs(t1) * SLACK);
-        if (!(t0 <= t1)) {
+        if (!clipToScene(ray, tMin, tMax)) {
             l.missedScene();
             return false;
         }
-        l.begin(t0, t1);
+        l.begin(enter, exit);
         int stamp = mailbox.next();
-        int[] box = mailbox.stamp;
         boolean found = false;
         int sp = 0, node = 0;
-        double curMin = t0, curMax = t1;
+        double curMin = enter, curMax = exit;
         while (true) {
             int w = word[node];
             while ((w & 31) != 31) {
@@ -149,39 +139,20 @@ public final class Traverser implements RayQuery {
                 double inv = ray.inverseDirection(axis);
                 double tSplit = (split[node] - ray.origin(axis)) * inv;
                 if (!(inv > 0)) { far = near; near = w >>> 5; }
-                if (tSplit > curMax + Math.abs(curMax) * SLACK) {
-                    l.interior(node, axis, split[node], curMin, curMax, tSplit, near, far, TraversalListener.Visit.NEAR);
-                    node = near;
-                } else if (tSplit < curMin - Math.abs(curMin) * SLACK) {
-                    l.interior(node, axis, split[node], curMin, curMax, tSplit, near, far, TraversalListener.Visit.FAR);
-                    node = far;
-                } else if (tSplit != tSplit) { // the ray lies in the split plane
-                    l.interior(node, axis, split[node], curMin, curMax, tSplit, near, far,
-                            TraversalListener.Visit.BOTH_IN_PLANE);
-                    push(sp++, far, curMin, curMax, l);
-                    node = near;
-                } else {
-                    l.interior(node, axis, split[node], curMin, curMax, tSplit, near, far, TraversalListener.Visit.BOTH);
-                    push(sp++, far, tSplit, curMax, l);
-                    node = near;
-                    curMax = tSplit;
+                TraversalListener.Visit visit = decide(tSplit, curMin, curMax);
+                l.interior(node, axis, split[node], curMin, curMax, tSplit, near, far, visit);
+                switch (visit) {
+                    case NEAR -> node = near;
+                    case FAR -> node = far;
+                    case BOTH_IN_PLANE -> { push(sp++, far, curMin, curMax, l); node = near; }
+                    case BOTH -> { push(sp++, far, tSplit, curMax, l); node = near; curMax = tSplit; }
                 }
                 w = word[node];
             }
-            int leaf = w >>> 5, from = leafStart[leaf], to = leafStart[leaf + 1];
-            l.leaf(node, curMin, curMax, to - from);
-            for (int r = from; r < to; r++) {
-                int p = refs[r];
-                if (box[p] == stamp) { l.mailboxed(p); continue; }
-                box[p] = stamp;
-                if (mode == ALL) hit.reset();
-                boolean h = prims.intersect(p, ray, tMin, tMax, hit);
-                l.primitive(p, h, h ? hit.t : Double.NaN);
-                if (!h) continue;
-                found = true;
-                if (mode == ANY) return true;
-                if (mode == ALL) all.add(copy(hit));
-            }
+            l.leaf(node, curMin, curMax, leafStart[(w >>> 5) + 1] - leafStart[w >>> 5]);
+            int result = visitLeaf(w >>> 5, stamp, mode, ray, tMin, tMax, hit, all, l);
+            if (result == ANY) return true;
+            found |= result == CLOSEST;
             // Take the next saved far child that can still hold something closer.
             while (true) {
                 if (sp == 0) return found;
@@ -194,6 +165,56 @@ public final class Traverser implements RayQuery {
                 if (!skip) break;
             }
         }
+    }
+
+    /**
+     * Clips {@code [tMin, tMax]} to the scene box into {@link #enter} and {@link #exit}, widened by
+     * the slack; false when nothing is left. A NaN slab bound (origin on a face of a flat slab,
+     * direction 0 on that axis) constrains nothing.
+     */
+    private boolean clipToScene(Ray ray, double tMin, double tMax) {
+        double t0 = tMin, t1 = tMax;
+        for (int a = 0; a < lo.length; a++) {
+            double inv = ray.inverseDirection(a), o = ray.origin(a);
+            double tNear = (lo[a] - o) * inv, tFar = (hi[a] - o) * inv;
+            if (inv < 0) { double s = tNear; tNear = tFar; tFar = s; }
+            if (tNear > t0) t0 = tNear;
+            if (tFar < t1) t1 = tFar;
+        }
+        enter = Math.max(tMin, t0 - Math.abs(t0) * SLACK);
+        exit = Math.min(tMax, t1 + Math.abs(t1) * SLACK);
+        return enter <= exit;
+    }
+
+    /** Which children to visit: Algorithm 2's three cases, closed and with slack, plus the in-plane case. */
+    static TraversalListener.Visit decide(double tSplit, double tMin, double tMax) {
+        if (tSplit > tMax + Math.abs(tMax) * SLACK) return TraversalListener.Visit.NEAR;
+        if (tSplit < tMin - Math.abs(tMin) * SLACK) return TraversalListener.Visit.FAR;
+        if (tSplit != tSplit) return TraversalListener.Visit.BOTH_IN_PLANE; // 0 * infinity: the ray lies in the plane
+        return TraversalListener.Visit.BOTH;
+    }
+
+    /**
+     * Tests a leaf's primitives (each once per ray) against the caller's whole range. Returns
+     * {@code ANY} when an any-hit query can stop, {@code CLOSEST} when something was hit, else -1.
+     */
+    private int visitLeaf(int leaf, int stamp, int mode, Ray ray, double tMin, double tMax, Hit hit, List<Hit> all,
+                          TraversalListener l) {
+        int[] box = mailbox.stamp;
+        int result = -1;
+        for (int r = leafStart[leaf]; r < leafStart[leaf + 1]; r++) {
+            int p = refs[r];
+            if (box[p] == stamp) { l.mailboxed(p); continue; }
+            box[p] = stamp;
+            if (mode == ALL) hit.reset();
+            boolean h = prims.intersect(p, ray, tMin, tMax, hit);
+            l.primitive(p, h, h ? hit.t : Double.NaN);
+            if (!h) continue;
+            if (mode == ANY) return ANY;
+            if (mode == ALL) all.add(copy(hit));
+            result = CLOSEST;
+        }
+        return result;
     }
 
     private void push(int sp, int node, double tMin, double tMax, TraversalListener l) {

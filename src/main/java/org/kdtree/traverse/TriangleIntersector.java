@@ -46,9 +46,9 @@ public final class TriangleIntersector implements Intersector {
         int kx = kz == 2 ? 0 : kz + 1, ky = kx == 2 ? 0 : kx + 1;
         double dkz = ray.direction(kz);
         if (dkz < 0) { int s = kx; kx = ky; ky = s; } // keep the winding: same sign of det on both sides
-        double sz = 1.0 / dkz, sx = ray.direction(kx) * sz, sy = ray.direction(ky) * sz;
+        double sz = ray.inverseDirection(kz), sx = ray.direction(kx) * sz, sy = ray.direction(ky) * sz; // = 1 / dkz
         return test(corners, 9 * i, i, ray.origin(kx), ray.origin(ky), ray.origin(kz), kx, ky, kz, sx, sy, sz,
-                tMin, Math.min(tMax, hit.t), hit);
+                tMin, tMax, hit);
     }
 
     /** The axis of largest absolute direction component (the sheared frame's z). */
@@ -60,10 +60,10 @@ public final class TriangleIntersector implements Intersector {
     /**
      * The test proper, on corners {@code c[b .. b+9)}, with the origin's coordinates given in the
      * sheared frame's axis order and the per-ray shear constants. Records a hit with
-     * {@code tMin <= t <= tLimit} in {@code hit}.
+     * {@code tMin <= t <= tMax} and {@code t < hit.t} in {@code hit}. (The fast path inlines a copy.)
      */
     static boolean test(double[] c, int b, int prim, double ox, double oy, double oz, int kx, int ky, int kz,
-                        double sx, double sy, double sz, double tMin, double tLimit, Hit hit) {
+                        double sx, double sy, double sz, double tMin, double tMax, Hit hit) {
         double az = c[b + kz] - oz, bz = c[b + 3 + kz] - oz, cz = c[b + 6 + kz] - oz;
         double ax = c[b + kx] - ox - sx * az, ay = c[b + ky] - oy - sy * az;
         double bx = c[b + 3 + kx] - ox - sx * bz, by = c[b + 3 + ky] - oy - sy * bz;
@@ -73,12 +73,36 @@ public final class TriangleIntersector implements Intersector {
         double det = u + v + w;
         if (det == 0) return false; // edge-on, or NaN corners never get here as hits (below)
         double t = (u * az + v * bz + w * cz) * sz / det;
-        if (!(t >= tMin && t <= tLimit)) return false; // also rejects NaN
+        if (!(t >= tMin && t <= tMax && t < hit.t)) return false; // also rejects NaN
+        return record(hit, prim, t, v / det, w / det);
+    }
+
+    /** Kept apart so that {@link #test} stays small enough for the JIT to inline into hot loops. */
+    private static boolean record(Hit hit, int prim, double t, double u, double v) {
         hit.primitive = prim;
         hit.t = t;
-        hit.u = v / det;
-        hit.v = w / det;
+        hit.u = u;
+        hit.v = v;
         return true;
+    }
+
+    /**
+     * The closest hit over all triangles, by brute force with the per-ray shear computed once: the
+     * same answers as {@link BruteForce} on this intersector, faster (for checking large runs).
+     */
+    public boolean closestHitAll(Ray ray, double tMin, double tMax, Hit hit) {
+        hit.reset();
+        double dx = ray.direction(0), dy = ray.direction(1), dz = ray.direction(2);
+        int kz = maxAxis(dx, dy, dz);
+        int kx = kz == 2 ? 0 : kz + 1, ky = kx == 2 ? 0 : kx + 1;
+        double dkz = ray.direction(kz);
+        if (dkz < 0) { int s = kx; kx = ky; ky = s; }
+        double sz = ray.inverseDirection(kz), sx = ray.direction(kx) * sz, sy = ray.direction(ky) * sz; // = 1 / dkz
+        double ox = ray.origin(kx), oy = ray.origin(ky), oz = ray.origin(kz);
+        boolean found = false;
+        for (int i = 0; i < size; i++)
+            found |= test(corners, 9 * i, i, ox, oy, oz, kx, ky, kz, sx, sy, sz, tMin, tMax, hit);
+        return found;
     }
 
     private static double[] flatCorners(TriangleMesh mesh) {

@@ -1,0 +1,24 @@
+package org.kdtree.cli;
+
+/** The benchmark's random numbers: splitmix64 (bench SPEC, ray set R), bit for bit. */
+public final class SplitMix64 {
+    private long state;
+
+    public SplitMix64(long seed) {
+        state = seed;
+    }
+
+    /** The next 64-bit value (unsigned, in a long). */
+    public long nextLong() {
+        state += 0x9E3779B97F4A7C15L;
+        long z = state;
+        z = (z ^ (z >>> 30)) * 0xBF58476D1CE4E5B9L;
+        z = (z ^ (z >>> 27)) * 0x94D049BB133111EBL;
+        return z ^ (z >>> 31);
+    }
+
+    /** A double in [0, 1): the top 53 bits times 2^-53. */
+    public double nextDouble() {
+        return (nextLong() >>> 11) * 0x1.0p-53;
+    }
+}

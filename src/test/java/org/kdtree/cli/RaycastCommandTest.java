@@ -1,0 +1,204 @@
+package org.kdtree.cli;
+
+import static org.assertj.core.api.Assertions.assertThat;
+
+import java.io.ByteArrayOutputStream;
+import java.io.PrintStream;
+import java.nio.charset.StandardCharsets;
+import java.nio.file.Files;
+import java.nio.file.Path;
+import java.util.List;
+import java.util.Locale;
+import org.junit.jupiter.api.Test;
+import org.junit.jupiter.api.io.TempDir;
+import org.kdtree.geom.Box;
+import org.kdtree.geom.Ray;
+import org.kdtree.io.ObjMeshReader;
+import org.kdtree.shape.TriangleMesh;
+import org.kdtree.traverse.BruteForce;
+import org.kdtree.traverse.Hit;
+import org.kdtree.traverse.TriangleIntersector;
+
+class RaycastCommandTest {
+    @TempDir Path dir;
+
+    /** A unit cube with quad faces (fan-triangulated: 12 triangles) in the face forms the SPEC lists. */
+    private Path cube() throws Exception {
+        Path obj = dir.resolve("cube.obj");
+        Files.writeString(obj, String.join("\n",
+                "# a cube", "v 0 0 0", "v 1 0 0", "v 1 1 0", "v 0 1 0", "v 0 0 1", "v 1 0 1", "v 1 1 1", "v 0 1 1",
+                "vt 0 0", "vn 0 0 1",
+                "f 1 4 3 2", "f 5/1 6/1 7/1 8/1", "f 1//1 2//1 6//1 5//1", "f 4/1/1 8/1/1 7/1/1 3/1/1",
+                "f -8 -4 -1 -5", "f 2 3 7 6", ""));
+        return obj;
+    }
+
+    private record Run(int code, String out, String err) {
+    }
+
+    private static Run run(String... args) {
+        PrintStream out = System.out, err = System.err;
+        ByteArrayOutputStream o = new ByteArrayOutputStream(), e = new ByteArrayOutputStream();
+        try {
+            System.setOut(new PrintStream(o, true, StandardCharsets.UTF_8));
+            System.setErr(new PrintStream(e, true, StandardCharsets.UTF_8));
+            int code = Main.run(args);
+            return new Run(code, o.toString(StandardCharsets.UTF_8), e.toString(StandardCharsets.UTF_8));
+        } finally {
+            System.setOut(out);
+            System.setErr(err);
+        }
+    }
+
+    @Test void rayFileModeMatchesBruteForceLineByLine() throws Exception {
+        Path obj = cube();
+        Path rays = dir.resolve("rays.txt"), hits = dir.resolve("hits.txt");
+        List<String> lines = List.of(
+                "# origin direction [tmin tmax]",
+                "0.5 0.5 -1 0 0 1",
+                "0.5 0.5 -1 0 0 2",                 // not normalised: t is the ray parameter
+                "0.5 0.5 0.5 1 0 0",                 // from inside
+                "1 1 -1 0 0 1",                      // through a vertex
+                "0.5 0 -1 -0.0 0.0 1",               // along an edge's plane, signed zeros
+                "   ",
+                "0.5 0.5 -1 0 0 1 1.5 3",            // range skips the near face
+                "0.5 0.5 -1 0 0 1 0 0.5",            // range ends before the cube
+                "2 2 2 1 1 1");                      // misses
+        Files.write(rays, lines);
+        for (String builder : List.of("sah", "median-plane", "object-median")) {
+            Run r = run("raycast", obj.toString(), "--builder", builder, "--rays", rays.toString(), "--hits", hits.toString());
+            assertThat(r.code()).as(r.err()).isZero();
+            List<String> got = Files.readAllLines(hits);
+            TriangleMesh mesh = ObjMeshReader.read(obj);
+            assertThat(mesh.size()).isEqualTo(12);
+            BruteForce brute = new BruteForce(new TriangleIntersector(mesh));
+            int k = 0;
+            Hit h = new Hit();
+            for (String line : lines) {
+                String s = line.strip();
+                if (s.isEmpty() || s.startsWith("#")) continue;
+                String[] t = s.split("\\s+");
+                double[] v = new double[t.length];
+                for (int i = 0; i < t.length; i++) v[i] = Double.parseDouble(t[i]);
+                Ray ray = new Ray(3).set(v[0], v[1], v[2], v[3], v[4], v[5]);
+                boolean hit = brute.closestHit(ray, t.length > 6 ? v[6] : 0, t.length > 6 ? v[7] : Double.POSITIVE_INFINITY, h);
+                String out = got.get(k++);
+                if (!hit) {
+                    assertThat(out).isEqualTo("miss");
+                } else {
+                    String[] f = out.split(" ");
+                    assertThat(Double.parseDouble(f[0])).as(line).isEqualTo(h.t);
+                    assertThat(f[0].replaceAll("[^0-9]", "").length()).isGreaterThanOrEqualTo(9);
+                    Hit probe = new Hit();
+                    new TriangleIntersector(mesh).intersect(Integer.parseInt(f[1]), ray, 0, Double.POSITIVE_INFINITY, probe);
+                    assertThat(probe.t).as("triangle %s equally close", f[1]).isEqualTo(h.t);
+                }
+            }
+            assertThat(got).hasSize(k);
+            assertThat(got.get(1)).startsWith("0.5000000");
+            assertThat(got.get(k - 2)).isEqualTo("miss");
+        }
+    }
+
+    @Test void badRayLinesAreReportedWithFileAndLine() throws Exception {
+        Path obj = cube();
+        Path rays = dir.resolve("bad.txt");
+        Files.write(rays, List.of("0 0 0 1 0 0", "# fine", "0 0 0 1 0"));
+        Run r = run("raycast", obj.toString(), "--rays", rays.toString(), "--hits", dir.resolve("h.txt").toString());
+        assertThat(r.code()).isEqualTo(2);
+        assertThat(r.err()).contains("bad.txt:3").contains("got 5 values").doesNotContain("Exception");
+        Files.write(rays, List.of("0 0 0 0 0 0"));
+        assertThat(run("raycast", obj.toString(), "--rays", rays.toString(), "--hits", "-").err()).contains("bad.txt:1: direction is zero");
+        Files.write(rays, List.of("0 0 x 1 0 0"));
+        assertThat(run("raycast", obj.toString(), "--rays", rays.toString(), "--hits", "-").err()).contains("bad.txt:1: 'x' is not a number");
+        assertThat(run("raycast", obj.toString(), "--rays", rays.toString()).err()).contains("--rays and --hits go together");
+        assertThat(run("raycast", dir.resolve("none.obj").toString()).err()).contains("none.obj").contains("no such file");
+    }
+
+    @Test void benchmarkLineHasTheSpecFieldsAndBruteForceHitCounts() throws Exception {
+        Path obj = cube();
+        Run r = run("raycast", obj.toString(), "--runs", "1", "--warmup", "0", "--threads", "2");
+        assertThat(r.code()).as(r.err()).isZero();
+        String[] f = r.out().strip().split(" ");
+        assertThat(f).hasSize(13);
+        assertThat(f[0]).isEqualTo("kdtree-sah");
+        assertThat(f[1]).isEqualTo("cube");
+        assertThat(f[2]).isEqualTo("12");
+        TriangleMesh mesh = ObjMeshReader.read(obj);
+        Box box = MeshGrid.vertexBounds(mesh);
+        long[] counts = bruteForceHits(mesh, SpecRays.primary(box), SpecRays.random(box));
+        assertThat(Long.parseLong(f[7])).isEqualTo(counts[0]);
+        assertThat(Long.parseLong(f[10])).isEqualTo(counts[1]);
+        assertThat(counts[1]).as("every ray from inside a closed cube hits").isEqualTo(SpecRays.RANDOM_RAYS);
+    }
+
+    private static long[] bruteForceHits(TriangleMesh mesh, SpecRays... sets) {
+        BruteForce brute = new BruteForce(new TriangleIntersector(mesh));
+        long[] n = new long[sets.length];
+        Ray ray = new Ray(3);
+        Hit h = new Hit();
+        for (int s = 0; s < sets.length; s++) {
+            SpecRays rs = sets[s];
+            for (int i = 0; i < rs.size(); i++) {
+                ray.set(rs.origins[3 * i], rs.origins[3 * i + 1], rs.origins[3 * i + 2], rs.directions[3 * i],
+                        rs.directions[3 * i + 1], rs.directions[3 * i + 2]);
+                if (brute.closestHit(ray, Double.MIN_VALUE, Double.POSITIVE_INFINITY, h)) n[s]++;
+            }
+        }
+        return n;
+    }
+
+    @Test void gridRepeatsTheMeshSixteenTimes() throws Exception {
+        TriangleMesh mesh = ObjMeshReader.read(cube());
+        TriangleMesh grid = MeshGrid.repeat(mesh, 4);
+        assertThat(grid.size()).isEqualTo(16 * 12);
+        Box b = MeshGrid.vertexBounds(grid);
+        assertThat(b.max(0)).isEqualTo(1.1 * 3 + 1);
+        assertThat(b.max(1)).isEqualTo(1.0);
+        assertThat(b.max(2)).isEqualTo(1.1 * 3 + 1);
+        // copy (gx = 1, gz = 2) is copy 6: its triangle 0 is triangle 72, offset by (1.1, 0, 2.2)
+        assertThat(grid.corner(72, 0, 0)).isEqualTo(mesh.corner(0, 0, 0) + 1.1);
+        assertThat(grid.corner(72, 0, 2)).isEqualTo(mesh.corner(0, 0, 2) + 2.2);
+    }
+
+    @Test void splitMix64MatchesTheReferenceValues() {
+        SplitMix64 zero = new SplitMix64(0);
+        assertThat(zero.nextLong()).isEqualTo(0xE220A8397B1DCDAFL);
+        assertThat(zero.nextLong()).isEqualTo(0x6E789E6AA1B965F4L);
+        SplitMix64 r = new SplitMix64(42);
+        assertThat(r.nextLong()).isEqualTo(0xBDD732262FEB6E95L);
+        assertThat(r.nextLong()).isEqualTo(0x28EFE333B266F103L);
+        assertThat(r.nextLong()).isEqualTo(0x47526757130F9F52L);
+        assertThat(new SplitMix64(42).nextDouble()).isEqualTo((0xBDD732262FEB6E95L >>> 11) * 0x1.0p-53);
+    }
+
+    @Test void specRaySets() {
+        Box box = Box.of3(-1, 0, 2, 3, 2, 6);
+        SpecRays r = SpecRays.random(box);
+        assertThat(r.size()).isEqualTo(1_000_000);
+        SplitMix64 rng = new SplitMix64(42);
+        double ux = rng.nextDouble(), uy = rng.nextDouble(), uz = rng.nextDouble(), u = rng.nextDouble(), v = rng.nextDouble();
+        assertThat(r.origins[0]).isEqualTo(-1 + ux * 4);
+        assertThat(r.origins[1]).isEqualTo(0 + uy * 2);
+        assertThat(r.origins[2]).isEqualTo(2 + uz * 4);
+        double zc = 1 - 2 * u, rr = Math.sqrt(Math.max(0, 1 - zc * zc));
+        assertThat(r.directions[0]).isEqualTo(rr * Math.cos(2 * Math.PI * v));
+        assertThat(r.directions[2]).isEqualTo(zc);
+
+        SpecRays p = SpecRays.primary(box);
+        assertThat(p.size()).isEqualTo(1024 * 1024);
+        double d = Math.sqrt(16 + 4 + 16), wl = Math.sqrt(1 + 0.25 + 4);
+        assertThat(p.origins[0]).isEqualTo(1 + 1.5 * d * (1 / wl));
+        assertThat(p.origins[1]).isEqualTo(1 + 1.5 * d * (0.5 / wl));
+        // The four centre pixels look (almost) straight at the centre c = (1, 1, 4).
+        int centre = 3 * (512 * 1024 + 512);
+        double[] toC = {1 - p.origins[0], 1 - p.origins[1], 4 - p.origins[2]};
+        double len = Math.sqrt(toC[0] * toC[0] + toC[1] * toC[1] + toC[2] * toC[2]), dot = 0;
+        for (int a = 0; a < 3; a++) dot += toC[a] / len * p.directions[centre + a];
+        assertThat(dot).isGreaterThan(0.99999);
+        // Pixel (0, 0) is top left: up and to the left of forward.
+        assertThat(p.directions[1]).isGreaterThan(p.directions[3 * 1023 + 1 + 3 * 1024 * 1023]);
+        assertThat(String.format(Locale.ROOT, "%.1f", p.directions[0] * p.directions[0] + p.directions[1] * p.directions[1]
+                + p.directions[2] * p.directions[2])).isEqualTo("1.0");
+    }
+}
