@@ -10,6 +10,7 @@ import java.util.Locale;
 import java.util.concurrent.Callable;
 import org.kdtree.build.KdTreeBuilder;
 import org.kdtree.io.ObjMeshReader;
+import org.kdtree.shape.ProceduralScenes;
 import org.kdtree.shape.TriangleMesh;
 import org.kdtree.traverse.Traverser;
 import org.kdtree.traverse.TriangleIntersector;
@@ -66,7 +67,7 @@ public final class RaycastCommand implements Callable<Integer> {
         if ((raysFile == null) != (hitsFile == null))
             throw new IllegalArgumentException("--rays and --hits go together");
         if (runs < 1 || warmup < 0) throw new IllegalArgumentException("--runs must be >= 1 and --warmup >= 0");
-        TriangleMesh scene = MeshGrid.repeat(ObjMeshReader.read(mesh), grid);
+        TriangleMesh scene = ProceduralScenes.grid(ObjMeshReader.read(mesh), grid);
         KdTreeBuilder builder = options.create();
         if (raysFile != null) return traceFile(scene, builder);
         return benchmark(scene, builder);
@@ -93,7 +94,7 @@ public final class RaycastCommand implements Callable<Integer> {
             if (i >= warmup) ms[i - warmup] = (System.nanoTime() - t0) / 1e6;
         }
         TreeStats st = tree.stats();
-        var box = MeshGrid.vertexBounds(scene);
+        var box = ProceduralScenes.vertexBounds(scene);
         SpecRays p = SpecRays.primary(box), r = SpecRays.random(box);
         TriangleIntersector tris = new TriangleIntersector(scene);
         KdTree built = tree;

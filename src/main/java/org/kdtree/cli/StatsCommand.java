@@ -7,6 +7,8 @@ import java.util.concurrent.Callable;
 import org.kdtree.build.KdTreeBuilder;
 import org.kdtree.io.SceneLoader;
 import org.kdtree.shape.Primitives;
+import org.kdtree.shape.ProceduralScenes;
+import org.kdtree.shape.TriangleMesh;
 import org.kdtree.tree.KdTree;
 import picocli.CommandLine.Command;
 import picocli.CommandLine.Mixin;
@@ -32,8 +34,16 @@ public final class StatsCommand implements Callable<Integer> {
     @Option(names = "--threads", defaultValue = "1", description = "Threads for the build (default: ${DEFAULT-VALUE}; same tree).")
     int threads;
 
+    @Option(names = "--grid", defaultValue = "1", paramLabel = "N",
+            description = "OBJ only: repeat the mesh in an N x N grid on the x-z plane first (the SPEC's scaling scene uses 4).")
+    int grid;
+
     @Override public Integer call() throws Exception {
         Primitives prims = SceneLoader.load(scene);
+        if (grid != 1) {
+            if (!(prims instanceof TriangleMesh mesh)) throw new IllegalArgumentException("--grid applies to OBJ meshes only");
+            prims = ProceduralScenes.grid(mesh, grid);
+        }
         KdTreeBuilder builder = options.create().threads(threads);
         for (int i = 0; i < warmup; i++) builder.build(prims);
         double[] ms = new double[Math.max(1, runs)];

@@ -1,6 +1,7 @@
 package org.kdtree.shape;
 
 import java.util.Random;
+import org.kdtree.geom.Box;
 
 /**
  * Generated triangle scenes for benchmarks and tests, so that no measurement needs a file:
@@ -89,33 +90,42 @@ public final class ProceduralScenes {
     }
 
     /**
-     * The mesh repeated {@code g x g} times on the x-z plane, copy (gx, gz) offset by
-     * (1.1 gx extent.x, 0, 1.1 gz extent.z): the spec's scaling scene (g = 4: the bunny grid).
+     * The benchmark's scaling scene (the spec's meshes README): the mesh repeated in a g x g grid
+     * on the x-z plane, copy (gx, gz) offset by (1.1 gx extent.x, 0, 1.1 gz extent.z), the
+     * extent taken over all vertices. Copies are numbered gx-major ({@code copy = gx * g + gz});
+     * triangle t of copy c becomes {@code c * T + t}, T the mesh's triangle count.
      */
     public static TriangleMesh grid(TriangleMesh mesh, int g) {
+        if (g < 1) throw new IllegalArgumentException("grid size must be >= 1, got " + g);
+        if (g == 1) return mesh;
         double[] v = mesh.vertices();
-        int[] idx = mesh.indices();
-        double[] lo = {Double.POSITIVE_INFINITY, 0, Double.POSITIVE_INFINITY}, hi = {Double.NEGATIVE_INFINITY, 0, Double.NEGATIVE_INFINITY};
-        for (int i = 0; i < v.length; i += 3) {
-            lo[0] = Math.min(lo[0], v[i]); hi[0] = Math.max(hi[0], v[i]);
-            lo[2] = Math.min(lo[2], v[i + 2]); hi[2] = Math.max(hi[2], v[i + 2]);
-        }
-        double ex = hi[0] - lo[0], ez = hi[2] - lo[2];
-        int nv = v.length / 3, copies = g * g;
-        double[] gv = new double[v.length * copies];
-        int[] gi = new int[idx.length * copies];
-        int c = 0;
-        for (int gx = 0; gx < g; gx++)
-            for (int gz = 0; gz < g; gz++, c++) {
-                double ox = 1.1 * gx * ex, oz = 1.1 * gz * ez;
-                for (int i = 0; i < v.length; i += 3) {
-                    gv[c * v.length + i] = v[i] + ox;
-                    gv[c * v.length + i + 1] = v[i + 1];
-                    gv[c * v.length + i + 2] = v[i + 2] + oz;
+        int[] f = mesh.indices();
+        Box box = vertexBounds(mesh);
+        int nv = v.length / 3;
+        double[] vs = new double[v.length * g * g];
+        int[] fs = new int[f.length * g * g];
+        for (int gx = 0; gx < g; gx++) {
+            for (int gz = 0; gz < g; gz++) {
+                int copy = gx * g + gz;
+                double ox = 1.1 * gx * box.extent(0), oz = 1.1 * gz * box.extent(2);
+                for (int i = 0; i < nv; i++) {
+                    int d = copy * v.length + 3 * i;
+                    vs[d] = v[3 * i] + ox;
+                    vs[d + 1] = v[3 * i + 1];
+                    vs[d + 2] = v[3 * i + 2] + oz;
                 }
-                for (int i = 0; i < idx.length; i++) gi[c * idx.length + i] = idx[i] + c * nv;
+                for (int i = 0; i < f.length; i++) fs[copy * f.length + i] = f[i] + copy * nv;
             }
-        return new TriangleMesh(gv, gi);
+        }
+        return new TriangleMesh(vs, fs);
+    }
+
+    /** The spec's bounding box: min/max over all vertices, referenced by a triangle or not. */
+    public static Box vertexBounds(TriangleMesh mesh) {
+        Box b = new Box(3);
+        double[] v = mesh.vertices();
+        for (int i = 0; i < v.length; i += 3) b.grow(v, i);
+        return b;
     }
 
     private static int[] sequence(int n) {

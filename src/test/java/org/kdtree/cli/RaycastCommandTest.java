@@ -14,6 +14,7 @@ import org.junit.jupiter.api.io.TempDir;
 import org.kdtree.geom.Box;
 import org.kdtree.geom.Ray;
 import org.kdtree.io.ObjMeshReader;
+import org.kdtree.shape.ProceduralScenes;
 import org.kdtree.shape.TriangleMesh;
 import org.kdtree.traverse.BruteForce;
 import org.kdtree.traverse.Hit;
@@ -125,7 +126,7 @@ class RaycastCommandTest {
         assertThat(f[1]).isEqualTo("cube");
         assertThat(f[2]).isEqualTo("12");
         TriangleMesh mesh = ObjMeshReader.read(obj);
-        Box box = MeshGrid.vertexBounds(mesh);
+        Box box = ProceduralScenes.vertexBounds(mesh);
         long[] counts = bruteForceHits(mesh, SpecRays.primary(box), SpecRays.random(box));
         assertThat(Long.parseLong(f[7])).isEqualTo(counts[0]);
         assertThat(Long.parseLong(f[10])).isEqualTo(counts[1]);
@@ -150,9 +151,9 @@ class RaycastCommandTest {
 
     @Test void gridRepeatsTheMeshSixteenTimes() throws Exception {
         TriangleMesh mesh = ObjMeshReader.read(cube());
-        TriangleMesh grid = MeshGrid.repeat(mesh, 4);
+        TriangleMesh grid = ProceduralScenes.grid(mesh, 4);
         assertThat(grid.size()).isEqualTo(16 * 12);
-        Box b = MeshGrid.vertexBounds(grid);
+        Box b = ProceduralScenes.vertexBounds(grid);
         assertThat(b.max(0)).isEqualTo(1.1 * 3 + 1);
         assertThat(b.max(1)).isEqualTo(1.0);
         assertThat(b.max(2)).isEqualTo(1.1 * 3 + 1);
