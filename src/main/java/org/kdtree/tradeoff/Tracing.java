@@ -32,14 +32,19 @@ public final class Tracing {
         return new Checksum(hits, sum);
     }
 
-    /** Traces the first {@code limit} rays with a listener that counts nodes visited and triangle tests. */
+    /** Traces about {@code limit} rays spread over the whole set with a listener that counts nodes visited and triangle tests. */
     public static TraversalStats count(Traverser traverser, RaySet set, int limit) {
         double[] r = set.rays();
+        int n = r.length / 6;
+        // Every stride-th ray, so the sample spans the whole set: the first rows of the primary
+        // set P are sky, and counting only them would report zero nodes per ray.
+        int stride = Math.max(1, n / Math.max(1, limit));
         Ray ray = new Ray(3);
         Hit hit = new Hit();
         TraversalStats stats = new TraversalStats();
-        for (int i = 0; i < Math.min(r.length, 6L * limit); i += 6) {
-            ray.set(r[i], r[i + 1], r[i + 2], r[i + 3], r[i + 4], r[i + 5]);
+        for (int i = 0; i < n; i += stride) {
+            int o = 6 * i;
+            ray.set(r[o], r[o + 1], r[o + 2], r[o + 3], r[o + 4], r[o + 5]);
             traverser.closestHit(ray, 0, Double.POSITIVE_INFINITY, hit, stats);
         }
         return stats;
