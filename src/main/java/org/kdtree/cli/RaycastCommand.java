@@ -26,7 +26,7 @@ import picocli.CommandLine.Parameters;
  * {@code --rays FILE --hits FILE}, the closest hits of a user's own rays. See docs/raycast.md.
  */
 @Command(name = "raycast", mixinStandardHelpOptions = true,
-        description = {"Ray-casting benchmark (bench/SPEC.md). Prints one line:",
+        description = {"Ray-casting benchmark of the shared spec (bench/SPEC.md), or trace your own rays. Prints one line:",
                 "  system mesh tris build_ms nodes leaves depth",
                 "  P_hits P_tsum P_mrays R_hits R_tsum R_mrays",
                 "With --rays FILE --hits FILE: traces the rays of FILE, one per line as",

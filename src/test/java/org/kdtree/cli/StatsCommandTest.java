@@ -40,4 +40,13 @@ class StatsCommandTest {
         r = run("stats", "scenes/talk-figures.scene2d", "--builder", "median-plane", "--lambda", "0.5");
         assertThat(r.err()).contains("--lambda and --algorithm apply to the sah builder only");
     }
+
+    @Test void gridRepeatsAMeshAndRefusesA2DScene() {
+        CliRun r = run("stats", "scenes/clustered-spheres.obj", "--grid", "2");
+        assertThat(r.code()).as(r.err()).isZero();
+        assertThat(r.out()).contains("(41480 primitives, 3-D)");
+        r = run("stats", "scenes/talk-figures.scene2d", "--grid", "2");
+        assertThat(r.code()).isEqualTo(2);
+        assertThat(r.err()).contains("--grid applies to OBJ meshes only");
+    }
 }
