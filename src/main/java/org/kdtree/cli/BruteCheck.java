@@ -10,6 +10,7 @@ import org.kdtree.traverse.TriangleIntersector;
 import org.kdtree.traverse.Hit;
 import org.kdtree.traverse.RayQuery;
 import org.kdtree.traverse.Traverser;
+import org.kdtree.tradeoff.RaySet;
 
 /**
  * The hidden {@code raycast --verify STRIDE}: traces every STRIDE-th ray of a set both by brute
@@ -29,7 +30,7 @@ final class BruteCheck {
         this.threads = Math.max(1, threads);
     }
 
-    String compare(SpecRays rays) throws Exception {
+    String compare(RaySet rays) throws Exception {
         int n = rays.size();
         AtomicLong checked = new AtomicLong(), bruteHits = new AtomicLong(), treeHits = new AtomicLong(),
                 mismatches = new AtomicLong();
@@ -44,8 +45,9 @@ final class BruteCheck {
                     Ray ray = new Ray(3);
                     Hit a = new Hit(), b = new Hit();
                     for (int i = id * stride; i < n; i += threads * stride) {
-                        double[] o = rays.origins, d = rays.directions;
-                        ray.set(o[3 * i], o[3 * i + 1], o[3 * i + 2], d[3 * i], d[3 * i + 1], d[3 * i + 2]);
+                        double[] r = rays.rays();
+                        int o = 6 * i;
+                        ray.set(r[o], r[o + 1], r[o + 2], r[o + 3], r[o + 4], r[o + 5]);
                         boolean x = tris.closestHitAll(ray, Double.MIN_VALUE, Double.POSITIVE_INFINITY, a);
                         boolean y = own.closestHit(ray, Double.MIN_VALUE, Double.POSITIVE_INFINITY, b);
                         checked.incrementAndGet();

@@ -8,6 +8,7 @@ import java.util.function.Supplier;
 import org.kdtree.geom.Ray;
 import org.kdtree.traverse.Hit;
 import org.kdtree.traverse.RayQuery;
+import org.kdtree.tradeoff.RaySet;
 
 /**
  * Traces a ray set (closest hit, t in (0, +inf)) on one or more threads, each with its own query
@@ -36,7 +37,7 @@ final class RayBatch implements AutoCloseable {
     }
 
     /** One pass over all rays. */
-    Result trace(SpecRays rays) throws Exception {
+    Result trace(RaySet rays) throws Exception {
         int n = rays.size(), blocks = (n + BLOCK - 1) / BLOCK;
         long[] hits = new long[blocks];
         double[] sums = new double[blocks];
@@ -59,16 +60,17 @@ final class RayBatch implements AutoCloseable {
         return new Result(h, s, seconds);
     }
 
-    private static void work(RayQuery q, SpecRays rays, AtomicInteger next, long[] hits, double[] sums) {
+    private static void work(RayQuery q, RaySet rays, AtomicInteger next, long[] hits, double[] sums) {
         Ray ray = new Ray(3);
         Hit hit = new Hit();
-        double[] o = rays.origins, d = rays.directions;
+        double[] r = rays.rays();
         int n = rays.size();
         for (int b; (b = next.getAndIncrement()) * BLOCK < n; ) {
             long h = 0;
             double s = 0;
             for (int i = b * BLOCK, end = Math.min(n, i + BLOCK); i < end; i++) {
-                ray.set(o[3 * i], o[3 * i + 1], o[3 * i + 2], d[3 * i], d[3 * i + 1], d[3 * i + 2]);
+                int o = 6 * i;
+                ray.set(r[o], r[o + 1], r[o + 2], r[o + 3], r[o + 4], r[o + 5]);
                 if (q.closestHit(ray, Double.MIN_VALUE, Double.POSITIVE_INFINITY, hit)) {
                     h++;
                     s += hit.t;

@@ -20,6 +20,7 @@ import picocli.CommandLine.Command;
 import picocli.CommandLine.Mixin;
 import picocli.CommandLine.Option;
 import picocli.CommandLine.Parameters;
+import org.kdtree.tradeoff.RaySet;
 
 /**
  * {@code raycast MESH.obj}: the ray-casting benchmark of bench/SPEC.md, or, with
@@ -95,7 +96,7 @@ public final class RaycastCommand implements Callable<Integer> {
         }
         TreeStats st = tree.stats();
         var box = ProceduralScenes.vertexBounds(scene);
-        SpecRays p = SpecRays.primary(box), r = SpecRays.random(box);
+        RaySet p = RaySet.primary(box, RaySet.SPEC_IMAGE), r = RaySet.random(box, RaySet.SPEC_RANDOM_RAYS);
         TriangleIntersector tris = new TriangleIntersector(scene);
         KdTree built = tree;
         RayBatch.Result pr, rr;
@@ -119,7 +120,7 @@ public final class RaycastCommand implements Callable<Integer> {
     }
 
     /** The run of median time among warm-up + timed runs (its checksum is that of every run). */
-    private RayBatch.Result median(RayBatch batch, SpecRays rays) throws Exception {
+    private RayBatch.Result median(RayBatch batch, RaySet rays) throws Exception {
         RayBatch.Result[] res = new RayBatch.Result[runs];
         for (int i = 0; i < warmup + runs; i++) {
             RayBatch.Result x = batch.trace(rays);

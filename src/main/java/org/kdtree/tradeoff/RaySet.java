@@ -9,6 +9,11 @@ import org.kdtree.geom.Box;
  * from origins inside the scene's box.
  */
 public final class RaySet {
+    /** Width and height of the spec's set P image. */
+    public static final int SPEC_IMAGE = 1024;
+    /** Rays in the spec's set R. */
+    public static final int SPEC_RANDOM_RAYS = 1_000_000;
+
     private final String name;
     private final double[] rays;
 
@@ -56,10 +61,11 @@ public final class RaySet {
 
     /** Set R: {@code n} rays with uniform origins in the box and uniform directions (splitmix64, seed 42). */
     public static RaySet random(Box bounds, int n) {
-        long[] state = {42};
+        SplitMix64 rng = new SplitMix64(42);
         double[] r = new double[6 * n];
         for (int i = 0; i < n; i++) {
-            double ux = next(state), uy = next(state), uz = next(state), u = next(state), v = next(state);
+            double ux = rng.nextDouble(), uy = rng.nextDouble(), uz = rng.nextDouble();
+            double u = rng.nextDouble(), v = rng.nextDouble();
             double zc = 1 - 2 * u, phi = 2 * Math.PI * v, rad = Math.sqrt(Math.max(0, 1 - zc * zc));
             r[6 * i] = bounds.min(0) + ux * bounds.extent(0);
             r[6 * i + 1] = bounds.min(1) + uy * bounds.extent(1);
@@ -69,14 +75,6 @@ public final class RaySet {
             r[6 * i + 5] = zc;
         }
         return new RaySet("R", r);
-    }
-
-    private static double next(long[] state) {
-        long z = (state[0] += 0x9E3779B97F4A7C15L);
-        z = (z ^ (z >>> 30)) * 0xBF58476D1CE4E5B9L;
-        z = (z ^ (z >>> 27)) * 0x94D049BB133111EBL;
-        z = z ^ (z >>> 31);
-        return (z >>> 11) * 0x1.0p-53;
     }
 
     private static double[] normalize(double[] v) {

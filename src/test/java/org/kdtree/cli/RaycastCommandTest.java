@@ -19,6 +19,8 @@ import org.kdtree.shape.TriangleMesh;
 import org.kdtree.traverse.BruteForce;
 import org.kdtree.traverse.Hit;
 import org.kdtree.traverse.TriangleIntersector;
+import org.kdtree.tradeoff.RaySet;
+import org.kdtree.tradeoff.SplitMix64;
 
 class RaycastCommandTest {
     @TempDir Path dir;
@@ -127,22 +129,21 @@ class RaycastCommandTest {
         assertThat(f[2]).isEqualTo("12");
         TriangleMesh mesh = ObjMeshReader.read(obj);
         Box box = ProceduralScenes.vertexBounds(mesh);
-        long[] counts = bruteForceHits(mesh, SpecRays.primary(box), SpecRays.random(box));
+        long[] counts = bruteForceHits(mesh, RaySet.primary(box, RaySet.SPEC_IMAGE), RaySet.random(box, RaySet.SPEC_RANDOM_RAYS));
         assertThat(Long.parseLong(f[7])).isEqualTo(counts[0]);
         assertThat(Long.parseLong(f[10])).isEqualTo(counts[1]);
-        assertThat(counts[1]).as("every ray from inside a closed cube hits").isEqualTo(SpecRays.RANDOM_RAYS);
+        assertThat(counts[1]).as("every ray from inside a closed cube hits").isEqualTo(RaySet.SPEC_RANDOM_RAYS);
     }
 
-    private static long[] bruteForceHits(TriangleMesh mesh, SpecRays... sets) {
+    private static long[] bruteForceHits(TriangleMesh mesh, RaySet... sets) {
         BruteForce brute = new BruteForce(new TriangleIntersector(mesh));
         long[] n = new long[sets.length];
         Ray ray = new Ray(3);
         Hit h = new Hit();
         for (int s = 0; s < sets.length; s++) {
-            SpecRays rs = sets[s];
-            for (int i = 0; i < rs.size(); i++) {
-                ray.set(rs.origins[3 * i], rs.origins[3 * i + 1], rs.origins[3 * i + 2], rs.directions[3 * i],
-                        rs.directions[3 * i + 1], rs.directions[3 * i + 2]);
+            double[] rs = sets[s].rays();
+            for (int o = 0; o < rs.length; o += 6) {
+                ray.set(rs[o], rs[o + 1], rs[o + 2], rs[o + 3], rs[o + 4], rs[o + 5]);
                 if (brute.closestHit(ray, Double.MIN_VALUE, Double.POSITIVE_INFINITY, h)) n[s]++;
             }
         }
@@ -175,31 +176,32 @@ class RaycastCommandTest {
 
     @Test void specRaySets() {
         Box box = Box.of3(-1, 0, 2, 3, 2, 6);
-        SpecRays r = SpecRays.random(box);
+        RaySet r = RaySet.random(box, RaySet.SPEC_RANDOM_RAYS);
         assertThat(r.size()).isEqualTo(1_000_000);
         SplitMix64 rng = new SplitMix64(42);
         double ux = rng.nextDouble(), uy = rng.nextDouble(), uz = rng.nextDouble(), u = rng.nextDouble(), v = rng.nextDouble();
-        assertThat(r.origins[0]).isEqualTo(-1 + ux * 4);
-        assertThat(r.origins[1]).isEqualTo(0 + uy * 2);
-        assertThat(r.origins[2]).isEqualTo(2 + uz * 4);
+        assertThat(r.rays()[0]).isEqualTo(-1 + ux * 4);
+        assertThat(r.rays()[1]).isEqualTo(0 + uy * 2);
+        assertThat(r.rays()[2]).isEqualTo(2 + uz * 4);
         double zc = 1 - 2 * u, rr = Math.sqrt(Math.max(0, 1 - zc * zc));
-        assertThat(r.directions[0]).isEqualTo(rr * Math.cos(2 * Math.PI * v));
-        assertThat(r.directions[2]).isEqualTo(zc);
+        assertThat(r.rays()[3]).isEqualTo(rr * Math.cos(2 * Math.PI * v));
+        assertThat(r.rays()[5]).isEqualTo(zc);
 
-        SpecRays p = SpecRays.primary(box);
+        RaySet p = RaySet.primary(box, RaySet.SPEC_IMAGE);
+        double[] pr = p.rays();
         assertThat(p.size()).isEqualTo(1024 * 1024);
         double d = Math.sqrt(16 + 4 + 16), wl = Math.sqrt(1 + 0.25 + 4);
-        assertThat(p.origins[0]).isEqualTo(1 + 1.5 * d * (1 / wl));
-        assertThat(p.origins[1]).isEqualTo(1 + 1.5 * d * (0.5 / wl));
+        assertThat(pr[0]).isEqualTo(1 + 1.5 * d * (1 / wl));
+        assertThat(pr[1]).isEqualTo(1 + 1.5 * d * (0.5 / wl));
         // The four centre pixels look (almost) straight at the centre c = (1, 1, 4).
-        int centre = 3 * (512 * 1024 + 512);
-        double[] toC = {1 - p.origins[0], 1 - p.origins[1], 4 - p.origins[2]};
+        int centre = 6 * (512 * 1024 + 512) + 3;
+        double[] toC = {1 - pr[0], 1 - pr[1], 4 - pr[2]};
         double len = Math.sqrt(toC[0] * toC[0] + toC[1] * toC[1] + toC[2] * toC[2]), dot = 0;
-        for (int a = 0; a < 3; a++) dot += toC[a] / len * p.directions[centre + a];
+        for (int a = 0; a < 3; a++) dot += toC[a] / len * pr[centre + a];
         assertThat(dot).isGreaterThan(0.99999);
         // Pixel (0, 0) is top left: up and to the left of forward.
-        assertThat(p.directions[1]).isGreaterThan(p.directions[3 * 1023 + 1 + 3 * 1024 * 1023]);
-        assertThat(String.format(Locale.ROOT, "%.1f", p.directions[0] * p.directions[0] + p.directions[1] * p.directions[1]
-                + p.directions[2] * p.directions[2])).isEqualTo("1.0");
+        assertThat(pr[4]).isGreaterThan(pr[6 * (1024 * 1023 + 1023) + 4]);
+        assertThat(String.format(Locale.ROOT, "%.1f", pr[3] * pr[3] + pr[4] * pr[4]
+                + pr[5] * pr[5])).isEqualTo("1.0");
     }
 }

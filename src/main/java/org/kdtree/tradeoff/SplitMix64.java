@@ -1,4 +1,4 @@
-package org.kdtree.cli;
+package org.kdtree.tradeoff;
 
 /** The benchmark's random numbers: splitmix64 (bench SPEC, ray set R), bit for bit. */
 public final class SplitMix64 {
