@@ -2,8 +2,8 @@ package org.kdtree.traverse;
 
 import java.util.ArrayList;
 import java.util.List;
-import java.util.Random;
 import org.kdtree.shape.Shape2D;
+import org.kdtree.shape.ProceduralScenes;
 import org.kdtree.shape.Shapes2D;
 import org.kdtree.shape.TriangleMesh;
 
@@ -90,17 +90,7 @@ final class Scenes {
 
     /** n random triangles in [0,1]^3 (sizes up to {@code size}). */
     static TriangleMesh soup(long seed, int n, double size) {
-        Random rnd = new Random(seed);
-        List<double[]> v = new ArrayList<>();
-        List<int[]> f = new ArrayList<>();
-        for (int i = 0; i < n; i++) {
-            double[] c = {rnd.nextDouble(), rnd.nextDouble(), rnd.nextDouble()};
-            for (int k = 0; k < 3; k++)
-                v.add(new double[] {c[0] + size * (rnd.nextDouble() - .5), c[1] + size * (rnd.nextDouble() - .5),
-                        c[2] + size * (rnd.nextDouble() - .5)});
-            f.add(new int[] {3 * i, 3 * i + 1, 3 * i + 2});
-        }
-        return mesh(v, f);
+        return ProceduralScenes.uniform(n, size, seed);
     }
 
     /** A 2-D grid of n x n unit rectangles and their outline segments, plus triangles and points. */
