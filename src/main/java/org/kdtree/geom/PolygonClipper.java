@@ -15,7 +15,7 @@ package org.kdtree.geom;
  */
 public final class PolygonClipper {
     /** Relative padding of computed coordinates: about 4.5 units in the last place. */
-    private static final double PAD = 1e-15;
+    static final double PAD = 1e-15;
     private static final ThreadLocal<PolygonClipper[]> PER_THREAD =
             ThreadLocal.withInitial(() -> new PolygonClipper[8]);
 

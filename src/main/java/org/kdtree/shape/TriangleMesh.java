@@ -1,7 +1,7 @@
 package org.kdtree.shape;
 
 import org.kdtree.geom.Box;
-import org.kdtree.geom.PolygonClipper;
+import org.kdtree.geom.TriangleClipper;
 
 /**
  * A 3-D triangle mesh in flat arrays: vertex coordinates (x, y, z per vertex) and vertex
@@ -64,7 +64,7 @@ public final class TriangleMesh implements Primitives {
     }
 
     @Override public void clip(int t, Box voxel, Box dest) {
-        PolygonClipper.forThread(3).clipTriangle(vertices, indices[3 * t], indices[3 * t + 1], indices[3 * t + 2], voxel, dest);
+        TriangleClipper.forThread().clip(vertices, indices[3 * t], indices[3 * t + 1], indices[3 * t + 2], voxel, dest);
     }
 
     @Override public String describe(int t) { return "triangle " + t; }

@@ -1,0 +1,58 @@
+package org.kdtree.geom;
+
+import static org.assertj.core.api.Assertions.assertThat;
+
+import java.util.Random;
+import org.junit.jupiter.api.Test;
+
+/** The specialised triangle clipper must agree with the generic one bit for bit: the SAH trees depend on it. */
+class TriangleClipperTest {
+    private final PolygonClipper generic = new PolygonClipper(3);
+    private final TriangleClipper fast = new TriangleClipper();
+
+    @Test void randomTrianglesAndBoxesGiveBitIdenticalBounds() {
+        Random r = new Random(42);
+        for (int i = 0; i < 200_000; i++) {
+            // coordinates on a coarse grid half the time, so that vertices fall exactly on faces
+            boolean snapped = i % 2 == 0;
+            double[] v = new double[9];
+            for (int c = 0; c < 9; c++) v[c] = coordinate(r, snapped);
+            if (i % 7 == 0) v[2] = v[5] = v[8];             // flat in z
+            if (i % 11 == 0) System.arraycopy(v, 0, v, 3, 3); // degenerate: two equal corners
+            double[] lo = new double[3], hi = new double[3];
+            for (int a = 0; a < 3; a++) {
+                double x = coordinate(r, snapped), y = coordinate(r, snapped);
+                lo[a] = Math.min(x, y);
+                hi[a] = i % 13 == 0 && a == 1 ? lo[a] : Math.max(x, y); // flat boxes too
+            }
+            Box box = new Box(lo, hi);
+            Box expected = generic.clip(v, 3, box, new Box(3));
+            Box actual = fast.clip(v, 0, 1, 2, box, new Box(3));
+            assertSameBits(actual, expected, i);
+        }
+    }
+
+    @Test void cornersAreReadThroughTheIndexArrayOfAMesh() {
+        double[] vertices = {9, 9, 9, 0, 0, 0, 4, 0, 0, 0, 4, 0};
+        Box box = Box.of3(1, -1, -1, 5, 5, 1);
+        Box b = fast.clip(vertices, 1, 2, 3, box, new Box(3));
+        assertSameBits(b, generic.clip(new double[] {0, 0, 0, 4, 0, 0, 0, 4, 0}, 3, box, new Box(3)), 0);
+        assertThat(b.min(0)).isEqualTo(1);
+        assertThat(b.max(1)).isGreaterThanOrEqualTo(3);
+    }
+
+    private static double coordinate(Random r, boolean snapped) {
+        return snapped ? r.nextInt(9) - 4 : (r.nextDouble() - 0.5) * 8;
+    }
+
+    private static void assertSameBits(Box actual, Box expected, int caseNumber) {
+        assertThat(actual.isEmpty()).as("case %d: empty", caseNumber).isEqualTo(expected.isEmpty());
+        if (expected.isEmpty()) return;
+        for (int a = 0; a < 3; a++) {
+            assertThat(Double.doubleToRawLongBits(actual.min(a))).as("case %d: min %d", caseNumber, a)
+                    .isEqualTo(Double.doubleToRawLongBits(expected.min(a)));
+            assertThat(Double.doubleToRawLongBits(actual.max(a))).as("case %d: max %d", caseNumber, a)
+                    .isEqualTo(Double.doubleToRawLongBits(expected.max(a)));
+        }
+    }
+}
