@@ -15,6 +15,7 @@ public class BuildNode {
     private final Box voxel;
     private int[] refs;
     private double[] clipped;
+    private final int base, size;
     private final int depth;
     private final int k;
 
@@ -28,13 +29,24 @@ public class BuildNode {
      * @param depth   the root has depth 0
      */
     public BuildNode(Box voxel, int[] refs, double[] clipped, int depth) {
+        this(voxel, refs, clipped, 0, refs.length, depth);
+        if (clipped.length != 2 * k * refs.length)
+            throw new IllegalArgumentException("need " + 2 * k + " clipped bounds per reference");
+    }
+
+    /**
+     * A node whose references are the slice {@code refs[base .. base + size)} of a shared array,
+     * with their clipped bounds at the same indices of {@code clipped} (a builder's scratch
+     * memory; nothing is copied).
+     */
+    protected BuildNode(Box voxel, int[] refs, double[] clipped, int base, int size, int depth) {
         this.voxel = voxel;
         this.refs = refs;
         this.clipped = clipped;
+        this.base = base;
+        this.size = size;
         this.depth = depth;
         this.k = voxel.dimension();
-        if (clipped.length != 2 * k * refs.length)
-            throw new IllegalArgumentException("need " + 2 * k + " clipped bounds per reference");
     }
 
     /** The voxel V of this node; do not modify. */
@@ -44,25 +56,39 @@ public class BuildNode {
     public int depth() { return depth; }
 
     /** |T|, the number of primitives overlapping the voxel. */
-    public int size() { return refs.length; }
+    public int size() { return size; }
 
     /** k, the dimension. */
     public int dimension() { return k; }
 
     /** The index of the j-th primitive of this node. */
-    public int ref(int j) { return refs[j]; }
+    public int ref(int j) { return refs[base + j]; }
 
     /** Lower bound on {@code axis} of the part of the j-th primitive inside the voxel. */
-    public double clippedMin(int j, int axis) { return clipped[2 * k * j + axis]; }
+    public double clippedMin(int j, int axis) { return clipped[2 * k * (base + j) + axis]; }
 
     /** Upper bound on {@code axis} of the part of the j-th primitive inside the voxel. */
-    public double clippedMax(int j, int axis) { return clipped[2 * k * j + k + axis]; }
+    public double clippedMax(int j, int axis) { return clipped[2 * k * (base + j) + k + axis]; }
 
-    /** The primitive indices (the node's own array; do not modify). */
-    public int[] refs() { return refs; }
+    /** The primitive indices, {@link #size()} of them (the node's own array or a copy; do not modify). */
+    public int[] refs() {
+        return base == 0 && refs.length == size ? refs : java.util.Arrays.copyOfRange(refs, base, base + size);
+    }
 
-    /** The flat clipped bounds (the node's own array; do not modify). */
-    public double[] clippedBounds() { return clipped; }
+    /** The flat clipped bounds, {@code 2 k} per reference (the node's own array or a copy; do not modify). */
+    public double[] clippedBounds() {
+        return base == 0 && clipped.length == 2 * k * size ? clipped
+                : java.util.Arrays.copyOfRange(clipped, 2 * k * base, 2 * k * (base + size));
+    }
+
+    /** The array holding the references, from index {@link #base()} on (no copy, for hot loops). */
+    int[] refArray() { return refs; }
+
+    /** The array holding the clipped bounds, from index {@code 2 k base()} on (no copy). */
+    double[] clippedArray() { return clipped; }
+
+    /** Where this node's references start in {@link #refArray()}. */
+    int base() { return base; }
 
     /**
      * Remembers the plane a builder chose while deciding {@code terminate}, so that

@@ -10,43 +10,59 @@ import org.kdtree.geom.Box;
  * reference's index in this node and kind is {@link #END}, {@link #PLANAR} or {@link #START}.
  * A reference whose clipped bounds are flat on an axis has one planar event there, any other
  * a start (at its clipped minimum) and an end (at its clipped maximum): the same events the
- * sort-per-node search builds from scratch. The k lists share two flat arrays; the list of
- * axis a is {@code [axisStart[a], axisStart[a + 1])}.
+ * sort-per-node search builds from scratch. The events of axis a are
+ * {@code [eventsFrom(a), eventsTo(a))} of the shared arrays {@link #positions()} and
+ * {@link #codes()}; below the root, those arrays belong to an {@link EventArena} level.
  */
 final class EventNode extends BuildNode {
     static final int END = 0, PLANAR = 1, START = 2;
 
     private double[] pos;
     private int[] code;
-    private final int[] axisStart;
+    /** from and to of each axis's events: {@code range[2a], range[2a + 1]}. */
+    private final int[] range;
+    /** Where this node's children are written. */
+    private final EventArena arena;
 
-    EventNode(Box voxel, int[] refs, double[] clipped, int depth, double[] pos, int[] code, int[] axisStart) {
-        super(voxel, refs, clipped, depth);
+    EventNode(Box voxel, int[] refs, double[] clipped, int base, int size, int depth,
+              double[] pos, int[] code, int[] range, EventArena arena) {
+        super(voxel, refs, clipped, base, size, depth);
         this.pos = pos;
         this.code = code;
-        this.axisStart = axisStart;
+        this.range = range;
+        this.arena = arena;
     }
 
     /** The events of a node made by the default partition: built from its clipped bounds and sorted. */
     static EventNode of(BuildNode node, boolean parallel) {
         int k = node.dimension(), n = node.size();
         double[] clipped = node.clippedBounds();
-        int[] start = new int[k + 1];
-        for (int a = 0; a < k; a++) start[a + 1] = start[a] + eventCount(clipped, k, n, a);
-        double[] pos = new double[start[k]];
-        int[] code = new int[start[k]];
+        int[] range = new int[2 * k];
+        for (int a = 0, m = 0; a < k; a++) {
+            range[2 * a] = m;
+            m += eventCount(clipped, k, n, a);
+            range[2 * a + 1] = m;
+        }
+        double[] pos = new double[range[2 * k - 1]];
+        int[] code = new int[pos.length];
         Runnable[] axes = new Runnable[k];
         for (int a = 0; a < k; a++) {
             int axis = a;
             axes[a] = () -> {
-                int m = start[axis];
+                int m = range[2 * axis];
                 for (int j = 0; j < n; j++) m = addEvents(clipped, k, j, j, axis, pos, code, m);
-                EventSort.sort(pos, code, start[axis], start[axis + 1]);
+                EventSort.sort(pos, code, range[2 * axis], range[2 * axis + 1]);
             };
         }
         if (parallel) java.util.Arrays.stream(axes).parallel().forEach(Runnable::run);
         else for (Runnable r : axes) r.run();
-        return new EventNode(node.voxel(), node.refs(), clipped, node.depth(), pos, code, start);
+        return new EventNode(node.voxel(), node.refs(), clipped, 0, n, node.depth(), pos, code, range, new EventArena(k));
+    }
+
+    /** The same node, whose descendants are written into fresh scratch memory (for another thread). */
+    EventNode detached() {
+        return new EventNode(voxel(), refArray(), clippedArray(), base(), size(), depth(), pos, code, range,
+                new EventArena(dimension()));
     }
 
     /** The number of events of {@code n} references on {@code axis}: one per flat, two per other. */
@@ -71,14 +87,20 @@ final class EventNode extends BuildNode {
         return m;
     }
 
-    /** The sorted event positions of all axes (the node's own array). */
+    /** The sorted event positions (shared with other nodes: use {@link #eventsFrom}, {@link #eventsTo}). */
     double[] positions() { return pos; }
 
     /** The event codes, in the order of {@link #positions}. */
     int[] codes() { return code; }
 
-    /** Where the events of {@code axis} begin; they end where the next axis's begin. */
-    int axisStart(int axis) { return axisStart[axis]; }
+    /** Where the events of {@code axis} begin. */
+    int eventsFrom(int axis) { return range[2 * axis]; }
+
+    /** Where the events of {@code axis} end. */
+    int eventsTo(int axis) { return range[2 * axis + 1]; }
+
+    /** The scratch memory this node's children are written into. */
+    EventArena arena() { return arena; }
 
     @Override protected void release() {
         super.release();

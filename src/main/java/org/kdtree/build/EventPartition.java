@@ -15,97 +15,140 @@ import org.kdtree.shape.Primitives;
  * {@link Partition#split}, so the event build makes the very tree the other searches make.
  */
 final class EventPartition {
-    private static final byte LEFT = 0, RIGHT = 1, BOTH = 2;
-    private static final double[] NO_POS = {};
-    private static final int[] NO_CODE = {};
+    /** Side bits of a reference: left only, right only; a straddler has neither. */
+    private static final int LEFT = 1, RIGHT = 2, BOTH = 0;
 
     private EventPartition() {
     }
 
+    /**
+     * Splits {@code node} by {@code p}. Both children are written into the arena level below the
+     * node: references and clipped bounds first the left child's, then the right's; events in one
+     * region per child and axis, sized for the parent's events of that axis plus two per
+     * straddler, so that nothing needs counting before it is copied.
+     */
     static Children split(Primitives prims, EventNode node, SplitPlane p, boolean perfect) {
-        int k = node.dimension(), n = node.size(), axis = p.axis();
-        double xi = p.position();
-        boolean planarLeft = p.planarLeft();
-        double[] src = node.clippedBounds();
-        int[] refs = node.refs();
-        // Per reference: first its side (bit 0: left only, bit 1: right only, neither: both), then
-        // also its index in its child, as index << 2 | side, for renumbering its events.
-        int[] index = new int[n];
-        int[] countL = new int[k + 1], countR = new int[k + 1];
-        int nl = 0, nr = 0, nb = 0;
-        for (int j = 0, o = 0; j < n; j++, o += 2 * k) {
-            double lo = src[o + axis], hi = src[o + k + axis];
-            byte s;
-            if (lo == xi && hi == xi) s = planarLeft ? LEFT : RIGHT;
-            else if (hi <= xi) s = LEFT;
-            else if (lo >= xi) s = RIGHT;
-            else s = BOTH;
-            index[j] = s == LEFT ? 1 : s == RIGHT ? 2 : 0;
-            if (s == LEFT) { nl++; addCounts(src, o, k, countL); }
-            else if (s == RIGHT) { nr++; addCounts(src, o, k, countR); }
-            else { nl++; nr++; nb++; }
-        }
-        Box lv = node.voxel().lowerPart(axis, xi), rv = node.voxel().upperPart(axis, xi);
-        int[] lr = new int[nl], rr = new int[nr];
-        double[] lc = new double[2 * k * nl], rc = new double[2 * k * nr];
-        int[] straddleL = nb > 0 ? new int[nb] : NO_CODE, straddleR = nb > 0 ? new int[nb] : NO_CODE;
-        Box tmp = nb > 0 ? new Box(k) : null;
-        int il = 0, ir = 0, bl = 0, br = 0;
+        int k = node.dimension(), n = node.size(), base = node.base();
+        EventArena arena = node.arena();
+        int[] side = arena.index(n);
+        int nb = classify(node, p, side);
+        int nl = 0, nr = 0;
+        for (int j = 0; j < n; j++) { nl += side[j] & LEFT; nr += side[j] >>> 1; }
+        int leftCap = nl + nb, events = node.eventsTo(k - 1) - node.eventsFrom(0);
+        int regionSlack = 2 * nb, sideEvents = events + k * regionSlack;
+        EventArena.Level out = arena.level(node.depth() + 1, leftCap + nr + nb, 2 * sideEvents);
+        Box lv = node.voxel().lowerPart(p.axis(), p.position()), rv = node.voxel().upperPart(p.axis(), p.position());
+
+        // References and clipped bounds; side[j] becomes (index in its child) << 2 | side bits.
+        int[] refs = node.refArray(), childRefs = out.refs, straddle = arena.straddlers(2 * nb);
+        double[] src = node.clippedArray(), childClipped = out.clipped;
+        int il = 0, ir = leftCap, bl = 0, br = 0, w = 2 * k;
         for (int j = 0; j < n; j++) {
-            int prim = refs[j];
-            switch (index[j]) {
-                case 1 -> { index[j] = il << 2 | 1; lr[il] = prim; System.arraycopy(src, 2 * k * j, lc, 2 * k * il++, 2 * k); }
-                case 2 -> { index[j] = ir << 2 | 2; rr[ir] = prim; System.arraycopy(src, 2 * k * j, rc, 2 * k * ir++, 2 * k); }
-                default -> {
-                    // As in Partition: a straddler whose exact clip misses a child (it only reached
-                    // the plane through padding) does not go to that child.
-                    if (Partition.childBounds(prims, prim, src, j, lv, perfect, tmp, lc, il)) {
-                        straddleL[bl++] = il;
-                        lr[il] = prim;
-                        addCounts(lc, 2 * k * il++, k, countL);
-                    }
-                    if (Partition.childBounds(prims, prim, src, j, rv, perfect, tmp, rc, ir)) {
-                        straddleR[br++] = ir;
-                        rr[ir] = prim;
-                        addCounts(rc, 2 * k * ir++, k, countR);
-                    }
+            int prim = refs[base + j], s = side[j];
+            if (s == LEFT) {
+                side[j] = il << 2 | LEFT;
+                childRefs[il] = prim;
+                System.arraycopy(src, w * (base + j), childClipped, w * il++, w);
+            } else if (s == RIGHT) {
+                side[j] = (ir - leftCap) << 2 | RIGHT;
+                childRefs[ir] = prim;
+                System.arraycopy(src, w * (base + j), childClipped, w * ir++, w);
+            } else {
+                // As in Partition: a straddler whose exact clip misses a child (it only reached
+                // the plane through padding) does not go to that child.
+                if (Partition.childBounds(prims, prim, src, base + j, lv, perfect, arena.clipBox, childClipped, il)) {
+                    straddle[bl++] = il;
+                    childRefs[il++] = prim;
+                }
+                if (Partition.childBounds(prims, prim, src, base + j, rv, perfect, arena.clipBox, childClipped, ir)) {
+                    straddle[nb + br++] = ir;
+                    childRefs[ir++] = prim;
                 }
             }
         }
-        if (il < nl) { lr = java.util.Arrays.copyOf(lr, il); lc = java.util.Arrays.copyOf(lc, 2 * k * il); }
-        if (ir < nr) { rr = java.util.Arrays.copyOf(rr, ir); rc = java.util.Arrays.copyOf(rc, 2 * k * ir); }
-        int[] startL = prefix(countL, k), startR = prefix(countR, k);
-        // One slot of slack at the end: the branch-free copy writes every event to both sides.
-        double[] lp = new double[startL[k] + 1], rp = new double[startR[k] + 1];
-        int[] lcode = new int[startL[k] + 1], rcode = new int[startR[k] + 1];
-        double[] sp = nb > 0 ? new double[2 * nb] : NO_POS;
-        int[] sc = nb > 0 ? new int[2 * nb] : NO_CODE;
-        double[] pos = node.positions();
-        int[] code = node.codes();
-        for (int a = 0; a < k; a++) {
-            int atL = startL[a], atR = startR[a];
-            for (int e = node.axisStart(a), end = node.axisStart(a + 1); e < end; e++) {
-                int c = code[e];
-                int t = index[c >>> 2];
-                int bits = t & 3;
-                double x = pos[e];
-                int renumbered = (t & ~3) | (c & 3);
-                lp[atL] = x;
-                lcode[atL] = renumbered;
-                atL += bits & 1;
-                rp[atR] = x;
-                rcode[atR] = renumbered;
-                atR += bits >>> 1;
-            }
-            if (nb > 0) {
-                int ml = straddlerEvents(lc, k, straddleL, bl, a, sp, sc);
-                mergeBackward(lp, lcode, startL[a], atL, sp, sc, ml);
-                int mr = straddlerEvents(rc, k, straddleR, br, a, sp, sc);
-                mergeBackward(rp, rcode, startR[a], atR, sp, sc, mr);
-            }
+
+        // Events, axis by axis: one-sided ones copied in order, the straddlers' sorted and merged in.
+        double[] pos = node.positions(), childPos = out.pos;
+        int[] code = node.codes(), childCode = out.code;
+        int[] rangeL = new int[2 * k], rangeR = new int[2 * k];
+        for (int a = 0, atL = 0, atR = sideEvents; a < k; a++) {
+            int from = node.eventsFrom(a), to = node.eventsTo(a);
+            long ends = copyOneSided(pos, code, from, to, side, childPos, childCode, atL, atR);
+            int endL = (int) (ends >>> 32), endR = (int) ends;
+            endL = mergeStraddlers(arena, childClipped, k, straddle, 0, bl, 0, a, childPos, childCode, atL, endL);
+            endR = mergeStraddlers(arena, childClipped, k, straddle, nb, br, leftCap, a, childPos, childCode, atR, endR);
+            rangeL[2 * a] = atL;
+            rangeL[2 * a + 1] = endL;
+            rangeR[2 * a] = atR;
+            rangeR[2 * a + 1] = endR;
+            int region = to - from + regionSlack;
+            atL += region;
+            atR += region;
         }
-        return new Children(new EventNode(lv, lr, lc, node.depth() + 1, lp, lcode, startL),
-                new EventNode(rv, rr, rc, node.depth() + 1, rp, rcode, startR));
+        int depth = node.depth() + 1;
+        return new Children(
+                new EventNode(lv, childRefs, childClipped, 0, il, depth, childPos, childCode, rangeL, arena),
+                new EventNode(rv, childRefs, childClipped, leftCap, ir - leftCap, depth, childPos, childCode, rangeR, arena));
+    }
+
+    /**
+     * Copies the events {@code [from, to)} of one axis, in order, to the left region from
+     * {@code atL} and the right region from {@code atR}, renumbered to the child indices in
+     * {@code side}; a straddler's events go to neither. Branch-free: every event is written to
+     * both regions and kept where its side bit says. Returns both ends, as {@code endL << 32 | endR}.
+     */
+    private static long copyOneSided(double[] pos, int[] code, int from, int to, int[] side,
+                                     double[] childPos, int[] childCode, int atL, int atR) {
+        int endL = atL, endR = atR;
+        for (int e = from; e < to; e++) {
+            int c = code[e];
+            int t = side[c >>> 2];
+            double x = pos[e];
+            int renumbered = (t & ~3) | (c & 3);
+            childPos[endL] = x;
+            childCode[endL] = renumbered;
+            endL += t & LEFT;
+            childPos[endR] = x;
+            childCode[endR] = renumbered;
+            endR += (t >>> 1) & 1;
+        }
+        return (long) endL << 32 | endR;
+    }
+
+    /** Writes each reference's side bits into {@code side[j]}; returns the number of straddlers. */
+    private static int classify(EventNode node, SplitPlane p, int[] side) {
+        int k = node.dimension(), n = node.size(), axis = p.axis();
+        double xi = p.position();
+        int planar = p.planarLeft() ? LEFT : RIGHT, nb = 0;
+        double[] src = node.clippedArray();
+        for (int j = 0, o = 2 * k * node.base() + axis; j < n; j++, o += 2 * k) {
+            double lo = src[o], hi = src[o + k];
+            int s;
+            if (lo == xi && hi == xi) s = planar;
+            else if (hi <= xi) s = LEFT;
+            else if (lo >= xi) s = RIGHT;
+            else { s = BOTH; nb++; }
+            side[j] = s;
+        }
+        return nb;
+    }
+
+    /**
+     * Sorts the events on {@code axis} of the straddlers that went to one child (their level
+     * indices are {@code straddle[first .. first + count)}, the child starts at {@code childBase})
+     * and merges them into that child's sorted events {@code [from, end)}; returns the new end.
+     */
+    private static int mergeStraddlers(EventArena arena, double[] childClipped, int k, int[] straddle, int first, int count,
+                                       int childBase, int axis, double[] dp, int[] dc, int from, int end) {
+        if (count == 0) return end;
+        double[] sp = arena.straddlePositions(2 * count);
+        int[] sc = arena.straddleCodes();
+        int m = 0;
+        for (int i = first; i < first + count; i++)
+            m = EventNode.addEvents(childClipped, k, straddle[i], straddle[i] - childBase, axis, sp, sc, m);
+        EventSort.sort(sp, sc, m);
+        mergeBackward(dp, dc, from, end, sp, sc, m);
+        return end + m;
     }
 
     /**
@@ -118,29 +161,5 @@ final class EventPartition {
             if (i >= from && dp[i] > sp[s]) { dp[at] = dp[i]; dc[at--] = dc[i--]; }
             else { dp[at] = sp[s]; dc[at--] = sc[s--]; }
         }
-    }
-
-    /** Adds the event counts per axis of the reference whose bounds start at {@code o}. */
-    private static void addCounts(double[] clipped, int o, int k, int[] count) {
-        for (int a = 0; a < k; a++) count[a] += clipped[o + a] == clipped[o + k + a] ? 1 : 2;
-    }
-
-    /** Turns per-axis counts {@code c[0..k)} into start offsets {@code [0, c0, c0+c1, ...]}, in place. */
-    private static int[] prefix(int[] c, int k) {
-        int sum = 0;
-        for (int a = 0; a <= k; a++) {
-            int v = a < k ? c[a] : 0;
-            c[a] = sum;
-            sum += v;
-        }
-        return c;
-    }
-
-    /** The sorted events on {@code axis} of the straddlers, at their child indices {@code at[0..nb)}. */
-    private static int straddlerEvents(double[] childClipped, int k, int[] at, int nb, int axis, double[] sp, int[] sc) {
-        int m = 0;
-        for (int i = 0; i < nb; i++) m = EventNode.addEvents(childClipped, k, at[i], at[i], axis, sp, sc, m);
-        EventSort.sort(sp, sc, m);
-        return m;
     }
 }

@@ -11,7 +11,7 @@ final class EventPlaneSearch implements PlaneSearch {
         if (!(node instanceof EventNode e))
             throw new IllegalArgumentException("the event search needs an EventNode (use SahBuilder with Algorithm.EVENT)");
         for (int axis = 0; axis < node.dimension(); axis++)
-            sweep(sah, best, axis, node.size(), e.positions(), e.codes(), e.axisStart(axis), e.axisStart(axis + 1));
+            sweep(sah, best, axis, node.size(), e.positions(), e.codes(), e.eventsFrom(axis), e.eventsTo(axis));
     }
 
     /**
@@ -27,7 +27,7 @@ final class EventPlaneSearch implements PlaneSearch {
             int axis = a;
             perAxis[a] = new SahSplit();
             tasks.add(java.util.concurrent.ForkJoinTask.adapt(() -> sweep(sah, perAxis[axis], axis, e.size(),
-                    e.positions(), e.codes(), e.axisStart(axis), e.axisStart(axis + 1))));
+                    e.positions(), e.codes(), e.eventsFrom(axis), e.eventsTo(axis))));
         }
         java.util.concurrent.ForkJoinTask.invokeAll(tasks);
         for (SahSplit s : perAxis) best.keepIfCheaper(s);

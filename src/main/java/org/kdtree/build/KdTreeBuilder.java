@@ -88,6 +88,15 @@ public abstract class KdTreeBuilder {
         return Partition.split(context.primitives(), node, plane, perfectSplits);
     }
 
+    /**
+     * Called before the subtree of {@code node} is handed to another thread. A builder whose
+     * nodes share per-thread scratch memory returns a node whose descendants use memory of their
+     * own; the default returns {@code node}.
+     */
+    protected BuildNode detach(BuildNode node) {
+        return node;
+    }
+
     /** Makes the root node: every primitive with its own bounds, in the scene's box. */
     protected BuildNode makeRoot(Primitives primitives, Box rootVoxel) {
         int n = primitives.size(), k = primitives.dimension();
@@ -107,13 +116,13 @@ public abstract class KdTreeBuilder {
 
     private void recConst(Build build, BuildNode node, KdTreeWriter out) {
         if (node.depth() >= build.depthCap || terminate(build, node)) {
-            out.leaf(node.refs(), node.size());
+            out.leaf(node.refArray(), node.base(), node.size());
             return;
         }
         SplitPlane plane = checked(findPlane(build, node), node);
         Children children = split(build, node, plane);
         if (separatesNothing(node, children)) {
-            out.leaf(node.refs(), node.size());
+            out.leaf(node.refArray(), node.base(), node.size());
             return;
         }
         node.release();
@@ -121,9 +130,10 @@ public abstract class KdTreeBuilder {
         if (children.right().size() >= build.forkThreshold && children.left().size() > 0) {
             // The right subtree is built by another thread into its own writer, then spliced in:
             // the same recursion, so the same tree, in the same depth-first order.
+            BuildNode rightChild = detach(children.right());
             ForkJoinTask<KdTreeWriter> right = ForkJoinTask.adapt(() -> {
                 KdTreeWriter w = new KdTreeWriter();
-                recConst(build, children.right(), w);
+                recConst(build, rightChild, w);
                 return w;
             }).fork();
             recConst(build, children.left(), out);

@@ -86,6 +86,11 @@ public class SahBuilder extends KdTreeBuilder {
         return super.split(context, node, plane);
     }
 
+    /** A subtree built by another thread writes its events into scratch memory of its own. */
+    @Override protected BuildNode detach(BuildNode node) {
+        return node instanceof EventNode e ? e.detached() : node;
+    }
+
     @Override protected SplitPlane findPlane(BuildContext context, BuildNode node) {
         if (node.plannedPlane() == null && terminate(context, node))
             throw new IllegalStateException("findPlane called on a node the SAH would make a leaf");

@@ -37,10 +37,15 @@ public final class KdTreeWriter {
 
     /** Writes a leaf holding {@code prims[0 .. count)} and returns its node index. */
     public int leaf(int[] prims, int count) {
+        return leaf(prims, 0, count);
+    }
+
+    /** Writes a leaf holding {@code prims[from .. from + count)} and returns its node index. */
+    public int leaf(int[] prims, int from, int count) {
         int n = newNode();
         if (leaves + 2 > leafStart.length) leafStart = Arrays.copyOf(leafStart, leafStart.length * 2);
         if (refCount + count > refs.length) refs = Arrays.copyOf(refs, Math.max(refs.length * 2, refCount + count));
-        System.arraycopy(prims, 0, refs, refCount, count);
+        System.arraycopy(prims, from, refs, refCount, count);
         leafStart[leaves] = refCount;
         refCount += count;
         leafStart[leaves + 1] = refCount;
