@@ -37,7 +37,8 @@ public class BuildNode {
     /**
      * A node whose references are the slice {@code refs[base .. base + size)} of a shared array,
      * with their clipped bounds at the same indices of {@code clipped} (a builder's scratch
-     * memory; nothing is copied).
+     * memory; nothing is copied). A subclass that keeps its clipped bounds in another form passes
+     * null and overrides {@link #clippedMin}, {@link #clippedMax} and {@link #clippedBounds}.
      */
     protected BuildNode(Box voxel, int[] refs, double[] clipped, int base, int size, int depth) {
         this.voxel = voxel;
@@ -83,9 +84,6 @@ public class BuildNode {
 
     /** The array holding the references, from index {@link #base()} on (no copy, for hot loops). */
     int[] refArray() { return refs; }
-
-    /** The array holding the clipped bounds, from index {@code 2 k base()} on (no copy). */
-    double[] clippedArray() { return clipped; }
 
     /** Where this node's references start in {@link #refArray()}. */
     int base() { return base; }

@@ -15,20 +15,15 @@ package org.kdtree.build;
  * without its garbage: the arrays are reused by every node of the same depth.
  */
 final class EventArena {
-    /** The arrays of one depth: references, their clipped bounds, and the events of all axes. */
+    /** The arrays of one depth: references and the events of all axes. */
     static final class Level {
         int[] refs = new int[0];
-        double[] clipped = new double[0];
         double[] pos = new double[0];
         int[] code = new int[0];
 
         /** Makes room for {@code refCount} references and {@code eventCount} events; old contents are dead. */
-        void reserve(int k, int refCount, int eventCount) {
-            if (refs.length < refCount) {
-                int n = grown(refs.length, refCount);
-                refs = new int[n];
-                clipped = new double[2 * k * n];
-            }
+        void reserve(int refCount, int eventCount) {
+            if (refs.length < refCount) refs = new int[grown(refs.length, refCount)];
             if (pos.length < eventCount) {
                 int n = grown(pos.length, eventCount);
                 pos = new double[n];
@@ -43,15 +38,17 @@ final class EventArena {
     /** Per-split scratch: the parent's per-reference side and child index, the straddlers' events. */
     private int[] index = new int[0];
     private int[] straddlers = new int[0];
+    private double[] straddlerBounds = new double[0];
     private double[] straddlePos = new double[0];
     private int[] straddleCode = new int[0];
 
-    /** A box to clip into. */
-    final org.kdtree.geom.Box clipBox;
+    /** Boxes to clip a straddler into. */
+    final org.kdtree.geom.Box clipLeft, clipRight;
 
     EventArena(int k) {
         this.k = k;
-        this.clipBox = new org.kdtree.geom.Box(k);
+        this.clipLeft = new org.kdtree.geom.Box(k);
+        this.clipRight = new org.kdtree.geom.Box(k);
     }
 
     int dimension() { return k; }
@@ -60,7 +57,7 @@ final class EventArena {
     Level level(int depth, int refCount, int eventCount) {
         Level l = levels[depth];
         if (l == null) levels[depth] = l = new Level();
-        l.reserve(k, refCount, eventCount);
+        l.reserve(refCount, eventCount);
         return l;
     }
 
@@ -74,6 +71,12 @@ final class EventArena {
     int[] straddlers(int n) {
         if (straddlers.length < n) straddlers = new int[grown(straddlers.length, n)];
         return straddlers;
+    }
+
+    /** Scratch for the bounds of {@code n} straddlers, {@code 2 k} values each. */
+    double[] straddlerBounds(int n) {
+        if (straddlerBounds.length < 2 * k * n) straddlerBounds = new double[grown(straddlerBounds.length, 2 * k * n)];
+        return straddlerBounds;
     }
 
     /** Scratch positions for at least {@code m} straddler events. */

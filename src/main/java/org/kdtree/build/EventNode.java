@@ -3,8 +3,8 @@ package org.kdtree.build;
 import org.kdtree.geom.Box;
 
 /**
- * A node of the O(N log N) SAH build (Wald and Havran 2006, section 4.3): besides the
- * references and clipped bounds, one list of events per axis, sorted by position.
+ * A node of the O(N log N) SAH build (Wald and Havran 2006, section 4.3): its references and
+ * one list of events per axis, sorted by position.
  *
  * <p>An event is a position and an int code {@code j << 2 | kind}, where {@code j} is the
  * reference's index in this node and kind is {@link #END}, {@link #PLANAR} or {@link #START}.
@@ -13,6 +13,10 @@ import org.kdtree.geom.Box;
  * sort-per-node search builds from scratch. The events of axis a are
  * {@code [eventsFrom(a), eventsTo(a))} of the shared arrays {@link #positions()} and
  * {@link #codes()}; below the root, those arrays belong to an {@link EventArena} level.
+ *
+ * <p>The events are the clipped bounds, so the node keeps no other copy of them: the build
+ * never needs one, and {@link #clippedMin} and friends recover them from the events (once, in
+ * O(events), for code outside the hot path that asks).
  */
 final class EventNode extends BuildNode {
     static final int END = 0, PLANAR = 1, START = 2;
@@ -24,9 +28,11 @@ final class EventNode extends BuildNode {
     /** Where this node's children are written. */
     private final EventArena arena;
 
-    EventNode(Box voxel, int[] refs, double[] clipped, int base, int size, int depth,
+    private double[] clipped;
+
+    EventNode(Box voxel, int[] refs, int base, int size, int depth,
               double[] pos, int[] code, int[] range, EventArena arena) {
-        super(voxel, refs, clipped, base, size, depth);
+        super(voxel, refs, null, base, size, depth);
         this.pos = pos;
         this.code = code;
         this.range = range;
@@ -56,13 +62,37 @@ final class EventNode extends BuildNode {
         }
         if (parallel) java.util.Arrays.stream(axes).parallel().forEach(Runnable::run);
         else for (Runnable r : axes) r.run();
-        return new EventNode(node.voxel(), node.refs(), clipped, 0, n, node.depth(), pos, code, range, new EventArena(k));
+        return new EventNode(node.voxel(), node.refs(), 0, n, node.depth(), pos, code, range, new EventArena(k));
     }
 
     /** The same node, whose descendants are written into fresh scratch memory (for another thread). */
     EventNode detached() {
-        return new EventNode(voxel(), refArray(), clippedArray(), base(), size(), depth(), pos, code, range,
-                new EventArena(dimension()));
+        return new EventNode(voxel(), refArray(), base(), size(), depth(), pos, code, range, new EventArena(dimension()));
+    }
+
+    @Override public double clippedMin(int j, int axis) {
+        return clippedBounds()[2 * dimension() * j + axis];
+    }
+
+    @Override public double clippedMax(int j, int axis) {
+        return clippedBounds()[2 * dimension() * j + dimension() + axis];
+    }
+
+    /** The clipped bounds, recovered from the events on first use. */
+    @Override public double[] clippedBounds() {
+        if (clipped == null) {
+            int k = dimension();
+            double[] c = new double[2 * k * size()];
+            for (int a = 0; a < k; a++) {
+                for (int e = eventsFrom(a); e < eventsTo(a); e++) {
+                    int j = code[e] >>> 2, kind = code[e] & 3;
+                    if (kind != END) c[2 * k * j + a] = pos[e];
+                    if (kind != START) c[2 * k * j + k + a] = pos[e];
+                }
+            }
+            clipped = c;
+        }
+        return clipped;
     }
 
     /** The number of events of {@code n} references on {@code axis}: one per flat, two per other. */
@@ -106,5 +136,6 @@ final class EventNode extends BuildNode {
         super.release();
         pos = null;
         code = null;
+        clipped = null;
     }
 }

@@ -23,47 +23,52 @@ final class EventPartition {
 
     /**
      * Splits {@code node} by {@code p}. Both children are written into the arena level below the
-     * node: references and clipped bounds first the left child's, then the right's; events in one
-     * region per child and axis, sized for the parent's events of that axis plus two per
-     * straddler, so that nothing needs counting before it is copied.
+     * node: references first the left child's, then the right's; events in one region per child
+     * and axis, sized for the parent's events of that axis plus two per straddler, so that
+     * nothing needs counting before it is copied.
      */
     static Children split(Primitives prims, EventNode node, SplitPlane p, boolean perfect) {
-        int k = node.dimension(), n = node.size(), base = node.base();
+        int k = node.dimension(), n = node.size();
         EventArena arena = node.arena();
         int[] side = arena.index(n);
-        int nb = classify(node, p, side);
+        classify(node, p, side);
         int nl = 0, nr = 0;
         for (int j = 0; j < n; j++) { nl += side[j] & LEFT; nr += side[j] >>> 1; }
+        int nb = n - nl - nr;
+
+        // The straddlers: slot i is the i-th in node order; straddle[i] = its index j in the node,
+        // then its index in the left child and in the right one (-1 if its clip misses that child).
+        int[] straddle = arena.straddlers(3 * nb);
+        for (int j = 0, i = 0; i < nb; j++) if (side[j] == BOTH) straddle[i++] = j;
+        double[] bounds = arena.straddlerBounds(3 * nb);   // left child's, right child's, parent's
+        if (!perfect) straddlerBounds(node, side, straddle, nb, bounds, 2 * nb);
+        int[] refs = node.refArray();
+        int base = node.base();
+        for (int i = 0; i < nb; i++) {
+            int to = Partition.straddlerBounds(prims, refs[base + straddle[i]], bounds, 2 * nb + i, node.voxel(), p, perfect,
+                    arena.clipLeft, arena.clipRight, bounds, i, bounds, nb + i);
+            straddle[nb + i] = (to & 1) != 0 ? 0 : -1;
+            straddle[2 * nb + i] = (to & 2) != 0 ? 0 : -1;
+        }
+
+        // References, in node order; side[j] becomes (index in its child) << 2 | side bits.
         int leftCap = nl + nb, events = node.eventsTo(k - 1) - node.eventsFrom(0);
         int regionSlack = 2 * nb, sideEvents = events + k * regionSlack;
         EventArena.Level out = arena.level(node.depth() + 1, leftCap + nr + nb, 2 * sideEvents);
-        Box lv = node.voxel().lowerPart(p.axis(), p.position()), rv = node.voxel().upperPart(p.axis(), p.position());
-
-        // References and clipped bounds; side[j] becomes (index in its child) << 2 | side bits.
-        int[] refs = node.refArray(), childRefs = out.refs, straddle = arena.straddlers(2 * nb);
-        double[] src = node.clippedArray(), childClipped = out.clipped;
-        int il = 0, ir = leftCap, bl = 0, br = 0, w = 2 * k;
-        for (int j = 0; j < n; j++) {
+        int[] childRefs = out.refs;
+        int il = 0, ir = leftCap;
+        for (int j = 0, i = 0; j < n; j++) {
             int prim = refs[base + j], s = side[j];
             if (s == LEFT) {
                 side[j] = il << 2 | LEFT;
-                childRefs[il] = prim;
-                System.arraycopy(src, w * (base + j), childClipped, w * il++, w);
+                childRefs[il++] = prim;
             } else if (s == RIGHT) {
                 side[j] = (ir - leftCap) << 2 | RIGHT;
-                childRefs[ir] = prim;
-                System.arraycopy(src, w * (base + j), childClipped, w * ir++, w);
+                childRefs[ir++] = prim;
             } else {
-                // As in Partition: a straddler whose exact clip misses a child (it only reached
-                // the plane through padding) does not go to that child.
-                if (Partition.childBounds(prims, prim, src, base + j, lv, perfect, arena.clipBox, childClipped, il)) {
-                    straddle[bl++] = il;
-                    childRefs[il++] = prim;
-                }
-                if (Partition.childBounds(prims, prim, src, base + j, rv, perfect, arena.clipBox, childClipped, ir)) {
-                    straddle[nb + br++] = ir;
-                    childRefs[ir++] = prim;
-                }
+                if (straddle[nb + i] == 0) { straddle[nb + i] = il; childRefs[il++] = prim; }
+                if (straddle[2 * nb + i] == 0) { straddle[2 * nb + i] = ir - leftCap; childRefs[ir++] = prim; }
+                i++;
             }
         }
 
@@ -75,8 +80,8 @@ final class EventPartition {
             int from = node.eventsFrom(a), to = node.eventsTo(a);
             long ends = copyOneSided(pos, code, from, to, side, childPos, childCode, atL, atR);
             int endL = (int) (ends >>> 32), endR = (int) ends;
-            endL = mergeStraddlers(arena, childClipped, k, straddle, 0, bl, 0, a, childPos, childCode, atL, endL);
-            endR = mergeStraddlers(arena, childClipped, k, straddle, nb, br, leftCap, a, childPos, childCode, atR, endR);
+            endL = mergeStraddlers(arena, bounds, k, straddle, nb, 0, a, childPos, childCode, atL, endL);
+            endR = mergeStraddlers(arena, bounds, k, straddle, nb, 1, a, childPos, childCode, atR, endR);
             rangeL[2 * a] = atL;
             rangeL[2 * a + 1] = endL;
             rangeR[2 * a] = atR;
@@ -86,9 +91,74 @@ final class EventPartition {
             atR += region;
         }
         int depth = node.depth() + 1;
+        Box lv = node.voxel().lowerPart(p.axis(), p.position()), rv = node.voxel().upperPart(p.axis(), p.position());
         return new Children(
-                new EventNode(lv, childRefs, childClipped, 0, il, depth, childPos, childCode, rangeL, arena),
-                new EventNode(rv, childRefs, childClipped, leftCap, ir - leftCap, depth, childPos, childCode, rangeR, arena));
+                new EventNode(lv, childRefs, 0, il, depth, childPos, childCode, rangeL, arena),
+                new EventNode(rv, childRefs, leftCap, ir - leftCap, depth, childPos, childCode, rangeR, arena));
+    }
+
+    /**
+     * The side of each reference, from the events on the split axis (they are its clipped bounds
+     * there): the same decision as {@link Partition#classify}. A start at or after the plane means
+     * right only, an end at or before it left only; a planar event goes by its position, and to
+     * the chosen side when it lies in the plane; a reference with neither straddles.
+     */
+    private static void classify(EventNode node, SplitPlane p, int[] side) {
+        int axis = p.axis();
+        double xi = p.position();
+        int planar = p.planarLeft() ? LEFT : RIGHT;
+        java.util.Arrays.fill(side, 0, node.size(), BOTH);
+        double[] pos = node.positions();
+        int[] code = node.codes();
+        for (int e = node.eventsFrom(axis), to = node.eventsTo(axis); e < to; e++) {
+            int c = code[e], kind = c & 3;
+            double x = pos[e];
+            if (kind == EventNode.PLANAR) side[c >>> 2] = x == xi ? planar : x < xi ? LEFT : RIGHT;
+            else if (kind == EventNode.END && x <= xi) side[c >>> 2] = LEFT;
+            else if (kind == EventNode.START && x >= xi) side[c >>> 2] = RIGHT;
+        }
+    }
+
+    /**
+     * The parent's clipped bounds of the straddlers (slot i at {@code bounds[2k (at + i)]}),
+     * recovered from the events; needed only without perfect splits, where a child keeps them
+     * cut by its voxel.
+     */
+    private static void straddlerBounds(EventNode node, int[] side, int[] straddle, int nb, double[] bounds, int at) {
+        int k = node.dimension();
+        for (int i = 0; i < nb; i++) side[straddle[i]] = i << 2 | BOTH;   // slot, for the lookup below
+        double[] pos = node.positions();
+        int[] code = node.codes();
+        for (int a = 0; a < k; a++) {
+            for (int e = node.eventsFrom(a); e < node.eventsTo(a); e++) {
+                int t = side[code[e] >>> 2], kind = code[e] & 3;
+                if ((t & 3) != BOTH) continue;
+                int o = 2 * k * (at + (t >>> 2));
+                if (kind != EventNode.END) bounds[o + a] = pos[e];
+                if (kind != EventNode.START) bounds[o + k + a] = pos[e];
+            }
+        }
+        for (int i = 0; i < nb; i++) side[straddle[i]] = BOTH;
+    }
+
+    /**
+     * Sorts the events on {@code axis} of the straddlers that went to one child ({@code child} 0:
+     * left, bounds at slots {@code 0..nb}; 1: right, at {@code nb..2nb}) and merges them into that
+     * child's sorted events {@code [from, end)}; returns the new end.
+     */
+    private static int mergeStraddlers(EventArena arena, double[] bounds, int k, int[] straddle, int nb, int child,
+                                       int axis, double[] dp, int[] dc, int from, int end) {
+        if (nb == 0) return end;
+        double[] sp = arena.straddlePositions(2 * nb);
+        int[] sc = arena.straddleCodes();
+        int m = 0;
+        for (int i = 0; i < nb; i++) {
+            int index = straddle[(1 + child) * nb + i];
+            if (index >= 0) m = EventNode.addEvents(bounds, k, child * nb + i, index, axis, sp, sc, m);
+        }
+        EventSort.sort(sp, sc, m);
+        mergeBackward(dp, dc, from, end, sp, sc, m);
+        return end + m;
     }
 
     /**
@@ -115,41 +185,8 @@ final class EventPartition {
         return (long) endL << 32 | endR;
     }
 
-    /** Writes each reference's side bits into {@code side[j]}; returns the number of straddlers. */
-    private static int classify(EventNode node, SplitPlane p, int[] side) {
-        int k = node.dimension(), n = node.size(), axis = p.axis();
-        double xi = p.position();
-        int planar = p.planarLeft() ? LEFT : RIGHT, nb = 0;
-        double[] src = node.clippedArray();
-        for (int j = 0, o = 2 * k * node.base() + axis; j < n; j++, o += 2 * k) {
-            double lo = src[o], hi = src[o + k];
-            int s;
-            if (lo == xi && hi == xi) s = planar;
-            else if (hi <= xi) s = LEFT;
-            else if (lo >= xi) s = RIGHT;
-            else { s = BOTH; nb++; }
-            side[j] = s;
-        }
-        return nb;
-    }
 
-    /**
-     * Sorts the events on {@code axis} of the straddlers that went to one child (their level
-     * indices are {@code straddle[first .. first + count)}, the child starts at {@code childBase})
-     * and merges them into that child's sorted events {@code [from, end)}; returns the new end.
-     */
-    private static int mergeStraddlers(EventArena arena, double[] childClipped, int k, int[] straddle, int first, int count,
-                                       int childBase, int axis, double[] dp, int[] dc, int from, int end) {
-        if (count == 0) return end;
-        double[] sp = arena.straddlePositions(2 * count);
-        int[] sc = arena.straddleCodes();
-        int m = 0;
-        for (int i = first; i < first + count; i++)
-            m = EventNode.addEvents(childClipped, k, straddle[i], straddle[i] - childBase, axis, sp, sc, m);
-        EventSort.sort(sp, sc, m);
-        mergeBackward(dp, dc, from, end, sp, sc, m);
-        return end + m;
-    }
+
 
     /**
      * Merges the sorted {@code sp[0..m)} into the sorted {@code dp[from..to)}, which has room for

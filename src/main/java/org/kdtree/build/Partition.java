@@ -39,7 +39,7 @@ final class Partition {
         int[] lr = new int[nl], rr = new int[nr];
         double[] lc = new double[2 * k * nl], rc = new double[2 * k * nr];
         double[] src = node.clippedBounds();
-        Box tmp = new Box(k);
+        Box tmpL = new Box(k), tmpR = new Box(k);
         int il = 0, ir = 0;
         for (int j = 0; j < n; j++) {
             int prim = node.ref(j);
@@ -47,8 +47,9 @@ final class Partition {
                 case LEFT -> { lr[il] = prim; System.arraycopy(src, 2 * k * j, lc, 2 * k * il++, 2 * k); }
                 case RIGHT -> { rr[ir] = prim; System.arraycopy(src, 2 * k * j, rc, 2 * k * ir++, 2 * k); }
                 case BOTH -> {
-                    if (childBounds(prims, prim, src, j, lv, perfect, tmp, lc, il)) lr[il++] = prim;
-                    if (childBounds(prims, prim, src, j, rv, perfect, tmp, rc, ir)) rr[ir++] = prim;
+                    int to = straddlerBounds(prims, prim, src, j, node.voxel(), p, perfect, tmpL, tmpR, lc, il, rc, ir);
+                    if ((to & 1) != 0) lr[il++] = prim;
+                    if ((to & 2) != 0) rr[ir++] = prim;
                 }
             }
         }
@@ -64,40 +65,59 @@ final class Partition {
     }
 
     /**
-     * Bounds of a straddling primitive in a child voxel, written at {@code dest[2k at ..]}.
-     * With perfect splits: the exact clip. The parent's bounds are padded by a few ulps, so a
-     * primitive that merely reaches the plane can look like a straddler; its exact clip to the far
-     * child is then empty. It is clipped again to the child grown by a hair: if it touches that,
-     * it keeps the (tight) sliver at the face; if not, it is not in this child and false is returned.
-     * Without perfect splits: the parent's bounds cut by the child voxel.
+     * Bounds of a straddling primitive in both children, written at {@code left[2k atL ..]} and
+     * {@code right[2k atR ..]}; returns which children it goes to (bit 0: left, bit 1: right).
+     * With perfect splits: the exact clip ({@link Primitives#clipSplit}). The parent's bounds are
+     * padded by a few ulps, so a primitive that merely reaches the plane can look like a
+     * straddler; its exact clip to the far child is then empty. It is clipped again to the child
+     * grown by a hair: if it touches that, it keeps the (tight) sliver at the face; if not, it is
+     * not in this child. Without perfect splits: the parent's bounds cut by each child voxel.
      */
-    static boolean childBounds(Primitives prims, int prim, double[] parent, int j, Box child, boolean perfect,
-                               Box tmp, double[] dest, int at) {
-        int k = child.dimension();
-        if (perfect) {
-            prims.clip(prim, child, tmp);
-            if (tmp.isEmpty()) {
-                prims.clip(prim, grown(child), tmp);
-                if (tmp.isEmpty()) return false;
-                tmp.intersect(child);
-                for (int a = 0; a < k; a++) { // keep a valid box on the face the sliver touches
-                    if (tmp.min(a) > tmp.max(a)) {
-                        double face = tmp.max(a) < child.min(a) ? child.min(a) : child.max(a);
-                        tmp.setMin(a, face).setMax(a, face);
-                    }
-                }
-            }
+    static int straddlerBounds(Primitives prims, int prim, double[] parent, int j, Box voxel, SplitPlane p, boolean perfect,
+                               Box tmpL, Box tmpR, double[] left, int atL, double[] right, int atR) {
+        int k = voxel.dimension(), axis = p.axis();
+        double xi = p.position();
+        if (!perfect) {
             for (int a = 0; a < k; a++) {
-                dest[2 * k * at + a] = tmp.min(a);
-                dest[2 * k * at + k + a] = tmp.max(a);
+                double lo = parent[2 * k * j + a], hi = parent[2 * k * j + k + a];
+                left[2 * k * atL + a] = lo;
+                left[2 * k * atL + k + a] = a == axis ? Math.min(hi, xi) : hi;
+                right[2 * k * atR + a] = a == axis ? Math.max(lo, xi) : lo;
+                right[2 * k * atR + k + a] = hi;
             }
-            return true;
+            return 3;
         }
-        for (int a = 0; a < k; a++) {
-            dest[2 * k * at + a] = Math.max(parent[2 * k * j + a], child.min(a));
-            dest[2 * k * at + k + a] = Math.min(parent[2 * k * j + k + a], child.max(a));
+        prims.clipSplit(prim, voxel, axis, xi, tmpL, tmpR);
+        int to = 0;
+        if (!tmpL.isEmpty() || touches(prims, prim, voxel.lowerPart(axis, xi), tmpL)) { write(tmpL, left, atL); to |= 1; }
+        if (!tmpR.isEmpty() || touches(prims, prim, voxel.upperPart(axis, xi), tmpR)) { write(tmpR, right, atR); to |= 2; }
+        return to;
+    }
+
+    /**
+     * Whether a primitive whose exact clip to {@code child} came out empty touches the child grown
+     * by a hair; if so, {@code dest} gets the sliver's bounds, kept on the face it touches.
+     */
+    private static boolean touches(Primitives prims, int prim, Box child, Box dest) {
+        int k = child.dimension();
+        prims.clip(prim, grown(child), dest);
+        if (dest.isEmpty()) return false;
+        dest.intersect(child);
+        for (int a = 0; a < k; a++) { // keep a valid box on the face the sliver touches
+            if (dest.min(a) > dest.max(a)) {
+                double face = dest.max(a) < child.min(a) ? child.min(a) : child.max(a);
+                dest.setMin(a, face).setMax(a, face);
+            }
         }
         return true;
+    }
+
+    private static void write(Box b, double[] dest, int at) {
+        int k = b.dimension();
+        for (int a = 0; a < k; a++) {
+            dest[2 * k * at + a] = b.min(a);
+            dest[2 * k * at + k + a] = b.max(a);
+        }
     }
 
     /** The box grown on every side by about 8 units in the last place of its coordinates. */

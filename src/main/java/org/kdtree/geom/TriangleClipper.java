@@ -2,10 +2,13 @@ package org.kdtree.geom;
 
 /**
  * {@link PolygonClipper} specialised to one 3-D triangle: the same Sutherland-Hodgman passes in
- * the same order with the same arithmetic, so the bounds are bit for bit the same, but written
- * for three coordinates in flat scratch arrays, without {@code Box} updates in the loop and
- * without the generic clipper's modulo and per-vertex copies. The SAH builds clip every
- * straddling triangle twice per split, so this is on their hot path.
+ * the same order with the same arithmetic, so {@link #clip} gives bit for bit the same bounds,
+ * but written for three coordinates in flat scratch arrays, without {@code Box} updates in the
+ * loop and without the generic clipper's modulo and per-vertex copies.
+ *
+ * <p>The SAH builds clip every straddling triangle to both children of a split: {@link #clipSplit}
+ * clips it to the parent voxel once and cuts that polygon by the split plane, instead of
+ * clipping it twice from scratch.
  *
  * <p>Instances hold scratch buffers and are not thread-safe; {@link #forThread()} gives each
  * thread its own.
@@ -17,6 +20,9 @@ public final class TriangleClipper {
 
     private final double[] a = new double[3 * MAX_VERTICES];
     private final double[] b = new double[3 * MAX_VERTICES];
+    private final double[] c = new double[3 * MAX_VERTICES];
+    /** The buffer holding the polygon after {@link #clipToBox}. */
+    private double[] polygon;
 
     /** This thread's clipper. */
     public static TriangleClipper forThread() {
@@ -29,8 +35,50 @@ public final class TriangleClipper {
      * empty when the triangle misses the box. Same result as {@link PolygonClipper#clipTriangle}.
      */
     public Box clip(double[] vertices, int i0, int i1, int i2, Box box, Box dest) {
-        double[] src = a, dst = b;
         int p0 = 3 * i0, p1 = 3 * i1, p2 = 3 * i2;
+        int count = clipToBox(vertices, p0, p1, p2, box);
+        if (count == 0) return dest.setEmpty();
+        for (int axis = 0; axis < 3; axis++)
+            bound(polygon, count, vertices, p0, p1, p2, axis, box.min(axis), box.max(axis), dest);
+        return dest;
+    }
+
+    /**
+     * Bounds of the parts inside {@code box} of the triangle {@code i0, i1, i2} below and above the
+     * plane {@code x_axis = xi}: into {@code left} and {@code right}, each set empty when that part
+     * is. Both are padded and clamped to their half of the box as {@link #clip} does; they may
+     * differ from clipping to each half from scratch by rounding, never beyond the padding.
+     */
+    public void clipSplit(double[] vertices, int i0, int i1, int i2, Box box, int axis, double xi, Box left, Box right) {
+        int p0 = 3 * i0, p1 = 3 * i1, p2 = 3 * i2;
+        int count = clipToBox(vertices, p0, p1, p2, box);
+        double[] whole = polygon;
+        half(whole, count, vertices, p0, p1, p2, box, axis, xi, false, left);
+        half(whole, count, vertices, p0, p1, p2, box, axis, xi, true, right);
+    }
+
+    /** The bounds of the part of {@code whole} below ({@code above} false) or above the plane. */
+    private void half(double[] whole, int count, double[] vertices, int p0, int p1, int p2, Box box, int axis, double xi,
+                      boolean above, Box dest) {
+        double[] part = whole;
+        int n = count;
+        if (n > 0 && !allInside(whole, n, axis, xi, above)) {
+            part = c;
+            n = clipHalf(whole, c, n, axis, xi, above);
+        }
+        if (n == 0) {
+            dest.setEmpty();
+            return;
+        }
+        for (int a = 0; a < 3; a++) {
+            double lo = a == axis && above ? xi : box.min(a), hi = a == axis && !above ? xi : box.max(a);
+            bound(part, n, vertices, p0, p1, p2, a, lo, hi, dest);
+        }
+    }
+
+    /** Clips the triangle at vertex offsets p0, p1, p2 to the box; the polygon is left in {@link #polygon}. */
+    private int clipToBox(double[] vertices, int p0, int p1, int p2, Box box) {
+        double[] src = a, dst = b;
         src[0] = vertices[p0]; src[1] = vertices[p0 + 1]; src[2] = vertices[p0 + 2];
         src[3] = vertices[p1]; src[4] = vertices[p1 + 1]; src[5] = vertices[p1 + 2];
         src[6] = vertices[p2]; src[7] = vertices[p2 + 1]; src[8] = vertices[p2 + 2];
@@ -43,14 +91,16 @@ public final class TriangleClipper {
             count = clipHalf(src, dst, count, axis, plane, keepAbove);
             double[] t = src; src = dst; dst = t;
         }
-        if (count == 0) return dest.setEmpty();
-        for (int axis = 0; axis < 3; axis++) bound(src, vertices, p0, p1, p2, count, axis, box, dest);
-        return dest;
+        polygon = src;
+        return count;
     }
 
-    /** The axis's bounds of the clipped polygon, padded and clamped as PolygonClipper does. */
-    private static void bound(double[] polygon, double[] vertices, int p0, int p1, int p2, int count, int axis,
-                              Box box, Box dest) {
+    /**
+     * The axis's bounds of the clipped polygon, padded outward, then clamped to the triangle's own
+     * bounds and to {@code [lo, hi]} (the clipping box), as PolygonClipper does.
+     */
+    private static void bound(double[] polygon, int count, double[] vertices, int p0, int p1, int p2, int axis,
+                              double lo, double hi, Box dest) {
         double min = Double.POSITIVE_INFINITY, max = Double.NEGATIVE_INFINITY;
         for (int i = axis; i < 3 * count; i += 3) {
             double v = polygon[i];
@@ -58,12 +108,12 @@ public final class TriangleClipper {
             if (v > max) max = v;
         }
         double v0 = vertices[p0 + axis], v1 = vertices[p1 + axis], v2 = vertices[p2 + axis];
-        double lo = Math.min(Math.min(Math.min(Double.POSITIVE_INFINITY, v0), v1), v2);
-        double hi = Math.max(Math.max(Math.max(Double.NEGATIVE_INFINITY, v0), v1), v2);
+        double own = Math.min(Math.min(Math.min(Double.POSITIVE_INFINITY, v0), v1), v2);
+        double ownMax = Math.max(Math.max(Math.max(Double.NEGATIVE_INFINITY, v0), v1), v2);
         double scale = Math.max(Math.max(Math.max(0, Math.abs(v0)), Math.abs(v1)), Math.abs(v2));
         double pad = PolygonClipper.PAD * scale + Double.MIN_NORMAL;
-        dest.setMin(axis, Math.max(Math.max(min - pad, lo), box.min(axis)));
-        dest.setMax(axis, Math.min(Math.min(max + pad, hi), box.max(axis)));
+        dest.setMin(axis, Math.max(Math.max(min - pad, own), lo));
+        dest.setMax(axis, Math.min(Math.min(max + pad, ownMax), hi));
     }
 
     private static boolean allInside(double[] polygon, int count, int axis, double plane, boolean keepAbove) {

@@ -25,6 +25,19 @@ public interface Primitives {
      */
     void clip(int i, Box voxel, Box dest);
 
+    /**
+     * The clipped bounds of primitive {@code i} in both children of {@code voxel} split by the
+     * plane {@code x_axis = xi}: the part below into {@code left}, the part above into
+     * {@code right}, each set empty when there is none. Builders call this for the primitives
+     * that straddle a split. The default clips to each half; an implementation may share the
+     * work (clip to the voxel once, then cut by the plane), as long as the results are
+     * conservative in the sense of {@link #clip}.
+     */
+    default void clipSplit(int i, Box voxel, int axis, double xi, Box left, Box right) {
+        clip(i, voxel.lowerPart(axis, xi), left);
+        clip(i, voxel.upperPart(axis, xi), right);
+    }
+
     /** A short description of primitive {@code i} for error messages, e.g. "triangle 17". */
     default String describe(int i) {
         return "primitive " + i;

@@ -67,5 +67,11 @@ public final class TriangleMesh implements Primitives {
         TriangleClipper.forThread().clip(vertices, indices[3 * t], indices[3 * t + 1], indices[3 * t + 2], voxel, dest);
     }
 
+    /** Clips the triangle to the voxel once and cuts that polygon by the plane. */
+    @Override public void clipSplit(int t, Box voxel, int axis, double xi, Box left, Box right) {
+        TriangleClipper.forThread().clipSplit(vertices, indices[3 * t], indices[3 * t + 1], indices[3 * t + 2],
+                voxel, axis, xi, left, right);
+    }
+
     @Override public String describe(int t) { return "triangle " + t; }
 }
