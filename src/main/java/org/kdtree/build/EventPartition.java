@@ -52,9 +52,12 @@ final class EventPartition {
         }
 
         // References, in node order; side[j] becomes (index in its child) << 2 | side bits.
-        int leftCap = nl + nb, events = node.eventsTo(k - 1) - node.eventsFrom(0);
-        int regionSlack = 2 * nb, sideEvents = events + k * regionSlack;
-        EventArena.Level out = arena.level(node.depth() + 1, leftCap + nr + nb, 2 * sideEvents);
+        int leftCap = nl + nb, leftRegions = 0, rightRegions = 0;
+        for (int a = 0; a < k; a++) {
+            leftRegions += region(node, a, nb, nl);
+            rightRegions += region(node, a, nb, nr);
+        }
+        EventArena.Level out = arena.level(node.depth() + 1, leftCap + nr + nb, leftRegions + rightRegions);
         int[] childRefs = out.refs;
         int il = 0, ir = leftCap;
         for (int j = 0, i = 0; j < n; j++) {
@@ -76,7 +79,7 @@ final class EventPartition {
         double[] pos = node.positions(), childPos = out.pos;
         int[] code = node.codes(), childCode = out.code;
         int[] rangeL = new int[2 * k], rangeR = new int[2 * k];
-        for (int a = 0, atL = 0, atR = sideEvents; a < k; a++) {
+        for (int a = 0, atL = 0, atR = leftRegions; a < k; a++) {
             int from = node.eventsFrom(a), to = node.eventsTo(a);
             long ends = copyOneSided(pos, code, from, to, side, childPos, childCode, atL, atR);
             int endL = (int) (ends >>> 32), endR = (int) ends;
@@ -86,15 +89,23 @@ final class EventPartition {
             rangeL[2 * a + 1] = endL;
             rangeR[2 * a] = atR;
             rangeR[2 * a + 1] = endR;
-            int region = to - from + regionSlack;
-            atL += region;
-            atR += region;
+            atL += region(node, a, nb, nl);
+            atR += region(node, a, nb, nr);
         }
         int depth = node.depth() + 1;
         Box lv = node.voxel().lowerPart(p.axis(), p.position()), rv = node.voxel().upperPart(p.axis(), p.position());
         return new Children(
                 new EventNode(lv, childRefs, 0, il, depth, childPos, childCode, rangeL, arena),
                 new EventNode(rv, childRefs, leftCap, ir - leftCap, depth, childPos, childCode, rangeR, arena));
+    }
+
+    /**
+     * Room for one child's events on {@code axis}: its one-sided references' events are among the
+     * node's, and each of its {@code oneSided + nb} references has at most two. One slot more for
+     * the branch-free copy, which writes one event past the end of each region.
+     */
+    private static int region(EventNode node, int axis, int nb, int oneSided) {
+        return Math.min(node.eventsTo(axis) - node.eventsFrom(axis) + 2 * nb, 2 * (oneSided + nb)) + 1;
     }
 
     /**
