@@ -1,0 +1,104 @@
+package org.kdtree.bench;
+
+import java.io.IOException;
+import java.nio.file.Files;
+import java.nio.file.Path;
+import java.util.ArrayList;
+import java.util.List;
+import java.util.Map;
+import java.util.TreeMap;
+import org.knowm.xchart.BitmapEncoder;
+import org.knowm.xchart.XYChart;
+import org.knowm.xchart.XYChartBuilder;
+import org.knowm.xchart.XYSeries;
+import org.knowm.xchart.style.markers.SeriesMarkers;
+
+/**
+ * Draws the growth of build time with N from the CSV files JMH writes ({@code -rf csv}) for
+ * {@link BuildBenchmark} and {@link NaiveBuildBenchmark}: one log-log line per builder for one
+ * scene, with the curves N^2, N log^2 N and N log N drawn through the first point of the naive,
+ * sorted and event builds, so that a slope can be read against its prediction.
+ *
+ * <pre>
+ * java -cp target/benchmarks.jar org.kdtree.bench.GrowthChart growth.png surface naive.csv build.csv ...
+ * </pre>
+ */
+public final class GrowthChart {
+    private GrowthChart() {
+    }
+
+    public static void main(String[] args) throws IOException {
+        if (args.length < 3) {
+            System.err.println("usage: GrowthChart OUT.png SCENE JMH.csv...");
+            System.exit(2);
+        }
+        String scene = args[1];
+        Map<String, TreeMap<Integer, Double>> series = new TreeMap<>();
+        for (int i = 2; i < args.length; i++) read(Path.of(args[i]), scene, series);
+        if (series.isEmpty()) {
+            System.err.println("no rows for scene " + scene + " in " + String.join(", ", List.of(args).subList(2, args.length)));
+            System.exit(1);
+        }
+        write(series, scene, Path.of(args[0]));
+        System.out.println("wrote " + args[0]);
+    }
+
+    /** Adds the rows of one JMH CSV whose scene is {@code scene}: builder -> (N -> ms per build). */
+    static void read(Path csv, String scene, Map<String, TreeMap<Integer, Double>> series) throws IOException {
+        List<String> lines = Files.readAllLines(csv);
+        if (lines.isEmpty()) return;
+        List<String> header = cells(lines.get(0));
+        int score = header.indexOf("Score"), builder = header.indexOf("Param: builder");
+        int n = header.indexOf("Param: n"), sceneColumn = header.indexOf("Param: scene");
+        if (score < 0 || builder < 0 || n < 0 || sceneColumn < 0)
+            throw new IOException(csv + ": not a build benchmark CSV (columns Score, Param: builder, n, scene)");
+        for (String line : lines.subList(1, lines.size())) {
+            List<String> c = cells(line);
+            if (c.size() < header.size() || !c.get(sceneColumn).equals(scene)) continue;
+            series.computeIfAbsent(c.get(builder), b -> new TreeMap<>())
+                    .put(Integer.parseInt(c.get(n)), Double.parseDouble(c.get(score)));
+        }
+    }
+
+    private static List<String> cells(String line) {
+        List<String> out = new ArrayList<>();
+        for (String cell : line.split(",", -1)) out.add(cell.replace("\"", "").trim());
+        return out;
+    }
+
+    private static void write(Map<String, TreeMap<Integer, Double>> series, String scene, Path png) throws IOException {
+        XYChart chart = new XYChartBuilder().width(900).height(600)
+                .title("Build time against N (" + scene + " scene, one thread, JMH average)")
+                .xAxisTitle("N (triangles)").yAxisTitle("ms per build").build();
+        chart.getStyler().setXAxisLogarithmic(true);
+        chart.getStyler().setYAxisLogarithmic(true);
+        chart.getStyler().setLegendPosition(org.knowm.xchart.style.Styler.LegendPosition.InsideNW);
+        for (Map.Entry<String, TreeMap<Integer, Double>> e : series.entrySet()) {
+            TreeMap<Integer, Double> points = e.getValue();
+            chart.addSeries(e.getKey(), points.keySet().stream().mapToDouble(Integer::doubleValue).toArray(),
+                    points.values().stream().mapToDouble(Double::doubleValue).toArray());
+        }
+        reference(chart, series.get("sah-naive"), "N^2 through naive", 2, new java.awt.Color(150, 30, 30));
+        reference(chart, series.get("sah-sorted"), "N log^2 N through sorted", 1, new java.awt.Color(150, 110, 0));
+        reference(chart, series.get("sah-event"), "N log N through event", 0, new java.awt.Color(0, 110, 0));
+        BitmapEncoder.saveBitmap(chart, png.toString(), BitmapEncoder.BitmapFormat.PNG);
+    }
+
+    /** The curve N^2 (kind 2), N log^2 N (1) or N log N (0) through the first point of {@code points}. */
+    private static void reference(XYChart chart, TreeMap<Integer, Double> points, String name, int kind, java.awt.Color color) {
+        if (points == null || points.size() < 2) return;
+        double n0 = points.firstKey(), scale = points.firstEntry().getValue() / model(n0, kind);
+        double[] x = points.keySet().stream().mapToDouble(Integer::doubleValue).toArray();
+        double[] y = new double[x.length];
+        for (int i = 0; i < x.length; i++) y[i] = scale * model(x[i], kind);
+        XYSeries s = chart.addSeries(name, x, y);
+        s.setMarker(SeriesMarkers.NONE);
+        s.setLineStyle(org.knowm.xchart.style.lines.SeriesLines.DASH_DASH);
+        s.setLineColor(color);
+    }
+
+    private static double model(double n, int kind) {
+        double log = Math.log(n) / Math.log(2);
+        return kind == 2 ? n * n : kind == 1 ? n * log * log : n * log;
+    }
+}
