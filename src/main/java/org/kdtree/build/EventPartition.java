@@ -24,8 +24,7 @@ final class EventPartition {
     /**
      * Splits {@code node} by {@code p}. Both children are written into the arena level below the
      * node: references first the left child's, then the right's; events in one region per child
-     * and axis, sized for the parent's events of that axis plus two per straddler, so that
-     * nothing needs counting before it is copied.
+     * and axis, sized by {@link #region} so that nothing needs counting before it is copied.
      */
     static Children split(Primitives prims, EventNode node, SplitPlane p, boolean perfect) {
         int k = node.dimension(), n = node.size();
@@ -35,68 +34,95 @@ final class EventPartition {
         int nl = 0, nr = 0;
         for (int j = 0; j < n; j++) { nl += side[j] & LEFT; nr += side[j] >>> 1; }
         int nb = n - nl - nr;
-
-        // The straddlers: slot i is the i-th in node order; straddle[i] = its index j in the node,
-        // then its index in the left child and in the right one (-1 if its clip misses that child).
-        int[] straddle = arena.straddlers(3 * nb);
-        for (int j = 0, i = 0; i < nb; j++) if (side[j] == BOTH) straddle[i++] = j;
-        double[] bounds = arena.straddlerBounds(3 * nb);   // left child's, right child's, parent's
-        if (!perfect) straddlerBounds(node, side, straddle, nb, bounds, 2 * nb);
-        int[] refs = node.refArray();
-        int base = node.base();
-        for (int i = 0; i < nb; i++) {
-            int to = Partition.straddlerBounds(prims, refs[base + straddle[i]], bounds, 2 * nb + i, node.voxel(), p, perfect,
-                    arena.clipLeft, arena.clipRight, bounds, i, bounds, nb + i);
-            straddle[nb + i] = (to & 1) != 0 ? 0 : -1;
-            straddle[2 * nb + i] = (to & 2) != 0 ? 0 : -1;
-        }
-
-        // References, in node order; side[j] becomes (index in its child) << 2 | side bits.
+        int[] straddle = clipStraddlers(prims, node, p, perfect, side, nb);
         int leftCap = nl + nb, leftRegions = 0, rightRegions = 0;
         for (int a = 0; a < k; a++) {
             leftRegions += region(node, a, nb, nl);
             rightRegions += region(node, a, nb, nr);
         }
         EventArena.Level out = arena.level(node.depth() + 1, leftCap + nr + nb, leftRegions + rightRegions);
-        int[] childRefs = out.refs;
-        int il = 0, ir = leftCap;
-        for (int j = 0, i = 0; j < n; j++) {
+        long counts = writeReferences(node, side, straddle, nb, out.refs, leftCap);
+        int[] rangeL = new int[2 * k], rangeR = new int[2 * k];
+        for (int a = 0, atL = 0, atR = leftRegions; a < k; a++) {
+            splitEvents(node, a, side, straddle, nb, out, atL, atR, rangeL, rangeR);
+            atL += region(node, a, nb, nl);
+            atR += region(node, a, nb, nr);
+        }
+        int depth = node.depth() + 1, il = (int) (counts >>> 32), ir = (int) counts;
+        Box lv = node.voxel().lowerPart(p.axis(), p.position()), rv = node.voxel().upperPart(p.axis(), p.position());
+        return new Children(
+                new EventNode(lv, out.refs, 0, il, depth, out.pos, out.code, rangeL, arena),
+                new EventNode(rv, out.refs, leftCap, ir, depth, out.pos, out.code, rangeR, arena));
+    }
+
+    /**
+     * Clips the {@code nb} straddlers to both children. Returns the arena's straddler table: slot
+     * i is the i-th straddler in node order; {@code straddle[i]} is its index in the node, and
+     * {@code straddle[nb + i]}, {@code straddle[2 nb + i]} are 0 if it goes to the left, the right
+     * child, -1 if its clip misses that child. Its bounds in the children are in the arena's
+     * straddler bounds, slots {@code i} (left) and {@code nb + i} (right).
+     */
+    private static int[] clipStraddlers(Primitives prims, EventNode node, SplitPlane p, boolean perfect, int[] side, int nb) {
+        EventArena arena = node.arena();
+        int[] straddle = arena.straddlers(3 * nb);
+        for (int j = 0, i = 0; i < nb; j++) if (side[j] == BOTH) straddle[i++] = j;
+        double[] bounds = arena.straddlerBounds(3 * nb);   // left child's, right child's, parent's
+        if (!perfect) straddlerBounds(node, side, straddle, nb, bounds, 2 * nb);
+        int[] refs = node.refArray();
+        for (int i = 0; i < nb; i++) {
+            int to = Partition.straddlerBounds(prims, refs[node.base() + straddle[i]], bounds, 2 * nb + i, node.voxel(), p,
+                    perfect, arena.clipLeft, arena.clipRight, bounds, i, bounds, nb + i);
+            straddle[nb + i] = (to & 1) != 0 ? 0 : -1;
+            straddle[2 * nb + i] = (to & 2) != 0 ? 0 : -1;
+        }
+        return straddle;
+    }
+
+    /**
+     * Writes the children's references in node order (the left child's from 0, the right's from
+     * {@code leftCap}); {@code side[j]} becomes (index in its child) {@code << 2 |} side bits, and a
+     * straddler's table entries its indices in the children. Returns the children's sizes as
+     * {@code left << 32 | right}.
+     */
+    private static long writeReferences(EventNode node, int[] side, int[] straddle, int nb, int[] childRefs, int leftCap) {
+        int[] refs = node.refArray();
+        int base = node.base(), il = 0, ir = 0;
+        for (int j = 0, i = 0; j < node.size(); j++) {
             int prim = refs[base + j], s = side[j];
             if (s == LEFT) {
                 side[j] = il << 2 | LEFT;
                 childRefs[il++] = prim;
             } else if (s == RIGHT) {
-                side[j] = (ir - leftCap) << 2 | RIGHT;
-                childRefs[ir++] = prim;
+                side[j] = ir << 2 | RIGHT;
+                childRefs[leftCap + ir++] = prim;
             } else {
                 if (straddle[nb + i] == 0) { straddle[nb + i] = il; childRefs[il++] = prim; }
-                if (straddle[2 * nb + i] == 0) { straddle[2 * nb + i] = ir - leftCap; childRefs[ir++] = prim; }
+                if (straddle[2 * nb + i] == 0) { straddle[2 * nb + i] = ir; childRefs[leftCap + ir++] = prim; }
                 i++;
             }
         }
+        return (long) il << 32 | ir;
+    }
 
-        // Events, axis by axis: one-sided ones copied in order, the straddlers' sorted and merged in.
-        double[] pos = node.positions(), childPos = out.pos;
-        int[] code = node.codes(), childCode = out.code;
-        int[] rangeL = new int[2 * k], rangeR = new int[2 * k];
-        for (int a = 0, atL = 0, atR = leftRegions; a < k; a++) {
-            int from = node.eventsFrom(a), to = node.eventsTo(a);
-            long ends = copyOneSided(pos, code, from, to, side, childPos, childCode, atL, atR);
-            int endL = (int) (ends >>> 32), endR = (int) ends;
-            endL = mergeStraddlers(arena, bounds, k, straddle, nb, 0, a, childPos, childCode, atL, endL);
-            endR = mergeStraddlers(arena, bounds, k, straddle, nb, 1, a, childPos, childCode, atR, endR);
-            rangeL[2 * a] = atL;
-            rangeL[2 * a + 1] = endL;
-            rangeR[2 * a] = atR;
-            rangeR[2 * a + 1] = endR;
-            atL += region(node, a, nb, nl);
-            atR += region(node, a, nb, nr);
-        }
-        int depth = node.depth() + 1;
-        Box lv = node.voxel().lowerPart(p.axis(), p.position()), rv = node.voxel().upperPart(p.axis(), p.position());
-        return new Children(
-                new EventNode(lv, childRefs, 0, il, depth, childPos, childCode, rangeL, arena),
-                new EventNode(rv, childRefs, leftCap, ir - leftCap, depth, childPos, childCode, rangeR, arena));
+    /**
+     * The events of one axis for both children: the one-sided references' copied in order into
+     * the regions at {@code atL} and {@code atR}, the straddlers' sorted and merged in; records
+     * where each child's events of this axis begin and end.
+     */
+    private static void splitEvents(EventNode node, int a, int[] side, int[] straddle, int nb,
+                                    EventArena.Level out, int atL, int atR, int[] rangeL, int[] rangeR) {
+        EventArena arena = node.arena();
+        double[] bounds = arena.straddlerBounds(3 * nb);
+        int k = node.dimension();
+        long ends = copyOneSided(node.positions(), node.codes(), node.eventsFrom(a), node.eventsTo(a), side,
+                out.pos, out.code, atL, atR);
+        int endL = (int) (ends >>> 32), endR = (int) ends;
+        endL = mergeStraddlers(arena, bounds, k, straddle, nb, 0, a, out.pos, out.code, atL, endL);
+        endR = mergeStraddlers(arena, bounds, k, straddle, nb, 1, a, out.pos, out.code, atR, endR);
+        rangeL[2 * a] = atL;
+        rangeL[2 * a + 1] = endL;
+        rangeR[2 * a] = atR;
+        rangeR[2 * a + 1] = endR;
     }
 
     /**
