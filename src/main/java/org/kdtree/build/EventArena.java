@@ -1,5 +1,7 @@
 package org.kdtree.build;
 
+import org.kdtree.geom.Box;
+
 /**
  * Scratch memory of the O(N log N) build, one per thread of work (the whole build, or one
  * forked subtree), so that a split allocates no arrays.
@@ -43,12 +45,12 @@ final class EventArena {
     private int[] straddleCode = new int[0];
 
     /** Boxes to clip a straddler into. */
-    final org.kdtree.geom.Box clipLeft, clipRight;
+    final Box clipLeft, clipRight;
 
     EventArena(int k) {
         this.k = k;
-        this.clipLeft = new org.kdtree.geom.Box(k);
-        this.clipRight = new org.kdtree.geom.Box(k);
+        this.clipLeft = new Box(k);
+        this.clipRight = new Box(k);
     }
 
     int dimension() { return k; }
