@@ -21,7 +21,6 @@ public final class PolygonClipper {
 
     private final int k;
     private double[] a, b;
-    private final double[] tri = new double[9];
 
     public PolygonClipper(int k) {
         this.k = k;
@@ -62,19 +61,6 @@ public final class PolygonClipper {
         for (int i = 0; i < count; i++) dest.grow(a, i * k);
         padAndClamp(verts, n, box, dest);
         return dest;
-    }
-
-    /**
-     * Bounds of the part inside {@code box} of the triangle whose corners are the points
-     * {@code i0, i1, i2} (indices of x, y, z triples) of {@code vertices}: the same result as
-     * {@link #clip} on a copy of the three corners, without allocating the copy.
-     */
-    public Box clipTriangle(double[] vertices, int i0, int i1, int i2, Box box, Box dest) {
-        if (k != 3) throw new IllegalStateException("clipTriangle needs a 3-D clipper");
-        System.arraycopy(vertices, 3 * i0, tri, 0, 3);
-        System.arraycopy(vertices, 3 * i1, tri, 3, 3);
-        System.arraycopy(vertices, 3 * i2, tri, 6, 3);
-        return clip(tri, 3, box, dest);
     }
 
     /** Keeps the part with {@code x_axis >= plane} (lower face) or {@code <= plane}; result in a. */

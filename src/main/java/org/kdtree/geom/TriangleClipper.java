@@ -32,7 +32,7 @@ public final class TriangleClipper {
     /**
      * Bounds of the part inside {@code box} of the triangle whose corners are the points
      * {@code i0, i1, i2} (indices of x, y, z triples) of {@code vertices}; {@code dest} is set
-     * empty when the triangle misses the box. Same result as {@link PolygonClipper#clipTriangle}.
+     * empty when the triangle misses the box. Same result as {@link PolygonClipper#clip} on the three corners.
      */
     public Box clip(double[] vertices, int i0, int i1, int i2, Box box, Box dest) {
         int p0 = 3 * i0, p1 = 3 * i1, p2 = 3 * i2;
