@@ -8,11 +8,11 @@ import org.kdtree.shape.ProceduralScenes;
 import org.kdtree.shape.TriangleMesh;
 
 /** Scenes by name for the benchmarks: {@code uniform}, {@code clustered}, {@code surface}, or an OBJ path (optionally {@code PATH@grid4}). */
-final class BenchScenes {
+public final class BenchScenes {
     private BenchScenes() {
     }
 
-    static TriangleMesh make(String kind, int n) {
+    public static TriangleMesh make(String kind, int n) {
         return switch (kind) {
             case "uniform" -> ProceduralScenes.uniform(n, 1);
             case "clustered" -> ProceduralScenes.clustered(n, 2);
@@ -21,7 +21,7 @@ final class BenchScenes {
         };
     }
 
-    static TriangleMesh load(String spec) {
+    public static TriangleMesh load(String spec) {
         try {
             boolean grid = spec.endsWith("@grid4");
             TriangleMesh m = ObjMeshReader.read(Path.of(grid ? spec.substring(0, spec.length() - 6) : spec));
