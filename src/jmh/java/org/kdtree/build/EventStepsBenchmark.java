@@ -44,6 +44,7 @@ import org.openjdk.jmh.annotations.Warmup;
 public class EventStepsBenchmark {
     /** Sampled small nodes and clips. */
     static final int SAMPLE = 4096;
+    private static final SahBuilder DEFAULTS = new SahBuilder();
 
     /** A scene as BuildBenchmark names it: uniform, clustered, surface, or an OBJ path. */
     @Param({"surface"})
@@ -59,7 +60,6 @@ public class EventStepsBenchmark {
     private SahCost rootCost;
     private EventNode[] small;
     private SplitPlane[] smallPlane;
-    private SahCost[] smallCost;
     private Clip[] clips;
     private final Box left = new Box(3), right = new Box(3);
     private final EventPlaneSearch search = new EventPlaneSearch();
@@ -73,7 +73,10 @@ public class EventStepsBenchmark {
         Recorder recorder = new Recorder(mesh);
         recorder.build(recorder.counted);
         System.out.println(recorder.report());
-        root = (EventNode) new SahBuilder().makeRoot(mesh, mesh.bounds());
+        if (recorder.smallSeen < SAMPLE || recorder.clipped < SAMPLE)
+            throw new IllegalArgumentException("scene " + scene + " is too small: it needs " + SAMPLE
+                    + " splits of 4-15 references and " + SAMPLE + " straddler clips");
+        root = (EventNode) DEFAULTS.makeRoot(mesh, mesh.bounds());
         rootCost = cost(root);
         SahSplit best = new SahSplit();
         search.search(root, rootCost, best);
@@ -81,16 +84,13 @@ public class EventStepsBenchmark {
         System.out.printf("root: %,d events%n", Recorder.events(root));
         small = new EventNode[SAMPLE];
         smallPlane = recorder.smallPlanes;
-        smallCost = new SahCost[SAMPLE];
-        for (int i = 0; i < SAMPLE; i++) {
-            small[i] = EventNode.of(recorder.smallNodes[i], false);
-            smallCost[i] = cost(small[i]);
-        }
+        for (int i = 0; i < SAMPLE; i++) small[i] = EventNode.of(recorder.smallNodes[i], false);
         clips = recorder.clips;
     }
 
+    /** The cost terms of a node with the default builder's Kt, Ki and lambda, as its terminate makes them. */
     private static SahCost cost(BuildNode node) {
-        return new SahCost(org.kdtree.tree.CostModel.WALD_HAVRAN, 0.8, node.voxel());
+        return new SahCost(DEFAULTS.costModel(), DEFAULTS.emptyWeight(), node.voxel());
     }
 
     @Benchmark

@@ -224,9 +224,6 @@ final class EventPartition {
         return (long) endL << 32 | endR;
     }
 
-
-
-
     /**
      * Merges the sorted {@code sp[0..m)} into the sorted {@code dp[from..to)}, which has room for
      * them right after it: from the back, so that nothing is overwritten before it is read.
