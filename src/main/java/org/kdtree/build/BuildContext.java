@@ -9,4 +9,10 @@ public interface BuildContext {
 
     /** The depth cap in force for this build (Kmaxdepth, or its default {@code 8 + 1.3 log2 N}). */
     int depthCap();
+
+    /**
+     * The smallest subtree (in references) handed to another thread; {@code Integer.MAX_VALUE}
+     * in a one-thread build.
+     */
+    int forkThreshold();
 }

@@ -45,18 +45,29 @@ public abstract class KdTreeBuilder {
         Box rootVoxel = rootVoxel(primitives);
         int depthCap = maxDepth >= 0 ? maxDepth : defaultMaxDepth(primitives.size());
         KdTreeWriter out = new KdTreeWriter();
+        Build build = new Build(primitives, depthCap, threads == 1 ? Integer.MAX_VALUE : forkThreshold(primitives.size(), threads));
         if (threads == 1) {
-            recConst(new Build(primitives, depthCap, Integer.MAX_VALUE), makeRoot(primitives, rootVoxel), out);
+            construct(build, rootVoxel, out);
         } else {
-            Build build = new Build(primitives, depthCap, forkThreshold(primitives.size(), threads));
             ForkJoinPool pool = new ForkJoinPool(threads);
             try {
-                pool.invoke(ForkJoinTask.adapt(() -> recConst(build, makeRoot(primitives, rootVoxel), out)));
+                pool.invoke(ForkJoinTask.adapt(() -> construct(build, rootVoxel, out)));
             } finally {
                 pool.shutdown();
             }
         }
         return out.finish(rootVoxel, costModel, name());
+    }
+
+    /**
+     * Writes the tree of {@code context}'s primitives in {@code rootVoxel} into {@code out}: by
+     * default Algorithm 1 below. A subclass with an engine of its own (the SAH's event engine)
+     * overrides this, and must write the very tree the recursion would. Runs inside the build's
+     * fork/join pool when {@link #threads()} is above 1.
+     */
+    protected void construct(BuildContext context, Box rootVoxel, KdTreeWriter out) {
+        Build build = (Build) context;
+        recConst(build, makeRoot(build, rootVoxel), out);
     }
 
     /**
@@ -85,20 +96,12 @@ public abstract class KdTreeBuilder {
      * off, in which case the child keeps the box of the parent's bounds cut by the plane).
      */
     protected Children split(BuildContext context, BuildNode node, SplitPlane plane) {
-        return Partition.split(context.primitives(), node, plane, perfectSplits);
-    }
-
-    /**
-     * Called before the subtree of {@code node} is handed to another thread. A builder whose
-     * nodes share per-thread scratch memory returns a node whose descendants use memory of their
-     * own; the default returns {@code node}.
-     */
-    protected BuildNode detach(BuildNode node) {
-        return node;
+        return Partition.split(context, node, plane, perfectSplits);
     }
 
     /** Makes the root node: every primitive with its own bounds, in the scene's box. */
-    protected BuildNode makeRoot(Primitives primitives, Box rootVoxel) {
+    protected BuildNode makeRoot(BuildContext context, Box rootVoxel) {
+        Primitives primitives = context.primitives();
         int n = primitives.size(), k = primitives.dimension();
         int[] refs = new int[n];
         double[] clipped = new double[2 * k * n];
@@ -106,10 +109,7 @@ public abstract class KdTreeBuilder {
         for (int i = 0; i < n; i++) {
             refs[i] = i;
             primitives.bounds(i, b);
-            for (int a = 0; a < k; a++) {
-                clipped[2 * k * i + a] = b.min(a);
-                clipped[2 * k * i + k + a] = b.max(a);
-            }
+            Partition.write(b, clipped, i);
         }
         return new BuildNode(rootVoxel, refs, clipped, 0);
     }
@@ -130,7 +130,7 @@ public abstract class KdTreeBuilder {
         if (children.right().size() >= build.forkThreshold && children.left().size() > 0) {
             // The right subtree is built by another thread into its own writer, then spliced in:
             // the same recursion, so the same tree, in the same depth-first order.
-            BuildNode rightChild = detach(children.right());
+            BuildNode rightChild = children.right();
             ForkJoinTask<KdTreeWriter> right = ForkJoinTask.adapt(() -> {
                 KdTreeWriter w = new KdTreeWriter();
                 recConst(build, rightChild, w);

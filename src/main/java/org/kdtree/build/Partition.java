@@ -21,11 +21,8 @@ final class Partition {
         return Side.BOTH;
     }
 
-    static Children split(Primitives prims, BuildNode node, SplitPlane p) {
-        return split(prims, node, p, true);
-    }
-
-    static Children split(Primitives prims, BuildNode node, SplitPlane p, boolean perfect) {
+    static Children split(BuildContext context, BuildNode node, SplitPlane p, boolean perfect) {
+        Primitives prims = context.primitives();
         int k = node.dimension(), n = node.size(), axis = p.axis();
         Side[] side = new Side[n];
         int nl = 0, nr = 0;
@@ -47,7 +44,7 @@ final class Partition {
                 case LEFT -> { lr[il] = prim; System.arraycopy(src, 2 * k * j, lc, 2 * k * il++, 2 * k); }
                 case RIGHT -> { rr[ir] = prim; System.arraycopy(src, 2 * k * j, rc, 2 * k * ir++, 2 * k); }
                 case BOTH -> {
-                    int to = straddlerBounds(prims, prim, src, j, node.voxel(), p, perfect, tmpL, tmpR, lc, il, rc, ir);
+                    int to = straddlerBounds(prims, prim, src, j, node.voxel(), axis, p.position(), perfect, tmpL, tmpR, lc, il, rc, ir);
                     if ((to & 1) != 0) lr[il++] = prim;
                     if ((to & 2) != 0) rr[ir++] = prim;
                 }
@@ -65,7 +62,8 @@ final class Partition {
     }
 
     /**
-     * Bounds of a straddling primitive in both children, written at {@code left[2k atL ..]} and
+     * Bounds of a straddling primitive (parent bounds at slot {@code j}) in the children of {@code voxel} cut at
+     * {@code x_axis = xi}, written at {@code left[2k atL ..]} and
      * {@code right[2k atR ..]}; returns which children it goes to (bit 0: left, bit 1: right).
      * With perfect splits: the exact clip ({@link Primitives#clipSplit}). The parent's bounds are
      * padded by a few ulps, so a primitive that merely reaches the plane can look like a
@@ -73,10 +71,9 @@ final class Partition {
      * grown by a hair: if it touches that, it keeps the (tight) sliver at the face; if not, it is
      * not in this child. Without perfect splits: the parent's bounds cut by each child voxel.
      */
-    static int straddlerBounds(Primitives prims, int prim, double[] parent, int j, Box voxel, SplitPlane p, boolean perfect,
-                               Box tmpL, Box tmpR, double[] left, int atL, double[] right, int atR) {
-        int k = voxel.dimension(), axis = p.axis();
-        double xi = p.position();
+    static int straddlerBounds(Primitives prims, int prim, double[] parent, int j, Box voxel, int axis, double xi,
+                               boolean perfect, Box tmpL, Box tmpR, double[] left, int atL, double[] right, int atR) {
+        int k = voxel.dimension();
         if (!perfect) {
             for (int a = 0; a < k; a++) {
                 double lo = parent[2 * k * j + a], hi = parent[2 * k * j + k + a];
@@ -112,7 +109,8 @@ final class Partition {
         return true;
     }
 
-    private static void write(Box b, double[] dest, int at) {
+    /** Writes {@code b} as the clipped bounds at slot {@code at} of {@code dest} ({@code 2k} values a slot). */
+    static void write(Box b, double[] dest, int at) {
         int k = b.dimension();
         for (int a = 0; a < k; a++) {
             dest[2 * k * at + a] = b.min(a);

@@ -2,8 +2,8 @@ package org.kdtree.build;
 
 import org.kdtree.geom.Box;
 import org.kdtree.geom.SplitPlane;
-import org.kdtree.shape.Primitives;
 import org.kdtree.tree.CostModel;
+import org.kdtree.tree.KdTreeWriter;
 
 /**
  * Chooses planes by the surface area heuristic (talk, section 3.3): among the candidate
@@ -21,8 +21,12 @@ public class SahBuilder extends KdTreeBuilder {
         NAIVE(new NaivePlaneSearch()),
         /** Sort each node's events, then sweep: O(N log^2 N). */
         SORTED(new SortedPlaneSearch()),
-        /** Sort the events once at the root, keep them sorted through every split: O(N log N). */
-        EVENT(new EventPlaneSearch()),
+        /**
+         * Sort the events once at the root, keep them sorted through every split: O(N log N), in
+         * the primitive-array {@link EventEngine}. A subclass of this builder (which may override
+         * terminate or findPlane) gets the recursion with the sorted search: the same tree.
+         */
+        EVENT(new SortedPlaneSearch()),
         /**
          * Not exact: only the boundaries of {@link #bins()} equal bins per axis are candidates,
          * counted from histograms; nodes smaller than {@link #exactBelow()} get the exact sweep.
@@ -44,12 +48,6 @@ public class SahBuilder extends KdTreeBuilder {
     /** The default node size below which {@link Algorithm#BINNED} searches exactly. */
     public static final int DEFAULT_EXACT_BELOW = 64;
 
-    /**
-     * Nodes at least this big sweep their k axes in parallel when the build has several threads
-     * (package-private and mutable only so that a test can exercise it on a small scene).
-     */
-    static int parallelSweepMin = 50_000;
-
     private double emptyWeight = 0.8;
     private Algorithm algorithm = Algorithm.EVENT;
     private int bins = DEFAULT_BINS;
@@ -62,33 +60,25 @@ public class SahBuilder extends KdTreeBuilder {
         SahCost sah = new SahCost(costModel(), emptyWeight, node.voxel());
         if (!(sah.halfArea() > 0)) return true;
         SahSplit best = new SahSplit();
-        if (threads() > 1 && node instanceof EventNode e && node.size() >= parallelSweepMin)
-            EventPlaneSearch.searchAxesInParallel(e, sah, best);
-        else
-            search().search(node, sah, best);
+        search(context).search(node, sah, best);
         if (!best.found() || best.cost() >= sah.leafCost(node.size())) return true;
         node.plan(best.plane(), best.cost());
         return false;
     }
 
-    private PlaneSearch search() {
+    private PlaneSearch search(BuildContext context) {
         return algorithm == Algorithm.BINNED ? new BinnedPlaneSearch(bins, exactBelow) : algorithm.search;
     }
 
-    /** The event build keeps sorted event lists in its nodes from the root down. */
-    @Override protected BuildNode makeRoot(Primitives primitives, Box rootVoxel) {
-        BuildNode root = super.makeRoot(primitives, rootVoxel);
-        return algorithm == Algorithm.EVENT ? EventNode.of(root, threads() > 1) : root;
-    }
-
-    @Override protected Children split(BuildContext context, BuildNode node, SplitPlane plane) {
-        if (node instanceof EventNode e) return EventPartition.split(context.primitives(), e, plane, perfectSplits());
-        return super.split(context, node, plane);
-    }
-
-    /** A subtree built by another thread writes its events into scratch memory of its own. */
-    @Override protected BuildNode detach(BuildNode node) {
-        return node instanceof EventNode e ? e.detached() : node;
+    /**
+     * The event algorithm runs in its own engine, which builds the tree the recursion would;
+     * a subclass (which may override terminate or findPlane) always gets the recursion.
+     */
+    @Override protected void construct(BuildContext context, Box rootVoxel, KdTreeWriter out) {
+        if (algorithm == Algorithm.EVENT && getClass() == SahBuilder.class && EventEngine.applies(context))
+            new EventEngine(this, context).build(rootVoxel, out);
+        else
+            super.construct(context, rootVoxel, out);
     }
 
     @Override protected SplitPlane findPlane(BuildContext context, BuildNode node) {

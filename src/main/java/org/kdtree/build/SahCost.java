@@ -19,19 +19,39 @@ import org.kdtree.tree.CostModel;
 public final class SahCost {
     private final CostModel model;
     private final double emptyWeight;
-    private final double halfArea, inverseHalfArea;
+    private final int k;
+    private double halfArea, inverseHalfArea;
     /** min, max, face and side per axis, packed in one array: {@code v[4 axis + 0..3]}. */
     private final double[] v;
 
     public SahCost(CostModel model, double emptyWeight, Box voxel) {
-        this.model = model;
-        this.emptyWeight = emptyWeight;
-        int k = voxel.dimension();
-        v = new double[4 * k];
+        this(model, emptyWeight, voxel.dimension());
         for (int a = 0; a < k; a++) {
             v[4 * a] = voxel.min(a);
             v[4 * a + 1] = voxel.max(a);
         }
+        faceAndSide();
+    }
+
+    /** A cost to be pointed at one voxel after another with {@link #set} (the event engine keeps one). */
+    SahCost(CostModel model, double emptyWeight, int k) {
+        this.model = model;
+        this.emptyWeight = emptyWeight;
+        this.k = k;
+        this.v = new double[4 * k];
+    }
+
+    /** Points this cost at the voxel whose minima are {@code box[at .. at + k)} and maxima the next k values. */
+    SahCost set(double[] box, int at) {
+        for (int a = 0; a < k; a++) {
+            v[4 * a] = box[at + a];
+            v[4 * a + 1] = box[at + k + a];
+        }
+        faceAndSide();
+        return this;
+    }
+
+    private void faceAndSide() {
         if (k == 3) faceAndSide3D();
         else for (int n = 0; n < k; n++) {
             double f = 1, s = 0;
@@ -49,7 +69,7 @@ public final class SahCost {
         inverseHalfArea = 1 / halfArea;
     }
 
-    /** The loop below written out for k = 3 (every node of a 3-D build makes one): the same products and sums. */
+    /** The loop above written out for k = 3 (every node of a 3-D build makes one): the same products and sums. */
     private void faceAndSide3D() {
         double e0 = extent(0), e1 = extent(1), e2 = extent(2);
         v[2] = e1 * e2;
@@ -66,6 +86,9 @@ public final class SahCost {
 
     /** Half the voxel's surface area; zero for a voxel no ray can meet with positive probability. */
     public double halfArea() { return halfArea; }
+
+    /** lambda, the weight of a plane that leaves one child empty. */
+    public double emptyWeight() { return emptyWeight; }
 
     /** Kt, Ki of this cost. */
     public CostModel model() { return model; }

@@ -41,6 +41,18 @@ public final class SahSplit {
         }
     }
 
+    /** Forgets the plane, to search another node with the same object. */
+    void reset() {
+        axis = -1;
+        cost = Double.POSITIVE_INFINITY;
+    }
+
+    int axis() { return axis; }
+
+    double position() { return position; }
+
+    boolean planarLeft() { return planarLeft; }
+
     /** True once some candidate has been offered. */
     public boolean found() { return axis >= 0; }
 

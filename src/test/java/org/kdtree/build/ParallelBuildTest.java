@@ -21,17 +21,6 @@ class ParallelBuildTest {
         }
     }
 
-    @Test void parallelSweepOfTheAxesChoosesTheSequentialPlanes() {
-        int saved = SahBuilder.parallelSweepMin;
-        SahBuilder.parallelSweepMin = 500;
-        try {
-            KdTree one = new SahBuilder().build(CLUSTERS);
-            SahAlgorithmsTest.assertSameTree(new SahBuilder().threads(2).build(CLUSTERS), one);
-        } finally {
-            SahBuilder.parallelSweepMin = saved;
-        }
-    }
-
     @Test void otherBuildersAndAlgorithmsToo() {
         KdTreeBuilder[] builders = {
                 new SahBuilder().algorithm(SahBuilder.Algorithm.SORTED),

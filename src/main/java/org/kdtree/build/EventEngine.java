@@ -1,0 +1,162 @@
+package org.kdtree.build;
+
+import java.util.concurrent.ForkJoinTask;
+import org.kdtree.geom.Box;
+import org.kdtree.shape.Primitives;
+import org.kdtree.tree.KdTreeWriter;
+
+/**
+ * The O(N log N) SAH build of Wald and Havran (2006, section 4.3) as primitive-array code: the
+ * talk's recConst with the SAH's terminate and findPlane, over events held as a position and an
+ * {@code int} code ({@link EventCode}), sorted once at the root and kept sorted through every split
+ * ({@link EventSplit}), in scratch memory reused per depth ({@link EventLevels}). No object is
+ * made per node or per event.
+ *
+ * <p>It builds the very tree {@link SahBuilder} builds through {@link KdTreeBuilder}'s recursion
+ * with the naive or the sorted search: the same candidates (the clipped bounds),
+ * the same costs ({@link SahCost}), the same first minimum ({@link SahSplit}), the same safety
+ * nets (depth cap, a split that separates nothing makes a leaf), and leaves list their
+ * primitives in increasing order, as the recursion's stable partitions do.
+ *
+ * <p>One engine serves one thread of work: the whole build, or a subtree handed to another
+ * thread, which gets an engine (and scratch memory) of its own.
+ */
+final class EventEngine {
+    final Primitives prims;
+    final int k;
+    final boolean perfectSplits;
+    private final int depthCap, forkThreshold;
+    final EventLevels levels;
+    private final SahCost sah;
+    private final SahSplit best = new SahSplit();
+    private final EventSplit split;
+    private final double leafCostPerPrimitive;
+    private int[] leafRefs = new int[16];
+
+    EventEngine(SahBuilder settings, BuildContext context) {
+        this.prims = context.primitives();
+        this.k = prims.dimension();
+        this.perfectSplits = settings.perfectSplits();
+        this.depthCap = context.depthCap();
+        this.forkThreshold = context.forkThreshold();
+        this.levels = new EventLevels(k);
+        this.sah = new SahCost(settings.costModel(), settings.emptyWeight(), k);
+        this.split = new EventSplit(this);
+        this.leafCostPerPrimitive = settings.costModel().ki();
+    }
+
+    /** Whether the engine can build over {@code context} (at most 2^30 primitives). */
+    static boolean applies(BuildContext context) {
+        return context.primitives().size() < EventCode.MAX_PRIMITIVES;
+    }
+
+    /** Builds the whole tree into {@code out}. */
+    void build(Box rootVoxel, KdTreeWriter out) {
+        EventRoot.write(this, rootVoxel);
+        recConst(0, 0, out);
+    }
+
+    private EventEngine(EventEngine parent) {
+        this.prims = parent.prims;
+        this.k = parent.k;
+        this.perfectSplits = parent.perfectSplits;
+        this.depthCap = parent.depthCap;
+        this.forkThreshold = parent.forkThreshold;
+        this.levels = new EventLevels(k);
+        this.sah = new SahCost(parent.sah.model(), parent.sah.emptyWeight(), k);
+        this.split = new EventSplit(this);
+        this.leafCostPerPrimitive = parent.leafCostPerPrimitive;
+    }
+
+    /** recConst for child c of level d (the root is child 0 of level 0). */
+    private void recConst(int d, int c, KdTreeWriter out) {
+        int n = levels.meta(d)[levels.metaAt(c)];
+        if (n == 0 || d >= depthCap || !findPlane(d, c, n)) {
+            leaf(d, c, n, out);
+            return;
+        }
+        int axis = best.axis();
+        double xi = best.position();
+        if (!split.split(d, c, n, axis, xi, best.planarLeft())) {
+            leaf(d, c, n, out);
+            return;
+        }
+        int interior = out.interior(axis, xi);
+        int[] below = levels.meta(d + 1);
+        if (below[levels.metaAt(1)] >= forkThreshold && below[levels.metaAt(0)] > 0) {
+            forkRight(d + 1, interior, out);
+            return;
+        }
+        recConst(d + 1, 0, out);
+        out.setRightChild(interior);
+        recConst(d + 1, 1, out);
+    }
+
+    /**
+     * Builds the right child on another thread, with its own engine and writer, while this
+     * thread builds the left; then splices it in: the same tree, in the same order.
+     */
+    private void forkRight(int d, int interior, KdTreeWriter out) {
+        EventEngine other = new EventEngine(this);
+        levels.copyChild(d, 1, other.levels);
+        ForkJoinTask<KdTreeWriter> right = ForkJoinTask.adapt(() -> {
+            KdTreeWriter w = new KdTreeWriter();
+            other.recConst(d, 1, w);
+            return w;
+        }).fork();
+        recConst(d, 0, out);
+        KdTreeWriter rightTree = right.join();
+        out.setRightChild(interior);
+        out.append(rightTree);
+    }
+
+    /**
+     * The SAH's terminate and findPlane in one search: sweeps every axis, keeps the first plane
+     * of least cost in {@link #best}, and answers whether it beats a leaf ({@code |T| Ki}).
+     */
+    private boolean findPlane(int d, int c, int n) {
+        sah.set(levels.voxel(d), 2 * k * c);
+        if (!(sah.halfArea() > 0)) return false;
+        best.reset();
+        double[] pos = levels.positions(d);
+        int[] code = levels.codes(d), meta = levels.meta(d);
+        int at = levels.metaAt(c);
+        for (int axis = 0; axis < k; axis++)
+            sweep(axis, n, pos, code, meta[at + 1 + 2 * axis], meta[at + 2 + 2 * axis]);
+        return best.found() && best.cost() < n * leafCostPerPrimitive;
+    }
+
+    /**
+     * One axis: events grouped by position; at each position the plane is offered with
+     * |T_L| (references starting before it or lying in planes before it), |T_P| (lying in it)
+     * and |T_R| (ending after it), as {@link SortedPlaneSearch#sweep} counts them.
+     */
+    private void sweep(int axis, int n, double[] pos, int[] code, int from, int to) {
+        int nl = 0, nr = n, i = from;
+        while (i < to) {
+            double x = pos[i];
+            int group = 0, planar = 0, start = 0;
+            for (; i < to && pos[i] == x; i++) {
+                if (x == 0) x = Math.min(x, pos[i]);   // -0.0 if the group has one, as the other searches pick
+                int kind = EventCode.kind(code[i]);    // END 0, PLANAR 1, START 2: counted without branches
+                group++;
+                planar += kind & 1;
+                start += kind >>> 1;
+            }
+            nr -= group - start;
+            best.offer(sah, axis, x, nl, planar, nr);
+            nl += start + planar;
+        }
+    }
+
+    /** Writes child c of level d as a leaf: its primitives (one start or planar event each on axis 0), in increasing order. */
+    private void leaf(int d, int c, int n, KdTreeWriter out) {
+        if (leafRefs.length < n) leafRefs = new int[EventLevels.grown(leafRefs.length, n)];
+        int[] code = levels.codes(d), meta = levels.meta(d);
+        int at = levels.metaAt(c), m = 0;
+        for (int e = meta[at + 1], to = meta[at + 2]; e < to; e++)
+            if (EventCode.kind(code[e]) != EventCode.END) leafRefs[m++] = EventCode.primitive(code[e]);
+        java.util.Arrays.sort(leafRefs, 0, m);
+        out.leaf(leafRefs, 0, m);
+    }
+}

@@ -1,0 +1,223 @@
+package org.kdtree.build;
+
+import org.kdtree.geom.Box;
+
+/**
+ * The split step of the event engine (Wald and Havran 2006, section 4.3): classify each
+ * primitive as left only, right only or straddling from the events on the split axis; clip
+ * only the straddlers ({@link Partition#straddlerBounds}, as the recursion does); copy the
+ * one-sided primitives' events, still sorted, into the children; sort the straddlers' few new
+ * events and merge them in. Linear in the node's events plus {@code s log s} for {@code s}
+ * straddlers, with nothing allocated: sides live in one byte per primitive, everything else
+ * in the engine's {@link EventLevels} and in scratch arrays kept from node to node.
+ */
+final class EventSplit {
+    /** The side of a primitive in the node being split; a straddler's events are copied to neither child. */
+    private static final byte STRADDLES = 0, LEFT = 1, RIGHT = 2;
+
+    private final EventEngine engine;
+    private final EventLevels levels;
+    private final int k;
+    private final byte[] side;
+    /** The straddlers' primitives, then per straddler bit 0 "goes left", bit 1 "goes right". */
+    private int[] straddlers = new int[16], goesTo = new int[16];
+    /** Straddler bounds, 2k values a slot: slots [0, nb) left child's, [nb, 2nb) right's, [2nb, 3nb) parent's. */
+    private double[] bounds = new double[0];
+    /** One child's new events on one axis. */
+    private double[] extraPos = new double[16];
+    private int[] extraCode = new int[16];
+    /** Per primitive, its straddler slot (only without perfect splits, to recover parent bounds). */
+    private int[] slotOf;
+    private final Box voxel, clipLeft, clipRight;
+
+    EventSplit(EventEngine engine) {
+        this.engine = engine;
+        this.levels = engine.levels;
+        this.k = engine.k;
+        this.side = new byte[engine.prims.size()];
+        this.voxel = new Box(k);
+        this.clipLeft = new Box(k);
+        this.clipRight = new Box(k);
+    }
+
+    /**
+     * Splits child c of level d ({@code n} primitives) by the plane {@code x_axis = xi} into both
+     * children in level d + 1. Returns false, writing nothing, when every primitive would go to
+     * both children (the split separates nothing).
+     */
+    boolean split(int d, int c, int n, int axis, double xi, boolean planarLeft) {
+        int[] code = levels.codes(d), meta = levels.meta(d);
+        int at = levels.metaAt(c), from = meta[at + 1 + 2 * axis], to = meta[at + 2 + 2 * axis];
+        classify(levels.positions(d), code, from, to, xi, planarLeft ? LEFT : RIGHT);
+        int nb = 0, nl = 0, nr = 0;
+        if (straddlers.length < n) { straddlers = new int[n]; goesTo = new int[n]; }
+        for (int e = from; e < to; e++) {
+            if (EventCode.kind(code[e]) == EventCode.END) continue;
+            int p = EventCode.primitive(code[e]), s = side[p];
+            nl += s & 1;
+            nr += s >>> 1;
+            if (s == STRADDLES) straddlers[nb++] = p;
+        }
+        long added = clipStraddlers(d, c, axis, xi, nb);
+        int sizeL = nl + (int) (added >>> 32), sizeR = nr + (int) added;
+        if (sizeL == n && sizeR == n) return false;
+        writeChildren(d, c, axis, xi, nb, sizeL, sizeR);
+        return true;
+    }
+
+    /**
+     * The side of each primitive from its events on the split axis (its clipped bounds there),
+     * the same decision as {@link Partition#classify}: a start at or after the plane means right
+     * only, an end at or before it left only (a start before it came first and said straddles);
+     * a planar event goes by its position, and to the chosen side when it lies in the plane.
+     */
+    private void classify(double[] pos, int[] code, int from, int to, double xi, byte planarSide) {
+        for (int e = from; e < to; e++) {
+            int p = EventCode.primitive(code[e]);
+            double x = pos[e];
+            switch (EventCode.kind(code[e])) {
+                case EventCode.START -> side[p] = x >= xi ? RIGHT : STRADDLES;
+                case EventCode.END -> { if (x <= xi) side[p] = LEFT; }
+                default -> side[p] = x == xi ? planarSide : x < xi ? LEFT : RIGHT;
+            }
+        }
+    }
+
+    /**
+     * Clips the {@code nb} straddlers to both children, into {@link #bounds}; records in
+     * {@link #goesTo} which children each reaches (a clip can miss a child the bounds touched).
+     * Returns how many go left and right, as {@code left << 32 | right}.
+     */
+    private long clipStraddlers(int d, int c, int axis, double xi, int nb) {
+        if (nb == 0) return 0;
+        double[] v = levels.voxel(d);
+        for (int a = 0; a < k; a++) voxel.setMin(a, v[2 * k * c + a]).setMax(a, v[2 * k * c + k + a]);
+        if (bounds.length < 6 * k * nb) bounds = new double[EventLevels.grown(bounds.length, 6 * k * nb)];
+        if (!engine.perfectSplits) parentBounds(d, c, nb);
+        int left = 0, right = 0;
+        for (int i = 0; i < nb; i++) {
+            int to = Partition.straddlerBounds(engine.prims, straddlers[i], bounds, 2 * nb + i, voxel, axis, xi,
+                    engine.perfectSplits, clipLeft, clipRight, bounds, i, bounds, nb + i);
+            goesTo[i] = to;
+            left += to & 1;
+            right += to >>> 1;
+        }
+        return (long) left << 32 | right;
+    }
+
+    /** The straddlers' bounds in the node (slots [2nb, 3nb)), recovered from their events on every axis. */
+    private void parentBounds(int d, int c, int nb) {
+        if (slotOf == null) slotOf = new int[side.length];
+        for (int i = 0; i < nb; i++) slotOf[straddlers[i]] = 2 * nb + i;
+        double[] pos = levels.positions(d);
+        int[] code = levels.codes(d), meta = levels.meta(d);
+        int at = levels.metaAt(c);
+        for (int a = 0; a < k; a++) {
+            for (int e = meta[at + 1 + 2 * a], to = meta[at + 2 + 2 * a]; e < to; e++) {
+                int p = EventCode.primitive(code[e]);
+                if (side[p] != STRADDLES) continue;
+                int kind = EventCode.kind(code[e]), o = 2 * k * slotOf[p];
+                if (kind != EventCode.END) bounds[o + a] = pos[e];
+                if (kind != EventCode.START) bounds[o + k + a] = pos[e];
+            }
+        }
+    }
+
+    /**
+     * Writes both children into level d + 1: voxels, sizes, and per axis the one-sided events
+     * copied in order with the straddlers' new events merged in. Each child's region on an axis
+     * is sized before anything is copied: its one-sided events are among the node's, and each of
+     * its primitives has at most two; one slot more for the branch-free copy.
+     */
+    private void writeChildren(int d, int c, int axis, double xi, int nb, int sizeL, int sizeR) {
+        double[] pos = levels.positions(d);
+        int[] code = levels.codes(d), meta = levels.meta(d);
+        int at = levels.metaAt(c);
+        int total = 0;
+        for (int a = 0; a < k; a++) {
+            int m = meta[at + 2 + 2 * a] - meta[at + 1 + 2 * a];
+            total += Math.min(m + 2 * nb, 2 * sizeL) + Math.min(m + 2 * nb, 2 * sizeR) + 2;
+        }
+        levels.reserve(d + 1, total);
+        double[] outPos = levels.positions(d + 1);
+        int[] outCode = levels.codes(d + 1);
+        int[] below = levels.meta(d + 1);
+        int atL = levels.metaAt(0), atR = levels.metaAt(1);
+        below[atL] = sizeL;
+        below[atR] = sizeR;
+        int startL = 0, startR = 0;
+        for (int a = 0; a < k; a++) startR += Math.min(meta[at + 2 + 2 * a] - meta[at + 1 + 2 * a] + 2 * nb, 2 * sizeL) + 1;
+        for (int a = 0; a < k; a++) {
+            int from = meta[at + 1 + 2 * a], to = meta[at + 2 + 2 * a];
+            long ends = copyOneSided(pos, code, from, to, outPos, outCode, startL, startR);
+            int endL = mergeStraddlers(0, a, nb, outPos, outCode, startL, (int) (ends >>> 32));
+            int endR = mergeStraddlers(1, a, nb, outPos, outCode, startR, (int) ends);
+            below[atL + 1 + 2 * a] = startL;
+            below[atL + 2 + 2 * a] = endL;
+            below[atR + 1 + 2 * a] = startR;
+            below[atR + 2 + 2 * a] = endR;
+            startL += Math.min(to - from + 2 * nb, 2 * sizeL) + 1;
+            startR += Math.min(to - from + 2 * nb, 2 * sizeR) + 1;
+        }
+        childVoxels(d, c, axis, xi);
+    }
+
+    /**
+     * Copies the events {@code [from, to)} in order to the left region from {@code atL} and the
+     * right one from {@code atR}, each where its primitive's side sends it (a straddler's to
+     * neither). Branch-free: every event is written to both regions and kept where its side bit
+     * says. Returns both ends, as {@code endL << 32 | endR}.
+     */
+    private long copyOneSided(double[] pos, int[] code, int from, int to, double[] outPos, int[] outCode, int atL, int atR) {
+        int endL = atL, endR = atR;
+        byte[] side = this.side;
+        for (int e = from; e < to; e++) {
+            int c = code[e], s = side[EventCode.primitive(c)];
+            double x = pos[e];
+            outPos[endL] = x;
+            outCode[endL] = c;
+            endL += s & 1;
+            outPos[endR] = x;
+            outCode[endR] = c;
+            endR += s >>> 1;
+        }
+        return (long) endL << 32 | endR;
+    }
+
+    /**
+     * Sorts the events on {@code axis} of the straddlers that reach one child (0 left, 1 right)
+     * and merges them into that child's sorted events {@code [from, end)}; returns the new end.
+     */
+    private int mergeStraddlers(int child, int axis, int nb, double[] outPos, int[] outCode, int from, int end) {
+        if (nb == 0) return end;
+        if (extraPos.length < 2 * nb) {
+            extraPos = new double[EventLevels.grown(extraPos.length, 2 * nb)];
+            extraCode = new int[extraPos.length];
+        }
+        int m = 0;
+        for (int i = 0; i < nb; i++)
+            if ((goesTo[i] & (1 << child)) != 0)
+                m = EventRoot.addEvents(bounds, k, child * nb + i, straddlers[i], axis, extraPos, extraCode, m);
+        EventSort.sort(extraPos, extraCode, m);
+        mergeBackward(outPos, outCode, from, end, extraPos, extraCode, m);
+        return end + m;
+    }
+
+    /** Merges the sorted {@code sp[0..m)} into the sorted {@code dp[from..end)}, which has room after it: from the back. */
+    private static void mergeBackward(double[] dp, int[] dc, int from, int end, double[] sp, int[] sc, int m) {
+        int i = end - 1, s = m - 1, at = end + m - 1;
+        while (s >= 0) {
+            if (i >= from && dp[i] > sp[s]) { dp[at] = dp[i]; dc[at--] = dc[i--]; }
+            else { dp[at] = sp[s]; dc[at--] = sc[s--]; }
+        }
+    }
+
+    /** The children's voxels: the node's, cut at the plane. */
+    private void childVoxels(int d, int c, int axis, double xi) {
+        double[] v = levels.voxel(d), below = levels.voxel(d + 1);
+        System.arraycopy(v, 2 * k * c, below, 0, 2 * k);
+        System.arraycopy(v, 2 * k * c, below, 2 * k, 2 * k);
+        below[k + axis] = xi;
+        below[2 * k + axis] = xi;
+    }
+}
