@@ -32,6 +32,10 @@ final class EventEngine {
     private final EventSplit split;
     private final double leafCostPerPrimitive;
     private int[] leafRefs = new int[16];
+    /** Idle engines of this build, each with its scratch memory and a writer, for forked subtrees. */
+    private final java.util.Deque<EventEngine> spares;
+    /** The writer of the subtree this engine builds when forked. */
+    private final KdTreeWriter forkOut = new KdTreeWriter();
 
     EventEngine(SahBuilder settings, BuildContext context) {
         this.prims = context.primitives();
@@ -43,6 +47,7 @@ final class EventEngine {
         this.sah = new SahCost(settings.costModel(), settings.emptyWeight(), k);
         this.split = new EventSplit(this);
         this.leafCostPerPrimitive = settings.costModel().ki();
+        this.spares = new java.util.concurrent.ConcurrentLinkedDeque<>();
     }
 
     /** Whether the engine can build over {@code context} (at most 2^30 primitives). */
@@ -66,6 +71,7 @@ final class EventEngine {
         this.sah = new SahCost(parent.sah.model(), parent.sah.emptyWeight(), k);
         this.split = new EventSplit(this);
         this.leafCostPerPrimitive = parent.leafCostPerPrimitive;
+        this.spares = parent.spares;
     }
 
     /** recConst for child c of level d (the root is child 0 of level 0). */
@@ -93,21 +99,23 @@ final class EventEngine {
     }
 
     /**
-     * Builds the right child on another thread, with its own engine and writer, while this
-     * thread builds the left; then splices it in: the same tree, in the same order.
+     * Builds the right child on another thread, with an engine and writer of its own (an idle
+     * one of this build's, so that their memory is reused), while this thread builds the left;
+     * then splices it in: the same tree, in the same order.
      */
     private void forkRight(int d, int interior, KdTreeWriter out) {
-        EventEngine other = new EventEngine(this);
+        EventEngine spare = spares.poll();
+        EventEngine other = spare != null ? spare : new EventEngine(this);
         levels.copyChild(d, 1, other.levels);
-        ForkJoinTask<KdTreeWriter> right = ForkJoinTask.adapt(() -> {
-            KdTreeWriter w = new KdTreeWriter();
-            other.recConst(d, 1, w);
-            return w;
+        ForkJoinTask<?> right = ForkJoinTask.adapt(() -> {
+            other.forkOut.clear();
+            other.recConst(d, 1, other.forkOut);
         }).fork();
         recConst(d, 0, out);
-        KdTreeWriter rightTree = right.join();
+        right.join();
         out.setRightChild(interior);
-        out.append(rightTree);
+        out.append(other.forkOut);
+        spares.push(other);
     }
 
     /**

@@ -23,6 +23,8 @@ public final class TriangleClipper {
     private final double[] c = new double[3 * MAX_VERTICES];
     /** The buffer holding the polygon after {@link #clipToBox}. */
     private double[] polygon;
+    /** Per axis, the triangle's own bounds and the padding of its clipped bounds ({@link #ownBounds}). */
+    private final double[] ownMin = new double[3], ownMax = new double[3], pad = new double[3];
 
     /** This thread's clipper. */
     public static TriangleClipper forThread() {
@@ -38,8 +40,8 @@ public final class TriangleClipper {
         int p0 = 3 * i0, p1 = 3 * i1, p2 = 3 * i2;
         int count = clipToBox(vertices, p0, p1, p2, box);
         if (count == 0) return dest.setEmpty();
-        for (int axis = 0; axis < 3; axis++)
-            bound(polygon, count, vertices, p0, p1, p2, axis, box.min(axis), box.max(axis), dest);
+        ownBounds(vertices, p0, p1, p2);
+        for (int axis = 0; axis < 3; axis++) bound(polygon, count, axis, box.min(axis), box.max(axis), dest);
         return dest;
     }
 
@@ -53,13 +55,13 @@ public final class TriangleClipper {
         int p0 = 3 * i0, p1 = 3 * i1, p2 = 3 * i2;
         int count = clipToBox(vertices, p0, p1, p2, box);
         double[] whole = polygon;
-        half(whole, count, vertices, p0, p1, p2, box, axis, xi, false, left);
-        half(whole, count, vertices, p0, p1, p2, box, axis, xi, true, right);
+        ownBounds(vertices, p0, p1, p2);
+        half(whole, count, box, axis, xi, false, left);
+        half(whole, count, box, axis, xi, true, right);
     }
 
     /** The bounds of the part of {@code whole} below ({@code above} false) or above the plane. */
-    private void half(double[] whole, int count, double[] vertices, int p0, int p1, int p2, Box box, int axis, double xi,
-                      boolean above, Box dest) {
+    private void half(double[] whole, int count, Box box, int axis, double xi, boolean above, Box dest) {
         double[] part = whole;
         int n = count;
         if (n > 0 && !allInside(whole, n, axis, xi, above)) {
@@ -72,7 +74,7 @@ public final class TriangleClipper {
         }
         for (int a = 0; a < 3; a++) {
             double lo = a == axis && above ? xi : box.min(a), hi = a == axis && !above ? xi : box.max(a);
-            bound(part, n, vertices, p0, p1, p2, a, lo, hi, dest);
+            bound(part, n, a, lo, hi, dest);
         }
     }
 
@@ -95,25 +97,31 @@ public final class TriangleClipper {
         return count;
     }
 
+    /** The triangle's own bounds and the padding of its clipped bounds on each axis, as PolygonClipper computes them. */
+    private void ownBounds(double[] vertices, int p0, int p1, int p2) {
+        for (int axis = 0; axis < 3; axis++) {
+            double v0 = vertices[p0 + axis], v1 = vertices[p1 + axis], v2 = vertices[p2 + axis];
+            ownMin[axis] = Math.min(Math.min(Math.min(Double.POSITIVE_INFINITY, v0), v1), v2);
+            ownMax[axis] = Math.max(Math.max(Math.max(Double.NEGATIVE_INFINITY, v0), v1), v2);
+            double scale = Math.max(Math.max(Math.max(0, Math.abs(v0)), Math.abs(v1)), Math.abs(v2));
+            pad[axis] = PolygonClipper.PAD * scale + Double.MIN_NORMAL;
+        }
+    }
+
     /**
      * The axis's bounds of the clipped polygon, padded outward, then clamped to the triangle's own
-     * bounds and to {@code [lo, hi]} (the clipping box), as PolygonClipper does.
+     * bounds ({@link #ownBounds}, computed first) and to {@code [lo, hi]} (the clipping box), as
+     * PolygonClipper does.
      */
-    private static void bound(double[] polygon, int count, double[] vertices, int p0, int p1, int p2, int axis,
-                              double lo, double hi, Box dest) {
+    private void bound(double[] polygon, int count, int axis, double lo, double hi, Box dest) {
         double min = Double.POSITIVE_INFINITY, max = Double.NEGATIVE_INFINITY;
         for (int i = axis; i < 3 * count; i += 3) {
             double v = polygon[i];
             if (v < min) min = v;
             if (v > max) max = v;
         }
-        double v0 = vertices[p0 + axis], v1 = vertices[p1 + axis], v2 = vertices[p2 + axis];
-        double own = Math.min(Math.min(Math.min(Double.POSITIVE_INFINITY, v0), v1), v2);
-        double ownMax = Math.max(Math.max(Math.max(Double.NEGATIVE_INFINITY, v0), v1), v2);
-        double scale = Math.max(Math.max(Math.max(0, Math.abs(v0)), Math.abs(v1)), Math.abs(v2));
-        double pad = PolygonClipper.PAD * scale + Double.MIN_NORMAL;
-        dest.setMin(axis, Math.max(Math.max(min - pad, own), lo));
-        dest.setMax(axis, Math.min(Math.min(max + pad, ownMax), hi));
+        dest.setMin(axis, Math.max(Math.max(min - pad[axis], ownMin[axis]), lo));
+        dest.setMax(axis, Math.min(Math.min(max + pad[axis], ownMax[axis]), hi));
     }
 
     private static boolean allInside(double[] polygon, int count, int axis, double plane, boolean keepAbove) {

@@ -76,6 +76,13 @@ public final class KdTreeWriter {
         return base;
     }
 
+    /** Forgets everything written, keeping the arrays, so that the writer can take another (sub)tree. */
+    public void clear() {
+        nodes = 0;
+        leaves = 0;
+        refCount = 0;
+    }
+
     /** The number of nodes written so far. */
     public int nodeCount() { return nodes; }
 
