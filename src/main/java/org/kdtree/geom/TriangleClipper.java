@@ -25,6 +25,8 @@ public final class TriangleClipper {
     private double[] polygon;
     /** Per axis, the triangle's own bounds and the padding of its clipped bounds ({@link #ownBounds}). */
     private final double[] ownMin = new double[3], ownMax = new double[3], pad = new double[3];
+    /** The bounds of the two halves in {@link #clipSplit}: min x, y, z, then max x, y, z. */
+    private final double[] lower = new double[6], upper = new double[6];
 
     /** This thread's clipper. */
     public static TriangleClipper forThread() {
@@ -53,28 +55,67 @@ public final class TriangleClipper {
      */
     public void clipSplit(double[] vertices, int i0, int i1, int i2, Box box, int axis, double xi, Box left, Box right) {
         int p0 = 3 * i0, p1 = 3 * i1, p2 = 3 * i2;
-        int count = clipToBox(vertices, p0, p1, p2, box);
-        double[] whole = polygon;
         ownBounds(vertices, p0, p1, p2);
-        half(whole, count, box, axis, xi, false, left);
-        half(whole, count, box, axis, xi, true, right);
+        int count = clipToBox(vertices, p0, p1, p2, box);
+        splitBounds(polygon, count, axis, xi);
+        halfBounds(lower, box, axis, xi, false, left);
+        halfBounds(upper, box, axis, xi, true, right);
     }
 
-    /** The bounds of the part of {@code whole} below ({@code above} false) or above the plane. */
-    private void half(double[] whole, int count, Box box, int axis, double xi, boolean above, Box dest) {
-        double[] part = whole;
-        int n = count;
-        if (n > 0 && !allInside(whole, n, axis, xi, above)) {
-            part = c;
-            n = clipHalf(whole, c, n, axis, xi, above);
+    /**
+     * The points of both halves of the polygon cut at {@code x_axis = xi}, in one pass over its
+     * edges, gathered straight into bounds ({@link #lower}, {@link #upper}: min then max per axis,
+     * empty if no point): each half gets the vertices on its side and the points where an edge
+     * crosses the plane, exactly the points {@link #clipHalf} would make for it. Where an edge
+     * crosses for both halves the crossing point is computed once: the two halves' distances are
+     * negatives of each other, so their ratios t are the same double.
+     */
+    private void splitBounds(double[] poly, int count, int axis, double xi) {
+        java.util.Arrays.fill(lower, 0, 3, Double.POSITIVE_INFINITY);
+        java.util.Arrays.fill(lower, 3, 6, Double.NEGATIVE_INFINITY);
+        java.util.Arrays.fill(upper, 0, 3, Double.POSITIVE_INFINITY);
+        java.util.Arrays.fill(upper, 3, 6, Double.NEGATIVE_INFINITY);
+        for (int i = 0; i < count; i++) {
+            int p = 3 * i, q = i + 1 == count ? 0 : p + 3;
+            double below = xi - poly[p + axis], belowNext = xi - poly[q + axis];
+            double above = poly[p + axis] - xi, aboveNext = poly[q + axis] - xi;
+            boolean inLower = below >= 0, inUpper = above >= 0;
+            if (inLower) include(lower, poly[p], poly[p + 1], poly[p + 2]);
+            if (inUpper) include(upper, poly[p], poly[p + 1], poly[p + 2]);
+            if (count < 2) continue;
+            boolean crossLower = inLower != (belowNext >= 0), crossUpper = inUpper != (aboveNext >= 0);
+            if (!crossLower && !crossUpper) continue;
+            double t = crossLower ? below / (below - belowNext) : above / (above - aboveNext);
+            double x = poly[p] + t * (poly[q] - poly[p]);
+            double y = poly[p + 1] + t * (poly[q + 1] - poly[p + 1]);
+            double z = poly[p + 2] + t * (poly[q + 2] - poly[p + 2]);
+            if (axis == 0) x = xi;
+            else if (axis == 1) y = xi;
+            else z = xi;
+            if (crossLower) include(lower, x, y, z);
+            if (crossUpper) include(upper, x, y, z);
         }
-        if (n == 0) {
+    }
+
+    private static void include(double[] bounds, double x, double y, double z) {
+        if (x < bounds[0]) bounds[0] = x;
+        if (x > bounds[3]) bounds[3] = x;
+        if (y < bounds[1]) bounds[1] = y;
+        if (y > bounds[4]) bounds[4] = y;
+        if (z < bounds[2]) bounds[2] = z;
+        if (z > bounds[5]) bounds[5] = z;
+    }
+
+    /** One half's gathered bounds, padded and clamped as {@link #bound} does, into {@code dest}. */
+    private void halfBounds(double[] bounds, Box box, int axis, double xi, boolean above, Box dest) {
+        if (!(bounds[0] <= bounds[3])) {
             dest.setEmpty();
             return;
         }
         for (int a = 0; a < 3; a++) {
             double lo = a == axis && above ? xi : box.min(a), hi = a == axis && !above ? xi : box.max(a);
-            bound(part, n, a, lo, hi, dest);
+            dest.setMin(a, Math.max(Math.max(bounds[a] - pad[a], ownMin[a]), lo));
+            dest.setMax(a, Math.min(Math.min(bounds[3 + a] + pad[a], ownMax[a]), hi));
         }
     }
 
