@@ -36,26 +36,36 @@ final class BinnedPlaneSearch implements PlaneSearch {
         }
         int[] minBin = new int[bins], maxBin = new int[bins];
         double[] c = node.clippedBounds();
-        for (int axis = 0; axis < k; axis++) {
-            double lo = node.voxel().min(axis), hi = node.voxel().max(axis), w = hi - lo;
-            if (!(w > 0)) continue;
-            double scale = bins / w;
-            java.util.Arrays.fill(minBin, 0);
-            java.util.Arrays.fill(maxBin, 0);
-            for (int j = 0; j < n; j++) {
-                minBin[bin(c[2 * k * j + axis], lo, scale)]++;
-                maxBin[bin(c[2 * k * j + k + axis], lo, scale)]++;
-            }
-            int nl = 0, nr = n;
-            for (int b = 1; b < bins; b++) {
-                nl += minBin[b - 1];
-                nr -= maxBin[b - 1];
-                best.offer(sah, axis, lo + w * b / bins, nl, 0, nr);
-            }
+        for (int axis = 0; axis < k; axis++)
+            searchAxis(sah, best, axis, node.voxel().min(axis), node.voxel().max(axis), bins, minBin, maxBin, c, 0, n, k);
+    }
+
+    /**
+     * One axis of the voxel {@code [lo, hi]}: histograms of the clipped minima and maxima of the
+     * {@code n} references whose bounds are at slots {@code at ..} of {@code bounds} ({@code 2k}
+     * values a slot), then the {@code bins - 1} boundaries offered in order. Shared by this search
+     * and the {@link BinnedEngine}, so that both build the same tree.
+     */
+    static void searchAxis(SahCost sah, SahSplit best, int axis, double lo, double hi, int bins, int[] minBin, int[] maxBin,
+                           double[] bounds, int at, int n, int k) {
+        double w = hi - lo;
+        if (!(w > 0)) return;
+        double scale = bins / w;
+        java.util.Arrays.fill(minBin, 0, bins, 0);
+        java.util.Arrays.fill(maxBin, 0, bins, 0);
+        for (int j = 0, o = 2 * k * at + axis; j < n; j++, o += 2 * k) {
+            minBin[bin(bounds[o], lo, scale, bins)]++;
+            maxBin[bin(bounds[o + k], lo, scale, bins)]++;
+        }
+        int nl = 0, nr = n;
+        for (int b = 1; b < bins; b++) {
+            nl += minBin[b - 1];
+            nr -= maxBin[b - 1];
+            best.offer(sah, axis, lo + w * b / bins, nl, 0, nr);
         }
     }
 
-    private int bin(double x, double lo, double scale) {
+    private static int bin(double x, double lo, double scale, int bins) {
         int b = (int) ((x - lo) * scale);
         return b < 0 ? 0 : Math.min(b, bins - 1);
     }

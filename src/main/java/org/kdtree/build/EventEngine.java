@@ -32,6 +32,8 @@ final class EventEngine {
     private final EventSplit split;
     private final double leafCostPerPrimitive;
     private int[] leafRefs = new int[16];
+    private double[] sortPos = new double[16];
+    private int[] sortCode = new int[16];
     /** Idle engines of this build, each with its scratch memory and a writer, for forked subtrees. */
     private final java.util.Deque<EventEngine> spares;
     /** The writer of the subtree this engine builds when forked. */
@@ -60,6 +62,28 @@ final class EventEngine {
         EventRoot.write(this, rootVoxel);
         recConst(0, 0, out);
     }
+
+    /**
+     * Builds the subtree of a node handed over at depth {@code d} (by the binned engine, below its
+     * exact threshold): voxel at {@code voxel[voxelAt ..]}, references {@code refs[refsAt ..]} with
+     * clipped bounds at slots {@code boundsAt ..}; the same subtree the recursion would build.
+     */
+    void buildSubtree(int d, double[] voxel, int voxelAt, int[] refs, int refsAt, double[] bounds, int boundsAt, int n,
+                      KdTreeWriter out) {
+        EventRoot.write(this, d, voxel, voxelAt, refs, refsAt, bounds, boundsAt, n, false);
+        recConst(d, 0, out);
+    }
+
+    /** Sort scratch for at least {@code n} positions (and as many codes, {@link #sortCodes}). */
+    double[] sortPositions(int n) {
+        if (sortPos.length < n) {
+            sortPos = new double[EventLevels.grown(sortPos.length, n)];
+            sortCode = new int[sortPos.length];
+        }
+        return sortPos;
+    }
+
+    int[] sortCodes() { return sortCode; }
 
     private EventEngine(EventEngine parent) {
         this.prims = parent.prims;

@@ -4,9 +4,10 @@ package org.kdtree.build;
  * Sorts events, kept as parallel arrays of positions and int codes, by position. Only the
  * position order matters: the sweep counts the kinds of all events at one position together.
  *
- * <p>Large arrays (the root's events) go through an LSD radix sort on the order-preserving
+ * <p>Large ranges (the root's events) go through an LSD radix sort on the order-preserving
  * bits of the doubles, skipping the digits where all keys agree (most of the exponent);
- * small ones (a node's straddlers) through insertion or merge sort. No objects per event.
+ * small ones (a node's straddlers) through insertion sort, and the ones between through a
+ * merge sort in the caller's scratch arrays. No objects per event.
  */
 final class EventSort {
     private static final int INSERTION = 32;
@@ -17,25 +18,15 @@ final class EventSort {
     private EventSort() {
     }
 
-    /** Sorts {@code pos[from..to)} ascending, moving {@code code} along. */
-    static void sort(double[] pos, int[] code, int from, int to) {
+    /**
+     * Sorts {@code pos[from..to)} ascending, moving {@code code} along; {@code tmpPos} and
+     * {@code tmpCode} are scratch for at least {@code to - from} events.
+     */
+    static void sort(double[] pos, int[] code, int from, int to, double[] tmpPos, int[] tmpCode) {
         int n = to - from;
         if (n <= INSERTION) insertion(pos, code, from, to);
-        else if (from == 0) sort(pos, code, n);
-        else {
-            double[] p = java.util.Arrays.copyOfRange(pos, from, to);
-            int[] c = java.util.Arrays.copyOfRange(code, from, to);
-            sort(p, c, n);
-            System.arraycopy(p, 0, pos, from, n);
-            System.arraycopy(c, 0, code, from, n);
-        }
-    }
-
-    /** Sorts {@code pos[0..n)} ascending, moving {@code code} along. */
-    static void sort(double[] pos, int[] code, int n) {
-        if (n <= INSERTION) insertion(pos, code, 0, n);
-        else if (n < RADIX_MIN) mergeSort(pos, code, n);
-        else radix(pos, code, n);
+        else if (n < RADIX_MIN) mergeSort(pos, code, from, n, tmpPos, tmpCode);
+        else radix(pos, code, from, n, tmpCode);
     }
 
     /** Unsigned-comparable bits of a double: the order of the doubles (with -0.0 below 0.0). */
@@ -59,51 +50,53 @@ final class EventSort {
         }
     }
 
-    private static void mergeSort(double[] pos, int[] code, int n) {
-        double[] tp = new double[n];
-        int[] tc = new int[n];
-        for (int i = 0; i < n; i += INSERTION) insertion(pos, code, i, Math.min(n, i + INSERTION));
+    /** Runs of {@link #INSERTION} sorted in place, then merged pairwise through the scratch arrays. */
+    private static void mergeSort(double[] pos, int[] code, int from, int n, double[] tp, int[] tc) {
+        for (int i = 0; i < n; i += INSERTION) insertion(pos, code, from + i, from + Math.min(n, i + INSERTION));
         double[] sp = pos, dp = tp;
         int[] sc = code, dc = tc;
+        int sAt = from, dAt = 0;
         for (int w = INSERTION; w < n; w *= 2) {
             for (int lo = 0; lo < n; lo += 2 * w) {
                 int mid = Math.min(n, lo + w), hi = Math.min(n, lo + 2 * w);
-                merge(sp, sc, lo, mid, sp, sc, mid, hi, dp, dc, lo);
+                merge(sp, sc, sAt + lo, sAt + mid, sAt + hi, dp, dc, dAt + lo);
             }
             double[] t = sp; sp = dp; dp = t;
             int[] u = sc; sc = dc; dc = u;
+            int v = sAt; sAt = dAt; dAt = v;
         }
         if (sp != pos) {
-            System.arraycopy(sp, 0, pos, 0, n);
-            System.arraycopy(sc, 0, code, 0, n);
+            System.arraycopy(sp, sAt, pos, from, n);
+            System.arraycopy(sc, sAt, code, from, n);
         }
     }
 
-    /** Merges two sorted runs {@code a[ia..ea)} and {@code b[ib..eb)} into {@code d} from {@code at}. */
-    static int merge(double[] ap, int[] ac, int ia, int ea, double[] bp, int[] bc, int ib, int eb,
-                     double[] dp, int[] dc, int at) {
-        while (ia < ea && ib < eb) {
-            if (bp[ib] < ap[ia]) { dp[at] = bp[ib]; dc[at++] = bc[ib++]; }
-            else { dp[at] = ap[ia]; dc[at++] = ac[ia++]; }
+    /** Merges the sorted runs {@code [ia, mid)} and {@code [mid, end)} of one array into {@code d} from {@code at}. */
+    private static void merge(double[] p, int[] c, int ia, int mid, int end, double[] dp, int[] dc, int at) {
+        int ib = mid;
+        while (ia < mid && ib < end) {
+            if (p[ib] < p[ia]) { dp[at] = p[ib]; dc[at++] = c[ib++]; }
+            else { dp[at] = p[ia]; dc[at++] = c[ia++]; }
         }
-        while (ia < ea) { dp[at] = ap[ia]; dc[at++] = ac[ia++]; }
-        while (ib < eb) { dp[at] = bp[ib]; dc[at++] = bc[ib++]; }
-        return at;
+        while (ia < mid) { dp[at] = p[ia]; dc[at++] = c[ia++]; }
+        while (ib < end) { dp[at] = p[ib]; dc[at++] = c[ib++]; }
     }
 
-    private static void radix(double[] pos, int[] code, int n) {
+    private static void radix(double[] pos, int[] code, int from, int n, int[] scratchCode) {
         long[] keys = new long[n], k2 = new long[n];
-        int[] c2 = new int[n];
+        int[] c2 = scratchCode.length >= n ? scratchCode : new int[n];
+        int[] c1 = new int[n];
+        System.arraycopy(code, from, c1, 0, n);
         long and = -1L, or = 0;
         for (int i = 0; i < n; i++) {
-            long k = key(pos[i]);
+            long k = key(pos[from + i]);
             keys[i] = k;
             and &= k;
             or |= k;
         }
         long varying = and ^ or;
         long[] sk = keys, dk = k2;
-        int[] sc = code, dc = c2;
+        int[] sc = c1, dc = c2;
         int[] count = new int[BUCKETS];
         for (int shift = 0; shift < 64; shift += DIGIT_BITS) {
             if (((varying >>> shift) & (BUCKETS - 1)) == 0) continue;
@@ -119,8 +112,8 @@ final class EventSort {
             long[] t = sk; sk = dk; dk = t;
             int[] u = sc; sc = dc; dc = u;
         }
-        if (sc != code) System.arraycopy(sc, 0, code, 0, n);
-        for (int i = 0; i < n; i++) pos[i] = fromKey(sk[i]);
+        System.arraycopy(sc, 0, code, from, n);
+        for (int i = 0; i < n; i++) pos[from + i] = fromKey(sk[i]);
     }
 
     private static double fromKey(long k) {

@@ -24,8 +24,8 @@ final class EventSplit {
     /** Straddler bounds, 2k values a slot: slots [0, nb) left child's, [nb, 2nb) right's, [2nb, 3nb) parent's. */
     private double[] bounds = new double[0];
     /** One child's new events on one axis. */
-    private double[] extraPos = new double[16];
-    private int[] extraCode = new int[16];
+    private double[] extraPos = new double[16], sortPos = new double[16];
+    private int[] extraCode = new int[16], sortCode = new int[16];
     /** Per primitive, its straddler slot (only without perfect splits, to recover parent bounds). */
     private int[] slotOf;
     private final Box voxel, clipLeft, clipRight;
@@ -193,12 +193,14 @@ final class EventSplit {
         if (extraPos.length < 2 * nb) {
             extraPos = new double[EventLevels.grown(extraPos.length, 2 * nb)];
             extraCode = new int[extraPos.length];
+            sortPos = new double[extraPos.length];
+            sortCode = new int[extraPos.length];
         }
         int m = 0;
         for (int i = 0; i < nb; i++)
             if ((goesTo[i] & (1 << child)) != 0)
                 m = EventRoot.addEvents(bounds, k, child * nb + i, straddlers[i], axis, extraPos, extraCode, m);
-        EventSort.sort(extraPos, extraCode, m);
+        EventSort.sort(extraPos, extraCode, 0, m, sortPos, sortCode);
         mergeBackward(outPos, outCode, from, end, extraPos, extraCode, m);
         return end + m;
     }

@@ -12,10 +12,12 @@ final class Partition {
     /** Where a primitive goes relative to a split plane, from its clipped bounds on the plane's axis. */
     enum Side { LEFT, RIGHT, BOTH }
 
-    /** The side of a primitive with clipped bounds [lo, hi] on the plane's axis. */
-    static Side classify(double lo, double hi, SplitPlane p) {
-        double xi = p.position();
-        if (lo == xi && hi == xi) return p.planarLeft() ? Side.LEFT : Side.RIGHT;
+    /**
+     * The side of a primitive with clipped bounds [lo, hi] on the axis of the plane at {@code xi}:
+     * one lying in the plane goes where {@code planarLeft} says.
+     */
+    static Side classify(double lo, double hi, double xi, boolean planarLeft) {
+        if (lo == xi && hi == xi) return planarLeft ? Side.LEFT : Side.RIGHT;
         if (hi <= xi) return Side.LEFT;
         if (lo >= xi) return Side.RIGHT;
         return Side.BOTH;
@@ -27,7 +29,7 @@ final class Partition {
         Side[] side = new Side[n];
         int nl = 0, nr = 0;
         for (int j = 0; j < n; j++) {
-            side[j] = classify(node.clippedMin(j, axis), node.clippedMax(j, axis), p);
+            side[j] = classify(node.clippedMin(j, axis), node.clippedMax(j, axis), p.position(), p.planarLeft());
             if (side[j] != Side.RIGHT) nl++;
             if (side[j] != Side.LEFT) nr++;
         }

@@ -71,14 +71,15 @@ public class SahBuilder extends KdTreeBuilder {
     }
 
     /**
-     * The event algorithm runs in its own engine, which builds the tree the recursion would;
-     * a subclass (which may override terminate or findPlane) always gets the recursion.
+     * The event and binned algorithms run in engines of their own ({@link EventEngine},
+     * {@link BinnedEngine}), which build the tree the recursion would; a subclass (which may
+     * override terminate or findPlane) always gets the recursion.
      */
     @Override protected void construct(BuildContext context, Box rootVoxel, KdTreeWriter out) {
-        if (algorithm == Algorithm.EVENT && getClass() == SahBuilder.class && EventEngine.applies(context))
-            new EventEngine(this, context).build(rootVoxel, out);
-        else
-            super.construct(context, rootVoxel, out);
+        boolean engine = getClass() == SahBuilder.class && EventEngine.applies(context);
+        if (engine && algorithm == Algorithm.EVENT) new EventEngine(this, context).build(rootVoxel, out);
+        else if (engine && algorithm == Algorithm.BINNED) new BinnedEngine(this, context).build(rootVoxel, out);
+        else super.construct(context, rootVoxel, out);
     }
 
     @Override protected SplitPlane findPlane(BuildContext context, BuildNode node) {

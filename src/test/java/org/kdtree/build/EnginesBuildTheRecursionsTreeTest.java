@@ -1,0 +1,82 @@
+package org.kdtree.build;
+
+import static org.assertj.core.api.Assertions.assertThat;
+
+import java.util.stream.Stream;
+import org.junit.jupiter.params.ParameterizedTest;
+import org.junit.jupiter.params.provider.Arguments;
+import org.junit.jupiter.params.provider.MethodSource;
+import org.kdtree.shape.Primitives;
+import org.kdtree.shape.TriangleMesh;
+import org.kdtree.tree.KdTree;
+
+/**
+ * The primitive-array engines under {@link SahBuilder} build the very tree that the talk's
+ * recursion ({@link KdTreeBuilder}, Algorithm 1) builds with the same settings. A subclass of
+ * {@link SahBuilder} always gets the recursion, so it is the reference here.
+ */
+class EnginesBuildTheRecursionsTreeTest {
+    static Stream<Arguments> scenes() {
+        return Stream.of(
+                Arguments.of("random 3-D", Scenes.randomTriangles(600, 0.2, 31)),
+                Arguments.of("clustered", Scenes.clustered(3000, 32)),
+                Arguments.of("bumpy sphere", Scenes.bumpySphere(30, 40, 33)),
+                Arguments.of("planar and degenerate", Scenes.planarAndDegenerate(34)),
+                Arguments.of("random 2-D", Scenes.random2D(800, 35)),
+                Arguments.of("planes on bin boundaries", planesOnBinBoundaries()));
+    }
+
+    /**
+     * Layers of flat squares at z = 1 .. 7 in the box [0, 8]^3, where 16 bins put boundaries,
+     * among tilted triangles: binned planes fall on planar primitives, whose side matters.
+     */
+    static TriangleMesh planesOnBinBoundaries() {
+        java.util.Random r = new java.util.Random(36);
+        java.util.List<Double> v = new java.util.ArrayList<>();
+        for (int z = 1; z < 8; z++)
+            for (int i = 0; i < 8; i++) {
+                double x = i, y = r.nextInt(8);
+                for (double c : new double[] {x, y, z, x + 1, y, z, x, y + 1, z}) v.add(c);
+            }
+        for (int i = 0; i < 300; i++) {
+            double x = 7 * r.nextDouble(), y = 7 * r.nextDouble(), z = 7 * r.nextDouble();
+            for (double c : new double[] {x, y, z, x + 1, y, z + 0.5, x, y + 1, z + 1}) v.add(c);
+        }
+        for (double c : new double[] {0, 0, 0, 8, 8, 8, 0, 8, 0}) v.add(c);
+        double[] vertices = v.stream().mapToDouble(Double::doubleValue).toArray();
+        int[] indices = new int[vertices.length / 3];
+        for (int i = 0; i < indices.length; i++) indices[i] = i;
+        return new TriangleMesh(vertices, indices);
+    }
+
+    @ParameterizedTest(name = "{0}")
+    @MethodSource("scenes")
+    void binnedEngine(String name, Primitives scene) {
+        for (int exactBelow : new int[] {0, 16, 64}) {
+            for (boolean perfect : new boolean[] {true, false}) {
+                SahBuilder engine = binned(new SahBuilder(), exactBelow, perfect);
+                SahBuilder recursion = binned(new SahBuilder() {}, exactBelow, perfect);
+                KdTree expected = recursion.build(scene);
+                assertThat(expected.nodeCount()).as("%s splits", name).isGreaterThan(8);
+                SahAlgorithmsTest.assertSameTree(engine.build(scene), expected,
+                        name + " exactBelow=" + exactBelow + " perfect=" + perfect);
+                SahAlgorithmsTest.assertSameTree(engine.threads(2).build(scene), expected, name + " 2 threads");
+            }
+        }
+    }
+
+    @ParameterizedTest(name = "{0}")
+    @MethodSource("scenes")
+    void eventEngine(String name, Primitives scene) {
+        for (boolean perfect : new boolean[] {true, false}) {
+            KdTree expected = new SahBuilder() {}.algorithm(SahBuilder.Algorithm.EVENT).perfectSplits(perfect).build(scene);
+            SahAlgorithmsTest.assertSameTree(new SahBuilder().perfectSplits(perfect).build(scene), expected, name);
+            SahAlgorithmsTest.assertSameTree(new SahBuilder().perfectSplits(perfect).maxDepth(6).threads(2).build(scene),
+                    new SahBuilder() {}.perfectSplits(perfect).maxDepth(6).build(scene), name + " depth 6, 2 threads");
+        }
+    }
+
+    private static SahBuilder binned(SahBuilder b, int exactBelow, boolean perfect) {
+        return b.algorithm(SahBuilder.Algorithm.BINNED).bins(16).exactBelow(exactBelow).perfectSplits(perfect);
+    }
+}
