@@ -48,16 +48,9 @@ final class EventSplit {
     boolean split(int d, int c, int n, int axis, double xi, boolean planarLeft) {
         int[] code = levels.codes(d), meta = levels.meta(d);
         int at = levels.metaAt(c), from = meta[at + 1 + 2 * axis], to = meta[at + 2 + 2 * axis];
-        classify(levels.positions(d), code, from, to, xi, planarLeft ? LEFT : RIGHT);
-        int nb = 0, nl = 0, nr = 0;
         if (straddlers.length < n) { straddlers = new int[n]; goesTo = new int[n]; }
-        for (int e = from; e < to; e++) {
-            if (EventCode.kind(code[e]) == EventCode.END) continue;
-            int p = EventCode.primitive(code[e]), s = side[p];
-            nl += s & 1;
-            nr += s >>> 1;
-            if (s == STRADDLES) straddlers[nb++] = p;
-        }
+        long counts = classify(levels.positions(d), code, from, to, xi, planarLeft ? LEFT : RIGHT);
+        int nl = (int) (counts >>> 32), nb = (int) counts, nr = n - nl - nb;
         long added = clipStraddlers(d, c, axis, xi, nb);
         int sizeL = nl + (int) (added >>> 32), sizeR = nr + (int) added;
         if (sizeL == n && sizeR == n) return false;
@@ -68,19 +61,33 @@ final class EventSplit {
     /**
      * The side of each primitive from its events on the split axis (its clipped bounds there),
      * the same decision as {@link Partition#classify}: a start at or after the plane means right
-     * only, an end at or before it left only (a start before it came first and said straddles);
-     * a planar event goes by its position, and to the chosen side when it lies in the plane.
+     * only, an end at or before it left only (its start came first and said straddles); a planar
+     * event goes by its position, and to the chosen side when it lies in the plane. A primitive
+     * whose end lies beyond the plane and whose start said straddles is a straddler: it goes to
+     * {@link #straddlers}. Returns the number of left-only primitives and of straddlers, as
+     * {@code left << 32 | straddlers}.
      */
-    private void classify(double[] pos, int[] code, int from, int to, double xi, byte planarSide) {
+    private long classify(double[] pos, int[] code, int from, int to, double xi, byte planarSide) {
+        int left = 0, nb = 0;
         for (int e = from; e < to; e++) {
             int p = EventCode.primitive(code[e]);
             double x = pos[e];
             switch (EventCode.kind(code[e])) {
                 case EventCode.START -> side[p] = x >= xi ? RIGHT : STRADDLES;
-                case EventCode.END -> { if (x <= xi) side[p] = LEFT; }
-                default -> side[p] = x == xi ? planarSide : x < xi ? LEFT : RIGHT;
+                case EventCode.END -> {
+                    if (x <= xi) {
+                        side[p] = LEFT;
+                        left++;
+                    } else if (side[p] == STRADDLES) straddlers[nb++] = p;
+                }
+                default -> {
+                    byte s = x == xi ? planarSide : x < xi ? LEFT : RIGHT;
+                    side[p] = s;
+                    left += s & 1;
+                }
             }
         }
+        return (long) left << 32 | nb;
     }
 
     /**
