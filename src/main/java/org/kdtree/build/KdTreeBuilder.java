@@ -35,7 +35,11 @@ public abstract class KdTreeBuilder {
     /** Depth beyond which no setting can go: 2^64 voxels would not fit in any memory. */
     public static final int DEPTH_LIMIT = 64;
 
+    /** c in the automatic depth cap {@code 8 + c log2 N} (pbrt's and Wald and Havran's 1.3). */
+    public static final double DEFAULT_DEPTH_FACTOR = 1.3;
+
     private int maxDepth = -1;
+    private double depthFactor = DEFAULT_DEPTH_FACTOR;
     private CostModel costModel = CostModel.WALD_HAVRAN;
     private boolean perfectSplits = true;
     private int threads = 1;
@@ -43,7 +47,7 @@ public abstract class KdTreeBuilder {
     /** Builds the tree of {@code primitives}, starting from their bounding box (constKdTree). */
     public final KdTree build(Primitives primitives) {
         Box rootVoxel = rootVoxel(primitives);
-        int depthCap = maxDepth >= 0 ? maxDepth : defaultMaxDepth(primitives.size());
+        int depthCap = depthCap(primitives.size());
         KdTreeWriter out = new KdTreeWriter();
         Build build = new Build(primitives, depthCap, threads == 1 ? Integer.MAX_VALUE : forkThreshold(primitives.size(), threads));
         if (threads == 1) {
@@ -177,8 +181,17 @@ public abstract class KdTreeBuilder {
 
     /** The default depth cap, {@code round(8 + 1.3 log2 N)}, as pbrt and Wald and Havran use. */
     public static int defaultMaxDepth(int n) {
+        return automaticDepthCap(n, DEFAULT_DEPTH_FACTOR);
+    }
+
+    private static int automaticDepthCap(int n, double factor) {
         double log2 = n <= 1 ? 0 : Math.log(n) / Math.log(2);
-        return (int) Math.round(8 + 1.3 * log2);
+        return (int) Math.min(DEPTH_LIMIT, Math.round(8 + factor * log2));
+    }
+
+    /** The depth cap a build over {@code n} primitives uses: Kmaxdepth if set, else {@code round(8 + c log2 N)}. */
+    public int depthCap(int n) {
+        return maxDepth >= 0 ? maxDepth : automaticDepthCap(n, depthFactor);
     }
 
     // ---- settings ----
@@ -191,6 +204,19 @@ public abstract class KdTreeBuilder {
         if (depth < -1 || depth > DEPTH_LIMIT)
             throw new IllegalArgumentException("max depth must be -1 (default) or 0.." + DEPTH_LIMIT + ", got " + depth);
         this.maxDepth = depth;
+        return this;
+    }
+
+    /** c in the automatic depth cap {@code 8 + c log2 N} (default 1.3), used when Kmaxdepth is not set. */
+    public double depthFactor() { return depthFactor; }
+
+    /**
+     * Sets c (0 .. 4) in the automatic depth cap {@code 8 + c log2 N}: a lower cap builds a
+     * smaller tree faster at some cost in quality (the SAH's quality presets set it).
+     */
+    public KdTreeBuilder depthFactor(double c) {
+        if (!(c >= 0 && c <= 4)) throw new IllegalArgumentException("depth factor must be in 0..4, got " + c);
+        this.depthFactor = c;
         return this;
     }
 
@@ -227,7 +253,8 @@ public abstract class KdTreeBuilder {
 
     /** A one-line summary of the settings, e.g. for the command line. */
     public String describeSettings() {
-        return "maxDepth=" + (maxDepth < 0 ? "auto" : maxDepth) + " Kt=" + costModel.kt() + " Ki=" + costModel.ki()
+        return "maxDepth=" + (maxDepth >= 0 ? String.valueOf(maxDepth)
+                : depthFactor == DEFAULT_DEPTH_FACTOR ? "auto" : "auto(8+" + depthFactor + " log2 N)") + " Kt=" + costModel.kt() + " Ki=" + costModel.ki()
                 + " perfectSplits=" + perfectSplits + (threads > 1 ? " threads=" + threads : "");
     }
 

@@ -135,6 +135,11 @@ public class SahBuilder extends KdTreeBuilder {
 
     @Override public SahBuilder maxDepth(int depth) { super.maxDepth(depth); return this; }
 
+    @Override public SahBuilder depthFactor(double c) { super.depthFactor(c); return this; }
+
+    /** Applies a named preset ({@link Quality}): the event algorithm under that preset's depth cap. */
+    public SahBuilder quality(Quality q) { return q.applyTo(this); }
+
     @Override public SahBuilder perfectSplits(boolean on) { super.perfectSplits(on); return this; }
 
     @Override public SahBuilder threads(int n) { super.threads(n); return this; }

@@ -3,6 +3,7 @@ package org.kdtree.cli;
 import org.kdtree.build.Builders;
 import org.kdtree.build.CyclingAxisBuilder;
 import org.kdtree.build.KdTreeBuilder;
+import org.kdtree.build.Quality;
 import org.kdtree.build.SahBuilder;
 import org.kdtree.tree.CostModel;
 import picocli.CommandLine.Option;
@@ -28,6 +29,10 @@ public final class BuilderOptions {
     @Option(names = "--min-prims", description = "Kmintri for the median builders (default 2).")
     Integer minPrims;
 
+    @Option(names = "--quality", description = "SAH preset: ${COMPLETION-CANDIDATES}: fast (depth cap 8 + 0.8 log2 N), "
+            + "balanced (8 + 1.0 log2 N), exact (the default tree); --algorithm and --max-depth, if given, override it.")
+    Quality quality;
+
     @Option(names = "--algorithm", description = "SAH plane search: ${COMPLETION-CANDIDATES} (same tree, different time).")
     SahBuilder.Algorithm algorithm;
 
@@ -50,12 +55,15 @@ public final class BuilderOptions {
         }
         if (noPerfectSplits) b.perfectSplits(false);
         if (b instanceof SahBuilder sah) {
+            if (quality != null) sah.quality(quality);
+            if (maxDepth != null) sah.maxDepth(maxDepth);
             if (lambda != null) sah.emptyWeight(lambda);
             if (algorithm != null) sah.algorithm(algorithm);
             if (bins != null) sah.bins(bins);
             if (exactBelow != null) sah.exactBelow(exactBelow);
-        } else if (lambda != null || algorithm != null || bins != null || exactBelow != null) {
-            throw new IllegalArgumentException("--lambda and --algorithm apply to the sah builder only (so do --bins and --exact-below)");
+        } else if (lambda != null || algorithm != null || bins != null || exactBelow != null || quality != null) {
+            throw new IllegalArgumentException(
+                    "--lambda, --algorithm, --quality, --bins and --exact-below apply to the sah builder only");
         }
         if (minPrims != null) {
             if (b instanceof CyclingAxisBuilder c) c.minPrimitives(minPrims);

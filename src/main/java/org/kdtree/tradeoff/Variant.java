@@ -6,6 +6,7 @@ import java.util.function.Supplier;
 import org.kdtree.build.KdTreeBuilder;
 import org.kdtree.build.MedianPlaneBuilder;
 import org.kdtree.build.ObjectMedianBuilder;
+import org.kdtree.build.Quality;
 import org.kdtree.build.SahBuilder;
 import org.kdtree.build.SahBuilder.Algorithm;
 
@@ -21,7 +22,7 @@ public record Variant(String name, Supplier<KdTreeBuilder> factory) {
      * Every variant the study compares: the two median builders, exact SAH with lambda 1.0, 0.8
      * and 0.5 (and the sorted algorithm, same tree, for its build time), binned SAH with B = 8,
      * 32, 256 (and pure binning without the exact sweep of small nodes), SAH without perfect
-     * splits, and SAH under depth caps 12, 16 and 20.
+     * splits, SAH under depth caps 12, 16 and 20, and the quality presets fast and balanced.
      */
     public static List<Variant> all() {
         List<Variant> v = new ArrayList<>();
@@ -36,6 +37,8 @@ public record Variant(String name, Supplier<KdTreeBuilder> factory) {
         v.add(new Variant("sah-no-perfect-splits", () -> new SahBuilder().perfectSplits(false)));
         for (int d : new int[] {12, 16, 20})
             v.add(new Variant("sah-maxdepth-" + d, () -> new SahBuilder().maxDepth(d)));
+        v.add(new Variant("sah-fast", () -> new SahBuilder().quality(Quality.FAST)));
+        v.add(new Variant("sah-balanced", () -> new SahBuilder().quality(Quality.BALANCED)));
         return v;
     }
 

@@ -38,7 +38,26 @@ class StatsCommandTest {
         assertThat(r.code()).isEqualTo(2);
         assertThat(r.err()).contains("unknown builder 'bvh'").doesNotContain("Exception");
         r = run("stats", "scenes/talk-figures.scene2d", "--builder", "median-plane", "--lambda", "0.5");
-        assertThat(r.err()).contains("--lambda and --algorithm apply to the sah builder only");
+        assertThat(r.err()).contains("--lambda, --algorithm, --quality, --bins and --exact-below apply to the sah builder only");
+    }
+
+    @Test void qualityPresetsBuildSmallerTreesAndAnExplicitDepthWins() {
+        CliRun exact = run("stats", "scenes/clustered-spheres.obj", "--runs", "1", "--warmup", "0");
+        CliRun fast = run("stats", "scenes/clustered-spheres.obj", "--quality", "fast", "--runs", "1", "--warmup", "0");
+        assertThat(fast.code()).as(fast.err()).isZero();
+        assertThat(fast.out()).contains("maxDepth=auto(8+0.8 log2 N)");
+        assertThat(nodes(fast.out())).isLessThan(nodes(exact.out()));
+        CliRun capped = run("stats", "scenes/clustered-spheres.obj", "--quality", "fast", "--max-depth", "5", "--runs", "1", "--warmup", "0");
+        assertThat(capped.out()).contains("maxDepth=5", "max depth: 5");
+        CliRun bad = run("stats", "scenes/clustered-spheres.obj", "--quality", "fastest");
+        assertThat(bad.code()).isEqualTo(2);
+        assertThat(bad.err()).contains("--quality").contains("FAST").doesNotContain("Exception");
+    }
+
+    private static int nodes(String statsOutput) {
+        java.util.regex.Matcher m = java.util.regex.Pattern.compile("nodes: (\\d+)").matcher(statsOutput);
+        assertThat(m.find()).as(statsOutput).isTrue();
+        return Integer.parseInt(m.group(1));
     }
 
     @Test void gridRepeatsAMeshAndRefusesA2DScene() {

@@ -47,7 +47,7 @@ public final class TreeChecks {
     }
 
     static void checkDepth(KdTreeBuilder b, Primitives prims, TreeInspector in) {
-        int cap = b.maxDepth() >= 0 ? b.maxDepth() : KdTreeBuilder.defaultMaxDepth(prims.size());
+        int cap = b.depthCap(prims.size());
         for (TreeInspector.Leaf l : in.leaves())
             if (l.depth() > cap)
                 fail(b.name() + ": leaf at depth " + l.depth() + " but the depth cap Kmaxdepth is " + cap
