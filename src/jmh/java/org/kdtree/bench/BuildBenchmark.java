@@ -4,6 +4,7 @@ import java.util.concurrent.TimeUnit;
 import org.kdtree.build.KdTreeBuilder;
 import org.kdtree.build.MedianPlaneBuilder;
 import org.kdtree.build.ObjectMedianBuilder;
+import org.kdtree.build.Quality;
 import org.kdtree.build.SahBuilder;
 import org.kdtree.shape.TriangleMesh;
 import org.kdtree.tree.KdTree;
@@ -64,6 +65,8 @@ public class BuildBenchmark {
             case "sah-sorted" -> new SahBuilder().algorithm(SahBuilder.Algorithm.SORTED);
             case "sah-event" -> new SahBuilder().algorithm(SahBuilder.Algorithm.EVENT);
             case "sah-binned" -> new SahBuilder().algorithm(SahBuilder.Algorithm.BINNED);
+            case "sah-balanced" -> new SahBuilder().quality(Quality.BALANCED);
+            case "sah-fast" -> new SahBuilder().quality(Quality.FAST);
             case "median-plane" -> new MedianPlaneBuilder();
             case "object-median" -> new ObjectMedianBuilder();
             default -> throw new IllegalArgumentException("unknown builder " + name);

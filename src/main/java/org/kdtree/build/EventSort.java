@@ -7,7 +7,7 @@ package org.kdtree.build;
  * <p>Large ranges (the root's events) go through an LSD radix sort on the order-preserving
  * bits of the doubles, skipping the digits where all keys agree (most of the exponent);
  * small ones (a node's straddlers) through insertion sort, and the ones between through a
- * merge sort in the caller's scratch arrays. No objects per event.
+ * merge sort. Both work in the caller's scratch arrays: no objects per event, no allocation.
  */
 final class EventSort {
     private static final int INSERTION = 32;
@@ -26,7 +26,7 @@ final class EventSort {
         int n = to - from;
         if (n <= INSERTION) insertion(pos, code, from, to);
         else if (n < RADIX_MIN) mergeSort(pos, code, from, n, tmpPos, tmpCode);
-        else radix(pos, code, from, n, tmpCode);
+        else radix(pos, code, from, n, tmpPos, tmpCode);
     }
 
     /** Unsigned-comparable bits of a double: the order of the doubles (with -0.0 below 0.0). */
@@ -82,42 +82,44 @@ final class EventSort {
         while (ib < end) { dp[at] = p[ib]; dc[at++] = c[ib++]; }
     }
 
-    private static void radix(double[] pos, int[] code, int from, int n, int[] scratchCode) {
-        long[] keys = new long[n], k2 = new long[n];
-        int[] c2 = scratchCode.length >= n ? scratchCode : new int[n];
-        int[] c1 = new int[n];
-        System.arraycopy(code, from, c1, 0, n);
+    /**
+     * LSD radix sort of {@code pos[from .. from + n)} on {@link #key}, recomputed from the doubles
+     * at each pass, ping-ponging through {@code tp} and {@code tc}: nothing is allocated but the
+     * bucket counts.
+     */
+    private static void radix(double[] pos, int[] code, int from, int n, double[] tp, int[] tc) {
         long and = -1L, or = 0;
-        for (int i = 0; i < n; i++) {
-            long k = key(pos[from + i]);
-            keys[i] = k;
+        for (int i = from; i < from + n; i++) {
+            long k = key(pos[i]);
             and &= k;
             or |= k;
         }
         long varying = and ^ or;
-        long[] sk = keys, dk = k2;
-        int[] sc = c1, dc = c2;
+        double[] sp = pos, dp = tp;
+        int[] sc = code, dc = tc;
+        int sAt = from, dAt = 0;
         int[] count = new int[BUCKETS];
         for (int shift = 0; shift < 64; shift += DIGIT_BITS) {
             if (((varying >>> shift) & (BUCKETS - 1)) == 0) continue;
             java.util.Arrays.fill(count, 0);
-            for (int i = 0; i < n; i++) count[(int) (sk[i] >>> shift) & (BUCKETS - 1)]++;
-            int sum = 0;
-            for (int b = 0; b < BUCKETS; b++) { int c = count[b]; count[b] = sum; sum += c; }
-            for (int i = 0; i < n; i++) {
-                int at = count[(int) (sk[i] >>> shift) & (BUCKETS - 1)]++;
-                dk[at] = sk[i];
+            for (int i = sAt; i < sAt + n; i++) count[digit(sp[i], shift)]++;
+            for (int b = 0, sum = 0; b < BUCKETS; b++) { int c = count[b]; count[b] = sum; sum += c; }
+            for (int i = sAt; i < sAt + n; i++) {
+                int at = dAt + count[digit(sp[i], shift)]++;
+                dp[at] = sp[i];
                 dc[at] = sc[i];
             }
-            long[] t = sk; sk = dk; dk = t;
+            double[] t = sp; sp = dp; dp = t;
             int[] u = sc; sc = dc; dc = u;
+            int v = sAt; sAt = dAt; dAt = v;
         }
-        System.arraycopy(sc, 0, code, from, n);
-        for (int i = 0; i < n; i++) pos[from + i] = fromKey(sk[i]);
+        if (sp != pos) {
+            System.arraycopy(sp, sAt, pos, from, n);
+            System.arraycopy(sc, sAt, code, from, n);
+        }
     }
 
-    private static double fromKey(long k) {
-        long b = k < 0 ? k ^ Long.MIN_VALUE : ~k;
-        return Double.longBitsToDouble(b);
+    private static int digit(double x, int shift) {
+        return (int) (key(x) >>> shift) & (BUCKETS - 1);
     }
 }

@@ -76,6 +76,20 @@ public final class KdTreeWriter {
         return base;
     }
 
+    /**
+     * Makes room for {@code nodes} nodes, about half of them leaves, and {@code refs} leaf
+     * references, so that a builder that can estimate its tree's size spares the copies of
+     * growing by doubling. Writing beyond it still works.
+     */
+    public void reserve(int nodes, int refs) {
+        if (word.length < nodes) {
+            word = Arrays.copyOf(word, nodes);
+            split = Arrays.copyOf(split, nodes);
+        }
+        if (leafStart.length < nodes / 2 + 2) leafStart = Arrays.copyOf(leafStart, nodes / 2 + 2);
+        if (this.refs.length < refs) this.refs = Arrays.copyOf(this.refs, refs);
+    }
+
     /** Forgets everything written, keeping the arrays, so that the writer can take another (sub)tree. */
     public void clear() {
         nodes = 0;
