@@ -45,7 +45,7 @@ public final class RaycastCommand implements Callable<Integer> {
     int grid;
 
     @Option(names = "--threads", defaultValue = "1", paramLabel = "T",
-            description = "Threads tracing each ray set (default: ${DEFAULT-VALUE}).")
+            description = "Threads building the tree and tracing each ray set (default: ${DEFAULT-VALUE}).")
     int threads;
 
     @Option(names = "--rays", paramLabel = "FILE", description = "Trace the rays of FILE instead of the benchmark sets.")
@@ -69,7 +69,7 @@ public final class RaycastCommand implements Callable<Integer> {
             throw new IllegalArgumentException("--rays and --hits go together");
         if (runs < 1 || warmup < 0) throw new IllegalArgumentException("--runs must be >= 1 and --warmup >= 0");
         TriangleMesh scene = ProceduralScenes.grid(ObjMeshReader.read(mesh), grid);
-        KdTreeBuilder builder = options.create();
+        KdTreeBuilder builder = options.create().threads(threads);
         if (raysFile != null) return traceFile(scene, builder);
         return benchmark(scene, builder);
     }
