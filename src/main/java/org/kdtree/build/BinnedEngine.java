@@ -128,8 +128,10 @@ final class BinnedEngine {
         BinnedEngine spare = spares.poll();
         BinnedEngine other = spare != null ? spare : new BinnedEngine(settings, context, spares);
         levels.copyChild(d, 1, other.levels);
+        int n = levels.meta(d)[3];
         ForkJoinTask<?> right = ForkJoinTask.adapt(() -> {
             other.forkOut.clear();
+            other.forkOut.reserve(EventEngine.NODES_PER_PRIMITIVE * n, EventEngine.REFS_PER_PRIMITIVE * n);
             other.recConst(d, 1, other.forkOut);
         }).fork();
         recConst(d, 0, out);

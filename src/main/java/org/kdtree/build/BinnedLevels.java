@@ -14,40 +14,45 @@ final class BinnedLevels {
     private final int[][] meta = new int[KdTreeBuilder.DEPTH_LIMIT + 2][];
     private final double[][] voxel = new double[KdTreeBuilder.DEPTH_LIMIT + 2][];
 
+    /** The depth of the subtree's root this memory serves: level d is kept in slot d - base ({@link EventLevels#rebase}). */
+    private int base;
+
     BinnedLevels(int k) {
         this.k = k;
     }
 
     /** Makes room for {@code count} references in level {@code d} (its old contents are dead). */
     void reserve(int d, int count) {
-        if (refs[d] == null || refs[d].length < count) {
-            int n = EventLevels.grown(refs[d] == null ? 0 : refs[d].length, count);
-            refs[d] = new int[n];
-            bounds[d] = new double[2 * k * n];
+        int i = d - base;
+        if (refs[i] == null || refs[i].length < count) {
+            int n = EventLevels.grown(refs[i] == null ? 0 : refs[i].length, count);
+            refs[i] = new int[n];
+            bounds[i] = new double[2 * k * n];
         }
     }
 
-    int[] refs(int d) { return refs[d]; }
+    int[] refs(int d) { return refs[d - base]; }
 
-    double[] bounds(int d) { return bounds[d]; }
+    double[] bounds(int d) { return bounds[d - base]; }
 
     int[] meta(int d) {
-        if (meta[d] == null) meta[d] = new int[4];
-        return meta[d];
+        if (meta[d - base] == null) meta[d - base] = new int[4];
+        return meta[d - base];
     }
 
     double[] voxel(int d) {
-        if (voxel[d] == null) voxel[d] = new double[4 * k];
-        return voxel[d];
+        if (voxel[d - base] == null) voxel[d - base] = new double[4 * k];
+        return voxel[d - base];
     }
 
-    /** Copies child c of level d (voxel, references, bounds) into the same place of {@code other}. */
+    /** Copies child c of level d (voxel, references, bounds) into the same place of {@code other}, rebased to start at d. */
     void copyChild(int d, int c, BinnedLevels other) {
         int[] m = meta(d);
         int from = m[2 * c], n = m[2 * c + 1];
+        other.base = d;
         other.reserve(d, n);
-        System.arraycopy(refs[d], from, other.refs[d], 0, n);
-        System.arraycopy(bounds[d], 2 * k * from, other.bounds[d], 0, 2 * k * n);
+        System.arraycopy(refs(d), from, other.refs(d), 0, n);
+        System.arraycopy(bounds(d), 2 * k * from, other.bounds(d), 0, 2 * k * n);
         int[] om = other.meta(d);
         om[2 * c] = 0;
         om[2 * c + 1] = n;

@@ -79,6 +79,7 @@ final class EventEngine {
      */
     void buildSubtree(int d, double[] voxel, int voxelAt, int[] refs, int refsAt, double[] bounds, int boundsAt, int n,
                       KdTreeWriter out) {
+        levels.rebase(d);
         EventRoot.write(this, d, voxel, voxelAt, refs, refsAt, bounds, boundsAt, n, false);
         recConst(d, 0, out);
     }
@@ -140,8 +141,10 @@ final class EventEngine {
         EventEngine spare = spares.poll();
         EventEngine other = spare != null ? spare : new EventEngine(this);
         levels.copyChild(d, 1, other.levels);
+        int n = levels.meta(d)[levels.metaAt(1)];
         ForkJoinTask<?> right = ForkJoinTask.adapt(() -> {
             other.forkOut.clear();
+            other.forkOut.reserve(NODES_PER_PRIMITIVE * n, REFS_PER_PRIMITIVE * n);
             other.recConst(d, 1, other.forkOut);
         }).fork();
         recConst(d, 0, out);

@@ -22,46 +22,62 @@ final class EventLevels {
     private final int[][] code = new int[KdTreeBuilder.DEPTH_LIMIT + 2][];
     private final int[][] meta = new int[KdTreeBuilder.DEPTH_LIMIT + 2][];
     private final double[][] voxel = new double[KdTreeBuilder.DEPTH_LIMIT + 2][];
+    /** The depth of the subtree's root this memory serves: level d is kept in slot d - base. */
+    private int base;
 
     EventLevels(int k) {
         this.k = k;
     }
 
+    /**
+     * Serves a subtree whose root lies at depth {@code depth} from now on, in the slots the last
+     * subtree used from its root down: an engine reused for subtree after subtree (forked to
+     * another thread) keeps reusing the same arrays whatever the depth it starts at.
+     */
+    void rebase(int depth) {
+        base = depth;
+    }
+
     /** Makes room for {@code count} events in level {@code d} (its old contents are dead). */
     void reserve(int d, int count) {
-        if (pos[d] == null || pos[d].length < count) {
-            int n = grown(pos[d] == null ? 0 : pos[d].length, count);
-            pos[d] = new double[n];
-            code[d] = new int[n];
+        int i = d - base;
+        if (pos[i] == null || pos[i].length < count) {
+            int n = grown(pos[i] == null ? 0 : pos[i].length, count);
+            pos[i] = new double[n];
+            code[i] = new int[n];
         }
     }
 
-    double[] positions(int d) { return pos[d]; }
+    double[] positions(int d) { return pos[d - base]; }
 
-    int[] codes(int d) { return code[d]; }
+    int[] codes(int d) { return code[d - base]; }
 
     int[] meta(int d) {
-        int[] m = meta[d];
-        if (m == null) meta[d] = m = new int[2 * (2 * k + 1)];
+        int[] m = meta[d - base];
+        if (m == null) meta[d - base] = m = new int[2 * (2 * k + 1)];
         return m;
     }
 
     double[] voxel(int d) {
-        double[] v = voxel[d];
-        if (v == null) voxel[d] = v = new double[4 * k];
+        double[] v = voxel[d - base];
+        if (v == null) voxel[d - base] = v = new double[4 * k];
         return v;
     }
 
     /** Where child c's entries begin in {@link #meta}. */
     int metaAt(int c) { return (2 * k + 1) * c; }
 
-    /** Copies child c of level d (its voxel, size and events) into the same place of {@code other}. */
+    /**
+     * Copies child c of level d (its voxel, size and events) into the same place of {@code other},
+     * rebased so that level d is its first slot.
+     */
     void copyChild(int d, int c, EventLevels other) {
         int[] m = meta(d);
         int at = metaAt(c), from = m[at + 1], to = m[at + 2 * k];
+        other.rebase(d);
         other.reserve(d, to - from);
-        System.arraycopy(pos[d], from, other.pos[d], 0, to - from);
-        System.arraycopy(code[d], from, other.code[d], 0, to - from);
+        System.arraycopy(positions(d), from, other.positions(d), 0, to - from);
+        System.arraycopy(codes(d), from, other.codes(d), 0, to - from);
         int[] om = other.meta(d);
         om[at] = m[at];
         for (int i = 1; i <= 2 * k; i++) om[at + i] = m[at + i] - from;

@@ -6,6 +6,7 @@ import java.util.stream.Stream;
 import org.junit.jupiter.params.ParameterizedTest;
 import org.junit.jupiter.params.provider.Arguments;
 import org.junit.jupiter.params.provider.MethodSource;
+import org.kdtree.shape.PointsKd;
 import org.kdtree.shape.Primitives;
 import org.kdtree.shape.TriangleMesh;
 import org.kdtree.tree.KdTree;
@@ -23,7 +24,17 @@ class EnginesBuildTheRecursionsTreeTest {
                 Arguments.of("bumpy sphere", Scenes.bumpySphere(30, 40, 33)),
                 Arguments.of("planar and degenerate", Scenes.planarAndDegenerate(34)),
                 Arguments.of("random 2-D", Scenes.random2D(800, 35)),
-                Arguments.of("planes on bin boundaries", planesOnBinBoundaries()));
+                Arguments.of("planes on bin boundaries", planesOnBinBoundaries()),
+                Arguments.of("points in 5-D", pointsIn5D()));
+    }
+
+    /** Clustered points in five dimensions, some repeated: the engines are k-dimensional. */
+    static PointsKd pointsIn5D() {
+        java.util.Random r = new java.util.Random(37);
+        double[] c = new double[5 * 1500];
+        for (int i = 0; i < 1500; i++)
+            for (int a = 0; a < 5; a++) c[5 * i + a] = i % 10 == 9 ? c[5 * (i - 1) + a] : (i % 3) + 0.2 * r.nextGaussian();
+        return new PointsKd(5, c);
     }
 
     /**
