@@ -2,7 +2,6 @@ package org.kdtree.build;
 
 import java.util.Deque;
 import java.util.concurrent.ConcurrentLinkedDeque;
-import java.util.concurrent.ForkJoinTask;
 import org.kdtree.geom.Box;
 import org.kdtree.shape.Primitives;
 import org.kdtree.tree.KdTreeWriter;
@@ -19,7 +18,7 @@ import org.kdtree.tree.KdTreeWriter;
  * ({@link Partition#classify}, {@link Partition#straddlerBounds}) in the same order, the same
  * safety nets.
  */
-final class BinnedEngine {
+final class BinnedEngine extends ForkingEngine<BinnedEngine> {
     private final Primitives prims;
     private final int k, bins, exactBelow, depthCap, forkThreshold;
     private final boolean perfectSplits;
@@ -31,8 +30,6 @@ final class BinnedEngine {
     private final SahSplit best = new SahSplit();
     private final int[] minBin, maxBin;
     private final Box voxel, clipLeft, clipRight;
-    private final Deque<BinnedEngine> spares;
-    private final KdTreeWriter forkOut = new KdTreeWriter();
     private EventEngine exact;
 
     BinnedEngine(SahBuilder settings, BuildContext context) {
@@ -40,6 +37,7 @@ final class BinnedEngine {
     }
 
     private BinnedEngine(SahBuilder settings, BuildContext context, Deque<BinnedEngine> spares) {
+        super(spares);
         this.settings = settings;
         this.context = context;
         this.prims = context.primitives();
@@ -57,7 +55,15 @@ final class BinnedEngine {
         this.voxel = new Box(k);
         this.clipLeft = new Box(k);
         this.clipRight = new Box(k);
-        this.spares = spares;
+    }
+
+    @Override BinnedEngine newSpare(Deque<BinnedEngine> spares) {
+        return new BinnedEngine(settings, context, spares);
+    }
+
+    @Override int copyRightChild(int d, BinnedEngine other) {
+        levels.copyChild(d, 1, other.levels);
+        return levels.meta(d)[3];
     }
 
     /** Builds the whole tree into {@code out}. */
@@ -86,7 +92,7 @@ final class BinnedEngine {
     }
 
     /** recConst for child c of level d (the root is child 0 of level 0). */
-    private void recConst(int d, int c, KdTreeWriter out) {
+    @Override void recConst(int d, int c, KdTreeWriter out) {
         int[] meta = levels.meta(d);
         int from = meta[2 * c], n = meta[2 * c + 1];
         if (n == 0 || d >= depthCap) {
@@ -121,24 +127,6 @@ final class BinnedEngine {
     private EventEngine exactEngine() {
         if (exact == null) exact = new EventEngine(settings, context);
         return exact;
-    }
-
-    /** As {@link EventEngine}'s fork: the right child on another thread, with an idle engine of this build. */
-    private void forkRight(int d, int interior, KdTreeWriter out) {
-        BinnedEngine spare = spares.poll();
-        BinnedEngine other = spare != null ? spare : new BinnedEngine(settings, context, spares);
-        levels.copyChild(d, 1, other.levels);
-        int n = levels.meta(d)[3];
-        ForkJoinTask<?> right = ForkJoinTask.adapt(() -> {
-            other.forkOut.clear();
-            other.forkOut.reserve(EventEngine.NODES_PER_PRIMITIVE * n, EventEngine.REFS_PER_PRIMITIVE * n);
-            other.recConst(d, 1, other.forkOut);
-        }).fork();
-        recConst(d, 0, out);
-        right.join();
-        out.setRightChild(interior);
-        out.append(other.forkOut);
-        spares.push(other);
     }
 
     /** terminate and findPlane: the binned search of every axis; whether its plane beats a leaf. */

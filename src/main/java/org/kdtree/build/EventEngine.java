@@ -1,6 +1,5 @@
 package org.kdtree.build;
 
-import java.util.concurrent.ForkJoinTask;
 import org.kdtree.geom.Box;
 import org.kdtree.shape.Primitives;
 import org.kdtree.tree.KdTreeWriter;
@@ -21,7 +20,7 @@ import org.kdtree.tree.KdTreeWriter;
  * <p>One engine serves one thread of work: the whole build, or a subtree handed to another
  * thread, which gets an engine (and scratch memory) of its own.
  */
-final class EventEngine {
+final class EventEngine extends ForkingEngine<EventEngine> {
     final Primitives prims;
     final int k;
     final boolean perfectSplits;
@@ -34,12 +33,9 @@ final class EventEngine {
     private int[] leafRefs = new int[16];
     private double[] sortPos = new double[16];
     private int[] sortCode = new int[16];
-    /** Idle engines of this build, each with its scratch memory and a writer, for forked subtrees. */
-    private final java.util.Deque<EventEngine> spares;
-    /** The writer of the subtree this engine builds when forked. */
-    private final KdTreeWriter forkOut = new KdTreeWriter();
 
     EventEngine(SahBuilder settings, BuildContext context) {
+        super(new java.util.concurrent.ConcurrentLinkedDeque<>());
         this.prims = context.primitives();
         this.k = prims.dimension();
         this.perfectSplits = settings.perfectSplits();
@@ -49,7 +45,6 @@ final class EventEngine {
         this.sah = new SahCost(settings.costModel(), settings.emptyWeight(), k);
         this.split = new EventSplit(this);
         this.leafCostPerPrimitive = settings.costModel().ki();
-        this.spares = new java.util.concurrent.ConcurrentLinkedDeque<>();
     }
 
     /** Whether the engine can build over {@code context} (at most 2^30 primitives). */
@@ -95,7 +90,8 @@ final class EventEngine {
 
     int[] sortCodes() { return sortCode; }
 
-    private EventEngine(EventEngine parent) {
+    private EventEngine(EventEngine parent, java.util.Deque<EventEngine> spares) {
+        super(spares);
         this.prims = parent.prims;
         this.k = parent.k;
         this.perfectSplits = parent.perfectSplits;
@@ -105,11 +101,19 @@ final class EventEngine {
         this.sah = new SahCost(parent.sah.model(), parent.sah.emptyWeight(), k);
         this.split = new EventSplit(this);
         this.leafCostPerPrimitive = parent.leafCostPerPrimitive;
-        this.spares = parent.spares;
+    }
+
+    @Override EventEngine newSpare(java.util.Deque<EventEngine> spares) {
+        return new EventEngine(this, spares);
+    }
+
+    @Override int copyRightChild(int d, EventEngine other) {
+        levels.copyChild(d, 1, other.levels);
+        return levels.meta(d)[levels.metaAt(1)];
     }
 
     /** recConst for child c of level d (the root is child 0 of level 0). */
-    private void recConst(int d, int c, KdTreeWriter out) {
+    @Override void recConst(int d, int c, KdTreeWriter out) {
         int n = levels.meta(d)[levels.metaAt(c)];
         if (n == 0 || d >= depthCap || !findPlane(d, c, n)) {
             leaf(d, c, n, out);
@@ -130,28 +134,6 @@ final class EventEngine {
         recConst(d + 1, 0, out);
         out.setRightChild(interior);
         recConst(d + 1, 1, out);
-    }
-
-    /**
-     * Builds the right child on another thread, with an engine and writer of its own (an idle
-     * one of this build's, so that their memory is reused), while this thread builds the left;
-     * then splices it in: the same tree, in the same order.
-     */
-    private void forkRight(int d, int interior, KdTreeWriter out) {
-        EventEngine spare = spares.poll();
-        EventEngine other = spare != null ? spare : new EventEngine(this);
-        levels.copyChild(d, 1, other.levels);
-        int n = levels.meta(d)[levels.metaAt(1)];
-        ForkJoinTask<?> right = ForkJoinTask.adapt(() -> {
-            other.forkOut.clear();
-            other.forkOut.reserve(NODES_PER_PRIMITIVE * n, REFS_PER_PRIMITIVE * n);
-            other.recConst(d, 1, other.forkOut);
-        }).fork();
-        recConst(d, 0, out);
-        right.join();
-        out.setRightChild(interior);
-        out.append(other.forkOut);
-        spares.push(other);
     }
 
     /**
