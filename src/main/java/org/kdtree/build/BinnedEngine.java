@@ -88,6 +88,7 @@ final class BinnedEngine extends ForkingEngine<BinnedEngine> {
             v[a] = rootVoxel.min(a);
             v[k + a] = rootVoxel.max(a);
         }
+        levels.budget(0)[0] = ReferenceBudget.root(settings.referenceBudget(), n);
         recConst(0, 0, out);
     }
 
@@ -100,7 +101,8 @@ final class BinnedEngine extends ForkingEngine<BinnedEngine> {
             return;
         }
         if (n < exactBelow) {
-            exactEngine().buildSubtree(d, levels.voxel(d), 2 * k * c, levels.refs(d), from, levels.bounds(d), from, n, out);
+            exactEngine().buildSubtree(d, levels.voxel(d), 2 * k * c, levels.refs(d), from, levels.bounds(d), from, n,
+                    levels.budget(d)[c], out);
             return;
         }
         if (!findPlane(d, c, from, n)) {
@@ -109,7 +111,9 @@ final class BinnedEngine extends ForkingEngine<BinnedEngine> {
         }
         int axis = best.axis();
         double xi = best.position();
-        if (!split(d, c, from, n, axis, xi, best.planarLeft())) {
+        int done = split(d, c, from, n, axis, xi, best.planarLeft());
+        if (done != EventSplit.SPLIT) {
+            if (done == EventSplit.OVER_BUDGET) out.budgetLeaf();
             out.leaf(levels.refs(d), from, n);
             return;
         }
@@ -145,10 +149,10 @@ final class BinnedEngine extends ForkingEngine<BinnedEngine> {
     /**
      * The recursion's partition ({@link Partition#split}) into level d + 1: references in node
      * order, the left child's from 0, the right's after room for all left candidates; a straddler
-     * gets its clipped bounds in each child it reaches. False, leaving the node whole, when every
-     * reference would go to both children.
+     * gets its clipped bounds in each child it reaches, and the children their shares of the node's
+     * reference budget. Like {@link EventSplit#split}, returns what it did.
      */
-    private boolean split(int d, int c, int from, int n, int axis, double xi, boolean planarLeft) {
+    private int split(int d, int c, int from, int n, int axis, double xi, boolean planarLeft) {
         int[] refs = levels.refs(d);
         double[] bounds = levels.bounds(d);
         int nl = 0, nr = 0;
@@ -178,7 +182,12 @@ final class BinnedEngine extends ForkingEngine<BinnedEngine> {
             }
         }
         int sizeL = il, sizeR = ir - nl;
-        if (sizeL == n && sizeR == n) return false;
+        if (sizeL == n && sizeR == n) return EventSplit.SEPARATES_NOTHING;
+        long budget = levels.budget(d)[c];
+        if (!ReferenceBudget.fits(budget, sizeL, sizeR)) return EventSplit.OVER_BUDGET;
+        long[] shares = levels.budget(d + 1);
+        shares[0] = ReferenceBudget.share(budget, sizeL, sizeL, sizeR);
+        shares[1] = ReferenceBudget.share(budget, sizeR, sizeL, sizeR);
         int[] below = levels.meta(d + 1);
         below[0] = 0;
         below[1] = sizeL;
@@ -189,6 +198,6 @@ final class BinnedEngine extends ForkingEngine<BinnedEngine> {
         System.arraycopy(v, 2 * k * c, vb, 2 * k, 2 * k);
         vb[k + axis] = xi;
         vb[2 * k + axis] = xi;
-        return true;
+        return EventSplit.SPLIT;
     }
 }

@@ -13,6 +13,7 @@ final class BinnedLevels {
     private final double[][] bounds = new double[KdTreeBuilder.DEPTH_LIMIT + 2][];
     private final int[][] meta = new int[KdTreeBuilder.DEPTH_LIMIT + 2][];
     private final double[][] voxel = new double[KdTreeBuilder.DEPTH_LIMIT + 2][];
+    private final long[][] budget = new long[KdTreeBuilder.DEPTH_LIMIT + 2][];
 
     /** The depth of the subtree's root this memory serves: level d is kept in slot d - base ({@link EventLevels#rebase}). */
     private int base;
@@ -45,6 +46,12 @@ final class BinnedLevels {
         return voxel[d - base];
     }
 
+    /** The reference budgets ({@link ReferenceBudget}) of the two children of level d. */
+    long[] budget(int d) {
+        if (budget[d - base] == null) budget[d - base] = new long[2];
+        return budget[d - base];
+    }
+
     /** Copies child c of level d (voxel, references, bounds) into the same place of {@code other}, rebased to start at d. */
     void copyChild(int d, int c, BinnedLevels other) {
         int[] m = meta(d);
@@ -57,5 +64,6 @@ final class BinnedLevels {
         om[2 * c] = 0;
         om[2 * c + 1] = n;
         System.arraycopy(voxel(d), 2 * k * c, other.voxel(d), 2 * k * c, 2 * k);
+        other.budget(d)[c] = budget(d)[c];
     }
 }

@@ -19,6 +19,7 @@ public class BuildNode {
     private final int depth;
     private final int k;
 
+    private long budget = Long.MAX_VALUE;
     private SplitPlane plannedPlane;
     private double plannedCost = Double.NaN;
 
@@ -61,6 +62,13 @@ public class BuildNode {
 
     /** k, the dimension. */
     public int dimension() { return k; }
+
+    /** How many references this node's subtree may hold ({@link ReferenceBudget}). */
+    public long budget() { return budget; }
+
+    void budget(long references) {
+        this.budget = references;
+    }
 
     /** The index of the j-th primitive of this node. */
     public int ref(int j) { return refs[base + j]; }

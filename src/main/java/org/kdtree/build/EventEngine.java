@@ -30,6 +30,7 @@ final class EventEngine extends ForkingEngine<EventEngine> {
     private final SahSplit best = new SahSplit();
     private final EventSplit split;
     private final double leafCostPerPrimitive;
+    private final int referenceBudget;
     private int[] leafRefs = new int[16];
     private double[] sortPos = new double[16];
     private int[] sortCode = new int[16];
@@ -45,6 +46,7 @@ final class EventEngine extends ForkingEngine<EventEngine> {
         this.sah = new SahCost(settings.costModel(), settings.emptyWeight(), k);
         this.split = new EventSplit(this);
         this.leafCostPerPrimitive = settings.costModel().ki();
+        this.referenceBudget = settings.referenceBudget();
     }
 
     /** Whether the engine can build over {@code context} (at most 2^30 primitives). */
@@ -64,6 +66,7 @@ final class EventEngine extends ForkingEngine<EventEngine> {
         long n = prims.size();
         out.reserve((int) Math.min(1 << 26, NODES_PER_PRIMITIVE * n), (int) Math.min(1 << 28, REFS_PER_PRIMITIVE * n));
         EventRoot.write(this, rootVoxel);
+        levels.budget(0)[0] = ReferenceBudget.root(referenceBudget, (int) n);
         recConst(0, 0, out);
     }
 
@@ -73,9 +76,10 @@ final class EventEngine extends ForkingEngine<EventEngine> {
      * clipped bounds at slots {@code boundsAt ..}; the same subtree the recursion would build.
      */
     void buildSubtree(int d, double[] voxel, int voxelAt, int[] refs, int refsAt, double[] bounds, int boundsAt, int n,
-                      KdTreeWriter out) {
+                      long budget, KdTreeWriter out) {
         levels.rebase(d);
         EventRoot.write(this, d, voxel, voxelAt, refs, refsAt, bounds, boundsAt, n, false);
+        levels.budget(d)[0] = budget;
         recConst(d, 0, out);
     }
 
@@ -101,6 +105,7 @@ final class EventEngine extends ForkingEngine<EventEngine> {
         this.sah = new SahCost(parent.sah.model(), parent.sah.emptyWeight(), k);
         this.split = new EventSplit(this);
         this.leafCostPerPrimitive = parent.leafCostPerPrimitive;
+        this.referenceBudget = parent.referenceBudget;
     }
 
     @Override EventEngine newSpare(java.util.Deque<EventEngine> spares) {
@@ -121,7 +126,9 @@ final class EventEngine extends ForkingEngine<EventEngine> {
         }
         int axis = best.axis();
         double xi = best.position();
-        if (!split.split(d, c, n, axis, xi, best.planarLeft())) {
+        int done = split.split(d, c, n, axis, xi, best.planarLeft());
+        if (done != EventSplit.SPLIT) {
+            if (done == EventSplit.OVER_BUDGET) out.budgetLeaf();
             leaf(d, c, n, out);
             return;
         }

@@ -22,6 +22,7 @@ final class EventLevels {
     private final int[][] code = new int[KdTreeBuilder.DEPTH_LIMIT + 2][];
     private final int[][] meta = new int[KdTreeBuilder.DEPTH_LIMIT + 2][];
     private final double[][] voxel = new double[KdTreeBuilder.DEPTH_LIMIT + 2][];
+    private final long[][] budget = new long[KdTreeBuilder.DEPTH_LIMIT + 2][];
     /** The depth of the subtree's root this memory serves: level d is kept in slot d - base. */
     private int base;
 
@@ -82,6 +83,13 @@ final class EventLevels {
         om[at] = m[at];
         for (int i = 1; i <= 2 * k; i++) om[at + i] = m[at + i] - from;
         System.arraycopy(voxel(d), 2 * k * c, other.voxel(d), 2 * k * c, 2 * k);
+        other.budget(d)[c] = budget(d)[c];
+    }
+
+    /** The reference budgets ({@link ReferenceBudget}) of the two children of level d. */
+    long[] budget(int d) {
+        if (budget[d - base] == null) budget[d - base] = new long[2];
+        return budget[d - base];
     }
 
     static int grown(int current, int needed) {

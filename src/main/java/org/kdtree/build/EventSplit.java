@@ -14,6 +14,8 @@ import org.kdtree.geom.Box;
 final class EventSplit {
     /** The side of a primitive in the node being split; a straddler's events are copied to neither child. */
     private static final byte STRADDLES = 0, LEFT = 1, RIGHT = 2;
+    /** What {@link #split} did: split the node, or left it whole (it separates nothing, or its children would exceed its budget). */
+    static final int SPLIT = 0, SEPARATES_NOTHING = 1, OVER_BUDGET = 2;
 
     private final EventEngine engine;
     private final EventLevels levels;
@@ -42,10 +44,12 @@ final class EventSplit {
 
     /**
      * Splits child c of level d ({@code n} primitives) by the plane {@code x_axis = xi} into both
-     * children in level d + 1. Returns false, writing nothing, when every primitive would go to
-     * both children (the split separates nothing).
+     * children in level d + 1, with their shares of its reference budget, and returns
+     * {@link #SPLIT}. Writes nothing, and says why, when every primitive would go to both
+     * children ({@link #SEPARATES_NOTHING}) or the children would hold more references than the
+     * node's budget ({@link #OVER_BUDGET}).
      */
-    boolean split(int d, int c, int n, int axis, double xi, boolean planarLeft) {
+    int split(int d, int c, int n, int axis, double xi, boolean planarLeft) {
         int[] code = levels.codes(d), meta = levels.meta(d);
         int at = levels.metaAt(c), from = meta[at + 1 + 2 * axis], to = meta[at + 2 + 2 * axis];
         if (straddlers.length < n) { straddlers = new int[n]; goesTo = new int[n]; }
@@ -53,9 +57,14 @@ final class EventSplit {
         int nl = (int) (counts >>> 32), nb = (int) counts, nr = n - nl - nb;
         long added = clipStraddlers(d, c, axis, xi, nb);
         int sizeL = nl + (int) (added >>> 32), sizeR = nr + (int) added;
-        if (sizeL == n && sizeR == n) return false;
+        if (sizeL == n && sizeR == n) return SEPARATES_NOTHING;
+        long budget = levels.budget(d)[c];
+        if (!ReferenceBudget.fits(budget, sizeL, sizeR)) return OVER_BUDGET;
         writeChildren(d, c, axis, xi, nb, sizeL, sizeR);
-        return true;
+        long[] below = levels.budget(d + 1);
+        below[0] = ReferenceBudget.share(budget, sizeL, sizeL, sizeR);
+        below[1] = ReferenceBudget.share(budget, sizeR, sizeL, sizeR);
+        return SPLIT;
     }
 
     /**

@@ -35,11 +35,18 @@ public abstract class KdTreeBuilder {
     /** Depth beyond which no setting can go: 2^64 voxels would not fit in any memory. */
     public static final int DEPTH_LIMIT = 64;
 
+    /** B, the references per input primitive a tree may hold at the most ({@link ReferenceBudget}). */
+    public static final int DEFAULT_REFERENCE_BUDGET = 256;
+
+    /** The largest reference budget a setting may ask for. */
+    public static final int MAX_REFERENCE_BUDGET = 1 << 16;
+
     /** c in the automatic depth cap {@code 8 + c log2 N} (pbrt's and Wald and Havran's 1.3). */
     public static final double DEFAULT_DEPTH_FACTOR = 1.3;
 
     private int maxDepth = -1;
     private double depthFactor = DEFAULT_DEPTH_FACTOR;
+    private int referenceBudget = DEFAULT_REFERENCE_BUDGET;
     private CostModel costModel = CostModel.WALD_HAVRAN;
     private boolean perfectSplits = true;
     private int threads = 1;
@@ -71,7 +78,9 @@ public abstract class KdTreeBuilder {
      */
     protected void construct(BuildContext context, Box rootVoxel, KdTreeWriter out) {
         Build build = (Build) context;
-        recConst(build, makeRoot(build, rootVoxel), out);
+        BuildNode root = makeRoot(build, rootVoxel);
+        root.budget(ReferenceBudget.root(referenceBudget, root.size()));
+        recConst(build, root, out);
     }
 
     /**
@@ -129,6 +138,14 @@ public abstract class KdTreeBuilder {
             out.leaf(node.refArray(), node.base(), node.size());
             return;
         }
+        int nl = children.left().size(), nr = children.right().size();
+        if (!ReferenceBudget.fits(node.budget(), nl, nr)) {
+            out.budgetLeaf();
+            out.leaf(node.refArray(), node.base(), node.size());
+            return;
+        }
+        children.left().budget(ReferenceBudget.share(node.budget(), nl, nl, nr));
+        children.right().budget(ReferenceBudget.share(node.budget(), nr, nl, nr));
         node.release();
         int interior = out.interior(plane.axis(), plane.position());
         if (children.right().size() >= build.forkThreshold && children.left().size() > 0) {
@@ -220,6 +237,21 @@ public abstract class KdTreeBuilder {
         return this;
     }
 
+    /** B, the references per input primitive the tree may hold at the most (default 256; {@link ReferenceBudget}). */
+    public int referenceBudget() { return referenceBudget; }
+
+    /**
+     * Sets B (1 .. 65,536): the tree holds at most B references per input primitive; where the
+     * geometry would need more, nodes become leaves early and the tree says how many
+     * ({@link KdTree#budgetLeaves()}).
+     */
+    public KdTreeBuilder referenceBudget(int perPrimitive) {
+        if (perPrimitive < 1 || perPrimitive > MAX_REFERENCE_BUDGET)
+            throw new IllegalArgumentException("reference budget must be in 1.." + MAX_REFERENCE_BUDGET + " per primitive, got " + perPrimitive);
+        this.referenceBudget = perPrimitive;
+        return this;
+    }
+
     /** Kt and Ki: the SAH uses them to choose planes; every tree reports its expected cost with them. */
     public CostModel costModel() { return costModel; }
 
@@ -255,7 +287,8 @@ public abstract class KdTreeBuilder {
     public String describeSettings() {
         return "maxDepth=" + (maxDepth >= 0 ? String.valueOf(maxDepth)
                 : depthFactor == DEFAULT_DEPTH_FACTOR ? "auto" : "auto(8+" + depthFactor + " log2 N)") + " Kt=" + costModel.kt() + " Ki=" + costModel.ki()
-                + " perfectSplits=" + perfectSplits + (threads > 1 ? " threads=" + threads : "");
+                + " perfectSplits=" + perfectSplits + (threads > 1 ? " threads=" + threads : "")
+                + (referenceBudget != DEFAULT_REFERENCE_BUDGET ? " referenceBudget=" + referenceBudget : "");
     }
 
     /** The per-build context that {@link BuildContext} exposes to subclasses. */

@@ -137,6 +137,8 @@ public class SahBuilder extends KdTreeBuilder {
 
     @Override public SahBuilder depthFactor(double c) { super.depthFactor(c); return this; }
 
+    @Override public SahBuilder referenceBudget(int perPrimitive) { super.referenceBudget(perPrimitive); return this; }
+
     /** Applies a named preset ({@link Quality}): the event algorithm under that preset's depth cap. */
     public SahBuilder quality(Quality q) { return q.applyTo(this); }
 

@@ -26,6 +26,11 @@ public final class BuilderOptions {
     @Option(names = "--max-depth", description = "Kmaxdepth (default 8 + 1.3 log2 N).")
     Integer maxDepth;
 
+    @Option(names = "--reference-budget", paramLabel = "B",
+            description = "At most B references per primitive in the tree, 1..65536 (default 256): "
+                    + "where overlapping geometry would need more, nodes become leaves early and the output says so.")
+    Integer referenceBudget;
+
     @Option(names = "--min-prims", description = "Kmintri for the median builders (default 2).")
     Integer minPrims;
 
@@ -54,6 +59,7 @@ public final class BuilderOptions {
             b.costModel(new CostModel(kt != null ? kt : m.kt(), ki != null ? ki : m.ki()));
         }
         if (noPerfectSplits) b.perfectSplits(false);
+        if (referenceBudget != null) b.referenceBudget(referenceBudget);
         if (b instanceof SahBuilder sah) {
             if (quality != null) sah.quality(quality);
             if (maxDepth != null) sah.maxDepth(maxDepth);

@@ -59,6 +59,9 @@ public final class StatsCommand implements Callable<Integer> {
         System.out.printf(Locale.ROOT, "build time: %.1f ms%s%n", ms[ms.length / 2],
                 ms.length > 1 ? " (median of " + ms.length + ", after " + warmup + " warm-up)" : "");
         System.out.println(tree.stats().describe());
+        if (tree.budgetLeaves() > 0)
+            System.out.printf(Locale.ROOT, "note: the reference budget (%d per primitive, --reference-budget) made %d %s early%n",
+                    builder.referenceBudget(), tree.budgetLeaves(), tree.budgetLeaves() == 1 ? "leaf" : "leaves");
         return 0;
     }
 }

@@ -28,9 +28,12 @@ public final class KdTree {
     private final double[] split;
     private final int[] leafStart;
     private final int[] refs;
+    private final int budgetLeaves;
     private TreeStats stats;
 
-    KdTree(Box bounds, CostModel cost, String builderName, int[] word, double[] split, int[] leafStart, int[] refs) {
+    KdTree(Box bounds, CostModel cost, String builderName, int[] word, double[] split, int[] leafStart, int[] refs,
+           int budgetLeaves) {
+        this.budgetLeaves = budgetLeaves;
         this.bounds = bounds;
         this.cost = cost;
         this.builderName = builderName;
@@ -53,6 +56,12 @@ public final class KdTree {
     public String builderName() { return builderName; }
 
     public int nodeCount() { return word.length; }
+
+    /**
+     * Leaves the build made early because the reference budget ran out
+     * ({@code KdTreeBuilder.referenceBudget}); 0 when the tree is the one the builder's own rules make.
+     */
+    public int budgetLeaves() { return budgetLeaves; }
     public int leafCount() { return leafStart.length - 1; }
 
     // ---- node access, for traversal (hot path: no allocation) ----

@@ -17,6 +17,7 @@ public final class KdTreeWriter {
     private int leaves;
     private int[] refs = new int[64];
     private int refCount;
+    private int budgetLeaves;
 
     /** Writes an interior node and returns its index; its left child is the next node written. */
     public int interior(int axis, double xi) {
@@ -38,6 +39,11 @@ public final class KdTreeWriter {
     /** Writes a leaf holding {@code prims[0 .. count)} and returns its node index. */
     public int leaf(int[] prims, int count) {
         return leaf(prims, 0, count);
+    }
+
+    /** Notes that the next leaf is written because the reference budget ran out (reported by {@link KdTree#budgetLeaves()}). */
+    public void budgetLeaf() {
+        budgetLeaves++;
     }
 
     /** Writes a leaf holding {@code prims[from .. from + count)} and returns its node index. */
@@ -73,6 +79,7 @@ public final class KdTreeWriter {
         if (refCount + sub.refCount > refs.length) refs = Arrays.copyOf(refs, Math.max(refs.length * 2, refCount + sub.refCount));
         System.arraycopy(sub.refs, 0, refs, refCount, sub.refCount);
         refCount += sub.refCount;
+        budgetLeaves += sub.budgetLeaves;
         return base;
     }
 
@@ -95,6 +102,7 @@ public final class KdTreeWriter {
         nodes = 0;
         leaves = 0;
         refCount = 0;
+        budgetLeaves = 0;
     }
 
     /** The number of nodes written so far. */
@@ -105,7 +113,7 @@ public final class KdTreeWriter {
         if (nodes == 0) leaf(new int[0], 0);
         return new KdTree(rootVoxel.copy(), cost, builderName,
                 Arrays.copyOf(word, nodes), Arrays.copyOf(split, nodes),
-                Arrays.copyOf(leafStart, leaves + 1), Arrays.copyOf(refs, refCount));
+                Arrays.copyOf(leafStart, leaves + 1), Arrays.copyOf(refs, refCount), budgetLeaves);
     }
 
     private int newNode() {

@@ -87,6 +87,25 @@ class EnginesBuildTheRecursionsTreeTest {
         }
     }
 
+    /**
+     * A budget of 2 references per primitive binds on every scene with straddlers (points never
+     * straddle): the engines cut the tree where the recursion does.
+     */
+    @ParameterizedTest(name = "{0}")
+    @MethodSource("scenes")
+    void aBindingReferenceBudgetCutsTheSameTree(String name, Primitives scene) {
+        KdTree expected = new SahBuilder() {}.referenceBudget(2).build(scene);
+        if (!(scene instanceof PointsKd)) assertThat(expected.budgetLeaves()).as("%s: the budget binds", name).isPositive();
+        assertThat(expected.refArray().length).isLessThanOrEqualTo(2 * scene.size());
+        for (int threads : new int[] {1, 2}) {
+            KdTree event = new SahBuilder().referenceBudget(2).threads(threads).build(scene);
+            SahAlgorithmsTest.assertSameTree(event, expected, name + " event, threads " + threads);
+            assertThat(event.budgetLeaves()).isEqualTo(expected.budgetLeaves());
+        }
+        KdTree binned = binned(new SahBuilder(), 16, true).referenceBudget(2).build(scene);
+        SahAlgorithmsTest.assertSameTree(binned, binned(new SahBuilder() {}, 16, true).referenceBudget(2).build(scene), name + " binned");
+    }
+
     private static SahBuilder binned(SahBuilder b, int exactBelow, boolean perfect) {
         return b.algorithm(SahBuilder.Algorithm.BINNED).bins(16).exactBelow(exactBelow).perfectSplits(perfect);
     }
