@@ -36,6 +36,19 @@ class ReferenceBudgetTest {
         }
     }
 
+    @Test void aHundredThousandCoincidentTrianglesMakeOneLeafWithEveryBuilder() {
+        int n = 100_000;
+        double[] v = {0, 0, 0, 1, 0, 0.5, 0, 1, 1};
+        int[] idx = new int[3 * n];
+        for (int t = 0; t < n; t++) { idx[3 * t] = 0; idx[3 * t + 1] = 1; idx[3 * t + 2] = 2; }
+        TriangleMesh same = new TriangleMesh(v, idx);
+        for (String name : Builders.names()) {
+            KdTree tree = Builders.create(name).build(same);
+            assertThat(tree.refArray().length).as("%s: references", name).isEqualTo(n);
+            assertThat(tree.nodeCount()).as("%s: nodes", name).isLessThanOrEqualTo(3);
+        }
+    }
+
     /**
      * The SAH stops by itself where splitting stops paying, so the default budget never binds on
      * a mesh (the bunny's exact tree holds 5.3 references per triangle). The median builders,
