@@ -5,7 +5,6 @@ import de.javagl.obj.Mtl;
 import de.javagl.obj.MtlReader;
 import java.io.IOException;
 import java.io.StringReader;
-import java.nio.charset.StandardCharsets;
 import java.nio.file.Files;
 import java.nio.file.Path;
 import java.util.LinkedHashMap;
@@ -50,7 +49,7 @@ public final class MtlMaterials {
     /** Reads a library: material name to material. */
     public static Map<String, Material> read(Path file) throws IOException {
         if (!Files.isRegularFile(file)) throw new SceneFormatException(file.toString(), 0, "no such material library");
-        String text = Files.readString(file, StandardCharsets.UTF_8);
+        String text = TextLines.readAll(file);
         check(text, file.toString());
         List<Mtl> mtls;
         try {

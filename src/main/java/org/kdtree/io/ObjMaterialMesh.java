@@ -1,8 +1,6 @@
 package org.kdtree.io;
 
-import java.io.BufferedReader;
 import java.io.IOException;
-import java.nio.charset.StandardCharsets;
 import java.nio.file.Files;
 import java.nio.file.Path;
 import java.util.ArrayList;
@@ -40,11 +38,9 @@ public record ObjMaterialMesh(double[] vertices, int[] indices, int[] materialOf
         List<Path> libs = new ArrayList<>();
         int current = -1;
         int[] face = new int[16];
-        try (BufferedReader in = Files.newBufferedReader(file, StandardCharsets.UTF_8)) {
-            String line;
-            int lineNo = 0;
-            while ((line = in.readLine()) != null) {
-                lineNo++;
+        try (TextLines in = TextLines.open(file)) {
+            for (String line = in.next(); line != null; line = in.next()) {
+                int lineNo = in.line();
                 String s = line.strip();
                 String[] t = s.split("\\s+");
                 switch (t[0]) {

@@ -1,11 +1,9 @@
 package org.kdtree.io;
 
-import java.io.BufferedReader;
 import java.io.IOException;
 import java.io.InputStreamReader;
 import java.io.Reader;
 import java.nio.charset.StandardCharsets;
-import java.nio.file.Files;
 import java.nio.file.Path;
 import org.kdtree.shape.TriangleMesh;
 
@@ -25,22 +23,23 @@ public final class ObjMeshReader {
 
     /** Reads an OBJ file. */
     public static TriangleMesh read(Path file) throws IOException {
-        if (!Files.isRegularFile(file)) throw new SceneFormatException(file.toString(), 0, "no such file");
-        try (Reader r = Files.newBufferedReader(file, StandardCharsets.UTF_8)) {
-            return read(r, file.toString());
+        try (TextLines lines = TextLines.open(file)) {
+            return read(lines);
         }
     }
 
     /** Reads OBJ text; {@code name} is used in error messages. */
     public static TriangleMesh read(Reader reader, String name) throws IOException {
-        BufferedReader in = reader instanceof BufferedReader b ? b : new BufferedReader(reader);
+        return read(TextLines.of(reader, name));
+    }
+
+    private static TriangleMesh read(TextLines in) throws IOException {
+        String name = in.name();
         DoubleList v = new DoubleList();
         IntList tris = new IntList();
         int[] face = new int[16];
-        String line;
-        int lineNo = 0;
-        while ((line = in.readLine()) != null) {
-            lineNo++;
+        for (String line = in.next(); line != null; line = in.next()) {
+            int lineNo = in.line();
             String s = line.strip();
             if (s.startsWith("v ") || s.startsWith("v\t")) {
                 String[] t = s.split("\\s+");

@@ -1,6 +1,5 @@
 package org.kdtree.io;
 
-import java.io.BufferedReader;
 import java.io.IOException;
 import java.io.Reader;
 import java.io.StringReader;
@@ -29,9 +28,8 @@ public final class Scene2DFormat {
     }
 
     public static Shapes2D read(Path file) throws IOException {
-        if (!Files.isRegularFile(file)) throw new SceneFormatException(file.toString(), 0, "no such file");
-        try (Reader r = Files.newBufferedReader(file, StandardCharsets.UTF_8)) {
-            return read(r, file.toString());
+        try (TextLines lines = TextLines.open(file)) {
+            return read(lines);
         }
     }
 
@@ -46,12 +44,14 @@ public final class Scene2DFormat {
     }
 
     public static Shapes2D read(Reader reader, String name) throws IOException {
-        BufferedReader in = new BufferedReader(reader);
+        return read(TextLines.of(reader, name));
+    }
+
+    private static Shapes2D read(TextLines in) throws IOException {
+        String name = in.name();
         List<Shape2D> shapes = new ArrayList<>();
-        String line;
-        int lineNo = 0;
-        while ((line = in.readLine()) != null) {
-            lineNo++;
+        for (String line = in.next(); line != null; line = in.next()) {
+            int lineNo = in.line();
             int hash = line.indexOf('#');
             String s = (hash >= 0 ? line.substring(0, hash) : line).strip();
             if (s.isEmpty()) continue;

@@ -2,7 +2,7 @@ package org.kdtree.io;
 
 import java.io.IOException;
 import java.io.Reader;
-import java.nio.charset.StandardCharsets;
+import java.io.StringReader;
 import java.nio.file.Files;
 import java.nio.file.Path;
 import java.util.ArrayList;
@@ -38,8 +38,7 @@ public final class SceneFile {
 
     /** Reads a scene file; OBJ files it names are resolved against its folder. */
     public static Scene read(Path path) throws IOException {
-        if (!Files.isRegularFile(path)) throw new SceneFormatException(path.toString(), 0, "no such file");
-        try (Reader r = Files.newBufferedReader(path, StandardCharsets.UTF_8)) {
+        try (Reader r = new StringReader(TextLines.readAll(path))) {
             Path dir = path.toAbsolutePath().getParent();
             return new SceneFile(path.toString(), dir).parse(JsonNode.parse(r, path.toString()),
                     path.getFileName().toString());
