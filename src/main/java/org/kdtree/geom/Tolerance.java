@@ -11,6 +11,19 @@ package org.kdtree.geom;
  * @param absolute absolute floor, for values near zero
  */
 public record Tolerance(double relative, double absolute) {
+    /**
+     * The largest coordinate a triangle mesh may have: the watertight ray/triangle test multiplies
+     * up to three coordinates, and beyond 1e100 those products overflow (a ray at 1e110 missed a
+     * triangle it hits). Meshes beyond it are refused with a line that says so.
+     */
+    public static final double MAX_COORDINATE = 1e100;
+
+    /**
+     * The smallest extent a triangle mesh may span (unless it is a single point): below 1e-100 the
+     * test's products underflow to zero (every hit was reported at t = 0 at 1e-110).
+     */
+    public static final double MIN_EXTENT = 1e-100;
+
     /** Default for comparing double-precision ray distances. */
     public static final Tolerance DEFAULT = new Tolerance(1e-9, 1e-12);
 

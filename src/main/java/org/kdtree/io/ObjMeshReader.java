@@ -5,6 +5,7 @@ import java.io.InputStreamReader;
 import java.io.Reader;
 import java.nio.charset.StandardCharsets;
 import java.nio.file.Path;
+import org.kdtree.shape.InvalidGeometryException;
 import org.kdtree.shape.TriangleMesh;
 
 /**
@@ -55,7 +56,11 @@ public final class ObjMeshReader {
                 for (int c = 1; c + 1 < n; c++) tris.add(face[0], face[c], face[c + 1]);
             }
         }
-        return new TriangleMesh(v.toArray(), tris.toArray());
+        try {
+            return new TriangleMesh(v.toArray(), tris.toArray());
+        } catch (InvalidGeometryException e) {
+            throw new SceneFormatException(name, 0, e.getMessage());
+        }
     }
 
     /** Reads an OBJ file from the class path (bundled scenes). */

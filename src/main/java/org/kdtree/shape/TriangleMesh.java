@@ -1,6 +1,7 @@
 package org.kdtree.shape;
 
 import org.kdtree.geom.Box;
+import org.kdtree.geom.Tolerance;
 import org.kdtree.geom.TriangleClipper;
 
 /**
@@ -18,7 +19,9 @@ public final class TriangleMesh implements Primitives {
     /**
      * @param vertices x, y, z per vertex (not copied)
      * @param indices  three 0-based vertex indices per triangle (not copied)
-     * @throws InvalidGeometryException for an index out of range or a non-finite coordinate
+     * @throws InvalidGeometryException for an index out of range, a non-finite coordinate, or a
+     *         mesh outside the range ray queries support ({@link Tolerance#MAX_COORDINATE},
+     *         {@link Tolerance#MIN_EXTENT})
      */
     public TriangleMesh(double[] vertices, int[] indices) {
         if (vertices.length % 3 != 0) throw new IllegalArgumentException("vertex array length must be a multiple of 3");
@@ -31,12 +34,34 @@ public final class TriangleMesh implements Primitives {
                 int v = indices[3 * t + c];
                 if (v < 0 || v >= nv)
                     throw new InvalidGeometryException(describe(t) + " refers to vertex " + v + " of " + nv);
-                for (int a = 0; a < 3; a++)
-                    if (!Double.isFinite(vertices[3 * v + a]))
-                        throw new InvalidGeometryException(describe(t) + " has a non-finite coordinate ("
-                                + vertices[3 * v + a] + ") at vertex " + v);
+                for (int a = 0; a < 3; a++) {
+                    double x = vertices[3 * v + a];
+                    if (!Double.isFinite(x))
+                        throw new InvalidGeometryException(describe(t) + " has a non-finite coordinate (" + x + ") at vertex " + v);
+                    if (Math.abs(x) > Tolerance.MAX_COORDINATE)
+                        throw new InvalidGeometryException(describe(t) + " has the coordinate " + x + " at vertex " + v
+                                + ": the supported range is -1e100 .. 1e100 (the ray/triangle test would overflow); scale the scene down");
+                }
             }
         }
+        checkExtent();
+    }
+
+    /** Refuses a mesh too small for the ray/triangle test's products (a single point is allowed). */
+    private void checkExtent() {
+        double largest = 0;
+        for (int a = 0; a < 3; a++) {
+            double lo = Double.POSITIVE_INFINITY, hi = Double.NEGATIVE_INFINITY;
+            for (int t = 0; t < indices.length; t++) {
+                double x = vertices[3 * indices[t] + a];
+                lo = Math.min(lo, x);
+                hi = Math.max(hi, x);
+            }
+            if (hi > lo) largest = Math.max(largest, hi - lo);
+        }
+        if (largest > 0 && largest < Tolerance.MIN_EXTENT)
+            throw new InvalidGeometryException("the triangles span only " + largest + ": the smallest supported extent is 1e-100"
+                    + " (the ray/triangle test would underflow); scale the scene up");
     }
 
     /** The flat vertex array (x, y, z per vertex); do not modify. */

@@ -93,6 +93,23 @@ class HardCases3DTest {
         assertThat(shoot(m, origins(), directions(), 1e6)).isGreaterThan(1000);
     }
 
+    /** The ends of the supported range (geom.Tolerance): coordinates up to 1e100, extents down to 1e-100. */
+    @Test void scaledToTheEndsOfTheSupportedRange() {
+        for (double scale : new double[] {2e99, 1e-100})
+            assertThat(shoot(MeshBuilder.scaled(boxes(), scale), origins(), directions(), scale)).as("scale %s", scale)
+                    .isGreaterThan(1000);
+    }
+
+    /** Beyond the range the products of the ray/triangle test overflow or underflow: the mesh is refused, with the reason. */
+    @Test void scalesBeyondTheRangeAreRefusedNotAnsweredWrongly() {
+        for (double scale : new double[] {1e110, 1e150, 1e300})
+            org.assertj.core.api.Assertions.assertThatThrownBy(() -> MeshBuilder.scaled(boxes(), scale))
+                    .isInstanceOf(org.kdtree.shape.InvalidGeometryException.class).hasMessageContaining("-1e100 .. 1e100");
+        for (double scale : new double[] {1e-110, 1e-150, 1e-300})
+            org.assertj.core.api.Assertions.assertThatThrownBy(() -> MeshBuilder.scaled(boxes(), scale))
+                    .isInstanceOf(org.kdtree.shape.InvalidGeometryException.class).hasMessageContaining("smallest supported extent is 1e-100");
+    }
+
     @Test void originsFarAwayAimedAtVerticesAndEdges() {
         TriangleMesh m = boxes();
         List<Oracle> oracles = Oracle.allBuilders(m, new TriangleIntersector(m));

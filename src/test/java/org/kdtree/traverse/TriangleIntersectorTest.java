@@ -65,8 +65,10 @@ class TriangleIntersectorTest {
             }
         }
         assertThat(one(A, B, C).isDegenerate(0)).isFalse();
-        assertThat(one(new double[] {0, 0, 0}, new double[] {1e-300, 0, 0}, new double[] {0, 1e-300, 0})
-                .isDegenerate(0)).isFalse();
+        // a triangle of 1e-300 is tiny, not degenerate; it must sit in a mesh of a supported extent (Tolerance.MIN_EXTENT)
+        TriangleMesh tinyAndUnit = new TriangleMesh(new double[] {0, 0, 0, 1e-300, 0, 0, 0, 1e-300, 0, 1, 1, 1, 2, 1, 1, 1, 2, 1},
+                new int[] {0, 1, 2, 3, 4, 5});
+        assertThat(new TriangleIntersector(tinyAndUnit).isDegenerate(0)).isFalse();
     }
 
     @Test void edgeOnRaysMiss() {
