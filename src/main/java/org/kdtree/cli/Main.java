@@ -1,6 +1,5 @@
 package org.kdtree.cli;
 
-import java.io.IOException;
 import picocli.CommandLine;
 import picocli.CommandLine.Command;
 
@@ -18,14 +17,12 @@ public final class Main implements Runnable {
     public static int run(String... args) {
         CommandLine cl = new CommandLine(new Main());
         cl.setCaseInsensitiveEnumValuesAllowed(true);
-        cl.setExecutionExceptionHandler((ex, cmd, parsed) -> {
-            if (ex instanceof IOException || ex instanceof IllegalArgumentException) {
-                cmd.getErr().println("error: " + ex.getMessage());
-                return 2;
-            }
-            throw ex;
-        });
-        return cl.execute(args);
+        cl.setExecutionExceptionHandler((ex, cmd, parsed) -> Failure.report(ex, cmd.getErr()));
+        try {
+            return cl.execute(args);
+        } catch (StackOverflowError | OutOfMemoryError | RuntimeException e) {   // errors picocli lets through
+            return Failure.report(e, cl.getErr());
+        }
     }
 
     /** No command: open the workbench, or print the usage where there is no display. */

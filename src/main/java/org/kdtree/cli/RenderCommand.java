@@ -4,6 +4,7 @@ import java.nio.file.Path;
 import java.util.concurrent.Callable;
 import org.kdtree.io.SceneFile;
 import org.kdtree.render.RenderJob;
+import org.kdtree.render.RenderLimits;
 import org.kdtree.render.Renderer;
 import org.kdtree.render.Scene;
 import picocli.CommandLine.Command;
@@ -45,30 +46,33 @@ public final class RenderCommand implements Callable<Integer> {
     boolean quiet;
 
     @Override public Integer call() throws Exception {
+        checkOutput();
         Scene s = SceneFile.read(scene);
-        if (spp != null) {
-            if (spp < 1) throw new IllegalArgumentException("--spp must be at least 1");
-            s = s.withSamplesPerPixel(spp);
-        }
-        if (rayDepth != null) {
-            if (rayDepth < 0) throw new IllegalArgumentException("--ray-depth must be at least 0");
-            s = s.withMaxDepth(rayDepth);
-        }
+        if (spp != null) s = s.withSamplesPerPixel(RenderLimits.check("--spp", spp, 1, RenderLimits.MAX_SAMPLES_PER_PIXEL));
+        if (rayDepth != null) s = s.withMaxDepth(RenderLimits.check("--ray-depth", rayDepth, 0, RenderLimits.MAX_RAY_DEPTH));
         if (width != null || height != null) {
-            int w = width != null ? width : s.camera().width(), h = height != null ? height : s.camera().height();
-            if (w < 1 || h < 1) throw new IllegalArgumentException("--width and --height must be at least 1");
+            int w = width != null ? RenderLimits.check("--width", width, 1, RenderLimits.MAX_IMAGE_SIDE) : s.camera().width();
+            int h = height != null ? RenderLimits.check("--height", height, 1, RenderLimits.MAX_IMAGE_SIDE) : s.camera().height();
             s = s.withImageSize(w, h);
         }
         Renderer.Options o = Renderer.Options.defaults();
-        if (threads != null) {
-            if (threads < 1) throw new IllegalArgumentException("--threads must be at least 1");
-            o = o.withThreads(threads);
-        }
+        if (threads != null) o = o.withThreads(RenderLimits.check("--threads", threads, 1, 256));
         if (!quiet) o = o.withProgress(System.err);
         RenderJob job = RenderJob.run(s, options.create(), o);
         job.result().image().writePng(output);
         System.out.print(job.summary());
         System.out.println("wrote " + output);
         return 0;
+    }
+
+    /** Refuses, before any rendering, an output the image could not be written to. */
+    private void checkOutput() {
+        if (java.nio.file.Files.isDirectory(output))
+            throw new IllegalArgumentException("-o " + output + ": is a folder; give a file name such as " + output.resolve("render.png"));
+        if (!output.getFileName().toString().toLowerCase(java.util.Locale.ROOT).endsWith(".png"))
+            throw new IllegalArgumentException("-o " + output + ": the image is written as PNG; give a file name ending in .png");
+        Path folder = output.toAbsolutePath().getParent();
+        if (folder != null && !java.nio.file.Files.isDirectory(folder))
+            throw new IllegalArgumentException("-o " + output + ": the folder " + folder + " does not exist");
     }
 }

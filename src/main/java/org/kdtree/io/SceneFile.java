@@ -14,6 +14,7 @@ import org.kdtree.render.Camera;
 import org.kdtree.render.GeometryBuilder;
 import org.kdtree.render.Light;
 import org.kdtree.render.Material;
+import org.kdtree.render.RenderLimits;
 import org.kdtree.render.Scene;
 import org.kdtree.render.Tessellation;
 import org.kdtree.render.Vec3;
@@ -56,8 +57,8 @@ public final class SceneFile {
         Camera camera = camera(root.get("camera"));
         Vec3 background = root.has("background") ? vec(root.get("background")) : Vec3.ZERO;
         Vec3 ambient = root.has("ambient") ? vec(root.get("ambient")) : Vec3.ZERO;
-        int spp = root.has("samplesPerPixel") ? root.get("samplesPerPixel").integer(1, 4096) : 1;
-        int maxDepth = root.has("maxDepth") ? root.get("maxDepth").integer(0, 64) : 5;
+        int spp = root.has("samplesPerPixel") ? root.get("samplesPerPixel").integer(1, RenderLimits.MAX_SAMPLES_PER_PIXEL) : 1;
+        int maxDepth = root.has("maxDepth") ? root.get("maxDepth").integer(0, RenderLimits.MAX_RAY_DEPTH) : 5;
         long seed = root.has("seed") ? root.get("seed").integer(0, Integer.MAX_VALUE) : 1;
         if (root.has("materials")) {
             JsonNode ms = root.get("materials");
@@ -82,7 +83,8 @@ public final class SceneFile {
         JsonNode fov = c.get("fov");
         double f = fov.number();
         if (f <= 0 || f >= 180) throw fov.error("field of view must be between 0 and 180 degrees, got " + f);
-        return new Camera(eye, at, up, f, c.get("width").integer(1, 16384), c.get("height").integer(1, 16384));
+        return new Camera(eye, at, up, f, c.get("width").integer(1, RenderLimits.MAX_IMAGE_SIDE),
+                c.get("height").integer(1, RenderLimits.MAX_IMAGE_SIDE));
     }
 
     private Material material(String name, JsonNode m) throws SceneFormatException {
@@ -120,7 +122,7 @@ public final class SceneFile {
                 l.allowOnly("type", "center", "normal", "size", "samples", "color", "intensity", "shadows");
                 double size = l.get("size").number();
                 if (size <= 0) throw l.get("size").error("must be positive");
-                int samples = l.has("samples") ? l.get("samples").integer(1, 1024) : 16;
+                int samples = l.has("samples") ? l.get("samples").integer(1, RenderLimits.MAX_LIGHT_SAMPLES) : 16;
                 return new Light.Area(vec(l.get("center")), unit(l.get("normal")), size, samples, color, shadows);
             }
             default -> throw l.get("type").error("unknown light type '" + type + "' (point, directional, area)");

@@ -98,6 +98,10 @@ public final class ProceduralScenes {
     public static TriangleMesh grid(TriangleMesh mesh, int g) {
         if (g < 1) throw new IllegalArgumentException("grid size must be >= 1, got " + g);
         if (g == 1) return mesh;
+        long triangles = (long) mesh.size() * g * g, limit = 1 << 28;
+        if (triangles > limit || (long) mesh.vertexCount() * g * g > limit)
+            throw new IllegalArgumentException(String.format(java.util.Locale.ROOT,
+                    "a %d x %d grid of %,d triangles would hold %,d; at most %,d fit", g, g, mesh.size(), triangles, limit));
         double[] v = mesh.vertices();
         int[] f = mesh.indices();
         Box box = vertexBounds(mesh);

@@ -17,7 +17,7 @@ class RenderCommandTest {
     }
 
     @Test void rendersTheCornellBoxToPngWithSummaryAndProgressBar() throws Exception {
-        Path png = dir.resolve("out/cornell.png");
+        Path png = java.nio.file.Files.createDirectories(dir.resolve("out")).resolve("cornell.png");
         CliRun r = run("render", "scenes/cornell-box.json", "-o", png.toString(), "--builder", "sah", "--lambda", "0.8",
                 "--threads", "2", "--spp", "1", "--width", "32", "--height", "24");
         assertThat(r.code()).as(r.err()).isZero();
@@ -49,8 +49,8 @@ class RenderCommandTest {
         assertThat(r.code()).isEqualTo(2);
         assertThat(r.err()).contains("missing.json: no such file").doesNotContain("Exception");
         r = run("render", "scenes/diffuse-only.json", "--ray-depth", "-1");
-        assertThat(r.err()).contains("--ray-depth must be at least 0");
+        assertThat(r.err()).contains("--ray-depth must be between 0 and 64, got -1");
         r = run("render", "scenes/diffuse-only.json", "--threads", "0");
-        assertThat(r.err()).contains("--threads must be at least 1");
+        assertThat(r.err()).contains("--threads must be between 1 and 256, got 0");
     }
 }

@@ -1,0 +1,52 @@
+package org.kdtree.cli;
+
+import static org.assertj.core.api.Assertions.assertThat;
+
+import java.io.PrintWriter;
+import java.io.StringWriter;
+import java.nio.file.Files;
+import java.nio.file.Path;
+import java.util.regex.Matcher;
+import java.util.regex.Pattern;
+import org.junit.jupiter.api.Test;
+
+/** Whatever goes wrong, the command line prints one line, never a stack trace. */
+class FailureTest {
+    @Test void anUnexpectedFailureIsOneLineWithTheFullReportInAFile() throws Exception {
+        StringWriter err = new StringWriter();
+        int code = Failure.report(new IllegalStateException("tree exceeds 67108863 nodes"), new PrintWriter(err, true));
+        assertThat(code).isEqualTo(Failure.INTERNAL);
+        String line = err.toString().strip();
+        assertThat(line).doesNotContain("\n").startsWith("error: unexpected IllegalStateException: tree exceeds 67108863 nodes");
+        Matcher m = Pattern.compile("report is in (\\S+)\\)").matcher(line);
+        assertThat(m.find()).as(line).isTrue();
+        Path report = Path.of(m.group(1));
+        assertThat(Files.readString(report)).contains("IllegalStateException", "at org.kdtree.cli.FailureTest");
+        Files.delete(report);
+    }
+
+    @Test void runningOutOfMemorySaysHowToGiveJavaMore() {
+        StringWriter err = new StringWriter();
+        assertThat(Failure.report(new OutOfMemoryError("Java heap space"), new PrintWriter(err, true))).isEqualTo(Failure.MEMORY);
+        assertThat(err.toString()).startsWith("error: out of memory (Java may use ").contains("-Xmx");
+    }
+
+    @Test void renderAndStatsOptionsOutOfRangeAreOneLine() {
+        String[][] cases = {
+                {"render", "scenes/cornell-box.json", "--width", "100000", "-o", "x.png"}, {"--width must be between 1 and 16384, got 100000"},
+                {"render", "scenes/cornell-box.json", "--spp", "1000000000", "-o", "x.png"}, {"--spp must be between 1 and 4096"},
+                {"render", "scenes/cornell-box.json", "--ray-depth", "5000", "-o", "x.png"}, {"--ray-depth must be between 0 and 64"},
+                {"render", "scenes/cornell-box.json", "-o", "scenes"}, {"-o scenes: is a folder"},
+                {"render", "scenes/cornell-box.json", "-o", "x.jpg"}, {"give a file name ending in .png"},
+                {"render", "scenes/cornell-box.json", "-o", "no-such-folder/x.png"}, {"does not exist"},
+                {"stats", "scenes/clustered-spheres.obj", "--grid", "1000"}, {"a 1000 x 1000 grid of 10,370 triangles would hold"},
+                {"stats", "scenes/clustered-spheres.obj", "--reference-budget", "0"}, {"reference budget must be in 1..65536"},
+        };
+        for (int i = 0; i < cases.length; i += 2) {
+            CliRun r = CliRun.of(cases[i]);
+            assertThat(r.code()).as(String.join(" ", cases[i])).isEqualTo(2);
+            assertThat(r.err().strip()).as(String.join(" ", cases[i])).startsWith("error: ").contains(cases[i + 1][0])
+                    .doesNotContain("\n").doesNotContain("Exception");
+        }
+    }
+}
