@@ -20,7 +20,7 @@ public final class Main implements Runnable {
         cl.setExecutionExceptionHandler((ex, cmd, parsed) -> Failure.report(ex, cmd.getErr()));
         try {
             return cl.execute(args);
-        } catch (StackOverflowError | OutOfMemoryError | RuntimeException e) {   // errors picocli lets through
+        } catch (RuntimeException | Error e) {   // what picocli lets through: errors, failures outside a command
             return Failure.report(e, cl.getErr());
         }
     }

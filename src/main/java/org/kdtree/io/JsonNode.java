@@ -38,13 +38,21 @@ public final class JsonNode {
 
     /** Parses one JSON document; syntax errors become {@link SceneFormatException}s with the line. */
     public static JsonNode parse(Reader reader, String file) throws SceneFormatException {
-        JsonReader in = new JsonReader(reader);
+        String text;
         try {
-            JsonNode root = read(in, file);
+            text = new java.io.BufferedReader(reader).lines().collect(java.util.stream.Collectors.joining("\n"));
+        } catch (java.io.UncheckedIOException e) {
+            throw new SceneFormatException(file, 0, e.getCause().getMessage());
+        }
+        JsonReader in = new JsonReader(new java.io.StringReader(text));
+        try {
+            JsonNode root = read(in, file, 0);
             if (in.peek() != JsonToken.END_DOCUMENT)
                 throw new SceneFormatException(file, lineOf(in), "unexpected content after the end of the scene");
             return root;
-        } catch (MalformedJsonException | IllegalStateException | NumberFormatException e) {
+        } catch (MalformedJsonException e) {
+            throw new SceneFormatException(file, lineOf(in), JsonSyntax.explain(e.getMessage(), text));
+        } catch (IllegalStateException | NumberFormatException e) {
             throw new SceneFormatException(file, lineOf(in), "malformed JSON: " + e.getMessage());
         } catch (EOFException e) {
             throw new SceneFormatException(file, lineOf(in), "unexpected end of file");
@@ -55,7 +63,13 @@ public final class JsonNode {
         }
     }
 
-    private static JsonNode read(JsonReader in, String file) throws IOException {
+    /** How deep arrays and objects may nest: a scene needs 4 levels; 100,000 would overflow the stack. */
+    static final int MAX_NESTING = 64;
+
+    private static JsonNode read(JsonReader in, String file, int depth) throws IOException {
+        if (depth > MAX_NESTING)
+            throw new SceneFormatException(file, lineOf(in), "arrays and objects nested deeper than "
+                    + MAX_NESTING + " levels; a scene needs no more than 4");
         JsonToken token = in.peek();
         int line = lineOf(in);
         String path = in.getPath();
@@ -67,7 +81,7 @@ public final class JsonNode {
                     String name = in.nextName();
                     if (fields.containsKey(name))
                         throw new SceneFormatException(file, lineOf(in), in.getPath() + ": field '" + name + "' given twice");
-                    fields.put(name, read(in, file));
+                    fields.put(name, read(in, file, depth + 1));
                 }
                 in.endObject();
                 return new JsonNode(fields, false, file, line, path);
@@ -75,7 +89,7 @@ public final class JsonNode {
             case BEGIN_ARRAY -> {
                 List<JsonNode> items = new ArrayList<>();
                 in.beginArray();
-                while (in.hasNext()) items.add(read(in, file));
+                while (in.hasNext()) items.add(read(in, file, depth + 1));
                 in.endArray();
                 return new JsonNode(items, false, file, line, path);
             }
