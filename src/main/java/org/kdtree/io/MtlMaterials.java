@@ -81,9 +81,9 @@ public final class MtlMaterials {
                 } else if (SCALARS.contains(key) && t.length == 2) {
                     number(t[1], key, name, i + 1);
                 } else if (key.equals("illum") && t.length == 2) {
-                    double v = number(t[1], key, name, i + 1);
-                    if (v != Math.rint(v) || v < 0 || v > 10)
-                        throw new SceneFormatException(name, i + 1, "illum must be a whole number from 0 to 10, got " + t[1]);
+                    // written as digits only: the MTL reader takes it as an int, and "2.0" is not one
+                    if (!t[1].matches("\\d{1,2}") || Integer.parseInt(t[1]) > 10)
+                        throw new SceneFormatException(name, i + 1, "illum must be a whole number from 0 to 10 (digits only), got " + t[1]);
                 } else {
                     throw new SceneFormatException(name, i + 1, key + ": wrong number of values in '" + s + "'");
                 }

@@ -139,5 +139,7 @@ class SceneFileTest {
         assertThat(ms.get("i2").specular().x()).isEqualTo(0.5);
         assertThat(ms.get("i1").specular().isZero()).isTrue();
         assertThatThrownBy(() -> MtlMaterials.read(write("x.mtl", "newmtl a\nillum 12\n"))).hasMessageContaining("x.mtl:2: illum must be");
+        assertThatThrownBy(() -> MtlMaterials.read(write("y.mtl", "newmtl a\nKd 1 1 1\nillum 2.0\n")))
+                .hasMessageEndingWith("y.mtl:3: illum must be a whole number from 0 to 10 (digits only), got 2.0");
     }
 }
