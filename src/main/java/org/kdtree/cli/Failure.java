@@ -25,6 +25,11 @@ final class Failure {
             err.println("error: " + failure.getMessage());
             return USAGE;
         }
+        if (failure instanceof java.awt.AWTError || failure instanceof java.awt.HeadlessException) {
+            err.println("error: cannot open a window (" + failure.getMessage() + "); the commands render, stats, raycast and "
+                    + "tradeoff need no display");
+            return USAGE;
+        }
         if (failure instanceof OutOfMemoryError) {
             long mb = Runtime.getRuntime().maxMemory() >> 20;
             err.println("error: out of memory (Java may use " + mb + " MB here); give it more, for example "

@@ -78,6 +78,9 @@ public final class RaycastCommand implements Callable<Integer> {
         KdTree tree = builder.build(scene);
         Traverser traverser = new Traverser(tree, new TriangleIntersector(scene));
         if (!Files.isRegularFile(raysFile)) throw new java.io.IOException(raysFile + ": no such file");
+        Path hitsFolder = hitsFile.toAbsolutePath().getParent();
+        if (!hitsFile.toString().equals("-") && hitsFolder != null && !Files.isDirectory(hitsFolder))
+            throw new java.io.IOException("--hits " + hitsFile + ": the folder " + hitsFolder + " does not exist");
         try (BufferedReader in = Files.newBufferedReader(raysFile, StandardCharsets.UTF_8);
              PrintWriter out = hitsFile.toString().equals("-") ? new PrintWriter(System.out)
                      : new PrintWriter(Files.newBufferedWriter(hitsFile, StandardCharsets.UTF_8))) {

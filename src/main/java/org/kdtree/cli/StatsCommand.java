@@ -39,6 +39,7 @@ public final class StatsCommand implements Callable<Integer> {
     int grid;
 
     @Override public Integer call() throws Exception {
+        if (runs < 1 || warmup < 0) throw new IllegalArgumentException("--runs must be at least 1 and --warmup at least 0");
         Primitives prims = SceneLoader.load(scene);
         if (grid != 1) {
             if (!(prims instanceof TriangleMesh mesh)) throw new IllegalArgumentException("--grid applies to OBJ meshes only");

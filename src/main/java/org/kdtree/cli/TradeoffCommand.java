@@ -65,6 +65,11 @@ public final class TradeoffCommand implements Callable<Integer> {
     @Override public Integer call() throws Exception {
         if (grid < 1 || grid > 16) throw new IllegalArgumentException("--grid must be in 1..16, got " + grid);
         if (rayCount < 1) throw new IllegalArgumentException("--ray-count must be positive, got " + rayCount);
+        if (countedRays < 1) throw new IllegalArgumentException("--counted-rays must be positive, got " + countedRays);
+        if (runs < 1) throw new IllegalArgumentException("--runs must be at least 1, got " + runs);
+        if (!(chartRaysPerTriangle > 0)) throw new IllegalArgumentException("--chart-rpt must be positive, got " + chartRaysPerTriangle);
+        if (!mesh.getFileName().toString().toLowerCase(java.util.Locale.ROOT).endsWith(".obj"))
+            throw new IllegalArgumentException(mesh + ": tradeoff traces rays through a triangle mesh; give an OBJ file");
         TriangleMesh m = ObjMeshReader.read(mesh);
         if (grid > 1) m = ProceduralScenes.grid(m, grid);
         var bounds = m.bounds();

@@ -25,6 +25,13 @@ class FailureTest {
         Files.delete(report);
     }
 
+    @Test void noDisplayIsAUserLineNotABug() {
+        StringWriter err = new StringWriter();
+        assertThat(Failure.report(new java.awt.AWTError("Can't connect to X11 window server using ':99'"), new PrintWriter(err, true)))
+                .isEqualTo(Failure.USAGE);
+        assertThat(err.toString()).startsWith("error: cannot open a window").contains("need no display").doesNotContain("bug");
+    }
+
     @Test void runningOutOfMemorySaysHowToGiveJavaMore() {
         StringWriter err = new StringWriter();
         assertThat(Failure.report(new OutOfMemoryError("Java heap space"), new PrintWriter(err, true))).isEqualTo(Failure.MEMORY);
@@ -41,6 +48,11 @@ class FailureTest {
                 {"render", "scenes/cornell-box.json", "-o", "no-such-folder/x.png"}, {"does not exist"},
                 {"stats", "scenes/clustered-spheres.obj", "--grid", "1000"}, {"a 1000 x 1000 grid of 10,370 triangles would hold"},
                 {"stats", "scenes/clustered-spheres.obj", "--reference-budget", "0"}, {"reference budget must be in 1..65536"},
+                {"stats", "scenes/clustered-spheres.obj", "--runs", "0"}, {"--runs must be at least 1"},
+                {"tradeoff", "scenes/talk-figures.scene2d"}, {"give an OBJ file"},
+                {"tradeoff", "scenes/clustered-spheres.obj", "--chart-rpt", "-5"}, {"--chart-rpt must be positive"},
+                {"raycast", "scenes/clustered-spheres.obj", "--rays", "scenes/clustered-spheres.obj", "--hits", "no-such-folder/h.txt"},
+                {"the folder"},
         };
         for (int i = 0; i < cases.length; i += 2) {
             CliRun r = CliRun.of(cases[i]);
