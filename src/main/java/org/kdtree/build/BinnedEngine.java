@@ -16,7 +16,7 @@ import org.kdtree.tree.KdTreeWriter;
  * <p>It builds the very tree the recursion builds with {@link SahBuilder.Algorithm#BINNED}: the
  * same histograms and candidates, the same costs and first minimum, the same partition
  * ({@link Partition#classify}, {@link Partition#straddlerBounds}) in the same order, the same
- * safety nets.
+ * safety nets (depth cap, separates nothing, {@link ReferenceBudget}).
  */
 final class BinnedEngine extends ForkingEngine<BinnedEngine> {
     private final Primitives prims;

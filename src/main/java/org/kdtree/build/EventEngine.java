@@ -14,11 +14,11 @@ import org.kdtree.tree.KdTreeWriter;
  * <p>It builds the very tree {@link SahBuilder} builds through {@link KdTreeBuilder}'s recursion
  * with the naive or the sorted search: the same candidates (the clipped bounds),
  * the same costs ({@link SahCost}), the same first minimum ({@link SahSplit}), the same safety
- * nets (depth cap, a split that separates nothing makes a leaf), and leaves list their
- * primitives in increasing order, as the recursion's stable partitions do.
+ * nets (depth cap, a split that separates nothing makes a leaf, the {@link ReferenceBudget}), and
+ * leaves list their primitives in increasing order, as the recursion's stable partitions do.
  *
  * <p>One engine serves one thread of work: the whole build, or a subtree handed to another
- * thread, which gets an engine (and scratch memory) of its own.
+ * thread, which gets an idle engine of the build, with its scratch memory ({@link ForkingEngine}).
  */
 final class EventEngine extends ForkingEngine<EventEngine> {
     final Primitives prims;

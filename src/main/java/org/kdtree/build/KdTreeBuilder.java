@@ -21,12 +21,14 @@ import org.kdtree.tree.KdTreeWriter;
  *   return Node(p, recConst(T_L, V_L), recConst(T_R, V_R))
  * </pre>
  * Subclasses decide {@link #terminate} and {@link #findPlane}; they may override
- * {@link #split} (the O(N log N) SAH keeps sorted events in its nodes).
+ * {@link #split}; a subclass with an engine of its own that builds the same tree may override
+ * {@link #construct} (the SAH's event and binned engines do).
  *
- * <p>Two safety nets stand around the subclass's decisions, so that no input can make a
+ * <p>Three safety nets stand around the subclass's decisions, so that no input can make a
  * build run away: the recursion never goes deeper than {@link #maxDepth()} (default
- * {@code 8 + 1.3 log2 N}), and a split that sends every primitive to both children (it
- * separates nothing, as with thousands of coincident triangles) makes a leaf instead.
+ * {@code 8 + 1.3 log2 N}); a split that sends every primitive to both children (it separates
+ * nothing, as with thousands of coincident triangles) makes a leaf instead; and so does a split
+ * whose children would exceed the node's share of the {@link #referenceBudget()}.
  *
  * <p>A builder is configured before use and may be reused; {@link #build} is safe to call
  * from several threads only if the subclass keeps no per-build state in fields.
