@@ -68,7 +68,10 @@ public final class RaycastCommand implements Callable<Integer> {
         if ((raysFile == null) != (hitsFile == null))
             throw new IllegalArgumentException("--rays and --hits go together");
         if (runs < 1 || warmup < 0) throw new IllegalArgumentException("--runs must be >= 1 and --warmup >= 0");
+        if (!mesh.getFileName().toString().toLowerCase(java.util.Locale.ROOT).endsWith(".obj"))
+            throw new IllegalArgumentException(mesh + ": raycast traces rays through a triangle mesh; give an OBJ file");
         TriangleMesh scene = ProceduralScenes.grid(ObjMeshReader.read(mesh), grid);
+        if (scene.size() == 0) throw new IllegalArgumentException(mesh + ": the mesh has no triangles (no 'f' lines)");
         KdTreeBuilder builder = options.create().threads(threads);
         if (raysFile != null) return traceFile(scene, builder);
         return benchmark(scene, builder);

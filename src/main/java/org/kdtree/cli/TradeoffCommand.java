@@ -71,6 +71,7 @@ public final class TradeoffCommand implements Callable<Integer> {
         if (!mesh.getFileName().toString().toLowerCase(java.util.Locale.ROOT).endsWith(".obj"))
             throw new IllegalArgumentException(mesh + ": tradeoff traces rays through a triangle mesh; give an OBJ file");
         TriangleMesh m = ObjMeshReader.read(mesh);
+        if (m.size() == 0) throw new IllegalArgumentException(mesh + ": the mesh has no triangles (no 'f' lines)");
         if (grid > 1) m = ProceduralScenes.grid(m, grid);
         var bounds = m.bounds();
         RaySet set = switch (rays.toUpperCase(Locale.ROOT)) {

@@ -25,6 +25,15 @@ class FailureTest {
         Files.delete(report);
     }
 
+    @Test void anEmptyMeshIsRefusedBeforeAnyRayIsTraced(@org.junit.jupiter.api.io.TempDir Path dir) throws Exception {
+        Path empty = Files.writeString(dir.resolve("empty.obj"), "# no faces\nv 0 0 0\n");
+        for (String command : new String[] {"raycast", "tradeoff"}) {
+            CliRun r = CliRun.of(command, empty.toString());
+            assertThat(r.code()).isEqualTo(2);
+            assertThat(r.err().strip()).isEqualTo("error: " + empty + ": the mesh has no triangles (no 'f' lines)");
+        }
+    }
+
     @Test void noDisplayIsAUserLineNotABug() {
         StringWriter err = new StringWriter();
         assertThat(Failure.report(new java.awt.AWTError("Can't connect to X11 window server using ':99'"), new PrintWriter(err, true)))
@@ -50,6 +59,7 @@ class FailureTest {
                 {"stats", "scenes/clustered-spheres.obj", "--reference-budget", "0"}, {"reference budget must be in 1..65536"},
                 {"stats", "scenes/clustered-spheres.obj", "--runs", "0"}, {"--runs must be at least 1"},
                 {"tradeoff", "scenes/talk-figures.scene2d"}, {"give an OBJ file"},
+                {"raycast", "scenes/talk-figures.scene2d"}, {"give an OBJ file"},
                 {"tradeoff", "scenes/clustered-spheres.obj", "--chart-rpt", "-5"}, {"--chart-rpt must be positive"},
                 {"raycast", "scenes/clustered-spheres.obj", "--rays", "scenes/clustered-spheres.obj", "--hits", "no-such-folder/h.txt"},
                 {"the folder"},
