@@ -17,6 +17,12 @@ public final class Main implements Runnable {
     public static int run(String... args) {
         CommandLine cl = new CommandLine(new Main());
         cl.setCaseInsensitiveEnumValuesAllowed(true);
+        if (args.length > 0 && !args[0].startsWith("-") && !cl.getSubcommands().containsKey(args[0])) {
+            // picocli would print the top-level help for "knn --help" and exit 0
+            cl.getErr().println("error: unknown command '" + args[0] + "'; the commands are "
+                    + String.join(", ", cl.getSubcommands().keySet()) + " (kdtree --help)");
+            return Failure.USAGE;
+        }
         cl.setExecutionExceptionHandler((ex, cmd, parsed) -> Failure.report(ex, cmd.getErr()));
         try {
             return cl.execute(args);

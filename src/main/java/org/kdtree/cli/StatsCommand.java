@@ -6,6 +6,7 @@ import java.util.Locale;
 import java.util.concurrent.Callable;
 import org.kdtree.build.KdTreeBuilder;
 import org.kdtree.io.SceneLoader;
+import org.kdtree.render.RenderJob;
 import org.kdtree.shape.Primitives;
 import org.kdtree.shape.ProceduralScenes;
 import org.kdtree.shape.TriangleMesh;
@@ -55,7 +56,7 @@ public final class StatsCommand implements Callable<Integer> {
             ms[i] = (System.nanoTime() - t0) / 1e6;
         }
         Arrays.sort(ms);
-        System.out.printf(Locale.ROOT, "scene: %s (%d primitives, %d-D)%n", scene, prims.size(), prims.dimension());
+        System.out.printf(Locale.ROOT, "scene: %s (%s, %d-D)%n", scene, RenderJob.count(prims.size(), "primitive"), prims.dimension());
         System.out.printf(Locale.ROOT, "builder: %s (%s)%n", builder.name(), builder.describeSettings());
         System.out.printf(Locale.ROOT, "build time: %.1f ms%s%n", ms[ms.length / 2],
                 ms.length > 1 ? " (median of " + ms.length + ", after " + warmup + " warm-up)" : "");

@@ -35,6 +35,7 @@ import org.kdtree.render.EffectPlan;
 import org.kdtree.render.Image;
 import org.kdtree.render.RayCounts;
 import org.kdtree.render.RayKind;
+import org.kdtree.render.RenderJob;
 import org.kdtree.render.Scene;
 import org.kdtree.render.Tracer;
 import org.kdtree.shape.Primitives;
@@ -181,8 +182,8 @@ public final class View3D extends JPanel {
         long t0 = System.nanoTime();
         KdTree tree = b.build(p);
         double ms = (System.nanoTime() - t0) / 1e6;
-        return String.format(Locale.ROOT, "scene: %s (%d primitives, no camera: statistics only)%nbuilder: %s (%s)%n"
-                + "build time: %.1f ms%n%s%n", file.getFileName(), p.size(), b.name(), b.describeSettings(), ms, tree.stats().describe());
+        return String.format(Locale.ROOT, "scene: %s (%s, no camera: statistics only)%nbuilder: %s (%s)%n"
+                + "build time: %.1f ms%n%s%n", file.getFileName(), RenderJob.count(p.size(), "primitive"), b.name(), b.describeSettings(), ms, tree.stats().describe());
     }
 
     /** Renders tile by tile over all cores; the picture shows the image as tiles complete. */
@@ -234,8 +235,9 @@ public final class View3D extends JPanel {
         RayCounts total = new RayCounts();
         for (RayCounts c : counts) total.merge(c);
         StringBuilder out = new StringBuilder();
-        out.append(String.format(Locale.ROOT, "scene: %s (%d triangles)%nimage: %d x %d, %d samples per pixel, %d threads%n",
-                file.getFileName(), scene3.mesh().size(), w, h, scene3.samplesPerPixel(), threads));
+        out.append(String.format(Locale.ROOT, "scene: %s (%s)%nimage: %d x %d, %s per pixel, %s%n",
+                file.getFileName(), RenderJob.count(scene3.mesh().size(), "triangle"), w, h,
+                RenderJob.count(scene3.samplesPerPixel(), "sample"), RenderJob.count(threads, "thread")));
         out.append(plan.describe()).append('\n');
         out.append(String.format(Locale.ROOT, "builder: %s (%s)%nbuild time: %.1f ms%nrender time: %.1f ms%s%n",
                 b.name(), b.describeSettings(), (t1 - t0) / 1e6, (t2 - t1) / 1e6, cancelled ? " (stopped)" : ""));

@@ -27,22 +27,27 @@ public record RenderJob(Scene scene, KdTree tree, long buildNanos, RenderResult 
         return new RenderJob(scene, tree, buildNanos, result);
     }
 
+    /** "1 light", "2 lights": a count with its noun, in the plural where it is not one. */
+    public static String count(long n, String noun) {
+        return String.format(Locale.ROOT, "%,d %s%s", n, noun, n == 1 ? "" : "s");
+    }
+
     /** The summary printed after a render: scene, plan, times, rays by kind and per second, tree statistics. */
     public String summary() {
         StringBuilder s = new StringBuilder();
         Camera c = scene.camera();
-        s.append(String.format(Locale.ROOT, "scene: %s (%d triangles, %d materials, %d lights)%n", scene.name(),
-                scene.mesh().size(), scene.materials().size(), scene.lights().size()));
-        s.append(String.format(Locale.ROOT, "image: %d x %d, %d samples per pixel, %d threads%n", c.width(), c.height(),
-                scene.samplesPerPixel(), result.threads()));
+        s.append(String.format(Locale.ROOT, "scene: %s (%s, %s, %s)%n", scene.name(), count(scene.mesh().size(), "triangle"),
+                count(scene.materials().size(), "material"), count(scene.lights().size(), "light")));
+        s.append(String.format(Locale.ROOT, "image: %d x %d, %s per pixel, %s%n", c.width(), c.height(),
+                count(scene.samplesPerPixel(), "sample"), count(result.threads(), "thread")));
         s.append(result.plan().describe()).append(System.lineSeparator());
         s.append(String.format(Locale.ROOT, "build time: %.1f ms (%s)%n", buildNanos / 1e6, tree.builderName()));
         s.append(String.format(Locale.ROOT, "render time: %.1f ms%n", result.renderNanos() / 1e6));
         s.append("rays:").append(System.lineSeparator());
+        // counts per kind; one rate for them all: the kinds are traced interleaved, not timed apart
         for (RayKind k : RayKind.values())
-            s.append(String.format(Locale.ROOT, "  %-10s %,14d  %,14.0f rays/s%n", k.label(), result.rays().get(k),
-                    result.raysPerSecond(k)));
-        s.append(String.format(Locale.ROOT, "  %-10s %,14d  %,14.0f rays/s%n", "total", result.rays().total(),
+            s.append(String.format(Locale.ROOT, "  %-10s %,14d%n", k.label(), result.rays().get(k)));
+        s.append(String.format(Locale.ROOT, "  %-10s %,14d  (%,.0f rays/s over the render time)%n", "total", result.rays().total(),
                 result.rays().total() / Math.max(1e-9, result.renderNanos() / 1e9)));
         s.append("tree:").append(System.lineSeparator());
         for (String line : tree.stats().describe().split("\\R")) s.append("  ").append(line).append(System.lineSeparator());

@@ -18,9 +18,4 @@ public record RenderResult(Image image, EffectPlan plan, RayCounts rays, long re
         if (pixelRays == null) throw new IllegalStateException("per-pixel rays were not recorded");
         return pixelRays[kind.ordinal()][y * image.width() + x];
     }
-
-    /** Rays per second of {@code kind} over the render's wall-clock time. */
-    public double raysPerSecond(RayKind kind) {
-        return rays.get(kind) / Math.max(1e-9, renderNanos / 1e9);
-    }
 }

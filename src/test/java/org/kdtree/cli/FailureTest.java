@@ -34,6 +34,20 @@ class FailureTest {
         }
     }
 
+    @Test void anUnknownCommandIsAnErrorEvenWithHelp() {
+        CliRun r = CliRun.of("knn", "--help");
+        assertThat(r.code()).isEqualTo(2);
+        assertThat(r.err().strip()).isEqualTo("error: unknown command 'knn'; the commands are gui, stats, raycast, render, tradeoff (kdtree --help)");
+    }
+
+    @Test void countsAgreeWithTheirNouns() {
+        assertThat(org.kdtree.render.RenderJob.count(1, "light")).isEqualTo("1 light");
+        assertThat(org.kdtree.render.RenderJob.count(0, "light")).isEqualTo("0 lights");
+        assertThat(org.kdtree.render.RenderJob.count(69451, "triangle")).isEqualTo("69,451 triangles");
+        CliRun r = CliRun.of("stats", "scenes/talk-figures.scene2d");
+        assertThat(r.out()).contains("primitives, 2-D)").doesNotContain("1 primitives");
+    }
+
     @Test void noDisplayIsAUserLineNotABug() {
         StringWriter err = new StringWriter();
         assertThat(Failure.report(new java.awt.AWTError("Can't connect to X11 window server using ':99'"), new PrintWriter(err, true)))

@@ -26,7 +26,7 @@ class RenderCommandTest {
         assertThat(img.getHeight()).isEqualTo(24);
         assertThat(r.out()).contains("effects: direct light", "reflection", "refraction", "soft shadows")
                 .contains("build time: ", "render time: ", "rays/s", "camera", "shadow", "nodes: ", "wrote " + png)
-                .contains("image: 32 x 24, 1 samples per pixel, 2 threads");
+                .contains("image: 32 x 24, 1 sample per pixel, 2 threads");
         assertThat(r.err()).contains("100% (4/4 tiles)");
     }
 
@@ -35,7 +35,7 @@ class RenderCommandTest {
                 "--spp", "1", "--width", "16", "--height", "16", "-q");
         assertThat(r.code()).as(r.err()).isZero();
         assertThat(r.out()).contains("max depth: 0").doesNotContain("reflection,").doesNotContain("refraction,")
-                .containsPattern("reflection +0 ").containsPattern("refraction +0 ");
+                .containsPattern("reflection +0\\R").containsPattern("refraction +0\\R");
         assertThat(r.err()).isEmpty();
     }
 

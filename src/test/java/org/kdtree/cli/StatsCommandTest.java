@@ -63,7 +63,7 @@ class StatsCommandTest {
     @Test void gridRepeatsAMeshAndRefusesA2DScene() {
         CliRun r = run("stats", "scenes/clustered-spheres.obj", "--grid", "2");
         assertThat(r.code()).as(r.err()).isZero();
-        assertThat(r.out()).contains("(41480 primitives, 3-D)");
+        assertThat(r.out()).contains("(41,480 primitives, 3-D)");
         r = run("stats", "scenes/talk-figures.scene2d", "--grid", "2");
         assertThat(r.code()).isEqualTo(2);
         assertThat(r.err()).contains("--grid applies to OBJ meshes only");
