@@ -1,0 +1,36 @@
+package org.kdtree.examples;
+
+import java.nio.file.Path;
+import org.kdtree.build.Quality;
+import org.kdtree.build.SahBuilder;
+import org.kdtree.geom.Ray;
+import org.kdtree.io.ObjMeshReader;
+import org.kdtree.shape.TriangleMesh;
+import org.kdtree.traverse.Hit;
+import org.kdtree.traverse.Traverser;
+import org.kdtree.traverse.TriangleIntersector;
+import org.kdtree.tree.KdTree;
+
+/**
+ * The library used from code, as the README shows it: load a mesh, build a tree, trace a ray,
+ * read the statistics. {@code java -cp target/kdtree.jar org.kdtree.examples.LibraryExample scenes/clustered-spheres.obj}
+ */
+public final class LibraryExample {
+    private LibraryExample() {
+    }
+
+    public static void main(String[] args) throws Exception {
+        TriangleMesh mesh = ObjMeshReader.read(Path.of(args.length > 0 ? args[0] : "scenes/clustered-spheres.obj"));
+        KdTree tree = new SahBuilder().quality(Quality.EXACT).build(mesh);                 // Kt 15, Ki 20, lambda 0.8
+        Traverser rays = new Traverser(tree, new TriangleIntersector(mesh));              // one per thread
+        double[] aim = new double[3];                                                       // triangle 0's centre
+        for (int a = 0; a < 3; a++) aim[a] = (mesh.corner(0, 0, a) + mesh.corner(0, 1, a) + mesh.corner(0, 2, a)) / 3;
+        Ray ray = new Ray(new double[] {aim[0], aim[1], aim[2] - 100}, new double[] {0, 0, 1});
+        Hit hit = new Hit();
+        if (rays.closestHit(ray, 0, Double.POSITIVE_INFINITY, hit))
+            System.out.println("hit triangle " + hit.primitive + " at t = " + hit.t);
+        else
+            System.out.println("miss");
+        System.out.println(tree.stats().describe());                                     // nodes, depth, expected cost...
+    }
+}
