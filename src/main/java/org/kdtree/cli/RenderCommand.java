@@ -42,7 +42,7 @@ public final class RenderCommand implements Callable<Integer> {
     @Option(names = "--height", description = "Image height (default: the scene's).")
     Integer height;
 
-    @Option(names = {"-q", "--quiet"}, description = "No progress bar.")
+    @Option(names = {"-q", "--quiet"}, description = "No progress bar (there is none either when the output is not a terminal).")
     boolean quiet;
 
     @Override public Integer call() throws Exception {
@@ -57,7 +57,7 @@ public final class RenderCommand implements Callable<Integer> {
         }
         Renderer.Options o = Renderer.Options.defaults();
         if (threads != null) o = o.withThreads(RenderLimits.check("--threads", threads, 1, 256));
-        if (!quiet) o = o.withProgress(System.err);
+        if (!quiet && System.console() != null) o = o.withProgress(System.err);   // redrawn in place: a terminal's, not a log's
         RenderJob job = RenderJob.run(s, options.create(), o);
         job.result().image().writePng(output);
         System.out.print(job.summary());
