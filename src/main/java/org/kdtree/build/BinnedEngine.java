@@ -73,13 +73,8 @@ final class BinnedEngine extends ForkingEngine<BinnedEngine> {
                 (int) Math.min(1 << 28, EventEngine.REFS_PER_PRIMITIVE * (long) n));
         levels.reserve(0, n);
         int[] refs = levels.refs(0);
-        double[] bounds = levels.bounds(0);
-        Box b = new Box(k);
-        for (int i = 0; i < n; i++) {
-            refs[i] = i;
-            prims.bounds(i, b);
-            Partition.write(b, bounds, i);
-        }
+        for (int i = 0; i < n; i++) refs[i] = i;
+        Partition.writeAllBounds(prims, levels.bounds(0));
         int[] meta = levels.meta(0);
         meta[0] = 0;
         meta[1] = n;

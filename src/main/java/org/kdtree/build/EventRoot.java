@@ -16,11 +16,7 @@ final class EventRoot {
     static void write(EventEngine engine, Box rootVoxel) {
         int k = engine.k, n = engine.prims.size();
         double[] bounds = new double[2 * k * n], voxel = new double[2 * k];
-        Box b = new Box(k);
-        for (int i = 0; i < n; i++) {
-            engine.prims.bounds(i, b);
-            Partition.write(b, bounds, i);
-        }
+        Partition.writeAllBounds(engine.prims, bounds);
         for (int a = 0; a < k; a++) {
             voxel[a] = rootVoxel.min(a);
             voxel[k + a] = rootVoxel.max(a);

@@ -120,12 +120,8 @@ public abstract class KdTreeBuilder {
         int n = primitives.size(), k = primitives.dimension();
         int[] refs = new int[n];
         double[] clipped = new double[2 * k * n];
-        Box b = new Box(k);
-        for (int i = 0; i < n; i++) {
-            refs[i] = i;
-            primitives.bounds(i, b);
-            Partition.write(b, clipped, i);
-        }
+        for (int i = 0; i < n; i++) refs[i] = i;
+        Partition.writeAllBounds(primitives, clipped);
         return new BuildNode(rootVoxel, refs, clipped, 0);
     }
 

@@ -111,6 +111,15 @@ final class Partition {
         return true;
     }
 
+    /** Every primitive's own bounds, the root's clipped bounds: slot i of {@code dest} ({@code 2k} values a slot) for primitive i. */
+    static void writeAllBounds(Primitives prims, double[] dest) {
+        Box b = new Box(prims.dimension());
+        for (int i = 0; i < prims.size(); i++) {
+            prims.bounds(i, b);
+            write(b, dest, i);
+        }
+    }
+
     /** Writes {@code b} as the clipped bounds at slot {@code at} of {@code dest} ({@code 2k} values a slot). */
     static void write(Box b, double[] dest, int at) {
         int k = b.dimension();
