@@ -24,7 +24,10 @@ public enum Quality {
     /** c in this preset's depth cap {@code 8 + c log2 N}. */
     public double depthFactor() { return depthFactor; }
 
-    /** Sets {@code sah}'s algorithm (event) and depth cap to this preset's; other settings are left alone. */
+    /**
+     * Sets {@code sah}'s algorithm (event) and automatic depth cap to this preset's, clearing an
+     * explicit Kmaxdepth (set one after the preset to override it); other settings are left alone.
+     */
     public SahBuilder applyTo(SahBuilder sah) {
         sah.algorithm(SahBuilder.Algorithm.EVENT).maxDepth(-1);
         sah.depthFactor(depthFactor);
