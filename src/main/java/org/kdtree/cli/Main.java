@@ -24,6 +24,11 @@ public final class Main implements Runnable {
             return Failure.USAGE;
         }
         cl.setExecutionExceptionHandler((ex, cmd, parsed) -> Failure.report(ex, cmd.getErr()));
+        cl.setParameterExceptionHandler((ex, args1) -> {   // a bad option: one line and where to read more, not the whole usage
+            CommandLine cmd = ex.getCommandLine();
+            cmd.getErr().println("error: " + ex.getMessage() + " (" + cmd.getCommandSpec().qualifiedName() + " --help)");
+            return Failure.USAGE;
+        });
         try {
             return cl.execute(args);
         } catch (RuntimeException | Error e) {   // what picocli lets through: errors, failures outside a command

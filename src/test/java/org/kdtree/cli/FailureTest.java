@@ -34,6 +34,14 @@ class FailureTest {
         }
     }
 
+    @Test void aBadOptionIsOneLineWithWhereToReadMore() {
+        CliRun r = CliRun.of("stats", "scenes/clustered-spheres.obj", "--quality", "fastest");
+        assertThat(r.code()).isEqualTo(2);
+        assertThat(r.err().strip()).isEqualTo("error: Invalid value for option '--quality': expected one of [FAST, BALANCED, EXACT]"
+                + " (case-insensitive) but was 'fastest' (kdtree stats --help)");
+        assertThat(CliRun.of("render", "--nope", "x.json").err().strip()).isEqualTo("error: Unknown option: '--nope' (kdtree render --help)");
+    }
+
     @Test void anUnknownCommandIsAnErrorEvenWithHelp() {
         CliRun r = CliRun.of("knn", "--help");
         assertThat(r.code()).isEqualTo(2);
