@@ -69,8 +69,7 @@ final class BinnedEngine extends ForkingEngine<BinnedEngine> {
     /** Builds the whole tree into {@code out}. */
     void build(Box rootVoxel, KdTreeWriter out) {
         int n = prims.size();
-        out.reserve((int) Math.min(1 << 26, EventEngine.NODES_PER_PRIMITIVE * (long) n),
-                (int) Math.min(1 << 28, EventEngine.REFS_PER_PRIMITIVE * (long) n));
+        reserve(out, n);
         levels.reserve(0, n);
         int[] refs = levels.refs(0);
         for (int i = 0; i < n; i++) refs[i] = i;

@@ -21,6 +21,8 @@ import org.kdtree.tree.KdTreeWriter;
  * thread, which gets an idle engine of the build, with its scratch memory ({@link ForkingEngine}).
  */
 final class EventEngine extends ForkingEngine<EventEngine> {
+    private final SahBuilder settings;
+    private final BuildContext context;
     final Primitives prims;
     final int k;
     final boolean perfectSplits;
@@ -30,13 +32,18 @@ final class EventEngine extends ForkingEngine<EventEngine> {
     private final SahSplit best = new SahSplit();
     private final EventSplit split;
     private final double leafCostPerPrimitive;
-    private final int referenceBudget;
     private int[] leafRefs = new int[16];
     private double[] sortPos = new double[16];
     private int[] sortCode = new int[16];
 
     EventEngine(SahBuilder settings, BuildContext context) {
-        super(new java.util.concurrent.ConcurrentLinkedDeque<>());
+        this(settings, context, new java.util.concurrent.ConcurrentLinkedDeque<>());
+    }
+
+    private EventEngine(SahBuilder settings, BuildContext context, java.util.Deque<EventEngine> spares) {
+        super(spares);
+        this.settings = settings;
+        this.context = context;
         this.prims = context.primitives();
         this.k = prims.dimension();
         this.perfectSplits = settings.perfectSplits();
@@ -46,7 +53,6 @@ final class EventEngine extends ForkingEngine<EventEngine> {
         this.sah = new SahCost(settings.costModel(), settings.emptyWeight(), k);
         this.split = new EventSplit(this);
         this.leafCostPerPrimitive = settings.costModel().ki();
-        this.referenceBudget = settings.referenceBudget();
     }
 
     /** Whether the engine can build over {@code context} (at most 2^30 primitives). */
@@ -54,19 +60,11 @@ final class EventEngine extends ForkingEngine<EventEngine> {
         return context.primitives().size() < EventCode.MAX_PRIMITIVES;
     }
 
-    /**
-     * Nodes and leaf references an SAH tree has per primitive, a little above what the meshes
-     * measured gave (bunny 8.9 and 5.3, its 4 x 4 grid 9.5 and 5.6): the writer is sized for them
-     * up front rather than grown by doubling.
-     */
-    static final int NODES_PER_PRIMITIVE = 10, REFS_PER_PRIMITIVE = 6;
-
     /** Builds the whole tree into {@code out}. */
     void build(Box rootVoxel, KdTreeWriter out) {
-        long n = prims.size();
-        out.reserve((int) Math.min(1 << 26, NODES_PER_PRIMITIVE * n), (int) Math.min(1 << 28, REFS_PER_PRIMITIVE * n));
+        reserve(out, prims.size());
         EventRoot.write(this, rootVoxel);
-        levels.budget(0)[0] = ReferenceBudget.root(referenceBudget, (int) n);
+        levels.budget(0)[0] = ReferenceBudget.root(settings.referenceBudget(), prims.size());
         recConst(0, 0, out);
     }
 
@@ -94,22 +92,8 @@ final class EventEngine extends ForkingEngine<EventEngine> {
 
     int[] sortCodes() { return sortCode; }
 
-    private EventEngine(EventEngine parent, java.util.Deque<EventEngine> spares) {
-        super(spares);
-        this.prims = parent.prims;
-        this.k = parent.k;
-        this.perfectSplits = parent.perfectSplits;
-        this.depthCap = parent.depthCap;
-        this.forkThreshold = parent.forkThreshold;
-        this.levels = new EventLevels(k);
-        this.sah = new SahCost(parent.sah.model(), parent.sah.emptyWeight(), k);
-        this.split = new EventSplit(this);
-        this.leafCostPerPrimitive = parent.leafCostPerPrimitive;
-        this.referenceBudget = parent.referenceBudget;
-    }
-
     @Override EventEngine newSpare(java.util.Deque<EventEngine> spares) {
-        return new EventEngine(this, spares);
+        return new EventEngine(settings, context, spares);
     }
 
     @Override int copyRightChild(int d, EventEngine other) {

@@ -30,7 +30,7 @@ final class EventSort {
     }
 
     /** Unsigned-comparable bits of a double: the order of the doubles (with -0.0 below 0.0). */
-    static long key(double x) {
+    private static long key(double x) {
         long b = Double.doubleToRawLongBits(x);
         return b < 0 ? ~b : b ^ Long.MIN_VALUE;
     }

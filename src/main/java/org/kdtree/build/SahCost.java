@@ -87,9 +87,6 @@ public final class SahCost {
     /** Half the voxel's surface area; zero for a voxel no ray can meet with positive probability. */
     public double halfArea() { return halfArea; }
 
-    /** lambda, the weight of a plane that leaves one child empty. */
-    public double emptyWeight() { return emptyWeight; }
-
     /** Kt, Ki of this cost. */
     public CostModel model() { return model; }
 

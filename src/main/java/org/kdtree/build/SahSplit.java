@@ -31,16 +31,6 @@ public final class SahSplit {
         }
     }
 
-    /** Takes {@code other}'s plane if it is strictly cheaper (combining searches made in order). */
-    public void keepIfCheaper(SahSplit other) {
-        if (other.found() && other.cost < cost) {
-            cost = other.cost;
-            axis = other.axis;
-            position = other.position;
-            planarLeft = other.planarLeft;
-        }
-    }
-
     /** Forgets the plane, to search another node with the same object. */
     void reset() {
         axis = -1;
