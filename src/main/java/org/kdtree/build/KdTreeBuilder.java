@@ -40,6 +40,9 @@ public abstract class KdTreeBuilder {
     /** B, the references per input primitive a tree may hold at the most ({@link ReferenceBudget}). */
     public static final int DEFAULT_REFERENCE_BUDGET = 256;
 
+    /** The most threads a build (or a render) may use. */
+    public static final int MAX_THREADS = 256;
+
     /** The largest reference budget a setting may ask for. */
     public static final int MAX_REFERENCE_BUDGET = 1 << 16;
 
@@ -276,7 +279,7 @@ public abstract class KdTreeBuilder {
      * in parallel (fork/join); the tree is the same as with one thread.
      */
     public KdTreeBuilder threads(int n) {
-        if (n < 1 || n > 256) throw new IllegalArgumentException("threads must be in 1..256, got " + n);
+        if (n < 1 || n > MAX_THREADS) throw new IllegalArgumentException("threads must be in 1.." + MAX_THREADS + ", got " + n);
         this.threads = n;
         return this;
     }

@@ -9,7 +9,6 @@ import java.util.Arrays;
 import java.util.Locale;
 import java.util.concurrent.Callable;
 import org.kdtree.build.KdTreeBuilder;
-import org.kdtree.io.ObjMeshReader;
 import org.kdtree.shape.ProceduralScenes;
 import org.kdtree.shape.TriangleMesh;
 import org.kdtree.traverse.Traverser;
@@ -68,10 +67,7 @@ public final class RaycastCommand implements Callable<Integer> {
         if ((raysFile == null) != (hitsFile == null))
             throw new IllegalArgumentException("--rays and --hits go together");
         if (runs < 1 || warmup < 0) throw new IllegalArgumentException("--runs must be >= 1 and --warmup >= 0");
-        if (!mesh.getFileName().toString().toLowerCase(java.util.Locale.ROOT).endsWith(".obj"))
-            throw new IllegalArgumentException(mesh + ": raycast traces rays through a triangle mesh; give an OBJ file");
-        TriangleMesh scene = ProceduralScenes.grid(ObjMeshReader.read(mesh), grid);
-        if (scene.size() == 0) throw new IllegalArgumentException(mesh + ": the mesh has no triangles (no 'f' lines)");
+        TriangleMesh scene = ProceduralScenes.grid(CommandFiles.readMesh(mesh, "raycast"), grid);
         KdTreeBuilder builder = options.create().threads(threads);
         if (raysFile != null) return traceFile(scene, builder);
         return benchmark(scene, builder);
@@ -81,9 +77,7 @@ public final class RaycastCommand implements Callable<Integer> {
         KdTree tree = builder.build(scene);
         Traverser traverser = new Traverser(tree, new TriangleIntersector(scene));
         if (!Files.isRegularFile(raysFile)) throw new java.io.IOException(raysFile + ": no such file");
-        Path hitsFolder = hitsFile.toAbsolutePath().getParent();
-        if (!hitsFile.toString().equals("-") && hitsFolder != null && !Files.isDirectory(hitsFolder))
-            throw new java.io.IOException("--hits " + hitsFile + ": the folder " + hitsFolder + " does not exist");
+        if (!hitsFile.toString().equals("-")) CommandFiles.requireFolder("--hits", hitsFile);
         try (BufferedReader in = Files.newBufferedReader(raysFile, StandardCharsets.UTF_8);
              PrintWriter out = hitsFile.toString().equals("-") ? new PrintWriter(System.out)
                      : new PrintWriter(Files.newBufferedWriter(hitsFile, StandardCharsets.UTF_8))) {

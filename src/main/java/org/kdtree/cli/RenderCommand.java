@@ -2,6 +2,7 @@ package org.kdtree.cli;
 
 import java.nio.file.Path;
 import java.util.concurrent.Callable;
+import org.kdtree.build.KdTreeBuilder;
 import org.kdtree.io.SceneFile;
 import org.kdtree.render.RenderJob;
 import org.kdtree.render.RenderLimits;
@@ -56,7 +57,7 @@ public final class RenderCommand implements Callable<Integer> {
             s = s.withImageSize(w, h);
         }
         Renderer.Options o = Renderer.Options.defaults();
-        if (threads != null) o = o.withThreads(RenderLimits.check("--threads", threads, 1, 256));
+        if (threads != null) o = o.withThreads(RenderLimits.check("--threads", threads, 1, KdTreeBuilder.MAX_THREADS));
         if (!quiet && System.console() != null) o = o.withProgress(System.err);   // redrawn in place: a terminal's, not a log's
         RenderJob job = RenderJob.run(s, options.create(), o);
         job.result().image().writePng(output);
@@ -71,8 +72,6 @@ public final class RenderCommand implements Callable<Integer> {
             throw new IllegalArgumentException("-o " + output + ": is a folder; give a file name such as " + output.resolve("render.png"));
         if (!output.getFileName().toString().toLowerCase(java.util.Locale.ROOT).endsWith(".png"))
             throw new IllegalArgumentException("-o " + output + ": the image is written as PNG; give a file name ending in .png");
-        Path folder = output.toAbsolutePath().getParent();
-        if (folder != null && !java.nio.file.Files.isDirectory(folder))
-            throw new IllegalArgumentException("-o " + output + ": the folder " + folder + " does not exist");
+        CommandFiles.requireFolder("-o", output);
     }
 }

@@ -5,7 +5,6 @@ import java.nio.file.Path;
 import java.util.List;
 import java.util.Locale;
 import java.util.concurrent.Callable;
-import org.kdtree.io.ObjMeshReader;
 import org.kdtree.shape.ProceduralScenes;
 import org.kdtree.shape.TriangleMesh;
 import org.kdtree.tradeoff.RaySet;
@@ -68,10 +67,7 @@ public final class TradeoffCommand implements Callable<Integer> {
         if (countedRays < 1) throw new IllegalArgumentException("--counted-rays must be positive, got " + countedRays);
         if (runs < 1) throw new IllegalArgumentException("--runs must be at least 1, got " + runs);
         if (!(chartRaysPerTriangle > 0)) throw new IllegalArgumentException("--chart-rpt must be positive, got " + chartRaysPerTriangle);
-        if (!mesh.getFileName().toString().toLowerCase(java.util.Locale.ROOT).endsWith(".obj"))
-            throw new IllegalArgumentException(mesh + ": tradeoff traces rays through a triangle mesh; give an OBJ file");
-        TriangleMesh m = ObjMeshReader.read(mesh);
-        if (m.size() == 0) throw new IllegalArgumentException(mesh + ": the mesh has no triangles (no 'f' lines)");
+        TriangleMesh m = CommandFiles.readMesh(mesh, "tradeoff");
         if (grid > 1) m = ProceduralScenes.grid(m, grid);
         var bounds = m.bounds();
         RaySet set = switch (rays.toUpperCase(Locale.ROOT)) {
@@ -88,6 +84,8 @@ public final class TradeoffCommand implements Callable<Integer> {
         String base = mesh.getFileName().toString().replaceFirst("\\.[^.]*$", "") + (grid > 1 ? "-grid" + grid : "");
         Path csvOut = csv != null ? csv : Path.of("tradeoff-" + base + ".csv");
         Path pngOut = chart != null ? chart : Path.of("tradeoff-" + base + ".png");
+        CommandFiles.requireFolder("--csv", csvOut);
+        CommandFiles.requireFolder("--chart", pngOut);
 
         System.out.printf(Locale.ROOT, "scene: %s (%d triangles), rays: %s x %d, %d run(s), %d build thread(s)%n",
                 base, m.size(), set.name(), set.size(), runs, threads);

@@ -83,6 +83,7 @@ class FailureTest {
                 {"tradeoff", "scenes/talk-figures.scene2d"}, {"give an OBJ file"},
                 {"raycast", "scenes/talk-figures.scene2d"}, {"give an OBJ file"},
                 {"tradeoff", "scenes/clustered-spheres.obj", "--chart-rpt", "-5"}, {"--chart-rpt must be positive"},
+                {"tradeoff", "scenes/clustered-spheres.obj", "--csv", "no-such-folder/t.csv"}, {"--csv no-such-folder/t.csv: the folder"},
                 {"raycast", "scenes/clustered-spheres.obj", "--rays", "scenes/clustered-spheres.obj", "--hits", "no-such-folder/h.txt"},
                 {"the folder"},
         };

@@ -1,0 +1,30 @@
+package org.kdtree.cli;
+
+import java.io.IOException;
+import java.nio.file.Files;
+import java.nio.file.Path;
+import java.util.Locale;
+import org.kdtree.io.ObjMeshReader;
+import org.kdtree.shape.TriangleMesh;
+
+/** The files the commands read and write, checked before any work so that a mistake costs one line, not a run. */
+final class CommandFiles {
+    private CommandFiles() {
+    }
+
+    /** The triangle mesh {@code command} traces rays through: an OBJ file with at least one triangle. */
+    static TriangleMesh readMesh(Path mesh, String command) throws IOException {
+        if (!mesh.getFileName().toString().toLowerCase(Locale.ROOT).endsWith(".obj"))
+            throw new IllegalArgumentException(mesh + ": " + command + " traces rays through a triangle mesh; give an OBJ file");
+        TriangleMesh m = ObjMeshReader.read(mesh);
+        if (m.size() == 0) throw new IllegalArgumentException(mesh + ": the mesh has no triangles (no 'f' lines)");
+        return m;
+    }
+
+    /** Refuses an output file of {@code option} whose folder does not exist (the writer would give no reason). */
+    static void requireFolder(String option, Path file) {
+        Path folder = file.toAbsolutePath().getParent();
+        if (folder != null && !Files.isDirectory(folder))
+            throw new IllegalArgumentException(option + " " + file + ": the folder " + folder + " does not exist");
+    }
+}
