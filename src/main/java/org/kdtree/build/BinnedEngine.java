@@ -106,8 +106,8 @@ final class BinnedEngine extends ForkingEngine<BinnedEngine> {
         int axis = best.axis();
         double xi = best.position();
         int done = split(d, c, from, n, axis, xi, best.planarLeft());
-        if (done != EventSplit.SPLIT) {
-            if (done == EventSplit.OVER_BUDGET) out.budgetLeaf();
+        if (done != SplitOutcome.SPLIT) {
+            if (done == SplitOutcome.OVER_BUDGET) out.budgetLeaf();
             out.leaf(levels.refs(d), from, n);
             return;
         }
@@ -144,7 +144,7 @@ final class BinnedEngine extends ForkingEngine<BinnedEngine> {
      * The recursion's partition ({@link Partition#split}) into level d + 1: references in node
      * order, the left child's from 0, the right's after room for all left candidates; a straddler
      * gets its clipped bounds in each child it reaches, and the children their shares of the node's
-     * reference budget. Like {@link EventSplit#split}, returns what it did.
+     * reference budget. Like {@link EventSplit#split}, returns the {@link SplitOutcome}.
      */
     private int split(int d, int c, int from, int n, int axis, double xi, boolean planarLeft) {
         int[] refs = levels.refs(d);
@@ -176,9 +176,9 @@ final class BinnedEngine extends ForkingEngine<BinnedEngine> {
             }
         }
         int sizeL = il, sizeR = ir - nl;
-        if (sizeL == n && sizeR == n) return EventSplit.SEPARATES_NOTHING;
         long budget = levels.budget(d)[c];
-        if (!ReferenceBudget.fits(budget, sizeL, sizeR)) return EventSplit.OVER_BUDGET;
+        int outcome = SplitOutcome.of(n, sizeL, sizeR, budget);
+        if (outcome != SplitOutcome.SPLIT) return outcome;
         long[] shares = levels.budget(d + 1);
         shares[0] = ReferenceBudget.share(budget, sizeL, sizeL, sizeR);
         shares[1] = ReferenceBudget.share(budget, sizeR, sizeL, sizeR);
@@ -192,6 +192,6 @@ final class BinnedEngine extends ForkingEngine<BinnedEngine> {
         System.arraycopy(v, 2 * k * c, vb, 2 * k, 2 * k);
         vb[k + axis] = xi;
         vb[2 * k + axis] = xi;
-        return EventSplit.SPLIT;
+        return SplitOutcome.SPLIT;
     }
 }

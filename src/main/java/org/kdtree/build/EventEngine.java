@@ -111,8 +111,8 @@ final class EventEngine extends ForkingEngine<EventEngine> {
         int axis = best.axis();
         double xi = best.position();
         int done = split.split(d, c, n, axis, xi, best.planarLeft());
-        if (done != EventSplit.SPLIT) {
-            if (done == EventSplit.OVER_BUDGET) out.budgetLeaf();
+        if (done != SplitOutcome.SPLIT) {
+            if (done == SplitOutcome.OVER_BUDGET) out.budgetLeaf();
             leaf(d, c, n, out);
             return;
         }

@@ -14,8 +14,6 @@ import org.kdtree.geom.Box;
 final class EventSplit {
     /** The side of a primitive in the node being split; a straddler's events are copied to neither child. */
     private static final byte STRADDLES = 0, LEFT = 1, RIGHT = 2;
-    /** What {@link #split} did: split the node, or left it whole (it separates nothing, or its children would exceed its budget). */
-    static final int SPLIT = 0, SEPARATES_NOTHING = 1, OVER_BUDGET = 2;
 
     private final EventEngine engine;
     private final EventLevels levels;
@@ -44,10 +42,8 @@ final class EventSplit {
 
     /**
      * Splits child c of level d ({@code n} primitives) by the plane {@code x_axis = xi} into both
-     * children in level d + 1, with their shares of its reference budget, and returns
-     * {@link #SPLIT}. Writes nothing, and says why, when every primitive would go to both
-     * children ({@link #SEPARATES_NOTHING}) or the children would hold more references than the
-     * node's budget ({@link #OVER_BUDGET}).
+     * children in level d + 1, with their shares of its reference budget; returns the
+     * {@link SplitOutcome}, and writes nothing unless it is {@link SplitOutcome#SPLIT}.
      */
     int split(int d, int c, int n, int axis, double xi, boolean planarLeft) {
         int[] code = levels.codes(d), meta = levels.meta(d);
@@ -57,14 +53,14 @@ final class EventSplit {
         int nl = (int) (counts >>> 32), nb = (int) counts, nr = n - nl - nb;
         long added = clipStraddlers(d, c, axis, xi, nb);
         int sizeL = nl + (int) (added >>> 32), sizeR = nr + (int) added;
-        if (sizeL == n && sizeR == n) return SEPARATES_NOTHING;
         long budget = levels.budget(d)[c];
-        if (!ReferenceBudget.fits(budget, sizeL, sizeR)) return OVER_BUDGET;
+        int outcome = SplitOutcome.of(n, sizeL, sizeR, budget);
+        if (outcome != SplitOutcome.SPLIT) return outcome;
         writeChildren(d, c, axis, xi, nb, sizeL, sizeR);
         long[] below = levels.budget(d + 1);
         below[0] = ReferenceBudget.share(budget, sizeL, sizeL, sizeR);
         below[1] = ReferenceBudget.share(budget, sizeR, sizeL, sizeR);
-        return SPLIT;
+        return SplitOutcome.SPLIT;
     }
 
     /**

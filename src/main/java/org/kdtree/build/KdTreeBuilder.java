@@ -135,13 +135,10 @@ public abstract class KdTreeBuilder {
         }
         SplitPlane plane = checked(findPlane(build, node), node);
         Children children = split(build, node, plane);
-        if (separatesNothing(node, children)) {
-            out.leaf(node.refArray(), node.base(), node.size());
-            return;
-        }
         int nl = children.left().size(), nr = children.right().size();
-        if (!ReferenceBudget.fits(node.budget(), nl, nr)) {
-            out.budgetLeaf();
+        int outcome = SplitOutcome.of(node.size(), nl, nr, node.budget());
+        if (outcome != SplitOutcome.SPLIT) {
+            if (outcome == SplitOutcome.OVER_BUDGET) out.budgetLeaf();
             out.leaf(node.refArray(), node.base(), node.size());
             return;
         }
@@ -167,10 +164,6 @@ public abstract class KdTreeBuilder {
         recConst(build, children.left(), out);
         out.setRightChild(interior);
         recConst(build, children.right(), out);
-    }
-
-    private static boolean separatesNothing(BuildNode node, Children c) {
-        return node.size() > 0 && c.left().size() == node.size() && c.right().size() == node.size();
     }
 
     private SplitPlane checked(SplitPlane p, BuildNode node) {
