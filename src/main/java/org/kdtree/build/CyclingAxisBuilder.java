@@ -1,5 +1,7 @@
 package org.kdtree.build;
 
+import org.kdtree.limits.Limits;
+
 /**
  * The talk's basic methods (section 3.2): the axis cycles with the depth,
  * {@code n = D(V) mod k}, and the build stops on the simple rule of section 3.2.3,
@@ -22,8 +24,7 @@ public abstract class CyclingAxisBuilder extends KdTreeBuilder {
 
     /** Sets Kmintri (>= 0). */
     public CyclingAxisBuilder minPrimitives(int n) {
-        if (n < 0) throw new IllegalArgumentException("Kmintri must be >= 0, got " + n);
-        this.minPrimitives = n;
+        this.minPrimitives = Limits.MIN_PRIMITIVES.check("minPrimitives (Kmintri)", n);
         return this;
     }
 

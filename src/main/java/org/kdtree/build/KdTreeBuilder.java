@@ -2,6 +2,7 @@ package org.kdtree.build;
 
 import java.util.concurrent.ForkJoinPool;
 import java.util.concurrent.ForkJoinTask;
+import org.kdtree.limits.Limits;
 import org.kdtree.geom.Box;
 import org.kdtree.geom.SplitPlane;
 import org.kdtree.shape.InvalidGeometryException;
@@ -34,17 +35,11 @@ import org.kdtree.tree.KdTreeWriter;
  * from several threads only if the subclass keeps no per-build state in fields.
  */
 public abstract class KdTreeBuilder {
-    /** Depth beyond which no setting can go: 2^64 voxels would not fit in any memory. */
-    public static final int DEPTH_LIMIT = 64;
+    /** Depth beyond which no setting can go: 2^64 voxels would not fit in any memory ({@link Limits#MAX_DEPTH}). */
+    public static final int DEPTH_LIMIT = (int) Limits.MAX_DEPTH.max();
 
     /** B, the references per input primitive a tree may hold at the most ({@link ReferenceBudget}). */
     public static final int DEFAULT_REFERENCE_BUDGET = 256;
-
-    /** The most threads a build (or a render) may use. */
-    public static final int MAX_THREADS = 256;
-
-    /** The largest reference budget a setting may ask for. */
-    public static final int MAX_REFERENCE_BUDGET = 1 << 16;
 
     /** c in the automatic depth cap {@code 8 + c log2 N} (pbrt's and Wald and Havran's 1.3). */
     public static final double DEFAULT_DEPTH_FACTOR = 1.3;
@@ -212,9 +207,7 @@ public abstract class KdTreeBuilder {
 
     /** Sets Kmaxdepth (0 .. 64), or -1 for the default {@code 8 + 1.3 log2 N}. */
     public KdTreeBuilder maxDepth(int depth) {
-        if (depth < -1 || depth > DEPTH_LIMIT)
-            throw new IllegalArgumentException("max depth must be -1 (default) or 0.." + DEPTH_LIMIT + ", got " + depth);
-        this.maxDepth = depth;
+        this.maxDepth = Limits.MAX_DEPTH.check("maxDepth", depth);
         return this;
     }
 
@@ -226,8 +219,7 @@ public abstract class KdTreeBuilder {
      * smaller tree faster at some cost in quality (the SAH's quality presets set it).
      */
     public KdTreeBuilder depthFactor(double c) {
-        if (!(c >= 0 && c <= 4)) throw new IllegalArgumentException("depth factor must be in 0..4, got " + c);
-        this.depthFactor = c;
+        this.depthFactor = Limits.DEPTH_FACTOR.check("depthFactor", c);
         return this;
     }
 
@@ -240,9 +232,7 @@ public abstract class KdTreeBuilder {
      * ({@link KdTree#budgetLeaves()}).
      */
     public KdTreeBuilder referenceBudget(int perPrimitive) {
-        if (perPrimitive < 1 || perPrimitive > MAX_REFERENCE_BUDGET)
-            throw new IllegalArgumentException("reference budget must be in 1.." + MAX_REFERENCE_BUDGET + " per primitive, got " + perPrimitive);
-        this.referenceBudget = perPrimitive;
+        this.referenceBudget = Limits.REFERENCE_BUDGET.check("referenceBudget", perPrimitive);
         return this;
     }
 
@@ -251,7 +241,9 @@ public abstract class KdTreeBuilder {
 
     /** Sets Kt and Ki (default 15 and 20). */
     public KdTreeBuilder costModel(CostModel model) {
-        this.costModel = java.util.Objects.requireNonNull(model);
+        Limits.KT.check("Kt", model.kt());
+        Limits.KI.check("Ki", model.ki());
+        this.costModel = model;
         return this;
     }
 
@@ -272,8 +264,7 @@ public abstract class KdTreeBuilder {
      * in parallel (fork/join); the tree is the same as with one thread.
      */
     public KdTreeBuilder threads(int n) {
-        if (n < 1 || n > MAX_THREADS) throw new IllegalArgumentException("threads must be in 1.." + MAX_THREADS + ", got " + n);
-        this.threads = n;
+        this.threads = Limits.THREADS.check("threads", n);
         return this;
     }
 

@@ -1,5 +1,6 @@
 package org.kdtree.build;
 
+import org.kdtree.limits.Limits;
 import org.kdtree.geom.Box;
 import org.kdtree.geom.SplitPlane;
 import org.kdtree.tree.CostModel;
@@ -91,11 +92,9 @@ public class SahBuilder extends KdTreeBuilder {
     /** lambda, the weight of a plane that leaves one child empty (default 0.8; 1 disables the bonus). */
     public double emptyWeight() { return emptyWeight; }
 
-    /** Sets lambda, in (0, 1]. */
+    /** Sets lambda ({@link Limits#LAMBDA}: 0.01 .. 1). */
     public SahBuilder emptyWeight(double lambda) {
-        if (!(lambda > 0 && lambda <= 1))
-            throw new IllegalArgumentException("empty-voxel weight must be in (0, 1], got " + lambda);
-        this.emptyWeight = lambda;
+        this.emptyWeight = Limits.LAMBDA.check("emptyWeight (lambda)", lambda);
         return this;
     }
 
@@ -112,8 +111,7 @@ public class SahBuilder extends KdTreeBuilder {
 
     /** Sets B (2 .. 1,000,000) for {@link Algorithm#BINNED}; ignored by the exact algorithms. */
     public SahBuilder bins(int b) {
-        if (b < 2 || b > 1_000_000) throw new IllegalArgumentException("bins must be in 2..1000000, got " + b);
-        this.bins = b;
+        this.bins = Limits.BINS.check("bins", b);
         return this;
     }
 
@@ -122,8 +120,7 @@ public class SahBuilder extends KdTreeBuilder {
 
     /** Sets the node size below which {@link Algorithm#BINNED} uses the exact sweep (>= 0). */
     public SahBuilder exactBelow(int n) {
-        if (n < 0) throw new IllegalArgumentException("exactBelow must be >= 0, got " + n);
-        this.exactBelow = n;
+        this.exactBelow = Limits.EXACT_BELOW.check("exactBelow", n);
         return this;
     }
 

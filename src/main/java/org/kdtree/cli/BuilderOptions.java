@@ -5,6 +5,7 @@ import org.kdtree.build.CyclingAxisBuilder;
 import org.kdtree.build.KdTreeBuilder;
 import org.kdtree.build.Quality;
 import org.kdtree.build.SahBuilder;
+import org.kdtree.limits.Limits;
 import org.kdtree.tree.CostModel;
 import picocli.CommandLine.Option;
 
@@ -14,16 +15,16 @@ public final class BuilderOptions {
             description = "Builder: sah, median-plane, object-median, or a registered name (default: ${DEFAULT-VALUE}).")
     String builder;
 
-    @Option(names = "--lambda", description = "SAH empty-voxel weight in (0, 1] (default 0.8).")
+    @Option(names = "--lambda", description = "SAH empty-voxel weight, 0.01..1 (default 0.8).")
     Double lambda;
 
-    @Option(names = "--kt", description = "Traversal cost Kt (default 15).")
+    @Option(names = "--kt", description = "Traversal cost Kt, 0..10000 (default 15).")
     Double kt;
 
-    @Option(names = "--ki", description = "Intersection cost Ki (default 20).")
+    @Option(names = "--ki", description = "Intersection cost Ki, 0.001..10000 (default 20).")
     Double ki;
 
-    @Option(names = "--max-depth", description = "Kmaxdepth (default 8 + 1.3 log2 N).")
+    @Option(names = "--max-depth", description = "Kmaxdepth, 0..64 (default: 8 + 1.3 log2 N).")
     Integer maxDepth;
 
     @Option(names = "--reference-budget", paramLabel = "B",
@@ -50,8 +51,9 @@ public final class BuilderOptions {
     @Option(names = "--no-perfect-splits", description = "Use bounding boxes instead of exact clipping.")
     boolean noPerfectSplits;
 
-    /** A builder configured from the options. */
+    /** A builder configured from the options; each value is checked against its {@link Limits} entry first. */
     public KdTreeBuilder create() {
+        checkLimits();
         KdTreeBuilder b = Builders.create(builder);
         if (maxDepth != null) b.maxDepth(maxDepth);
         if (kt != null || ki != null) {
@@ -76,5 +78,17 @@ public final class BuilderOptions {
             else throw new IllegalArgumentException("--min-prims applies to the median builders only");
         }
         return b;
+    }
+
+    /** Each given option against its limit, so that the error names the option, not the setter. */
+    private void checkLimits() {
+        if (lambda != null) Limits.LAMBDA.check("--lambda", lambda);
+        if (kt != null) Limits.KT.check("--kt", kt);
+        if (ki != null) Limits.KI.check("--ki", ki);
+        if (maxDepth != null) Limits.MAX_DEPTH.check("--max-depth", maxDepth);
+        if (referenceBudget != null) Limits.REFERENCE_BUDGET.check("--reference-budget", referenceBudget);
+        if (minPrims != null) Limits.MIN_PRIMITIVES.check("--min-prims", minPrims);
+        if (bins != null) Limits.BINS.check("--bins", bins);
+        if (exactBelow != null) Limits.EXACT_BELOW.check("--exact-below", exactBelow);
     }
 }

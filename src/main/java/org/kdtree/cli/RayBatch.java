@@ -6,6 +6,7 @@ import java.util.concurrent.Future;
 import java.util.concurrent.atomic.AtomicInteger;
 import java.util.function.Supplier;
 import org.kdtree.geom.Ray;
+import org.kdtree.limits.Limits;
 import org.kdtree.traverse.Hit;
 import org.kdtree.traverse.RayQuery;
 import org.kdtree.tradeoff.RaySet;
@@ -26,7 +27,7 @@ final class RayBatch implements AutoCloseable {
     private final ExecutorService pool;
 
     RayBatch(int threads, Supplier<RayQuery> factory) {
-        if (threads < 1) throw new IllegalArgumentException("--threads must be >= 1, got " + threads);
+        Limits.THREADS.check("--threads", threads);
         queries = new RayQuery[threads];
         for (int i = 0; i < threads; i++) queries[i] = factory.get();
         pool = threads > 1 ? Executors.newFixedThreadPool(threads, r -> {

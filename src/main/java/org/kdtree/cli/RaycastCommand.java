@@ -9,6 +9,7 @@ import java.util.Arrays;
 import java.util.Locale;
 import java.util.concurrent.Callable;
 import org.kdtree.build.KdTreeBuilder;
+import org.kdtree.limits.Limits;
 import org.kdtree.shape.ProceduralScenes;
 import org.kdtree.shape.TriangleMesh;
 import org.kdtree.traverse.Traverser;
@@ -63,10 +64,16 @@ public final class RaycastCommand implements Callable<Integer> {
             description = "Also trace every STRIDE-th ray of each set by brute force and compare (stderr).")
     int verifyStride;
 
+    @Mixin
+    ProgressOption progress;
+
     @Override public Integer call() throws Exception {
         if ((raysFile == null) != (hitsFile == null))
             throw new IllegalArgumentException("--rays and --hits go together");
-        if (runs < 1 || warmup < 0) throw new IllegalArgumentException("--runs must be >= 1 and --warmup >= 0");
+        Limits.RUNS.check("--runs", runs);
+        Limits.WARMUP.check("--warmup", warmup);
+        Limits.THREADS.check("--threads", threads);
+        Limits.GRID.check("--grid", grid);
         TriangleMesh scene = ProceduralScenes.grid(CommandFiles.readMesh(mesh, "raycast"), grid);
         KdTreeBuilder builder = options.create().threads(threads);
         if (raysFile != null) return traceFile(scene, builder);
@@ -74,7 +81,11 @@ public final class RaycastCommand implements Callable<Integer> {
     }
 
     private int traceFile(TriangleMesh scene, KdTreeBuilder builder) throws Exception {
-        KdTree tree = builder.build(scene);
+        KdTree tree;
+        try (ProgressBar bar = progress.bar(1, "builds")) {
+            bar.step(0, "build");
+            tree = builder.build(scene);
+        }
         Traverser traverser = new Traverser(tree, new TriangleIntersector(scene));
         if (!Files.isRegularFile(raysFile)) throw new java.io.IOException(raysFile + ": no such file");
         if (!hitsFile.toString().equals("-")) CommandFiles.requireFolder("--hits", hitsFile);
@@ -89,21 +100,27 @@ public final class RaycastCommand implements Callable<Integer> {
     private int benchmark(TriangleMesh scene, KdTreeBuilder builder) throws Exception {
         double[] ms = new double[runs];
         KdTree tree = null;
-        for (int i = 0; i < warmup + runs; i++) {
-            long t0 = System.nanoTime();
-            tree = builder.build(scene);
-            if (i >= warmup) ms[i - warmup] = (System.nanoTime() - t0) / 1e6;
+        int passes = warmup + runs;
+        RayBatch.Result pr, rr;
+        RaySet p, r;
+        TriangleIntersector tris = new TriangleIntersector(scene);
+        try (ProgressBar bar = progress.bar(3 * passes, "steps")) {
+            for (int i = 0; i < passes; i++) {
+                bar.step(i, i < warmup ? "warm-up build" : "timed build");
+                long t0 = System.nanoTime();
+                tree = builder.build(scene);
+                if (i >= warmup) ms[i - warmup] = (System.nanoTime() - t0) / 1e6;
+            }
+            var box = ProceduralScenes.vertexBounds(scene);
+            p = RaySet.primary(box, RaySet.SPEC_IMAGE);
+            r = RaySet.random(box, RaySet.SPEC_RANDOM_RAYS);
+            KdTree built = tree;
+            try (RayBatch batch = new RayBatch(threads, () -> new Traverser(built, tris))) {
+                pr = median(batch, p, bar, passes, "P rays");
+                rr = median(batch, r, bar, 2 * passes, "R rays");
+            }
         }
         TreeStats st = tree.stats();
-        var box = ProceduralScenes.vertexBounds(scene);
-        RaySet p = RaySet.primary(box, RaySet.SPEC_IMAGE), r = RaySet.random(box, RaySet.SPEC_RANDOM_RAYS);
-        TriangleIntersector tris = new TriangleIntersector(scene);
-        KdTree built = tree;
-        RayBatch.Result pr, rr;
-        try (RayBatch batch = new RayBatch(threads, () -> new Traverser(built, tris))) {
-            pr = median(batch, p);
-            rr = median(batch, r);
-        }
         String meshName = mesh.getFileName().toString().replaceFirst("\\.[oO][bB][jJ]$", "")
                 + (grid > 1 ? "-grid" + grid : "");
         System.out.println(String.format(Locale.ROOT, "kdtree-%s %s %d %.1f %d %d %d %d %.6f %.3f %d %.6f %.3f",
@@ -120,9 +137,10 @@ public final class RaycastCommand implements Callable<Integer> {
     }
 
     /** The run of median time among warm-up + timed runs (its checksum is that of every run). */
-    private RayBatch.Result median(RayBatch batch, RaySet rays) throws Exception {
+    private RayBatch.Result median(RayBatch batch, RaySet rays, ProgressBar bar, int stepsBefore, String name) throws Exception {
         RayBatch.Result[] res = new RayBatch.Result[runs];
         for (int i = 0; i < warmup + runs; i++) {
+            bar.step(stepsBefore + i, name + (i < warmup ? " (warm-up)" : ""));
             RayBatch.Result x = batch.trace(rays);
             if (i >= warmup) res[i - warmup] = x;
         }

@@ -5,7 +5,7 @@ import java.util.concurrent.Callable;
 import org.kdtree.build.KdTreeBuilder;
 import org.kdtree.io.SceneFile;
 import org.kdtree.render.RenderJob;
-import org.kdtree.render.RenderLimits;
+import org.kdtree.limits.Limits;
 import org.kdtree.render.Renderer;
 import org.kdtree.render.Scene;
 import picocli.CommandLine.Command;
@@ -43,23 +43,25 @@ public final class RenderCommand implements Callable<Integer> {
     @Option(names = "--height", description = "Image height (default: the scene's).")
     Integer height;
 
-    @Option(names = {"-q", "--quiet"}, description = "No progress bar (there is none either when the output is not a terminal).")
-    boolean quiet;
+    @Mixin
+    ProgressOption progress;
 
     @Override public Integer call() throws Exception {
         checkOutput();
         Scene s = SceneFile.read(scene);
-        if (spp != null) s = s.withSamplesPerPixel(RenderLimits.check("--spp", spp, 1, RenderLimits.MAX_SAMPLES_PER_PIXEL));
-        if (rayDepth != null) s = s.withMaxDepth(RenderLimits.check("--ray-depth", rayDepth, 0, RenderLimits.MAX_RAY_DEPTH));
+        if (spp != null) s = s.withSamplesPerPixel(Limits.SAMPLES_PER_PIXEL.check("--spp", spp));
+        if (rayDepth != null) s = s.withMaxDepth(Limits.RAY_DEPTH.check("--ray-depth", rayDepth));
         if (width != null || height != null) {
-            int w = width != null ? RenderLimits.check("--width", width, 1, RenderLimits.MAX_IMAGE_SIDE) : s.camera().width();
-            int h = height != null ? RenderLimits.check("--height", height, 1, RenderLimits.MAX_IMAGE_SIDE) : s.camera().height();
+            int w = width != null ? Limits.IMAGE_SIDE.check("--width", width) : s.camera().width();
+            int h = height != null ? Limits.IMAGE_SIDE.check("--height", height) : s.camera().height();
             s = s.withImageSize(w, h);
         }
         Renderer.Options o = Renderer.Options.defaults();
-        if (threads != null) o = o.withThreads(RenderLimits.check("--threads", threads, 1, KdTreeBuilder.MAX_THREADS));
-        if (!quiet && System.console() != null) o = o.withProgress(System.err);   // redrawn in place: a terminal's, not a log's
-        RenderJob job = RenderJob.run(s, options.create(), o);
+        if (threads != null) o = o.withThreads(Limits.THREADS.check("--threads", threads));
+        RenderJob job;
+        try (ProgressBar bar = progress.bar(1, "tiles")) {
+            job = RenderJob.run(s, options.create(), o.withProgress((done, total) -> bar.update(done, total)));
+        }
         job.result().image().writePng(output);
         System.out.print(job.summary());
         System.out.println("wrote " + output);

@@ -6,6 +6,7 @@ import java.util.Locale;
 import java.util.concurrent.Callable;
 import org.kdtree.build.KdTreeBuilder;
 import org.kdtree.io.SceneLoader;
+import org.kdtree.limits.Limits;
 import org.kdtree.render.RenderJob;
 import org.kdtree.shape.Primitives;
 import org.kdtree.shape.ProceduralScenes;
@@ -39,21 +40,29 @@ public final class StatsCommand implements Callable<Integer> {
             description = "OBJ only: repeat the mesh in an N x N grid on the x-z plane first (the SPEC's scaling scene uses 4).")
     int grid;
 
+    @Mixin
+    ProgressOption progress;
+
     @Override public Integer call() throws Exception {
-        if (runs < 1 || warmup < 0) throw new IllegalArgumentException("--runs must be at least 1 and --warmup at least 0");
+        Limits.RUNS.check("--runs", runs);
+        Limits.WARMUP.check("--warmup", warmup);
+        Limits.THREADS.check("--threads", threads);
+        Limits.GRID.check("--grid", grid);
         Primitives prims = SceneLoader.load(scene);
         if (grid != 1) {
             if (!(prims instanceof TriangleMesh mesh)) throw new IllegalArgumentException("--grid applies to OBJ meshes only");
             prims = ProceduralScenes.grid(mesh, grid);
         }
         KdTreeBuilder builder = options.create().threads(threads);
-        for (int i = 0; i < warmup; i++) builder.build(prims);
-        double[] ms = new double[Math.max(1, runs)];
+        double[] ms = new double[runs];
         KdTree tree = null;
-        for (int i = 0; i < ms.length; i++) {
-            long t0 = System.nanoTime();
-            tree = builder.build(prims);
-            ms[i] = (System.nanoTime() - t0) / 1e6;
+        try (ProgressBar bar = progress.bar(warmup + runs, "builds")) {
+            for (int i = 0; i < warmup + runs; i++) {
+                bar.step(i, i < warmup ? "warm-up build" : "timed build");
+                long t0 = System.nanoTime();
+                tree = builder.build(prims);
+                if (i >= warmup) ms[i - warmup] = (System.nanoTime() - t0) / 1e6;
+            }
         }
         Arrays.sort(ms);
         System.out.printf(Locale.ROOT, "scene: %s (%s, %d-D)%n", scene, RenderJob.count(prims.size(), "primitive"), prims.dimension());

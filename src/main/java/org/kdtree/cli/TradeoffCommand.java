@@ -5,6 +5,7 @@ import java.nio.file.Path;
 import java.util.List;
 import java.util.Locale;
 import java.util.concurrent.Callable;
+import org.kdtree.limits.Limits;
 import org.kdtree.shape.ProceduralScenes;
 import org.kdtree.shape.TriangleMesh;
 import org.kdtree.tradeoff.RaySet;
@@ -13,6 +14,7 @@ import org.kdtree.tradeoff.TradeoffChart;
 import org.kdtree.tradeoff.TradeoffResult;
 import org.kdtree.tradeoff.Variant;
 import picocli.CommandLine.Command;
+import picocli.CommandLine.Mixin;
 import picocli.CommandLine.Option;
 import picocli.CommandLine.Parameters;
 
@@ -61,12 +63,16 @@ public final class TradeoffCommand implements Callable<Integer> {
     @Option(names = "--chart-rpt", defaultValue = "10", description = "Rays per triangle for the chart's trace time (default: ${DEFAULT-VALUE}).")
     double chartRaysPerTriangle;
 
+    @Mixin
+    ProgressOption progress;
+
     @Override public Integer call() throws Exception {
-        if (grid < 1 || grid > 16) throw new IllegalArgumentException("--grid must be in 1..16, got " + grid);
-        if (rayCount < 1) throw new IllegalArgumentException("--ray-count must be positive, got " + rayCount);
-        if (countedRays < 1) throw new IllegalArgumentException("--counted-rays must be positive, got " + countedRays);
-        if (runs < 1) throw new IllegalArgumentException("--runs must be at least 1, got " + runs);
-        if (!(chartRaysPerTriangle > 0)) throw new IllegalArgumentException("--chart-rpt must be positive, got " + chartRaysPerTriangle);
+        Limits.GRID.check("--grid", grid);
+        Limits.RAY_COUNT.check("--ray-count", rayCount);
+        Limits.RAY_COUNT.check("--counted-rays", countedRays);
+        Limits.RUNS.check("--runs", runs);
+        Limits.THREADS.check("--threads", threads);
+        Limits.RAYS_PER_TRIANGLE.check("--chart-rpt", chartRaysPerTriangle);
         TriangleMesh m = CommandFiles.readMesh(mesh, "tradeoff");
         if (grid > 1) m = ProceduralScenes.grid(m, grid);
         var bounds = m.bounds();
@@ -92,10 +98,18 @@ public final class TradeoffCommand implements Callable<Integer> {
         System.out.printf(Locale.ROOT, "%-22s %10s %10s %9s %8s %8s %9s %11s %11s %11s%n", "variant", "build ms", "SAH cost",
                 "nodes", "nodes/r", "tests/r", "Mrays/s", "1 r/tri ms", "10 r/tri", "100 r/tri");
         Tradeoff t = new Tradeoff(m, set, runs, threads, countedRays);
-        List<TradeoffResult> results = t.run(variants, r -> System.out.printf(Locale.ROOT,
-                "%-22s %10.1f %10.2f %9d %8.1f %8.1f %9.3f %11.0f %11.0f %11.0f%n", r.variant(), r.buildMs(),
-                r.expectedCost(), r.nodes(), r.nodesPerRay(), r.testsPerRay(), r.raysPerSecond() / 1e6,
-                r.totalMs(1), r.totalMs(10), r.totalMs(100)));
+        List<TradeoffResult> results = new java.util.ArrayList<>();
+        try (ProgressBar bar = progress.bar(variants.size(), "variants")) {
+            for (int i = 0; i < variants.size(); i++) {
+                bar.step(i, variants.get(i).name());
+                TradeoffResult r = t.run(variants.get(i));
+                results.add(r);
+                bar.print(System.out, String.format(Locale.ROOT,
+                        "%-22s %10.1f %10.2f %9d %8.1f %8.1f %9.3f %11.0f %11.0f %11.0f", r.variant(), r.buildMs(),
+                        r.expectedCost(), r.nodes(), r.nodesPerRay(), r.testsPerRay(), r.raysPerSecond() / 1e6,
+                        r.totalMs(1), r.totalMs(10), r.totalMs(100)));
+            }
+        }
         Files.writeString(csvOut, Tradeoff.csv(results));
         TradeoffChart.write(results, base + ": build time vs trace time (" + set.name() + " rays)", chartRaysPerTriangle, pngOut);
         System.out.println("wrote " + csvOut + " and " + pngOut);

@@ -10,26 +10,30 @@ import javax.swing.JLabel;
 import javax.swing.JPanel;
 import javax.swing.JSlider;
 import javax.swing.JSpinner;
-import javax.swing.SpinnerNumberModel;
 import org.kdtree.build.Builders;
+import org.kdtree.build.KdTreeBuilder;
 import org.kdtree.build.SahBuilder;
+import org.kdtree.limits.Limits;
 
 /**
  * The builder controls: which builder, Kt, Ki, lambda (spinner and slider), Kmintri and
  * Kmaxdepth. Every change rebuilds the tree at once. Controls that do not apply to the
- * chosen builder are greyed out.
+ * chosen builder are greyed out; each spinner takes the range of {@link Limits}, states it in its
+ * tooltip and, for a typed value outside it, says so below instead of reverting silently.
  */
 public final class BuilderPanel extends JPanel {
     private final WorkbenchModel model;
     private final JComboBox<String> builder = new JComboBox<>(Builders.names().toArray(String[]::new));
-    private final JSpinner kt = spinner(new SpinnerNumberModel(15.0, 0.0, 1000.0, 1.0));
-    private final JSpinner ki = spinner(new SpinnerNumberModel(20.0, 0.5, 1000.0, 1.0));
-    private final JSpinner lambda = spinner(new SpinnerNumberModel(0.8, 0.05, 1.0, 0.05));
-    private final JSlider lambdaSlider = new JSlider(5, 100, 80);
+    private final JLabel rejection = new JLabel(" ");
+    private final JSpinner kt = LimitedSpinner.of(Limits.KT, "Kt", 15, 1, this::reject);
+    private final JSpinner ki = LimitedSpinner.of(Limits.KI, "Ki", 20, 1, this::reject);
+    private final JSpinner lambda = LimitedSpinner.of(Limits.LAMBDA, "lambda", 0.8, 0.05, this::reject);
+    private final JSlider lambdaSlider = new JSlider((int) Math.round(Limits.LAMBDA.min() * 100), 100, 80);
     private final JComboBox<SahBuilder.Algorithm> algorithm = new JComboBox<>(java.util.Arrays.stream(SahBuilder.Algorithm.values())
             .filter(a -> a != SahBuilder.Algorithm.NAIVE).toArray(SahBuilder.Algorithm[]::new)); // O(N^2): too slow to be live
-    private final JSpinner minPrims = spinner(new SpinnerNumberModel(2, 0, 1000, 1));
-    private final JSpinner maxDepth = spinner(new SpinnerNumberModel(-1, -1, 64, 1));
+    private final JSpinner minPrims = LimitedSpinner.of(Limits.MIN_PRIMITIVES, "Kmintri", 2, 1, this::reject);
+    private final JSpinner maxDepth = LimitedSpinner.of(Limits.MAX_DEPTH, "Kmaxdepth", -1, 1, this::reject);
+    private final JLabel autoDepth = new JLabel();
     private boolean updating;
 
     public BuilderPanel(WorkbenchModel model) {
@@ -37,13 +41,18 @@ public final class BuilderPanel extends JPanel {
         this.model = model;
         setBorder(BorderFactory.createTitledBorder("Builder"));
         name(builder, "builder", "Builder (Alt+1, Alt+2, ...): median-plane splits the voxel in the middle, object-median at the median object; sah minimises the expected cost; others are registered builders");
-        name(kt, "kt", "Kt: cost of traversing one node (SAH)");
-        name(ki, "ki", "Ki: cost of intersecting one object (SAH)");
-        name(lambda, "lambda", "lambda: weight of a plane that cuts off empty space (1 = no bonus); SAH only");
+        name(kt, "kt", "Kt: cost of traversing one node (SAH); " + LimitedSpinner.allowed(Limits.KT));
+        name(ki, "ki", "Ki: cost of intersecting one object (SAH); " + LimitedSpinner.allowed(Limits.KI));
+        name(lambda, "lambda", "lambda: weight of a plane that cuts off empty space (1 = no bonus); SAH only; "
+                + LimitedSpinner.allowed(Limits.LAMBDA));
         name(lambdaSlider, "lambdaSlider", "lambda as a slider, in hundredths");
         name(algorithm, "algorithm", "How the SAH searches for its planes: the exact searches build the same tree at different speeds (SAH only)");
-        name(minPrims, "kmintri", "Kmintri: a voxel with at most this many objects becomes a leaf (median builders)");
-        name(maxDepth, "kmaxdepth", "Kmaxdepth: maximum depth (-1 = 8 + 1.3 log2 N)");
+        name(minPrims, "kmintri", "Kmintri: a voxel with at most this many objects becomes a leaf (median builders); "
+                + LimitedSpinner.allowed(Limits.MIN_PRIMITIVES));
+        name(maxDepth, "kmaxdepth", "Kmaxdepth: maximum depth; " + LimitedSpinner.allowed(Limits.MAX_DEPTH));
+        autoDepth.setName("autoDepth");
+        rejection.setName("rejection");
+        rejection.setForeground(new java.awt.Color(170, 0, 0));
         row(0, "Builder", builder);
         row(1, "Kt", kt);
         row(2, "Ki", ki);
@@ -52,6 +61,8 @@ public final class BuilderPanel extends JPanel {
         row(5, "SAH search", algorithm);
         row(6, "Kmintri", minPrims);
         row(7, "Kmaxdepth", maxDepth);
+        row(8, "", autoDepth);
+        row(9, "", rejection);
         builder.addActionListener(e -> apply());
         algorithm.addActionListener(e -> apply());
         algorithm.setRenderer(new javax.swing.DefaultListCellRenderer() {
@@ -69,6 +80,12 @@ public final class BuilderPanel extends JPanel {
         model.addListener(c -> {
             if (c == WorkbenchModel.Change.TREE) show(model.settings());
         });
+    }
+
+    /** Shows why the value just typed is not taken (null: the text is valid again). */
+    private void reject(String why) {
+        rejection.setText(why == null ? " " : why);
+        rejection.setToolTipText(why);
     }
 
     /** Selects the builder at {@code index} in the list (keyboard shortcut). */
@@ -103,15 +120,12 @@ public final class BuilderPanel extends JPanel {
             lambdaSlider.setEnabled(sah);
             algorithm.setEnabled(sah);
             minPrims.setEnabled(median);
+            int n = model.scene().size();
+            autoDepth.setText(s.maxDepth() >= 0 ? "fixed depth cap " + s.maxDepth()
+                    : "-1 = auto: 8 + 1.3 log2 " + n + " = " + KdTreeBuilder.defaultMaxDepth(n));
         } finally {
             updating = false;
         }
-    }
-
-    private static JSpinner spinner(SpinnerNumberModel m) {
-        JSpinner s = new JSpinner(m);
-        ((JSpinner.DefaultEditor) s.getEditor()).getTextField().setColumns(5);
-        return s;
     }
 
     private static void name(JComponent c, String name, String tip) {

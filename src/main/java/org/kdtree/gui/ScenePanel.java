@@ -11,7 +11,7 @@ import javax.swing.JButton;
 import javax.swing.JComboBox;
 import javax.swing.JPanel;
 import javax.swing.JSpinner;
-import javax.swing.SpinnerNumberModel;
+import org.kdtree.limits.Limits;
 import org.kdtree.shape.Shape2D;
 
 /** Picks a built-in scene, or generates a random one with a given count. */
@@ -20,8 +20,9 @@ public final class ScenePanel extends JPanel {
     private final Map<String, IntFunction<List<Shape2D>>> generators = BuiltinScenes.generators();
     private final JComboBox<String> scene = new JComboBox<>(builtins.keySet().toArray(String[]::new));
     private final JComboBox<String> generator = new JComboBox<>(generators.keySet().toArray(String[]::new));
-    private final JSpinner count = new JSpinner(new SpinnerNumberModel(500, 1, 100_000, 100));
     private final JButton generate = new JButton("Generate");
+    private final JSpinner count = LimitedSpinner.of(Limits.SCENE_OBJECTS, "objects", 500, 100,
+            why -> generate.setEnabled(why == null));
     private final Runnable onLoaded;
     private final WorkbenchModel model;
 
@@ -36,7 +37,8 @@ public final class ScenePanel extends JPanel {
         generator.setName("generator");
         generator.setToolTipText("Random scene generator");
         count.setName("count");
-        count.setToolTipText("Number of objects the generator makes");
+        count.setToolTipText("Number of objects the generator makes; " + LimitedSpinner.allowed(Limits.SCENE_OBJECTS));
+        ((JSpinner.DefaultEditor) count.getEditor()).getTextField().setToolTipText(count.getToolTipText());
         generate.setName("generate");
         generate.setToolTipText("Replace the scene by a random one (Ctrl+G)");
         generate.setMnemonic('G');

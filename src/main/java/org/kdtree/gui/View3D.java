@@ -24,10 +24,10 @@ import javax.swing.JScrollPane;
 import javax.swing.JSpinner;
 import javax.swing.JSplitPane;
 import javax.swing.JTextArea;
-import javax.swing.SpinnerNumberModel;
 import javax.swing.SwingUtilities;
 import javax.swing.Timer;
 import org.kdtree.build.Builders;
+import org.kdtree.limits.Limits;
 import org.kdtree.build.KdTreeBuilder;
 import org.kdtree.io.SceneFile;
 import org.kdtree.io.SceneLoader;
@@ -52,11 +52,11 @@ import org.kdtree.tree.KdTree;
 public final class View3D extends JPanel {
     private final JComboBox<String> scene = new JComboBox<>();
     private final JComboBox<String> builder = new JComboBox<>(Builders.names().toArray(String[]::new));
-    private final JSpinner width = new JSpinner(new SpinnerNumberModel(480, 16, 4096, 16));
     private final JButton build = new JButton("Render");
+    private final JLabel status = new JLabel(" ");
+    private final JSpinner width = LimitedSpinner.of(Limits.PREVIEW_WIDTH, "Width", 480, 16, this::reject);
     private final JButton stop = new JButton("Stop");
     private final JTextArea output = new JTextArea(20, 40);
-    private final JLabel status = new JLabel(" ");
     private final Picture picture = new Picture();
     private final Path dir;
     private final WorkbenchModel model;
@@ -72,7 +72,9 @@ public final class View3D extends JPanel {
         builder.setName("view3d.builder");
         builder.setToolTipText("The builder (with the Kt, Ki, lambda, Kmintri, Kmaxdepth of the 2-D view)");
         width.setName("view3d.width");
-        width.setToolTipText("Image width in pixels (the height follows the scene's aspect ratio)");
+        width.setToolTipText("Image width in pixels (the height follows the scene's aspect ratio); "
+                + LimitedSpinner.allowed(Limits.PREVIEW_WIDTH));
+        ((JSpinner.DefaultEditor) width.getEditor()).getTextField().setToolTipText(width.getToolTipText());
         build.setName("view3d.build");
         build.setToolTipText("Build the tree and render the scene, showing the image as it fills in (Alt+D)");
         build.setMnemonic('D');
@@ -154,6 +156,13 @@ public final class View3D extends JPanel {
 
     /** Whether a build or render is under way. */
     public boolean busy() { return running != null; }
+
+    /** A width outside its limit blocks Render and says why; a valid one frees it again. */
+    private void reject(String why) {
+        if (running != null) return;
+        status.setText(why == null ? " " : why);
+        build.setEnabled(why == null);
+    }
 
     /** Chooses the scene (a file name in the scenes folder) and the image width. */
     public void choose(String sceneName, int imageWidth) {

@@ -1,5 +1,7 @@
 package org.kdtree.io;
 
+import org.kdtree.limits.Limit;
+
 import com.google.gson.stream.JsonReader;
 import com.google.gson.stream.JsonToken;
 import com.google.gson.stream.MalformedJsonException;
@@ -188,9 +190,14 @@ public final class JsonNode {
 
     /** An integer in [min, max]. */
     public int integer(int min, int max) throws SceneFormatException {
+        return integer(Limit.whole("value", min, max));
+    }
+
+    /** A whole number that {@code limit} allows. */
+    public int integer(Limit limit) throws SceneFormatException {
         double d = number();
         if (d != Math.rint(d)) throw error("expected a whole number, got " + value);
-        if (d < min || d > max) throw error("must be between " + min + " and " + max + ", got " + value);
+        if (!limit.allows(d)) throw error(limit.requirement() + ", got " + value);
         return (int) d;
     }
 

@@ -14,7 +14,7 @@ import org.kdtree.render.Camera;
 import org.kdtree.render.GeometryBuilder;
 import org.kdtree.render.Light;
 import org.kdtree.render.Material;
-import org.kdtree.render.RenderLimits;
+import org.kdtree.limits.Limits;
 import org.kdtree.render.Scene;
 import org.kdtree.render.Tessellation;
 import org.kdtree.render.Vec3;
@@ -57,8 +57,8 @@ public final class SceneFile {
         Camera camera = camera(root.get("camera"));
         Vec3 background = root.has("background") ? vec(root.get("background")) : Vec3.ZERO;
         Vec3 ambient = root.has("ambient") ? vec(root.get("ambient")) : Vec3.ZERO;
-        int spp = root.has("samplesPerPixel") ? root.get("samplesPerPixel").integer(1, RenderLimits.MAX_SAMPLES_PER_PIXEL) : 1;
-        int maxDepth = root.has("maxDepth") ? root.get("maxDepth").integer(0, RenderLimits.MAX_RAY_DEPTH) : 5;
+        int spp = root.has("samplesPerPixel") ? root.get("samplesPerPixel").integer(Limits.SAMPLES_PER_PIXEL) : 1;
+        int maxDepth = root.has("maxDepth") ? root.get("maxDepth").integer(Limits.RAY_DEPTH) : 5;
         long seed = root.has("seed") ? root.get("seed").integer(0, Integer.MAX_VALUE) : 1;
         if (root.has("materials")) {
             JsonNode ms = root.get("materials");
@@ -83,8 +83,8 @@ public final class SceneFile {
         JsonNode fov = c.get("fov");
         double f = fov.number();
         if (f <= 0 || f >= 180) throw fov.error("field of view must be between 0 and 180 degrees, got " + f);
-        return new Camera(eye, at, up, f, c.get("width").integer(1, RenderLimits.MAX_IMAGE_SIDE),
-                c.get("height").integer(1, RenderLimits.MAX_IMAGE_SIDE));
+        return new Camera(eye, at, up, f, c.get("width").integer(Limits.IMAGE_SIDE),
+                c.get("height").integer(Limits.IMAGE_SIDE));
     }
 
     private Material material(String name, JsonNode m) throws SceneFormatException {
@@ -122,7 +122,7 @@ public final class SceneFile {
                 l.allowOnly("type", "center", "normal", "size", "samples", "color", "intensity", "shadows");
                 double size = l.get("size").number();
                 if (size <= 0) throw l.get("size").error("must be positive");
-                int samples = l.has("samples") ? l.get("samples").integer(1, RenderLimits.MAX_LIGHT_SAMPLES) : 16;
+                int samples = l.has("samples") ? l.get("samples").integer(Limits.LIGHT_SAMPLES) : 16;
                 return new Light.Area(vec(l.get("center")), unit(l.get("normal")), size, samples, color, shadows);
             }
             default -> throw l.get("type").error("unknown light type '" + type + "' (point, directional, area)");
@@ -136,8 +136,8 @@ public final class SceneFile {
         switch (type) {
             case "sphere" -> {
                 o.allowOnly("type", "center", "radius", "segments", "rings", "material", "transform");
-                int seg = o.has("segments") ? o.get("segments").integer(3, 4096) : 48;
-                int rings = o.has("rings") ? o.get("rings").integer(2, 4096) : Math.max(2, seg / 2);
+                int seg = o.has("segments") ? o.get("segments").integer(Limits.SPHERE_SEGMENTS) : 48;
+                int rings = o.has("rings") ? o.get("rings").integer(Limits.SPHERE_RINGS) : Math.max(2, seg / 2);
                 limit(o, 2L * seg * (rings - 1));
                 Tessellation.sphere(geometry, vec(o.get("center")), positive(o.get("radius")), seg, rings, materialOf(o));
                 return true;
@@ -158,9 +158,9 @@ public final class SceneFile {
             }
             case "sphereflake" -> {
                 o.allowOnly("type", "center", "radius", "levels", "segments", "rings", "material", "transform");
-                int seg = o.has("segments") ? o.get("segments").integer(3, 4096) : 12;
-                int rings = o.has("rings") ? o.get("rings").integer(2, 4096) : Math.max(2, seg / 2);
-                int levels = o.get("levels").integer(0, 6);
+                int seg = o.has("segments") ? o.get("segments").integer(Limits.SPHERE_SEGMENTS) : 12;
+                int rings = o.has("rings") ? o.get("rings").integer(Limits.SPHERE_RINGS) : Math.max(2, seg / 2);
+                int levels = o.get("levels").integer(Limits.FLAKE_LEVELS);
                 limit(o, ((long) Math.pow(9, levels + 1) - 1) / 8 * 2L * seg * (rings - 1));
                 Tessellation.sphereflake(geometry, vec(o.get("center")), positive(o.get("radius")), levels, seg, rings,
                         materialOf(o));

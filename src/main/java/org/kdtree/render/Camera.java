@@ -1,5 +1,7 @@
 package org.kdtree.render;
 
+import org.kdtree.limits.Limits;
+
 /**
  * A pinhole camera: eye, look-at point, up vector, vertical field of view and image size.
  * Pixel (x, y) has its top-left corner at (x, y); a sample at (x + sx, y + sy) with
@@ -20,8 +22,8 @@ public final class Camera {
         this.right = forward.cross(upHint).normalized();
         this.up = right.cross(forward);
         this.tanHalfFov = Math.tan(Math.toRadians(fovDegrees) / 2);
-        this.width = width;
-        this.height = height;
+        this.width = Limits.IMAGE_SIDE.check("width", width);
+        this.height = Limits.IMAGE_SIDE.check("height", height);
     }
 
     public Vec3 eye() { return eye; }

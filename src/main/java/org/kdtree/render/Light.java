@@ -1,5 +1,7 @@
 package org.kdtree.render;
 
+import org.kdtree.limits.Limits;
+
 /** A light source. Lights are not geometry: they are never hit by rays. */
 public sealed interface Light {
     /** Radiant colour (already multiplied by any intensity). */
@@ -23,6 +25,10 @@ public sealed interface Light {
      */
     record Area(Vec3 center, Vec3 normal, double size, int samples, Vec3 color, boolean castsShadows)
             implements Light {
+        public Area {
+            Limits.LIGHT_SAMPLES.check("samples", samples);
+        }
+
         /** A unit vector in the light's plane. */
         public Vec3 edgeU() {
             Vec3 a = Math.abs(normal.x()) < 0.9 ? new Vec3(1, 0, 0) : new Vec3(0, 1, 0);

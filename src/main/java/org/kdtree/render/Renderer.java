@@ -1,6 +1,5 @@
 package org.kdtree.render;
 
-import java.io.PrintStream;
 import java.util.ArrayList;
 import java.util.List;
 import java.util.concurrent.ExecutionException;
@@ -20,18 +19,23 @@ public final class Renderer {
     /**
      * @param threads         worker threads (at least 1)
      * @param tileSize        tile edge in pixels
-     * @param progress        where to draw a progress bar, or null
+     * @param progress        told each time a tile is finished, or null
      * @param recordPixelRays whether to keep per-pixel ray counts by kind (tests)
      */
-    public record Options(int threads, int tileSize, PrintStream progress, boolean recordPixelRays) {
+    public record Options(int threads, int tileSize, TileListener progress, boolean recordPixelRays) {
         /** All cores, 16-pixel tiles, no progress bar, no per-pixel counts. */
         public static Options defaults() {
             return new Options(Runtime.getRuntime().availableProcessors(), 16, null, false);
         }
 
         public Options withThreads(int n) { return new Options(n, tileSize, progress, recordPixelRays); }
-        public Options withProgress(PrintStream p) { return new Options(threads, tileSize, p, recordPixelRays); }
+        public Options withProgress(TileListener p) { return new Options(threads, tileSize, p, recordPixelRays); }
         public Options recordingPixelRays() { return new Options(threads, tileSize, progress, true); }
+    }
+
+    /** Hears of finished tiles, from the worker threads (possibly out of order). */
+    public interface TileListener {
+        void tilesDone(int done, int total);
     }
 
     private Renderer() {
@@ -44,7 +48,7 @@ public final class Renderer {
         int tilesX = (w + ts - 1) / ts, tilesY = (h + ts - 1) / ts, tiles = tilesX * tilesY;
         Image image = new Image(w, h);
         int[][] pixelRays = options.recordPixelRays() ? new int[RayKind.values().length][w * h] : null;
-        ProgressBar bar = new ProgressBar(options.progress(), tiles);
+        TileListener progress = options.progress() != null ? options.progress() : (d, t) -> { };
         AtomicInteger next = new AtomicInteger(), done = new AtomicInteger();
         int threads = Math.max(1, options.threads());
         ExecutorService pool = Executors.newFixedThreadPool(threads, r -> {
@@ -61,7 +65,7 @@ public final class Renderer {
                     for (int tile; (tile = next.getAndIncrement()) < tiles; ) {
                         int x0 = (tile % tilesX) * ts, y0 = (tile / tilesX) * ts;
                         renderTile(tracer, image, pixelRays, x0, y0, Math.min(w, x0 + ts), Math.min(h, y0 + ts));
-                        bar.update(done.incrementAndGet());
+                        progress.tilesDone(done.incrementAndGet(), tiles);
                     }
                     return tracer.counts();
                 }));

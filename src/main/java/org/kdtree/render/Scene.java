@@ -1,6 +1,7 @@
 package org.kdtree.render;
 
 import java.util.List;
+import org.kdtree.limits.Limits;
 import org.kdtree.shape.TriangleMesh;
 
 /**
@@ -22,6 +23,11 @@ import org.kdtree.shape.TriangleMesh;
 public record Scene(String name, Camera camera, List<Light> lights, Vec3 background, Vec3 ambient,
                     SceneGeometry geometry, List<Material> materials, int samplesPerPixel, int maxDepth,
                     boolean geometryMayOcclude, long seed) {
+
+    public Scene {
+        Limits.SAMPLES_PER_PIXEL.check("samplesPerPixel", samplesPerPixel);
+        Limits.RAY_DEPTH.check("maxDepth", maxDepth);
+    }
 
     public TriangleMesh mesh() { return geometry.mesh(); }
 

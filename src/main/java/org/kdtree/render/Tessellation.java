@@ -1,5 +1,7 @@
 package org.kdtree.render;
 
+import org.kdtree.limits.Limits;
+
 /** The built-in shapes, tessellated into a {@link GeometryBuilder}: spheres, boxes, planes, sphereflakes. */
 public final class Tessellation {
     private Tessellation() {
@@ -10,6 +12,8 @@ public final class Tessellation {
      * smoothly shaded: {@code 2 * segments * (rings - 1)} triangles.
      */
     public static void sphere(GeometryBuilder g, Vec3 center, double radius, int segments, int rings, int material) {
+        Limits.SPHERE_SEGMENTS.check("segments", segments);
+        Limits.SPHERE_RINGS.check("rings", rings);
         int north = g.vertex(center.plus(new Vec3(0, radius, 0)), new Vec3(0, 1, 0));
         int first = g.vertexCount();
         for (int r = 1; r < rings; r++) {
@@ -62,6 +66,7 @@ public final class Tessellation {
      */
     public static void sphereflake(GeometryBuilder g, Vec3 center, double radius, int levels, int segments,
                                    int rings, int material) {
+        Limits.FLAKE_LEVELS.check("levels", levels);
         flake(g, center, radius, new Vec3(0, 1, 0), levels, segments, rings, material);
     }
 

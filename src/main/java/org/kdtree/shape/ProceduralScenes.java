@@ -2,6 +2,7 @@ package org.kdtree.shape;
 
 import java.util.Random;
 import org.kdtree.geom.Box;
+import org.kdtree.limits.Limits;
 
 /**
  * Generated triangle scenes for benchmarks and tests, so that no measurement needs a file:
@@ -96,7 +97,7 @@ public final class ProceduralScenes {
      * triangle t of copy c becomes {@code c * T + t}, T the mesh's triangle count.
      */
     public static TriangleMesh grid(TriangleMesh mesh, int g) {
-        if (g < 1) throw new IllegalArgumentException("grid size must be >= 1, got " + g);
+        Limits.GRID.check("grid", g);
         if (g == 1) return mesh;
         long triangles = (long) mesh.size() * g * g, limit = 1 << 28;
         if (triangles > limit || (long) mesh.vertexCount() * g * g > limit)

@@ -35,17 +35,6 @@ public final class Tradeoff {
         this.countedRays = Math.max(1, countedRays);
     }
 
-    /** Runs every variant in turn. */
-    public List<TradeoffResult> run(List<Variant> variants, java.util.function.Consumer<TradeoffResult> progress) {
-        List<TradeoffResult> out = new ArrayList<>();
-        for (Variant v : variants) {
-            TradeoffResult r = run(v);
-            progress.accept(r);
-            out.add(r);
-        }
-        return out;
-    }
-
     /** Measures one variant. */
     public TradeoffResult run(Variant v) {
         KdTreeBuilder builder = v.create().threads(threads);

@@ -99,6 +99,23 @@ class WorkbenchGuiTest {
         assertThat(bench.compare().statsText("median-plane")).contains("ray:");
     }
 
+    @Test void aValueOutsideItsLimitIsFlaggedNotSilentlyReverted() {
+        int nodes = bench.model().tree().nodeCount();
+        window.textBox("kmaxdepth.text").setText("").enterText("1000\n");
+        window.label("rejection").requireText("Kmaxdepth must be between -1 and 64 (-1 = auto, 8 + 1.3 log2 N), got 1000");
+        assertThat(window.textBox("kmaxdepth.text").target().getToolTipText()).startsWith("Kmaxdepth must be between");
+        assertThat(bench.model().settings().maxDepth()).as("the rejected value is not applied").isEqualTo(-1);
+        assertThat(bench.model().tree().nodeCount()).isEqualTo(nodes);
+
+        window.textBox("kmaxdepth.text").setText("").enterText("12x");
+        window.label("rejection").requireText("Kmaxdepth: '12x' is not a number, allowed: -1..64 (-1 = auto, 8 + 1.3 log2 N)");
+        window.textBox("kmaxdepth.text").setText("").enterText("3\n");
+        window.label("rejection").requireText(" ");
+        assertThat(bench.model().settings().maxDepth()).isEqualTo(3);
+        window.label("autoDepth").requireText("fixed depth cap 3");
+        assertThat(window.textBox("kmaxdepth.text").target().getToolTipText()).contains("allowed: -1..64");
+    }
+
     @Test void everyControlHasATooltipAndEveryMenuItemAShortcut() {
         java.util.List<String> missing = new java.util.ArrayList<>();
         walk(bench.getContentPane(), missing);

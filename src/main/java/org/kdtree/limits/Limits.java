@@ -1,0 +1,76 @@
+package org.kdtree.limits;
+
+import java.util.List;
+
+/**
+ * Every setting's allowed range, in one list: the API, the command line, the scene files and
+ * the workbench all check against these, so a value allowed in one place is allowed in all.
+ * docs/limits.md shows the same table (a test keeps the two in step).
+ */
+public final class Limits {
+    // Building a tree.
+    /** Threads building a tree, tracing a ray set or rendering an image. */
+    public static final Limit THREADS = Limit.whole("threads", 1, 256);
+    /** Kmaxdepth, the depth cap of a tree; -1 lets the builder choose from the primitive count. */
+    public static final Limit MAX_DEPTH = Limit.whole("Kmaxdepth", -1, 64).noting("-1 = auto, 8 + 1.3 log2 N");
+    /** The factor c of an automatic depth cap 8 + c log2 N. */
+    public static final Limit DEPTH_FACTOR = Limit.real("depth factor c", 0, 4);
+    /** References the tree may hold per input primitive before nodes become leaves early. */
+    public static final Limit REFERENCE_BUDGET = Limit.whole("reference budget", 1, 1 << 16);
+    /** Kt, the SAH's cost of one traversal step. */
+    public static final Limit KT = Limit.real("Kt", 0, 10_000);
+    /** Ki, the SAH's cost of one primitive test. */
+    public static final Limit KI = Limit.real("Ki", 0.001, 10_000);
+    /** lambda, the SAH's weight of a plane that leaves one side empty. */
+    public static final Limit LAMBDA = Limit.real("lambda", 0.01, 1);
+    /** Kmintri, the median builders' smallest node worth splitting. */
+    public static final Limit MIN_PRIMITIVES = Limit.whole("Kmintri", 0, 1_000_000);
+    /** Bins per axis of the binned SAH. */
+    public static final Limit BINS = Limit.whole("bins", 2, 1_000_000);
+    /** Reference count below which the binned SAH switches to the exact sweep. */
+    public static final Limit EXACT_BELOW = Limit.whole("exact below", 0, 1_000_000_000).noting("0 = never");
+
+    // Rendering.
+    /** Image width and height, in pixels. */
+    public static final Limit IMAGE_SIDE = Limit.whole("image side", 1, 16_384);
+    /** Samples per pixel. */
+    public static final Limit SAMPLES_PER_PIXEL = Limit.whole("samples per pixel", 1, 4096);
+    /** Reflection and refraction depth. */
+    public static final Limit RAY_DEPTH = Limit.whole("ray depth", 0, 64);
+    /** Shadow-ray samples of one area light. */
+    public static final Limit LIGHT_SAMPLES = Limit.whole("light samples", 1, 1024);
+    /** The workbench's 3-D preview width, in pixels (it renders on every change). */
+    public static final Limit PREVIEW_WIDTH = Limit.whole("preview width", 16, 4096);
+
+    /** Slices around a tessellated sphere (or each sphere of a sphereflake). */
+    public static final Limit SPHERE_SEGMENTS = Limit.whole("sphere segments", 3, 4096);
+    /** Stacks from pole to pole of a tessellated sphere. */
+    public static final Limit SPHERE_RINGS = Limit.whole("sphere rings", 2, 4096);
+    /** Recursion levels of a sphereflake ((9^(levels+1) - 1) / 8 spheres). */
+    public static final Limit FLAKE_LEVELS = Limit.whole("sphereflake levels", 0, 6);
+
+    // Measuring.
+    /** Timed runs of a build or a ray set; the median is reported. */
+    public static final Limit RUNS = Limit.whole("runs", 1, 1000);
+    /** Untimed runs first, to warm up the JVM. */
+    public static final Limit WARMUP = Limit.whole("warm-up runs", 0, 1000);
+    /** N of the benchmark's N x N grid of copies of a mesh. */
+    public static final Limit GRID = Limit.whole("grid", 1, 64);
+    /** Rays in a generated ray set. */
+    public static final Limit RAY_COUNT = Limit.whole("rays", 1, 100_000_000);
+    /** Rays per triangle at which a trade-off chart adds trace time to build time. */
+    public static final Limit RAYS_PER_TRIANGLE = Limit.real("rays per triangle", 0.001, 1_000_000);
+
+    // Scenes.
+    /** Objects in a generated 2-D scene. */
+    public static final Limit SCENE_OBJECTS = Limit.whole("objects", 1, 100_000);
+
+    /** All of them, in the order of docs/limits.md. */
+    public static final List<Limit> ALL = List.of(THREADS, MAX_DEPTH, DEPTH_FACTOR, REFERENCE_BUDGET, KT, KI, LAMBDA,
+            MIN_PRIMITIVES, BINS, EXACT_BELOW, IMAGE_SIDE, SAMPLES_PER_PIXEL, RAY_DEPTH, LIGHT_SAMPLES, PREVIEW_WIDTH,
+            SPHERE_SEGMENTS, SPHERE_RINGS, FLAKE_LEVELS,
+            RUNS, WARMUP, GRID, RAY_COUNT, RAYS_PER_TRIANGLE, SCENE_OBJECTS);
+
+    private Limits() {
+    }
+}

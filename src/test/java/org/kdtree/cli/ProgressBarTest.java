@@ -1,0 +1,35 @@
+package org.kdtree.cli;
+
+import static org.assertj.core.api.Assertions.assertThat;
+
+import java.io.ByteArrayOutputStream;
+import java.io.PrintStream;
+import org.junit.jupiter.api.Test;
+
+/** The bar as a terminal shows it: redrawn in place, never backwards, lines printed above it, cleared at the end. */
+class ProgressBarTest {
+    @Test void redrawsInPlaceNeverBackwardsAndClearsItsLine() {
+        ByteArrayOutputStream bytes = new ByteArrayOutputStream();
+        try (ProgressBar bar = new ProgressBar(new PrintStream(bytes, true), 4, "tiles")) {
+            bar.update(1);
+            bar.update(3);
+            bar.update(2);   // a thread reporting late
+            bar.update(4);
+        }
+        String out = bytes.toString();
+        assertThat(out).startsWith("\r[").contains(" 25% (1/4 tiles)", " 75% (3/4 tiles)").doesNotContain(" 50%")
+                .contains("100% (4/4 tiles)").endsWith("\r\033[K");
+    }
+
+    @Test void stepsNameTheWorkAndResultsPrintAboveTheBar() {
+        ByteArrayOutputStream bar = new ByteArrayOutputStream(), results = new ByteArrayOutputStream();
+        PrintStream res = new PrintStream(results, true);
+        try (ProgressBar p = new ProgressBar(new PrintStream(bar, true), 3, "steps")) {
+            p.step(0, "build 1 of 2");
+            p.print(res, "first result");
+            p.step(1, "build 2 of 2");
+        }
+        assertThat(bar.toString()).contains("(0/3 steps) build 1 of 2", "(1/3 steps) build 2 of 2");
+        assertThat(results.toString()).isEqualTo("first result" + System.lineSeparator());
+    }
+}
