@@ -51,7 +51,12 @@ public abstract class KdTreeBuilder {
     private boolean perfectSplits = true;
     private int threads = 1;
 
-    /** Builds the tree of {@code primitives}, starting from their bounding box (constKdTree). */
+    /**
+     * Builds the tree of {@code primitives}, starting from their bounding box (constKdTree).
+     *
+     * @throws java.util.concurrent.CancellationException if the calling thread is interrupted
+     *         during the build (the build stops at its next split)
+     */
     public final KdTree build(Primitives primitives) {
         Box rootVoxel = rootVoxel(primitives);
         int depthCap = depthCap(primitives.size());

@@ -24,6 +24,7 @@ public final class ScenePanel extends JPanel {
     private final JSpinner count = LimitedSpinner.of(Limits.SCENE_OBJECTS, "objects", 500, 100,
             why -> generate.setEnabled(why == null));
     private final Runnable onLoaded;
+    private boolean naming;
     private final WorkbenchModel model;
 
     /** {@code onLoaded} runs after a new scene replaced the old one (the workbench refits the view). */
@@ -48,8 +49,30 @@ public final class ScenePanel extends JPanel {
         row.add(count);
         row.add(generate);
         add(row);
-        scene.addActionListener(e -> loadBuiltin((String) scene.getSelectedItem()));
+        scene.addActionListener(e -> {
+            String name = (String) scene.getSelectedItem();
+            if (!naming && builtins.containsKey(name)) loadBuiltin(name);
+        });
         generate.addActionListener(e -> generate());
+        model.addListener(c -> {
+            if (c == WorkbenchModel.Change.TREE || c == WorkbenchModel.Change.BUILDING) showName(model.sceneName());
+        });
+        showName(model.sceneName());
+    }
+
+    /**
+     * Shows the scene's name in the box: a built-in one is selected, any other (generated, opened
+     * from a file) is shown as an extra last entry, so the box never names a scene that is gone.
+     */
+    private void showName(String name) {
+        naming = true;
+        try {
+            if (scene.getItemCount() > builtins.size()) scene.removeItemAt(builtins.size());
+            if (!builtins.containsKey(name) && !name.isEmpty()) scene.addItem(name);
+            scene.setSelectedItem(name);
+        } finally {
+            naming = false;
+        }
     }
 
     /** Loads built-in scene number {@code index} (0-based). */

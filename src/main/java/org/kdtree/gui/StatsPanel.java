@@ -7,12 +7,14 @@ import java.util.Map;
 import javax.swing.BorderFactory;
 import javax.swing.JLabel;
 import javax.swing.JPanel;
+import javax.swing.JProgressBar;
 import org.kdtree.tree.KdTree;
 import org.kdtree.tree.TreeStats;
 
 /** The statistics of the current tree: build time, nodes, leaves, empty leaves, depth, refs per leaf, SAH cost. */
 public final class StatsPanel extends JPanel {
     private final Map<String, JLabel> values = new LinkedHashMap<>();
+    private final JProgressBar progress = new JProgressBar();
 
     public StatsPanel(WorkbenchModel model) {
         super(new GridLayout(0, 2, 8, 1));
@@ -25,8 +27,16 @@ public final class StatsPanel extends JPanel {
         add("depth", "Depth of the deepest leaf (the root has depth 0)");
         add("refs / leaf", "Object references per non-empty leaf");
         add("SAH cost", "Expected cost of a random ray: Kt per node visited plus Ki per object tested");
+        progress.setIndeterminate(true);
+        progress.setName("stat.building");
+        progress.setToolTipText("A large scene is built in the background; the views show the last tree until it is ready");
+        progress.setVisible(false);
+        add(new JLabel());
+        add(progress);
         model.addListener(c -> {
             if (c == WorkbenchModel.Change.TREE) show(model);
+            if (c == WorkbenchModel.Change.BUILDING) set("build time", "building ...");
+            progress.setVisible(model.building());
         });
         show(model);
     }

@@ -125,6 +125,7 @@ public final class StepperPanel extends JPanel implements CanvasOverlay {
             for (JLabel l : new JLabel[] {nodeLabel, intervalLabel, childrenLabel, stackLabel, testedLabel}) l.setText(" ");
         } else {
             describe(trace.step(index));
+            if (trace.step(index).node() >= 0) model.selectNode(trace.step(index).node());   // the tree view follows the step
         }
         repaintCanvas();
     }

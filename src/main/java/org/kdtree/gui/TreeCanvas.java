@@ -122,6 +122,7 @@ public final class TreeCanvas extends JComponent {
         private double tol() { return 5 / view.scale(); }
 
         @Override public void mouseMoved(MouseEvent e) {
+            if (model.ray() != null) return;   // with a ray cast, the selected node is the traversal stepper's
             model.selectNode(TreePainter.leafAt(model.tree(), view.worldX(e.getX()), view.worldY(e.getY())));
         }
 

@@ -56,7 +56,8 @@ public final class View3D extends JPanel {
     private final JLabel status = new JLabel(" ");
     private final JSpinner width = LimitedSpinner.of(Limits.PREVIEW_WIDTH, "Width", 480, 16, this::reject);
     private final JButton stop = new JButton("Stop");
-    private final JTextArea output = new JTextArea(20, 40);
+    private final JTextArea output = new JTextArea(20, 30);
+    private final javax.swing.JCheckBox fit = new javax.swing.JCheckBox("Fit", true);
     private final Picture picture = new Picture();
     private final Path dir;
     private final WorkbenchModel model;
@@ -75,6 +76,9 @@ public final class View3D extends JPanel {
         width.setToolTipText("Image width in pixels (the height follows the scene's aspect ratio); "
                 + LimitedSpinner.allowed(Limits.PREVIEW_WIDTH));
         ((JSpinner.DefaultEditor) width.getEditor()).getTextField().setToolTipText(width.getToolTipText());
+        fit.setName("view3d.fit");
+        fit.setToolTipText("Scale the image to the panel (off: 1:1, with scroll bars)");
+        fit.addActionListener(e -> picture.fit(fit.isSelected()));
         build.setName("view3d.build");
         build.setToolTipText("Build the tree and render the scene, showing the image as it fills in (Alt+D)");
         build.setMnemonic('D');
@@ -94,6 +98,7 @@ public final class View3D extends JPanel {
         top.add(builder);
         top.add(new JLabel("Width"));
         top.add(width);
+        top.add(fit);
         top.add(build);
         top.add(stop);
         top.add(status);
@@ -103,7 +108,7 @@ public final class View3D extends JPanel {
         JScrollPane pic = new JScrollPane(picture);
         pic.setBorder(BorderFactory.createTitledBorder("Image"));
         JSplitPane split = new JSplitPane(JSplitPane.HORIZONTAL_SPLIT, pic, text);
-        split.setResizeWeight(0.45);
+        split.setResizeWeight(0.7);   // the image gets most of the room; the statistics are a narrow column
         add(split, BorderLayout.CENTER);
         for (String s : sceneFiles(scenesDir)) scene.addItem(s);
         if (scene.getItemCount() == 0) status.setText("no 3-D scene in " + scenesDir.toAbsolutePath());
@@ -261,8 +266,10 @@ public final class View3D extends JPanel {
     }
 
     /** The image as it fills in. */
-    private final class Picture extends JComponent {
+    /** The image: scaled to fit the panel (keeping its aspect ratio), or at 1:1 with scroll bars. */
+    private final class Picture extends JComponent implements javax.swing.Scrollable {
         private BufferedImage img;
+        private boolean fit = true;
 
         void show(BufferedImage i, int done, int total) {
             img = i;
@@ -272,8 +279,29 @@ public final class View3D extends JPanel {
             if (running != null) status.setText(String.format(Locale.ROOT, "rendering: %d / %d tiles", done, total));
         }
 
-        @Override protected void paintComponent(Graphics g) {
-            if (img != null) g.drawImage(img, 0, 0, null);
+        void fit(boolean on) {
+            fit = on;
+            revalidate();
+            repaint();
         }
+
+        @Override protected void paintComponent(Graphics g) {
+            if (img == null) return;
+            if (!fit) {
+                g.drawImage(img, 0, 0, null);
+                return;
+            }
+            double scale = Math.min((double) getWidth() / img.getWidth(), (double) getHeight() / img.getHeight());
+            int w = Math.max(1, (int) (img.getWidth() * scale)), h = Math.max(1, (int) (img.getHeight() * scale));
+            ((java.awt.Graphics2D) g).setRenderingHint(java.awt.RenderingHints.KEY_INTERPOLATION,
+                    java.awt.RenderingHints.VALUE_INTERPOLATION_BILINEAR);
+            g.drawImage(img, (getWidth() - w) / 2, (getHeight() - h) / 2, w, h, null);
+        }
+
+        @Override public Dimension getPreferredScrollableViewportSize() { return getPreferredSize(); }
+        @Override public int getScrollableUnitIncrement(java.awt.Rectangle r, int o, int d) { return 16; }
+        @Override public int getScrollableBlockIncrement(java.awt.Rectangle r, int o, int d) { return 128; }
+        @Override public boolean getScrollableTracksViewportWidth() { return fit; }    // fitted: never a scroll bar
+        @Override public boolean getScrollableTracksViewportHeight() { return fit; }
     }
 }

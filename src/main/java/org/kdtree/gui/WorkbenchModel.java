@@ -2,19 +2,33 @@ package org.kdtree.gui;
 
 import java.util.ArrayList;
 import java.util.List;
+import java.util.concurrent.CancellationException;
 import java.util.concurrent.CopyOnWriteArrayList;
+import java.util.concurrent.ExecutorService;
+import java.util.concurrent.Executors;
+import java.util.concurrent.Future;
+import javax.swing.SwingUtilities;
 import org.kdtree.shape.Shape2D;
 import org.kdtree.shape.Shapes2D;
 import org.kdtree.tree.KdTree;
 
 /**
  * The state the 2-D views share: the scene being edited, the builder settings, the tree built
- * from them (rebuilt at once on every change), the selected node and shape, and the cast ray.
- * Listeners hear what changed. Used on the Swing event thread only.
+ * from them (rebuilt on every change), the selected node and shape, and the cast ray. Listeners
+ * hear what changed. Used on the Swing event thread only.
+ *
+ * <p>A scene of up to {@link #BACKGROUND_ABOVE} objects is rebuilt at once, within the event;
+ * a larger one on a background thread, so that the window stays responsive: listeners hear
+ * {@link Change#BUILDING}, the views keep showing the last scene and tree until the new tree is
+ * ready, and a change made meanwhile cancels the stale build (its thread is interrupted, which
+ * every builder obeys).
  */
 public final class WorkbenchModel {
     /** What changed, so that a view redoes only what it must. */
-    public enum Change { TREE, SELECTION, RAY }
+    public enum Change { TREE, SELECTION, RAY, BUILDING }
+
+    /** Scenes with more objects than this are built in the background. */
+    public static final int BACKGROUND_ABOVE = 20_000;
 
     /** Hears the model's changes. */
     public interface Listener {
@@ -28,6 +42,14 @@ public final class WorkbenchModel {
     private BuilderSettings settings = BuilderSettings.DEFAULT;
     private KdTree tree;
     private double buildMillis;
+    private boolean building;
+    private Future<?> pending;
+    private int generation;
+    private final ExecutorService builderThread = Executors.newSingleThreadExecutor(r -> {
+        Thread t = new Thread(r, "workbench build");
+        t.setDaemon(true);
+        return t;
+    });
     private int selectedNode = -1;
     private int selectedShape = -1;
     private double[] ray;
@@ -94,11 +116,45 @@ public final class WorkbenchModel {
     /** Wall-clock time of the last build, in milliseconds. */
     public double buildMillis() { return buildMillis; }
 
+    /** Whether a background build is under way (the views still show the previous tree). */
+    public boolean building() { return building; }
+
     private void rebuild() {
-        scene = new Shapes2D(shapes);
-        long t0 = System.nanoTime();
-        tree = settings.create().build(scene);
-        buildMillis = (System.nanoTime() - t0) / 1e6;
+        Shapes2D next = new Shapes2D(shapes);
+        var builder = settings.create();
+        int mine = ++generation;
+        if (pending != null) pending.cancel(true);
+        pending = null;
+        if (next.size() <= BACKGROUND_ABOVE) {
+            building = false;
+            long t0 = System.nanoTime();
+            install(next, builder.build(next), (System.nanoTime() - t0) / 1e6);
+            return;
+        }
+        building = true;
+        fire(Change.BUILDING);
+        pending = builderThread.submit(() -> {
+            long t0 = System.nanoTime();
+            KdTree built;
+            try {
+                built = builder.build(next);
+            } catch (CancellationException stale) {
+                return;
+            }
+            double ms = (System.nanoTime() - t0) / 1e6;
+            SwingUtilities.invokeLater(() -> {
+                if (mine != generation) return;          // a newer change is being built
+                building = false;
+                install(next, built, ms);
+            });
+        });
+    }
+
+    /** Publishes a scene and its tree together, so that the views never pair a tree with another scene. */
+    private void install(Shapes2D builtScene, KdTree builtTree, double ms) {
+        scene = builtScene;
+        tree = builtTree;
+        buildMillis = ms;
         if (selectedNode >= tree.nodeCount()) selectedNode = -1;
         if (selectedShape >= shapes.size()) selectedShape = -1;
         fire(Change.TREE);

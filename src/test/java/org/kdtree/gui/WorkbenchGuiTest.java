@@ -73,6 +73,12 @@ class WorkbenchGuiTest {
         assertThat(window.label("step.label").text()).startsWith("step 2 /");
         assertThat(window.label("step.node").text()).startsWith("node #0");
         assertThat(window.label("step.interval").text()).contains("tSplit = ").doesNotContain("tSplit = -  ");
+        assertThat(bench.model().selectedNode()).as("the tree view follows the stepper, not the mouse").isZero();
+        window.robot().moveMouse(bench.canvas(), new Point(w / 3, h / 3));
+        assertThat(bench.model().selectedNode()).isZero();
+        window.button("step.next").click();
+        String node = window.label("step.node").text();
+        assertThat(node).startsWith("node #" + bench.model().selectedNode());
         window.button("step.last").click();
         assertThat(window.label("step.label").text()).endsWith("done");
         window.button("step.prev").click();
@@ -114,6 +120,50 @@ class WorkbenchGuiTest {
         assertThat(bench.model().settings().maxDepth()).isEqualTo(3);
         window.label("autoDepth").requireText("fixed depth cap 3");
         assertThat(window.textBox("kmaxdepth.text").target().getToolTipText()).contains("allowed: -1..64");
+    }
+
+    @Test void theSceneBoxNamesTheSceneShownAfterGenerate() {
+        window.spinner("count").select(300);
+        window.button("generate").click();
+        assertThat(bench.model().scene().size()).isEqualTo(300);
+        window.comboBox("scene").requireSelection(bench.model().sceneName());
+        assertThat(bench.model().sceneName()).endsWith("(300)");
+        window.comboBox("scene").selectItem("Talk figures");
+        window.comboBox("scene").requireSelection("Talk figures");
+        assertThat(window.comboBox("scene").contents()).doesNotContain(bench.model().sceneName() + "x")
+                .hasSize(BuiltinScenes.all().size());
+    }
+
+    /**
+     * A 100,000-object rebuild runs off the event thread: while it runs, the event thread answers
+     * probes (the median of them within 100 ms: the bound is on responsiveness, a build of that
+     * size takes seconds when it blocks the thread), then the new tree arrives.
+     */
+    @Test void aLargeRebuildLeavesTheWindowResponsive() throws Exception {
+        window.spinner("count").select(100_000);
+        window.button("generate").click();
+        List<Long> probes = new java.util.ArrayList<>();
+        long deadline = System.nanoTime() + 120_000_000_000L;
+        while (GuiActionRunner.execute(() -> bench.model().building()) && System.nanoTime() < deadline) {
+            long t0 = System.nanoTime();
+            javax.swing.SwingUtilities.invokeAndWait(() -> { });
+            probes.add((System.nanoTime() - t0) / 1_000_000);
+            Thread.sleep(20);
+        }
+        assertThat(probes).as("probes answered while the build ran").hasSizeGreaterThan(2);
+        assertThat(probes.stream().sorted().toList().get(probes.size() / 2)).as("median probe, ms").isLessThan(100);
+        assertThat(GuiActionRunner.execute(() -> bench.model().scene().size())).isEqualTo(100_000);
+        assertThat(GuiActionRunner.execute(() -> bench.model().tree().stats().references())).isGreaterThanOrEqualTo(100_000);
+    }
+
+    @Test void aChangeDuringALargeBuildCancelsItAndTheLastSettingWins() throws Exception {
+        window.spinner("count").select(100_000);
+        window.button("generate").click();
+        window.comboBox("builder").selectItem("median-plane");
+        long deadline = System.nanoTime() + 120_000_000_000L;
+        while (GuiActionRunner.execute(() -> bench.model().building()) && System.nanoTime() < deadline) Thread.sleep(50);
+        assertThat(GuiActionRunner.execute(() -> bench.model().tree().builderName())).isEqualTo("median-plane");
+        assertThat(GuiActionRunner.execute(() -> bench.model().scene().size())).isEqualTo(100_000);
     }
 
     @Test void everyControlHasATooltipAndEveryMenuItemAShortcut() {
