@@ -15,7 +15,9 @@ import org.kdtree.tradeoff.TradeoffResult;
  *
  * <pre>
  * java -cp target/benchmarks.jar org.kdtree.bench.TradeoffChartFromCsv docs/tradeoff/bunny-R.csv 69451 \
- *      "stanford-bunny: build time vs trace time (R rays)" docs/tradeoff/bunny-R.png
+ *      "stanford-bunny: build time vs trace time (R rays)" \
+ *      "stanford-bunny, 69,451 triangles; R rays x 100,000; 1 build thread, 2 cores; measured 2026-11-29" \
+ *      docs/tradeoff/bunny-R.png
  * </pre>
  */
 public final class TradeoffChartFromCsv {
@@ -23,8 +25,8 @@ public final class TradeoffChartFromCsv {
     }
 
     public static void main(String[] args) throws IOException {
-        if (args.length != 4) {
-            System.err.println("usage: TradeoffChartFromCsv RESULTS.csv TRIANGLES TITLE OUT.png");
+        if (args.length != 5) {
+            System.err.println("usage: TradeoffChartFromCsv RESULTS.csv TRIANGLES TITLE CAPTION OUT.png");
             System.exit(2);
         }
         int triangles = Integer.parseInt(args[1]);
@@ -36,6 +38,6 @@ public final class TradeoffChartFromCsv {
                     Integer.parseInt(f[3]), Integer.parseInt(f[4]), Long.parseLong(f[5]), Double.parseDouble(f[6]),
                     Double.parseDouble(f[7]), Double.parseDouble(f[8]) * 1e6, triangles));
         }
-        TradeoffChart.write(results, args[2], 10, Path.of(args[3]));
+        TradeoffChart.write(results, args[2], 10, args[3] + " · data: " + Path.of(args[0]).getFileName(), Path.of(args[4]));
     }
 }

@@ -8,6 +8,7 @@ import java.util.concurrent.Callable;
 import org.kdtree.limits.Limits;
 import org.kdtree.shape.ProceduralScenes;
 import org.kdtree.shape.TriangleMesh;
+import org.kdtree.tradeoff.ChartFile;
 import org.kdtree.tradeoff.RaySet;
 import org.kdtree.tradeoff.Tradeoff;
 import org.kdtree.tradeoff.TradeoffChart;
@@ -111,8 +112,11 @@ public final class TradeoffCommand implements Callable<Integer> {
             }
         }
         Files.writeString(csvOut, Tradeoff.csv(results));
-        TradeoffChart.write(results, base + ": build time vs trace time (" + set.name() + " rays)", chartRaysPerTriangle, pngOut);
-        System.out.println("wrote " + csvOut + " and " + pngOut);
+        String caption = ChartFile.caption(String.format(Locale.ROOT, "%s, %,d triangles; %s rays x %,d; median of %d run%s",
+                base, m.size(), set.name(), set.size(), runs, runs == 1 ? "" : "s"), threads);
+        TradeoffChart.write(results, base + ": build time vs trace time (" + set.name() + " rays)", chartRaysPerTriangle,
+                caption, pngOut);
+        System.out.println("wrote " + csvOut + ", " + pngOut + " and its SVG");
         return 0;
     }
 }

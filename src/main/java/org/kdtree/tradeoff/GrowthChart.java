@@ -1,4 +1,4 @@
-package org.kdtree.bench;
+package org.kdtree.tradeoff;
 
 import java.io.IOException;
 import java.nio.file.Files;
@@ -7,7 +7,6 @@ import java.util.ArrayList;
 import java.util.List;
 import java.util.Map;
 import java.util.TreeMap;
-import org.knowm.xchart.BitmapEncoder;
 import org.knowm.xchart.XYChart;
 import org.knowm.xchart.XYChartBuilder;
 import org.knowm.xchart.XYSeries;
@@ -15,12 +14,12 @@ import org.knowm.xchart.style.markers.SeriesMarkers;
 
 /**
  * Draws the growth of build time with N from the CSV files JMH writes ({@code -rf csv}) for
- * {@link BuildBenchmark} and {@link NaiveBuildBenchmark}: one log-log line per builder for one
+ * {@code BuildBenchmark} and {@code NaiveBuildBenchmark} (src/jmh): one log-log line per builder for one
  * scene, with the curves N^2, N log^2 N and N log N drawn through the first point of the naive,
  * sorted and event builds, so that a slope can be read against its prediction.
  *
  * <pre>
- * java -cp target/benchmarks.jar org.kdtree.bench.GrowthChart growth.png surface naive.csv build.csv ...
+ * java -cp target/kdtree.jar org.kdtree.tradeoff.GrowthChart growth.png surface naive.csv build.csv ...
  * </pre>
  */
 public final class GrowthChart {
@@ -39,8 +38,10 @@ public final class GrowthChart {
             System.err.println("no rows for scene " + scene + " in " + String.join(", ", List.of(args).subList(2, args.length)));
             System.exit(1);
         }
-        write(series, scene, Path.of(args[0]));
-        System.out.println("wrote " + args[0]);
+        String caption = "JMH averages from " + String.join(", ", List.of(args).subList(2, args.length))
+                + " · one build thread · drawn " + java.time.LocalDate.now();
+        write(series, scene, caption, Path.of(args[0]));
+        System.out.println("wrote " + args[0] + " and its SVG");
     }
 
     /** Adds the rows of one JMH CSV whose scene is {@code scene}: builder -> (N -> ms per build). */
@@ -66,22 +67,28 @@ public final class GrowthChart {
         return out;
     }
 
-    private static void write(Map<String, TreeMap<Integer, Double>> series, String scene, Path png) throws IOException {
+    static void write(Map<String, TreeMap<Integer, Double>> series, String scene, String caption, Path png) throws IOException {
+        ChartFile.write(chart(series, scene), caption, png);
+    }
+
+    /** The chart itself (tests read its series and axes). */
+    static XYChart chart(Map<String, TreeMap<Integer, Double>> series, String scene) {
         XYChart chart = new XYChartBuilder().width(900).height(600)
                 .title("Build time against N (" + scene + " scene, one thread, JMH average)")
                 .xAxisTitle("N (triangles)").yAxisTitle("ms per build").build();
-        chart.getStyler().setXAxisLogarithmic(true);
-        chart.getStyler().setYAxisLogarithmic(true);
+        ChartFile.logAxes(chart);
         chart.getStyler().setLegendPosition(org.knowm.xchart.style.Styler.LegendPosition.InsideNW);
+        List<org.knowm.xchart.XYSeries> measured = new ArrayList<>();
         for (Map.Entry<String, TreeMap<Integer, Double>> e : series.entrySet()) {
             TreeMap<Integer, Double> points = e.getValue();
-            chart.addSeries(e.getKey(), points.keySet().stream().mapToDouble(Integer::doubleValue).toArray(),
-                    points.values().stream().mapToDouble(Double::doubleValue).toArray());
+            measured.add(chart.addSeries(e.getKey(), points.keySet().stream().mapToDouble(Integer::doubleValue).toArray(),
+                    points.values().stream().mapToDouble(Double::doubleValue).toArray()));
         }
+        ChartFile.distinctMarkers(measured);
         reference(chart, series.get("sah-naive"), "N^2 through naive", 2, new java.awt.Color(150, 30, 30));
         reference(chart, series.get("sah-sorted"), "N log^2 N through sorted", 1, new java.awt.Color(150, 110, 0));
         reference(chart, series.get("sah-event"), "N log N through event", 0, new java.awt.Color(0, 110, 0));
-        BitmapEncoder.saveBitmap(chart, png.toString(), BitmapEncoder.BitmapFormat.PNG);
+        return chart;
     }
 
     /** The curve N^2 (kind 2), N log^2 N (1) or N log N (0) through the first point of {@code points}. */

@@ -1,0 +1,105 @@
+package org.kdtree.tradeoff;
+
+import de.erichseifert.vectorgraphics2d.Processors;
+import de.erichseifert.vectorgraphics2d.VectorGraphics2D;
+import de.erichseifert.vectorgraphics2d.util.PageSize;
+import java.awt.Color;
+import java.awt.Font;
+import java.awt.Graphics2D;
+import java.awt.RenderingHints;
+import java.awt.image.BufferedImage;
+import java.io.IOException;
+import java.io.OutputStream;
+import java.nio.file.Files;
+import java.nio.file.Path;
+import java.time.LocalDate;
+import java.util.List;
+import java.util.Locale;
+import javax.imageio.ImageIO;
+import org.knowm.xchart.XYChart;
+import org.knowm.xchart.XYSeries;
+import org.knowm.xchart.style.markers.Marker;
+import org.knowm.xchart.style.markers.SeriesMarkers;
+
+/**
+ * What makes every chart the project writes readable on its own: log axes labelled at each
+ * decade and at 2 and 5 between, one marker and colour per series, a caption that says what was
+ * measured where and when, and both PNG and SVG files.
+ */
+public final class ChartFile {
+    private static final Marker[] MARKERS = {SeriesMarkers.CIRCLE, SeriesMarkers.DIAMOND, SeriesMarkers.SQUARE,
+            SeriesMarkers.TRIANGLE_UP, SeriesMarkers.TRIANGLE_DOWN, SeriesMarkers.CROSS, SeriesMarkers.PLUS};
+    private static final Color[] COLOURS = {new Color(0x1f77b4), new Color(0xff7f0e), new Color(0x2ca02c),
+            new Color(0xd62728), new Color(0x9467bd), new Color(0x8c564b), new Color(0xe377c2), new Color(0x7f7f7f),
+            new Color(0x17becf)};
+    private static final int CAPTION_HEIGHT = 28;
+
+    private ChartFile() {
+    }
+
+    /** Log scale on both axes, with a label at 1, 2 and 5 of every decade and unlabelled ticks between. */
+    public static void logAxes(XYChart chart) {
+        chart.getStyler().setXAxisLogarithmic(true).setYAxisLogarithmic(true);
+        chart.getStyler().setXAxisLogarithmicDecadeOnly(false).setYAxisLogarithmicDecadeOnly(false);
+        chart.getStyler().setxAxisTickLabelsFormattingFunction(ChartFile::tickLabel);
+        chart.getStyler().setyAxisTickLabelsFormattingFunction(ChartFile::tickLabel);
+    }
+
+    /** The label of a log axis's tick: its value at 1, 2 or 5 times a power of ten, otherwise none. */
+    public static String tickLabel(double v) {
+        if (!(v > 0)) return "";
+        double decade = Math.pow(10, Math.floor(Math.log10(v) + 1e-9));
+        double m = v / decade;
+        boolean labelled = Math.abs(m - 1) < 1e-6 || Math.abs(m - 2) < 1e-6 || Math.abs(m - 5) < 1e-6;
+        if (!labelled) return "";
+        if (v >= 1e6 || v < 1e-3) return String.format(Locale.ROOT, "%.0e", v).replace("e+0", "e").replace("e-0", "e-");
+        return new java.math.BigDecimal(v).round(new java.math.MathContext(1)).stripTrailingZeros().toPlainString();
+    }
+
+    /**
+     * Gives the i-th series marker i mod 7 and colour i mod 9: 7 and 9 are coprime, so no two of
+     * up to 63 series look alike.
+     */
+    public static void distinctMarkers(List<XYSeries> series) {
+        for (int i = 0; i < series.size(); i++) {
+            series.get(i).setMarker(MARKERS[i % MARKERS.length]);
+            series.get(i).setMarkerColor(COLOURS[i % COLOURS.length]);
+            series.get(i).setLineColor(COLOURS[i % COLOURS.length]);
+        }
+    }
+
+    /** "what was measured · N threads on a machine of C cores · date", for under a chart. */
+    public static String caption(String what, int threads) {
+        return what + " · " + threads + (threads == 1 ? " thread" : " threads") + " on a machine of "
+                + Runtime.getRuntime().availableProcessors() + " cores · " + LocalDate.now();
+    }
+
+    /** Writes {@code png} and, beside it, the same chart as SVG (same name, {@code .svg}); returns the SVG's path. */
+    public static Path write(XYChart chart, String caption, Path png) throws IOException {
+        int w = chart.getWidth(), h = chart.getHeight() + CAPTION_HEIGHT;
+        BufferedImage image = new BufferedImage(w, h, BufferedImage.TYPE_INT_RGB);
+        Graphics2D g = image.createGraphics();
+        g.setRenderingHint(RenderingHints.KEY_ANTIALIASING, RenderingHints.VALUE_ANTIALIAS_ON);
+        g.setRenderingHint(RenderingHints.KEY_TEXT_ANTIALIASING, RenderingHints.VALUE_TEXT_ANTIALIAS_ON);
+        paint(chart, caption, g);
+        g.dispose();
+        if (!ImageIO.write(image, "png", png.toFile())) throw new IOException(png + ": no PNG writer");
+        Path svg = png.resolveSibling(png.getFileName().toString().replaceFirst("(?i)\\.png$", "") + ".svg");
+        VectorGraphics2D vg = new VectorGraphics2D();
+        paint(chart, caption, vg);
+        try (OutputStream out = Files.newOutputStream(svg)) {
+            Processors.get("svg").getDocument(vg.getCommands(), new PageSize(0, 0, w, h)).writeTo(out);
+        }
+        return svg;
+    }
+
+    private static void paint(XYChart chart, String caption, Graphics2D g) {
+        int w = chart.getWidth(), h = chart.getHeight();
+        g.setColor(Color.WHITE);
+        g.fillRect(0, 0, w, h + CAPTION_HEIGHT);
+        chart.paint(g, w, h);
+        g.setColor(new Color(60, 60, 60));
+        g.setFont(new Font(Font.SANS_SERIF, Font.PLAIN, 12));
+        g.drawString(caption, 10, h + CAPTION_HEIGHT - 10);
+    }
+}

@@ -1,0 +1,101 @@
+package org.kdtree.tradeoff;
+
+import static org.assertj.core.api.Assertions.assertThat;
+
+import java.awt.image.BufferedImage;
+import java.nio.file.Files;
+import java.nio.file.Path;
+import java.util.ArrayList;
+import java.util.HashSet;
+import java.util.List;
+import java.util.Map;
+import java.util.Set;
+import java.util.TreeMap;
+import java.util.function.Function;
+import javax.imageio.ImageIO;
+import org.junit.jupiter.api.Test;
+import org.junit.jupiter.api.io.TempDir;
+import org.knowm.xchart.XYChart;
+import org.knowm.xchart.XYSeries;
+
+/** Every chart the project writes, rendered headless and read back from its model: ticks, markers, caption, files. */
+class ChartsTest {
+    @TempDir Path dir;
+
+    @Test void logTicksAreLabelledAtOneTwoAndFiveOfEveryDecade() {
+        assertThat(List.of(1.0, 2.0, 5.0, 10.0, 20.0, 50.0, 100.0, 0.02, 0.5, 2000.0)).allSatisfy(v ->
+                assertThat(ChartFile.tickLabel(v)).as("%s", v).isNotEmpty());
+        assertThat(List.of(3.0, 4.0, 6.0, 7.0, 8.0, 9.0, 30.0, 700.0, 0.03)).allSatisfy(v ->
+                assertThat(ChartFile.tickLabel(v)).as("%s", v).isEmpty());
+        assertThat(ChartFile.tickLabel(20)).isEqualTo("20");
+        assertThat(ChartFile.tickLabel(0.05)).isEqualTo("0.05");
+        assertThat(ChartFile.tickLabel(5000)).isEqualTo("5000");
+        assertThat(ChartFile.tickLabel(2e6)).isEqualTo("2e6");
+    }
+
+    @Test void theTradeoffChartHasLabelledLogAxesDistinctMarkersAndUnits() throws Exception {
+        List<TradeoffResult> results = new ArrayList<>();
+        for (int i = 0; i < 12; i++)
+            results.add(new TradeoffResult("variant-" + i, "", 30 + 40 * i, 100, 1, 1, 1, 1, 1, 1e5 * (1 + i % 5), 1000));
+        XYChart chart = TradeoffChart.chart(results, "test", 10);
+        assertLabelledLogAxes(chart, 30, 470, 10, 100);
+        assertThat(chart.getXAxisTitle()).contains("(ms)");
+        assertThat(chart.getYAxisTitle()).contains("(ms)");
+        List<XYSeries> points = chart.getSeriesMap().values().stream()
+                .filter(s -> !s.getName().equals("Pareto front")).toList();
+        assertDistinct(points);
+        assertWritten(chart);
+    }
+
+    @Test void theGrowthChartHasLabelledLogAxesAndDistinctMarkers() throws Exception {
+        Map<String, TreeMap<Integer, Double>> series = new TreeMap<>();
+        for (String b : List.of("sah-event", "sah-sorted", "sah-binned", "sah-naive", "median-plane")) {
+            TreeMap<Integer, Double> points = new TreeMap<>();
+            for (int n : new int[] {1000, 10_000, 100_000}) points.put(n, n * (1 + b.length() % 3) / 1e4);
+            series.put(b, points);
+        }
+        XYChart chart = GrowthChart.chart(series, "surface");
+        assertLabelledLogAxes(chart, 1000, 100_000, 0.1, 30);
+        assertDistinct(chart.getSeriesMap().values().stream().filter(s -> !s.getName().contains(" through ")).toList());
+        assertWritten(chart);
+    }
+
+    /** Both axes logarithmic with every tick drawn, and labels at each 1, 2, 5 in the data's range. */
+    private static void assertLabelledLogAxes(XYChart chart, double xMin, double xMax, double yMin, double yMax) {
+        assertThat(chart.getStyler().isXAxisLogarithmic()).isTrue();
+        assertThat(chart.getStyler().isYAxisLogarithmic()).isTrue();
+        assertThat(chart.getStyler().isXAxisLogarithmicDecadeOnly()).isFalse();
+        assertThat(chart.getStyler().isYAxisLogarithmicDecadeOnly()).isFalse();
+        assertThat(labels(chart.getStyler().getxAxisTickLabelsFormattingFunction(), xMin, xMax)).hasSizeGreaterThanOrEqualTo(3);
+        assertThat(labels(chart.getStyler().getyAxisTickLabelsFormattingFunction(), yMin, yMax)).hasSizeGreaterThanOrEqualTo(3);
+    }
+
+    /** The labels the formatter gives to the ticks XChart draws between lo and hi (1..9 times each decade). */
+    private static List<String> labels(Function<Double, String> format, double lo, double hi) {
+        assertThat(format).isNotNull();
+        List<String> out = new ArrayList<>();
+        for (double decade = Math.pow(10, Math.floor(Math.log10(lo))); decade <= hi; decade *= 10)
+            for (int m = 1; m <= 9; m++) {
+                double v = m * decade;
+                if (v >= lo && v <= hi && !format.apply(v).isEmpty()) out.add(format.apply(v));
+            }
+        return out;
+    }
+
+    private static void assertDistinct(List<XYSeries> series) {
+        Set<String> looks = new HashSet<>();
+        for (XYSeries s : series) looks.add(s.getMarker().getClass().getSimpleName() + "/" + s.getMarkerColor());
+        assertThat(looks).as("marker shape and colour per series").hasSize(series.size());
+    }
+
+    private void assertWritten(XYChart chart) throws Exception {
+        Path png = dir.resolve("chart.png");
+        Path svg = ChartFile.write(chart, "the caption line", png);
+        BufferedImage image = ImageIO.read(png.toFile());
+        assertThat(image.getWidth()).isEqualTo(chart.getWidth());
+        assertThat(image.getHeight()).as("the chart plus its caption").isGreaterThan(chart.getHeight());
+        assertThat(svg.getFileName().toString()).isEqualTo("chart.svg");
+        String text = Files.readString(svg);
+        assertThat(text).contains("<svg").contains("the caption line");
+    }
+}
