@@ -18,7 +18,8 @@ public interface Collider {
 
     /**
      * The squared distance from {@code p} to primitive {@code i} (0 inside a filled one); the
-     * closest point of the primitive goes to {@code out[0..k)}.
+     * closest point of the primitive goes to {@code out[0..k)} unless {@code out} is null.
+     * +infinity for a zero-area triangle or rectangle: like rays, spheres never touch those.
      */
     double closestPoint(int i, double[] p, double[] out);
 

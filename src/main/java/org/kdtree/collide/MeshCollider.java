@@ -8,8 +8,9 @@ import org.kdtree.traverse.TriangleIntersector;
  * triangle are the union of a slab over its face, a capsule per edge and a sphere per vertex, so
  * a moving sphere's first contact is the earliest of: touching at t = 0, the face
  * ({@link SweptTriangle}), three edges ({@link SweptSegment}) and three vertices
- * ({@link SweptPoint}). A zero-area triangle is the segment or point it collapses to: its face is
- * skipped, its edges and vertices still touch.
+ * ({@link SweptPoint}). A zero-area triangle is never touched, as it is never hit by a ray
+ * ({@code traverse.Intersector}'s rule): radius 0 is then exactly the ray's first hit, and no
+ * query depends on where a builder files a primitive without area.
  *
  * <p>Which triangles have zero area is decided exactly, by {@link TriangleIntersector} (the one
  * place that decision is made, for rays too): that is this package's one use of {@code traverse}.
@@ -33,16 +34,19 @@ public final class MeshCollider implements Collider {
     @Override public int dimension() { return 3; }
     @Override public int size() { return flat.length; }
 
+    /** +infinity for a zero-area triangle (out untouched). */
     @Override public double closestPoint(int i, double[] p, double[] out) {
-        return SweptTriangle.closestPoint(corners, 9 * i, flat[i], p[0], p[1], p[2], out);
+        if (flat[i]) return Double.POSITIVE_INFINITY;
+        return SweptTriangle.closestPoint(corners, 9 * i, p[0], p[1], p[2], out);
     }
 
     @Override public double firstContact(int i, double[] s, double[] d, double r, double tMax) {
+        if (flat[i]) return Double.POSITIVE_INFINITY;
         int b = 9 * i;
         double[] c = corners;
         double sx = s[0], sy = s[1], sz = s[2], dx = d[0], dy = d[1], dz = d[2];
-        if (SweptTriangle.closestPoint(c, b, flat[i], sx, sy, sz, null) <= r * r) return 0;
-        double t = flat[i] ? Double.POSITIVE_INFINITY : SweptTriangle.firstContact(c, b, sx, sy, sz, dx, dy, dz, r, tMax);
+        if (SweptTriangle.closestPoint(c, b, sx, sy, sz, null) <= r * r) return 0;
+        double t = SweptTriangle.firstContact(c, b, sx, sy, sz, dx, dy, dz, r, tMax);
         for (int e = 0; e < 3; e++) {
             int p = b + 3 * e, q = b + 3 * ((e + 1) % 3);
             t = Math.min(t, SweptSegment.firstContact(c[p], c[p + 1], c[p + 2], c[q], c[q + 1], c[q + 2],

@@ -9,10 +9,11 @@ import org.kdtree.shape.Shapes2D;
  * ({@link SweptPoint}), a segment as a capsule ({@link SweptSegment} for its two long sides, its
  * end points for the round caps). A filled shape is touched at t = 0 when the circle starts on or
  * over it, and otherwise first on its boundary, so its sweep is the earliest over its edges and
- * corners. A zero-area triangle or rectangle is the segment it collapses to.
+ * corners. A zero-area triangle or rectangle is never touched, as a ray never hits it
+ * ({@code traverse.Shape2DIntersector}'s rule); a zero-length segment is its point.
  */
 public final class ShapeCollider implements Collider {
-    private static final int POINT = 0, SEGMENT = 1, RECT = 2, TRIANGLE = 3, FLAT_TRIANGLE = 4;
+    private static final int POINT = 0, SEGMENT = 1, RECT = 2, TRIANGLE = 3, NEVER = 4;
     /** Up to four corners (x, y) per shape, in boundary order; a rectangle's four. */
     private static final int STRIDE = 8;
 
@@ -38,13 +39,14 @@ public final class ShapeCollider implements Collider {
     private static int kindOf(Shape2D s, double[] c) {
         if (s instanceof Shape2D.Point) return POINT;
         if (s instanceof Shape2D.Segment) return SEGMENT;
-        if (s instanceof Shape2D.Rect) return RECT;
-        return orient(c[0], c[1], c[2], c[3], c[4], c[5]) != 0 ? TRIANGLE : FLAT_TRIANGLE;
+        if (s instanceof Shape2D.Rect r) return r.x0() < r.x1() && r.y0() < r.y1() ? RECT : NEVER;
+        return orient(c[0], c[1], c[2], c[3], c[4], c[5]) != 0 ? TRIANGLE : NEVER;
     }
 
     @Override public int dimension() { return 2; }
     @Override public int size() { return kind.length; }
 
+    /** +infinity for a zero-area triangle or rectangle (out untouched). */
     @Override public double closestPoint(int i, double[] p, double[] out) {
         int b = STRIDE * i;
         double[] c = xy;
@@ -71,12 +73,13 @@ public final class ShapeCollider implements Collider {
                 return closestEdge(c, b, 3, x, y, out);
             }
             default -> {
-                return closestEdge(c, b, 3, x, y, out);
+                return Double.POSITIVE_INFINITY;
             }
         }
     }
 
     @Override public double firstContact(int i, double[] s, double[] d, double r, double tMax) {
+        if (kind[i] == NEVER) return Double.POSITIVE_INFINITY;
         if (closestPoint(i, s, null) <= r * r) return 0;
         int b = STRIDE * i;
         double sx = s[0], sy = s[1], dx = d[0], dy = d[1];
@@ -85,7 +88,7 @@ public final class ShapeCollider implements Collider {
             case SEGMENT -> Math.min(sweepEdge(b, b + 2, sx, sy, dx, dy, r, tMax),
                     SweptPoint.firstContact(xy[b + 2], xy[b + 3], 0, sx, sy, 0, dx, dy, 0, r, tMax));
             case RECT -> sweepPolygon(b, 4, sx, sy, dx, dy, r, tMax);
-            default -> sweepPolygon(b, 3, sx, sy, dx, dy, r, tMax);
+            default -> sweepPolygon(b, 3, sx, sy, dx, dy, r, tMax); // a triangle
         };
     }
 
@@ -128,7 +131,7 @@ public final class ShapeCollider implements Collider {
         return SweptSegment.closestPoint(c[p], c[p + 1], 0, c[q], c[q + 1], 0, x, y, 0, out);
     }
 
-    /** Closed: a point on an edge is inside. Only for triangles of non-zero area. */
+    /** Closed: a point on an edge is inside. (A zero-area triangle would pass every point of its line.) */
     private static boolean insideTriangle(double[] c, int b, double x, double y) {
         double o1 = orient(c[b], c[b + 1], c[b + 2], c[b + 3], x, y);
         double o2 = orient(c[b + 2], c[b + 3], c[b + 4], c[b + 5], x, y);

@@ -28,7 +28,10 @@ final class SweptPoint {
         double b = mx * dx + my * dy + mz * dz;
         if (b >= 0) return Double.POSITIVE_INFINITY; // moving away, or not moving
         double a = dx * dx + dy * dy + dz * dz;
-        double disc = b * b - a * c;
+        // b^2 - a c, rewritten by Lagrange's identity as a r^2 - |m x d|^2: the expanded form
+        // cancels catastrophically when the path passes far from v compared with r (and for r = 0).
+        double cx = my * dz - mz * dy, cy = mz * dx - mx * dz, cz = mx * dy - my * dx;
+        double disc = a * r * r - (cx * cx + cy * cy + cz * cz);
         if (disc < 0) return Double.POSITIVE_INFINITY;
         // The smaller root of a t^2 + 2 b t + c, written c / (-b + sqrt) so that nothing cancels (b < 0).
         double t = c / (-b + Math.sqrt(disc));

@@ -56,7 +56,10 @@ final class SweptSegment {
         if (c <= 0) return Double.POSITIVE_INFINITY; // inside the infinite cylinder: enters by a cap
         double b = ux * wx + uy * wy + uz * wz;
         if (b >= 0) return Double.POSITIVE_INFINITY; // moving away from the line
-        double disc = b * b - a * c;
+        // b^2 - a c = r^2 |e|^2 a - |u x w|^2 (Lagrange's identity), without the cancellation
+        // (in 2-D u and w are parallel, so the second term is exactly 0).
+        double vx = uy * wz - uz * wy, vy = uz * wx - ux * wz, vz = ux * wy - uy * wx;
+        double disc = r * r * ee * a - (vx * vx + vy * vy + vz * vz);
         if (disc < 0) return Double.POSITIVE_INFINITY;
         double t = c / (-b + Math.sqrt(disc));
         if (t > tMax) return Double.POSITIVE_INFINITY;

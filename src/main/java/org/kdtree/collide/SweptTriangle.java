@@ -18,17 +18,14 @@ final class SweptTriangle {
 
     /**
      * Writes the point of the triangle closest to p into {@code out[0..3)} (unless {@code out} is
-     * null) and returns the squared distance. {@code flat} triangles (zero area) are treated as their three edges.
+     * null) and returns the squared distance. The triangle must have non-zero area.
      */
-    static double closestPoint(double[] c, int b, boolean flat, double x, double y, double z, double[] out) {
+    static double closestPoint(double[] c, int b, double x, double y, double z, double[] out) {
         double ax = c[b], ay = c[b + 1], az = c[b + 2];
-        double nx = 0, ny = 0, nz = 0;
-        if (!flat) {
-            double e1x = c[b + 3] - ax, e1y = c[b + 4] - ay, e1z = c[b + 5] - az;
-            double e2x = c[b + 6] - ax, e2y = c[b + 7] - ay, e2z = c[b + 8] - az;
-            nx = e1y * e2z - e1z * e2y; ny = e1z * e2x - e1x * e2z; nz = e1x * e2y - e1y * e2x;
-        }
-        if (!flat && projectsInside(c, b, nx, ny, nz, x, y, z)) {
+        double e1x = c[b + 3] - ax, e1y = c[b + 4] - ay, e1z = c[b + 5] - az;
+        double e2x = c[b + 6] - ax, e2y = c[b + 7] - ay, e2z = c[b + 8] - az;
+        double nx = e1y * e2z - e1z * e2y, ny = e1z * e2x - e1x * e2z, nz = e1x * e2y - e1y * e2x;
+        if (projectsInside(c, b, nx, ny, nz, x, y, z)) {
             // The closest point is p's projection onto the plane.
             double nn = nx * nx + ny * ny + nz * nz, h = nx * (x - ax) + ny * (y - ay) + nz * (z - az);
             double k = h / nn;

@@ -176,6 +176,24 @@ class ContactCasesTest {
         }
     }
 
+    @Test void zeroAreaTrianglesAndRectsAreNeverTouchedAsRaysNeverHitThem() {
+        TriangleMesh m = TestScenes.degenerateTriangles(); // three of zero area, then two ordinary
+        MeshCollider c = new MeshCollider(m);
+        double[] out = new double[3];
+        for (int t = 0; t < 3; t++) {
+            assertThat(c.closestPoint(t, new double[] {0.5, 0.5, 0.5}, out)).isInfinite();
+            assertThat(c.firstContact(t, new double[] {-5, -5, -5}, new double[] {10, 10, 10}, 1, 1)).isInfinite();
+        }
+        assertThat(c.closestPoint(3, new double[] {0.5, 3, 0.5}, out)).isEqualTo(1); // the ordinary one, in y = 2
+        Shapes2D s = new Shapes2D(List.of(new Shape2D.Triangle(0, 0, 1, 1, 2, 2), new Shape2D.Rect(0, 0, 0, 3),
+                new Shape2D.Segment(1, 1, 1, 1)));
+        ShapeCollider c2 = new ShapeCollider(s);
+        assertThat(c2.closestPoint(0, new double[] {1, 1}, out)).isInfinite();
+        assertThat(c2.closestPoint(1, new double[] {0, 1}, out)).isInfinite();
+        assertThat(c2.firstContact(1, new double[] {-1, 1}, new double[] {2, 0}, 0.5, 1)).isInfinite();
+        assertThat(c2.closestPoint(2, new double[] {1, 2}, out)).isEqualTo(1); // a zero-length segment is its point
+    }
+
     private static void assertContact(Contact c, int primitive, double t, double[] point, double[] normal) {
         assertThat(c.found()).as("found " + c).isTrue();
         assertThat(c.primitive).as("primitive " + c).isEqualTo(primitive);
