@@ -1,0 +1,87 @@
+package org.kdtree.collide;
+
+import org.kdtree.geom.Box;
+import org.kdtree.tree.KdTree;
+
+/**
+ * All primitives overlapping a sphere (a circle in 2-D): those at distance <= r from its centre,
+ * touching included.
+ *
+ * <p>The traversal descends into every child whose voxel, inflated by r, contains the centre: at
+ * a split plane {@code x_axis = xi} the left child when {@code c_axis - r <= xi}, the right one
+ * when {@code c_axis + r >= xi}, both when the sphere straddles the plane (the right one saved
+ * on a stack). Each primitive of the leaves reached is tested once ({@link TestedOnce}) with the
+ * exact {@link Collider#closestPoint}. The inflated voxel contains the sphere's Minkowski sum with
+ * the voxel, so nothing that touches the sphere is pruned.
+ *
+ * <p>An instance holds the stack and mailbox and allocates nothing per query: use one per thread
+ * (the tree and the collider are shared).
+ */
+public final class OverlapQuery {
+    private final KdTree tree;
+    private final Collider prims;
+    private final int k;
+    private final double[] lo, hi;
+    private final double sceneScale;
+    private final TestedOnce tested;
+    private final int[] stack;
+    private int tests;
+
+    public OverlapQuery(KdTree tree, Collider prims) {
+        if (tree.dimension() != prims.dimension())
+            throw new IllegalArgumentException("tree is " + tree.dimension() + "-D, primitives " + prims.dimension() + "-D");
+        this.tree = tree;
+        this.prims = prims;
+        k = tree.dimension();
+        Box b = tree.bounds();
+        lo = new double[k];
+        hi = new double[k];
+        for (int a = 0; a < k; a++) { lo[a] = b.min(a); hi[a] = b.max(a); }
+        sceneScale = SphereQueries.scale(b);
+        tested = new TestedOnce(prims.size());
+        stack = new int[tree.stats().maxDepth() + 2];
+    }
+
+    /**
+     * Writes the primitives within distance {@code r} of {@code centre} into {@code out} (in no
+     * particular order, each once) and returns how many there are. When there are more than
+     * {@code out.length}, only the first {@code out.length} are written, and the full count is
+     * still returned.
+     */
+    public int overlapping(double[] centre, double r, int[] out) {
+        SphereQueries.checkPoint("centre", centre, k);
+        SphereQueries.checkRadius(r);
+        tests = 0;
+        double inflate = r + SphereQueries.pad(sceneScale, centre, null, r, k);
+        for (int a = 0; a < k; a++)
+            if (!(centre[a] + inflate >= lo[a] && centre[a] - inflate <= hi[a])) return 0; // also an empty scene
+        tested.next();
+        double rr = r * r;
+        int count = 0, sp = 0, node = 0;
+        while (true) {
+            while (!tree.isLeaf(node)) {
+                double c = centre[tree.axis(node)], xi = tree.split(node);
+                boolean left = c - inflate <= xi, right = c + inflate >= xi;
+                if (left && right) stack[sp++] = tree.rightChild(node);
+                node = left ? tree.leftChild(node) : tree.rightChild(node);
+            }
+            for (int i = tree.leafStart(node), end = tree.leafEnd(node); i < end; i++) {
+                int p = tree.ref(i);
+                if (!tested.first(p)) continue;
+                tests++;
+                if (prims.closestPoint(p, centre, null) <= rr) {
+                    if (count < out.length) out[count] = p;
+                    count++;
+                }
+            }
+            if (sp == 0) return count;
+            node = stack[--sp];
+        }
+    }
+
+    /** Primitive tests the last query did (brute force does {@code size()}). */
+    public int lastTests() { return tests; }
+
+    public KdTree tree() { return tree; }
+    public Collider collider() { return prims; }
+}

@@ -1,0 +1,37 @@
+package org.kdtree.collide;
+
+import org.kdtree.geom.Tolerance;
+
+/** Argument checks and the voxel padding shared by the sphere queries. */
+final class SphereQueries {
+    private SphereQueries() {
+    }
+
+    static void checkPoint(String what, double[] p, int k) {
+        if (p.length < k) throw new IllegalArgumentException(what + " has " + p.length + " coordinates, the scene " + k);
+        for (int a = 0; a < k; a++)
+            if (!Double.isFinite(p[a])) throw new IllegalArgumentException(what + " has a non-finite coordinate: " + p[a]);
+    }
+
+    static void checkRadius(double r) {
+        if (!(r >= 0) || r == Double.POSITIVE_INFINITY)
+            throw new IllegalArgumentException("radius must be finite and >= 0: " + r);
+    }
+
+    /** {@link Tolerance#VOXEL_PAD} times the largest magnitude involved. */
+    static double pad(double sceneScale, double[] s, double[] d, double r, int k) {
+        double m = sceneScale + r;
+        for (int a = 0; a < k; a++) m = Math.max(m, Math.abs(s[a]) + (d == null ? 0 : Math.abs(d[a])));
+        return m * Tolerance.VOXEL_PAD;
+    }
+
+    /** The largest finite magnitude of the tree's bounds (0 for an empty scene). */
+    static double scale(org.kdtree.geom.Box b) {
+        double m = 0;
+        for (int a = 0; a < b.dimension(); a++) {
+            if (Double.isFinite(b.min(a))) m = Math.max(m, Math.abs(b.min(a)));
+            if (Double.isFinite(b.max(a))) m = Math.max(m, Math.abs(b.max(a)));
+        }
+        return m;
+    }
+}
