@@ -60,44 +60,43 @@ public final class KnnCommand implements Callable<Integer> {
                     + points.dimension() + "-D (" + pointsFile + ")");
         long t0 = System.nanoTime();
         PointTree tree = PointTree.build(points, b);
-        long t1 = System.nanoTime();
-        int kk = Math.min(k, points.size());
-        int[] neighbours = new int[queries.size() * kk];
-        int[] counts = new int[queries.size()];
-        search(tree, queries, kk, neighbours, counts);
-        long t2 = System.nanoTime();
-        write(neighbours, counts, kk);
+        long buildNanos = System.nanoTime() - t0;
+        long queryNanos = answer(tree, queries, Math.min(k, points.size()));
         System.out.println(String.format(Locale.ROOT, "knn: %d points, %d queries, %d-D, k %d%s, builder %s, build %.1f ms, query %.1f ms",
                 points.size(), queries.size(), points.dimension(), k, radius != null ? ", radius " + radius : "", b.name(),
-                (t1 - t0) / 1e6, (t2 - t1) / 1e6));
+                buildNanos / 1e6, queryNanos / 1e6));
         return 0;
     }
 
-    /** Every query's neighbours into {@code neighbours[q kk ..]}, their number into {@code counts[q]}. */
-    private void search(PointTree tree, PointsKd queries, int kk, int[] neighbours, int[] counts) {
+    /**
+     * Answers the queries a block at a time, timing the searches only (not the writing), and
+     * writes one line per query; returns the nanoseconds spent searching.
+     */
+    private long answer(PointTree tree, PointsKd queries, int kk) throws java.io.IOException {
         NearestQuery knn = new NearestQuery(tree);
-        int dim = queries.dimension();
+        int dim = queries.dimension(), block = Math.max(1, Math.min(queries.size(), (1 << 20) / Math.max(1, kk)));
         double[] q = new double[dim];
-        int[] found = new int[kk];
+        int[] found = new int[kk], neighbours = new int[block * kk], counts = new int[block];
         double maxDistance = radius != null ? radius : Double.POSITIVE_INFINITY;
-        for (int j = 0; j < queries.size(); j++) {
-            for (int a = 0; a < dim; a++) q[a] = queries.coord(j, a);
-            counts[j] = knn.nearest(q, kk, maxDistance, found, null);
-            System.arraycopy(found, 0, neighbours, j * kk, counts[j]);
-        }
-    }
-
-    private void write(int[] neighbours, int[] counts, int kk) throws java.io.IOException {
+        long nanos = 0;
         try (BufferedWriter out = Files.newBufferedWriter(outFile, StandardCharsets.UTF_8)) {
             StringBuilder line = new StringBuilder();
-            for (int j = 0; j < counts.length; j++) {
-                line.setLength(0);
-                for (int i = 0; i < counts[j]; i++) {
-                    if (i > 0) line.append(',');
-                    line.append(neighbours[j * kk + i]);
+            for (int from = 0; from < queries.size(); from += block) {
+                int to = Math.min(queries.size(), from + block);
+                long t0 = System.nanoTime();
+                for (int j = from; j < to; j++) {
+                    for (int a = 0; a < dim; a++) q[a] = queries.coord(j, a);
+                    counts[j - from] = knn.nearest(q, kk, maxDistance, found, null);
+                    System.arraycopy(found, 0, neighbours, (j - from) * kk, counts[j - from]);
                 }
-                out.write(line.append('\n').toString());
+                nanos += System.nanoTime() - t0;
+                for (int j = 0; j < to - from; j++) {
+                    line.setLength(0);
+                    for (int i = 0; i < counts[j]; i++) line.append(i > 0 ? "," : "").append(neighbours[j * kk + i]);
+                    out.write(line.append('\n').toString());
+                }
             }
         }
+        return nanos;
     }
 }

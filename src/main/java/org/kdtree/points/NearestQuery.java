@@ -4,7 +4,8 @@ package org.kdtree.points;
  * The k nearest neighbours of a query point, optionally within a maximum distance: exact by
  * default, approximate on request. One instance per thread (it owns its scratch memory: the
  * candidate heap, the voxel offsets, the put-aside branches) and reused across queries; a query
- * allocates nothing once the instance has seen its largest k. The {@link PointTree} is shared.
+ * allocates nothing once the instance has seen its largest k (and, best-bin-first, its largest
+ * number of put-aside branches). The {@link PointTree} is shared.
  *
  * <pre>
  * NearestQuery knn = new NearestQuery(points);
