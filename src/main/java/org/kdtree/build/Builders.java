@@ -17,6 +17,7 @@ public final class Builders {
         register("median-plane", MedianPlaneBuilder::new);
         register("object-median", ObjectMedianBuilder::new);
         register("centre-midpoint", org.kdtree.examples.CentreMidpointBuilder::new);
+        register("sliding-midpoint", SlidingMidpointBuilder::new);
     }
 
     private Builders() {

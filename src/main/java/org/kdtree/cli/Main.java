@@ -5,8 +5,9 @@ import picocli.CommandLine.Command;
 
 /** The command line: {@code java -jar kdtree.jar COMMAND ...}. */
 @Command(name = "kdtree", mixinStandardHelpOptions = true, version = "kdtree 0.1",
-        description = "k-d trees for ray tracing: build, inspect, trace, render.",
-        subcommands = {GuiCommand.class, StatsCommand.class, RaycastCommand.class, RenderCommand.class, TradeoffCommand.class})
+        description = "k-d trees for ray tracing: build, inspect, trace, render; nearest neighbours of points.",
+        subcommands = {GuiCommand.class, StatsCommand.class, RaycastCommand.class, RenderCommand.class, TradeoffCommand.class,
+                KnnCommand.class})
 public final class Main implements Runnable {
     public static void main(String[] args) {
         int code = run(args);
@@ -18,7 +19,7 @@ public final class Main implements Runnable {
         CommandLine cl = new CommandLine(new Main());
         cl.setCaseInsensitiveEnumValuesAllowed(true);
         if (args.length > 0 && !args[0].startsWith("-") && !cl.getSubcommands().containsKey(args[0])) {
-            // picocli would print the top-level help for "knn --help" and exit 0
+            // picocli would print the top-level help for "nearest --help" and exit 0
             cl.getErr().println("error: unknown command '" + args[0] + "'; the commands are "
                     + String.join(", ", cl.getSubcommands().keySet()) + " (kdtree --help)");
             return Failure.USAGE;

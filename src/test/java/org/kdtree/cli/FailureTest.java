@@ -43,9 +43,9 @@ class FailureTest {
     }
 
     @Test void anUnknownCommandIsAnErrorEvenWithHelp() {
-        CliRun r = CliRun.of("knn", "--help");
+        CliRun r = CliRun.of("nearest", "--help");
         assertThat(r.code()).isEqualTo(2);
-        assertThat(r.err().strip()).isEqualTo("error: unknown command 'knn'; the commands are gui, stats, raycast, render, tradeoff (kdtree --help)");
+        assertThat(r.err().strip()).isEqualTo("error: unknown command 'nearest'; the commands are gui, stats, raycast, render, tradeoff, knn (kdtree --help)");
     }
 
     @Test void countsAgreeWithTheirNouns() {

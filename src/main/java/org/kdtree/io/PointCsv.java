@@ -1,0 +1,58 @@
+package org.kdtree.io;
+
+import java.io.IOException;
+import java.io.Reader;
+import java.nio.file.Path;
+import java.util.Arrays;
+import org.kdtree.shape.PointsKd;
+
+/**
+ * Reads k-D points from a CSV file: one point per line, its coordinates as decimal numbers
+ * separated by commas ({@code 0.5,1,-2e3}; spaces around a number are allowed). Every point has
+ * the dimension of the first; blank lines and lines starting with {@code #} are skipped. Any
+ * other line that is not such a point (a wrong count, a field that is not a number, a
+ * non-finite one) is an error naming the file and the line. Points are numbered from 0 in file
+ * order. See docs/points.md.
+ */
+public final class PointCsv {
+    private PointCsv() {
+    }
+
+    /** Reads a point file; a file without any point is an error. */
+    public static PointsKd read(Path file) throws IOException {
+        try (TextLines lines = TextLines.open(file)) {
+            return read(lines);
+        }
+    }
+
+    /** Reads point CSV text; {@code name} is used in error messages. */
+    public static PointsKd read(Reader reader, String name) throws IOException {
+        return read(TextLines.of(reader, name));
+    }
+
+    private static PointsKd read(TextLines in) throws IOException {
+        double[] coords = new double[1024];
+        int n = 0, k = 0, firstLine = 0;
+        for (String line = in.next(); line != null; line = in.next()) {
+            String s = line.strip();
+            if (s.isEmpty() || s.startsWith("#")) continue;
+            String[] fields = s.split(",", -1);
+            if (k == 0) {
+                k = fields.length;
+                firstLine = in.line();
+            } else if (fields.length != k) {
+                throw new SceneFormatException(in.name(), in.line(), "a point needs " + k + " coordinates, as on line "
+                        + firstLine + ", got " + fields.length);
+            }
+            if (n + k > coords.length) coords = Arrays.copyOf(coords, Math.max(2 * coords.length, n + k));
+            for (String f : fields) coords[n++] = coordinate(f.strip(), in);
+        }
+        if (k == 0) throw new SceneFormatException(in.name(), 0, "no points (one point per line, coordinates separated by commas)");
+        return new PointsKd(k, Arrays.copyOf(coords, n));
+    }
+
+    private static double coordinate(String field, TextLines in) throws SceneFormatException {
+        if (field.isEmpty()) throw new SceneFormatException(in.name(), in.line(), "an empty field where a coordinate belongs");
+        return ObjMeshReader.number(field, in.name(), in.line());
+    }
+}

@@ -1,0 +1,95 @@
+package org.kdtree.points;
+
+/**
+ * All points inside an axis-aligned box (faces included), by increasing index. One instance per
+ * thread, reused across queries; its stack is sized once from the tree's depth and its result
+ * array grows only when a query finds more points than any before it. The {@link PointTree} is
+ * shared.
+ *
+ * <p>A child is visited when the box reaches its side of the split plane; a point lying in the
+ * plane may be in either child, and both voxels include the plane, so nothing is missed.
+ */
+public final class BoxQuery {
+    private final PointTree points;
+    private final int k;
+    private final int[] word, leafStart, refs;
+    private final double[] split, coords;
+    private final int[] stack;
+    private int[] found = new int[64];
+    private int count, leavesVisited;
+
+    public BoxQuery(PointTree points) {
+        this.points = points;
+        k = points.dimension();
+        word = points.tree().wordArray();
+        leafStart = points.tree().leafStartArray();
+        refs = points.tree().refArray();
+        split = points.tree().splitArray();
+        coords = points.leafCoordArray();
+        stack = new int[points.maxDepth() + 2];
+    }
+
+    /** Leaves scanned by the last query. */
+    public int leavesVisited() { return leavesVisited; }
+
+    /**
+     * The points {@code p} with {@code min[a] <= p[a] <= max[a]} on every axis, by increasing
+     * index: the first {@code min(count, indices.length)} go into {@code indices}. Returns the
+     * count of all such points (0 when {@code min > max} on some axis).
+     */
+    public int inside(double[] min, double[] max, int[] indices) {
+        check(min, "min");
+        check(max, "max");
+        count = 0;
+        leavesVisited = 0;
+        if (points.size() > 0) search(min, max);
+        PairSort.sort(found, count);
+        System.arraycopy(found, 0, indices, 0, Math.min(count, indices.length));
+        return count;
+    }
+
+    private void search(double[] min, double[] max) {
+        int sp = 0, node = 0;
+        while (true) {
+            int w = word[node];
+            while (!VoxelDescent.isLeaf(w)) {
+                int axis = VoxelDescent.axis(w);
+                boolean left = min[axis] <= split[node], right = max[axis] >= split[node];
+                if (left && right) stack[sp++] = VoxelDescent.rightChild(w);
+                if (left) node = node + 1;
+                else if (right) node = VoxelDescent.rightChild(w);
+                else break; // an empty box (min > max) reaches neither side
+                w = word[node];
+            }
+            if (VoxelDescent.isLeaf(w)) scanLeaf(VoxelDescent.leafOf(w), min, max);
+            if (sp == 0) return;
+            node = stack[--sp];
+        }
+    }
+
+    private void scanLeaf(int leaf, double[] min, double[] max) {
+        leavesVisited++;
+        for (int j = leafStart[leaf]; j < leafStart[leaf + 1]; j++) {
+            if (inside(j * k, min, max)) add(refs[j]);
+        }
+    }
+
+    private boolean inside(int base, double[] min, double[] max) {
+        for (int a = 0; a < k; a++) {
+            double c = coords[base + a];
+            if (c < min[a] || c > max[a]) return false;
+        }
+        return true;
+    }
+
+    private void add(int point) {
+        if (count == found.length) found = java.util.Arrays.copyOf(found, 2 * count);
+        found[count++] = point;
+    }
+
+    private void check(double[] corner, String name) {
+        if (corner.length != k) throw new IllegalArgumentException(name + " corner is " + corner.length + "-D, points " + k + "-D");
+        for (int a = 0; a < k; a++)
+            if (Double.isNaN(corner[a])) throw new IllegalArgumentException(name + " corner coordinate " + a + " is NaN");
+    }
+}

@@ -1,0 +1,126 @@
+package org.kdtree.points;
+
+import org.kdtree.tree.KdTree;
+
+/**
+ * The exact search shared by the nearest-neighbour and the radius query: descend the near child
+ * first, then visit the far child only if its voxel is within reach of the query.
+ *
+ * <p>The distance from the query to a voxel is kept incrementally (Arya and Mount): {@link #off}
+ * holds, per axis, how far the query lies outside the current voxel (0 inside), and the voxel's
+ * accumulated distance is the metric's sum of those. Crossing a split plane into the far child
+ * changes one axis only, from its old offset to the distance to the plane, so the far voxel's
+ * distance costs one {@link Metric#replace}, not a pass over k axes, and it is the distance to the
+ * whole voxel, a tighter bound than the distance to the plane alone.
+ *
+ * <p>One instance per thread: the offsets and the query live in fields; nothing is allocated.
+ */
+abstract class VoxelDescent {
+    /**
+     * Relative slack on pruning: a voxel whose computed distance exceeds the bound by less than
+     * this is still visited. The incremental sums round differently from a point's own sum, and a
+     * point lying on a voxel's face at exactly the k-th distance (a tie, common on grid data)
+     * must not be lost to an ulp. It costs at most a few extra voxels.
+     */
+    static final double SLACK = 1e-10;
+
+    /** Node words as {@link KdTree} lays them out: axis in the low 5 bits, 31 marking a leaf. */
+    private static final int AXIS_BITS = 5, LEAF_MARK = 31;
+
+    final PointTree points;
+    final int k;
+    final int[] word, leafStart;
+    final double[] split, coords;
+    final int[] refs;
+    private final double[] rootMin, rootMax;
+    /** Per axis, how far the query lies outside the current voxel. */
+    final double[] off;
+    Metric metric = Metric.EUCLIDEAN;
+    /** The current query point (the caller's array, not copied). */
+    double[] q;
+    int leavesVisited;
+
+    VoxelDescent(PointTree points) {
+        this.points = points;
+        KdTree tree = points.tree();
+        k = points.dimension();
+        word = tree.wordArray();
+        leafStart = tree.leafStartArray();
+        split = tree.splitArray();
+        refs = tree.refArray();
+        coords = points.leafCoordArray();
+        rootMin = new double[k];
+        rootMax = new double[k];
+        var b = tree.bounds();
+        for (int a = 0; a < k; a++) {
+            rootMin[a] = b.min(a);
+            rootMax[a] = b.max(a);
+        }
+        off = new double[k];
+    }
+
+    /** Sets the metric (default Euclidean). */
+    void setMetric(Metric m) {
+        this.metric = java.util.Objects.requireNonNull(m);
+    }
+
+    /** Starts a query at {@code query}: checks it, sets the offsets to the root voxel, returns its accumulated distance. */
+    final double begin(double[] query) {
+        if (query.length != k) throw new IllegalArgumentException("query is " + query.length + "-D, points " + k + "-D");
+        double acc = 0;
+        for (int a = 0; a < k; a++) {
+            if (!Double.isFinite(query[a])) throw new IllegalArgumentException("query coordinate " + a + " is not finite: " + query[a]);
+            off[a] = Math.max(0, Math.max(rootMin[a] - query[a], query[a] - rootMax[a]));
+            acc = metric.replace(acc, 0, off[a]);
+        }
+        q = query;
+        leavesVisited = 0;
+        return acc;
+    }
+
+    /** The bound a voxel's accumulated distance must not exceed for it to be visited. */
+    abstract double reach();
+
+    /** Examines the points at positions {@code [from, to)} of the leaf order. */
+    abstract void scanLeaf(int from, int to);
+
+    /** The exact depth-first search below {@code node}, whose voxel lies at accumulated distance {@code rd}. */
+    final void descend(int node, double rd) {
+        int w = word[node];
+        if ((w & LEAF_MARK) == LEAF_MARK) {
+            scan(w);
+            return;
+        }
+        int axis = w & LEAF_MARK;
+        double diff = q[axis] - split[node];
+        int near = node + 1, far = w >>> AXIS_BITS;
+        if (diff > 0) { near = far; far = node + 1; }
+        descend(near, rd);
+        double old = off[axis];
+        double farRd = metric.replace(rd, old, diff);
+        if (farRd <= reach()) {
+            off[axis] = Math.abs(diff);
+            descend(far, farRd);
+            off[axis] = old;
+        }
+    }
+
+    /** Scans the leaf whose word is {@code w}. */
+    final void scan(int w) {
+        int leaf = leafOf(w);
+        leavesVisited++;
+        scanLeaf(leafStart[leaf], leafStart[leaf + 1]);
+    }
+
+    /** Whether the word is a leaf's. */
+    static boolean isLeaf(int w) { return (w & LEAF_MARK) == LEAF_MARK; }
+
+    /** The axis of an interior node's word. */
+    static int axis(int w) { return w & LEAF_MARK; }
+
+    /** The leaf number of a leaf's word. */
+    static int leafOf(int w) { return w >>> AXIS_BITS; }
+
+    /** The right child of an interior node's word. */
+    static int rightChild(int w) { return w >>> AXIS_BITS; }
+}
