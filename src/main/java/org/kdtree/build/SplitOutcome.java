@@ -5,7 +5,7 @@ import java.util.concurrent.CancellationException;
 /**
  * What becomes of a node once its split is computed and its children's sizes are known: it is
  * split, or it stays a leaf because the split separates nothing (every primitive would go to both
- * children) or because the children would hold more references than the node's share of the
+ * children, or, for primitives of zero area whose clipped parts vanish, to neither) or because the children would hold more references than the node's share of the
  * {@link ReferenceBudget}. The two safety nets that read only those sizes, written once for the
  * recursion and both engines, so that all of them cut the same tree.
  *
@@ -23,7 +23,7 @@ final class SplitOutcome {
     /** The outcome for a node of {@code n} primitives whose children would hold {@code left} and {@code right}. */
     static int of(int n, int left, int right, long budget) {
         if (Thread.currentThread().isInterrupted()) throw new CancellationException("build cancelled");
-        if (n > 0 && left == n && right == n) return SEPARATES_NOTHING;
+        if (n > 0 && (left == n && right == n || left + right == 0)) return SEPARATES_NOTHING;
         return ReferenceBudget.fits(budget, left, right) ? SPLIT : OVER_BUDGET;
     }
 }
