@@ -20,7 +20,7 @@ import org.kdtree.shape.TriangleMesh;
  * coarse grid (multiples of 1/4 in [0, 4]) so that coincident planes, shared vertices, planar and
  * degenerate triangles, and rays in split planes or through vertices come up often.
  */
-class TraversalProperties {
+class TraversalPropertiesTest {
     @Provide Arbitrary<Double> coord() {
         return Arbitraries.integers().between(0, 16).map(i -> i / 4.0);
     }
