@@ -37,7 +37,7 @@ final class BinnedEngine extends ForkingEngine<BinnedEngine> {
     }
 
     private BinnedEngine(SahBuilder settings, BuildContext context, Deque<BinnedEngine> spares) {
-        super(spares);
+        super(spares, context.primitives().dimension());
         this.settings = settings;
         this.context = context;
         this.prims = context.primitives();

@@ -41,7 +41,7 @@ final class EventEngine extends ForkingEngine<EventEngine> {
     }
 
     private EventEngine(SahBuilder settings, BuildContext context, java.util.Deque<EventEngine> spares) {
-        super(spares);
+        super(spares, context.primitives().dimension());
         this.settings = settings;
         this.context = context;
         this.prims = context.primitives();

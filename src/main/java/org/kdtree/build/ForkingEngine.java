@@ -16,10 +16,11 @@ import org.kdtree.tree.KdTreeWriter;
 abstract class ForkingEngine<E extends ForkingEngine<E>> {
     private final Deque<E> spares;
     /** The writer of the subtree this engine builds when forked. */
-    private final KdTreeWriter forkOut = new KdTreeWriter();
+    private final KdTreeWriter forkOut;
 
-    ForkingEngine(Deque<E> spares) {
+    ForkingEngine(Deque<E> spares, int dimension) {
         this.spares = spares;
+        this.forkOut = new KdTreeWriter(dimension);
     }
 
     /**

@@ -60,7 +60,7 @@ public abstract class KdTreeBuilder {
     public final KdTree build(Primitives primitives) {
         Box rootVoxel = rootVoxel(primitives);
         int depthCap = depthCap(primitives.size());
-        KdTreeWriter out = new KdTreeWriter();
+        KdTreeWriter out = new KdTreeWriter(primitives.dimension());
         Build build = new Build(primitives, depthCap, threads == 1 ? Integer.MAX_VALUE : forkThreshold(primitives.size(), threads));
         if (threads == 1) {
             construct(build, rootVoxel, out);
@@ -151,7 +151,7 @@ public abstract class KdTreeBuilder {
             // the same recursion, so the same tree, in the same depth-first order.
             BuildNode rightChild = children.right();
             ForkJoinTask<KdTreeWriter> right = ForkJoinTask.adapt(() -> {
-                KdTreeWriter w = new KdTreeWriter();
+                KdTreeWriter w = new KdTreeWriter(node.dimension());
                 recConst(build, rightChild, w);
                 return w;
             }).fork();

@@ -23,11 +23,11 @@ import picocli.CommandLine.Parameters;
 import org.kdtree.tradeoff.RaySet;
 
 /**
- * {@code raycast MESH.obj}: the ray-casting benchmark of bench/SPEC.md, or, with
+ * {@code raycast MESH.obj}: the ray-casting benchmark of docs/benchmark-spec.md, or, with
  * {@code --rays FILE --hits FILE}, the closest hits of a user's own rays. See docs/raycast.md.
  */
 @Command(name = "raycast", mixinStandardHelpOptions = true,
-        description = {"Ray-casting benchmark of the shared spec (bench/SPEC.md), or trace your own rays. Prints one line:",
+        description = {"Ray-casting benchmark (docs/benchmark-spec.md), or trace your own rays. Prints one line:",
                 "  system mesh tris build_ms nodes leaves depth",
                 "  P_hits P_tsum P_mrays R_hits R_tsum R_mrays",
                 "With --rays FILE --hits FILE: traces the rays of FILE, one per line as",

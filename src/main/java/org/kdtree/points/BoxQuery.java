@@ -13,6 +13,8 @@ public final class BoxQuery {
     private final PointTree points;
     private final int k;
     private final int[] word, leafStart, refs;
+    /** The words' leaf mark and axis-field width ({@link org.kdtree.tree.KdTree#leafMark()}). */
+    private final int mark, shift;
     private final double[] split, coords;
     private final int[] stack;
     private int[] found = new int[64];
@@ -22,6 +24,8 @@ public final class BoxQuery {
         this.points = points;
         k = points.dimension();
         word = points.tree().wordArray();
+        mark = points.tree().leafMark();
+        shift = points.tree().axisBits();
         leafStart = points.tree().leafStartArray();
         refs = points.tree().refArray();
         split = points.tree().splitArray();
@@ -52,16 +56,16 @@ public final class BoxQuery {
         int sp = 0, node = 0;
         while (true) {
             int w = word[node];
-            while (!VoxelDescent.isLeaf(w)) {
-                int axis = VoxelDescent.axis(w);
+            while ((w & mark) != mark) {
+                int axis = w & mark;
                 boolean left = min[axis] <= split[node], right = max[axis] >= split[node];
-                if (left && right) stack[sp++] = VoxelDescent.rightChild(w);
+                if (left && right) stack[sp++] = w >>> shift;
                 if (left) node = node + 1;
-                else if (right) node = VoxelDescent.rightChild(w);
+                else if (right) node = w >>> shift;
                 else break; // an empty box (min > max) reaches neither side
                 w = word[node];
             }
-            if (VoxelDescent.isLeaf(w)) scanLeaf(VoxelDescent.leafOf(w), min, max);
+            if ((w & mark) == mark) scanLeaf(w >>> shift, min, max);
             if (sp == 0) return;
             node = stack[--sp];
         }

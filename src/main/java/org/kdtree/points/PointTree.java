@@ -14,11 +14,8 @@ import org.kdtree.tree.KdTree;
  * doubles instead of jumping around the input: k doubles per point, beside the tree.
  */
 public final class PointTree {
-    /**
-     * The most dimensions a tree holds: {@link KdTree}'s node word keeps the split axis in 5 bits
-     * and marks leaves with the value 31.
-     */
-    public static final int MAX_DIMENSION = 31;
+    /** The most dimensions a tree holds ({@link KdTree#MAX_DIMENSION}). */
+    public static final int MAX_DIMENSION = KdTree.MAX_DIMENSION;
 
     private final PointsKd points;
     private final KdTree tree;

@@ -24,12 +24,11 @@ abstract class VoxelDescent {
      */
     static final double SLACK = 1e-10;
 
-    /** Node words as {@link KdTree} lays them out: axis in the low 5 bits, 31 marking a leaf. */
-    private static final int AXIS_BITS = 5, LEAF_MARK = 31;
-
     final PointTree points;
     final int k;
     final int[] word, leafStart;
+    /** The words' leaf mark and axis-field width, as {@link KdTree} lays them out for this dimension. */
+    final int mark, shift;
     final double[] split, coords;
     final int[] refs;
     private final double[] rootMin, rootMax;
@@ -45,6 +44,8 @@ abstract class VoxelDescent {
         KdTree tree = points.tree();
         k = points.dimension();
         word = tree.wordArray();
+        mark = tree.leafMark();
+        shift = tree.axisBits();
         leafStart = tree.leafStartArray();
         split = tree.splitArray();
         refs = tree.refArray();
@@ -87,13 +88,13 @@ abstract class VoxelDescent {
     /** The exact depth-first search below {@code node}, whose voxel lies at accumulated distance {@code rd}. */
     final void descend(int node, double rd) {
         int w = word[node];
-        if ((w & LEAF_MARK) == LEAF_MARK) {
+        if ((w & mark) == mark) {
             scan(w);
             return;
         }
-        int axis = w & LEAF_MARK;
+        int axis = w & mark;
         double diff = q[axis] - split[node];
-        int near = node + 1, far = w >>> AXIS_BITS;
+        int near = node + 1, far = w >>> shift;
         if (diff > 0) { near = far; far = node + 1; }
         descend(near, rd);
         double old = off[axis];
@@ -113,14 +114,14 @@ abstract class VoxelDescent {
     }
 
     /** Whether the word is a leaf's. */
-    static boolean isLeaf(int w) { return (w & LEAF_MARK) == LEAF_MARK; }
+    final boolean isLeaf(int w) { return (w & mark) == mark; }
 
     /** The axis of an interior node's word. */
-    static int axis(int w) { return w & LEAF_MARK; }
+    final int axis(int w) { return w & mark; }
 
     /** The leaf number of a leaf's word. */
-    static int leafOf(int w) { return w >>> AXIS_BITS; }
+    final int leafOf(int w) { return w >>> shift; }
 
     /** The right child of an interior node's word. */
-    static int rightChild(int w) { return w >>> AXIS_BITS; }
+    final int rightChild(int w) { return w >>> shift; }
 }

@@ -5,7 +5,7 @@ import org.kdtree.geom.Box;
 /**
  * A set of 3-D rays held in one flat array (origin then direction, six doubles per ray), so that
  * generating them is not timed with tracing. The sets of the benchmark spec
- * (/work/shared/bench/SPEC.md): P, the primary rays of a 1024 x 1024 camera, and R, random rays
+ * (docs/benchmark-spec.md): P, the primary rays of a 1024 x 1024 camera, and R, random rays
  * from origins inside the scene's box.
  */
 public final class RaySet {

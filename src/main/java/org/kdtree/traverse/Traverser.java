@@ -41,6 +41,8 @@ public final class Traverser implements RayQuery {
     private final KdTree tree;
     private final Intersector prims;
     private final int[] word;
+    /** The word's leaf mark and axis-field width ({@link KdTree#leafMark()}, {@link KdTree#axisBits()}). */
+    private final int mark, shift;
     private final double[] split;
     private final int[] leafStart, refs;
     private final double[] lo, hi;
@@ -58,6 +60,8 @@ public final class Traverser implements RayQuery {
         this.tree = tree;
         this.prims = prims;
         word = tree.wordArray();
+        mark = tree.leafMark();
+        shift = tree.axisBits();
         split = tree.splitArray();
         leafStart = tree.leafStartArray();
         refs = tree.refArray();
@@ -134,11 +138,11 @@ public final class Traverser implements RayQuery {
         double curMin = enter, curMax = exit;
         while (true) {
             int w = word[node];
-            while ((w & 31) != 31) {
-                int axis = w & 31, far = w >>> 5, near = node + 1;
+            while ((w & mark) != mark) {
+                int axis = w & mark, far = w >>> shift, near = node + 1;
                 double inv = ray.inverseDirection(axis);
                 double tSplit = (split[node] - ray.origin(axis)) * inv;
-                if (!(inv > 0)) { far = near; near = w >>> 5; }
+                if (!(inv > 0)) { far = near; near = w >>> shift; }
                 TraversalListener.Visit visit = decide(tSplit, curMin, curMax);
                 l.interior(node, axis, split[node], curMin, curMax, tSplit, near, far, visit);
                 switch (visit) {
@@ -149,8 +153,8 @@ public final class Traverser implements RayQuery {
                 }
                 w = word[node];
             }
-            l.leaf(node, curMin, curMax, leafStart[(w >>> 5) + 1] - leafStart[w >>> 5]);
-            int result = visitLeaf(w >>> 5, stamp, mode, ray, tMin, tMax, hit, all, l);
+            l.leaf(node, curMin, curMax, leafStart[(w >>> shift) + 1] - leafStart[w >>> shift]);
+            int result = visitLeaf(w >>> shift, stamp, mode, ray, tMin, tMax, hit, all, l);
             if (result == ANY) return true;
             found |= result == CLOSEST;
             // Take the next saved far child that can still hold something closer.

@@ -8,18 +8,19 @@ import org.kdtree.geom.Box;
  * <p>Nodes are stored depth first; the left child of interior node {@code n} is
  * {@code n + 1}. Each node costs 12 bytes: an {@code int} word and a {@code double} split
  * position (double because the geometry is double: a float split would have to move the
- * plane off the primitive bounds the builder chose). The word of an interior node holds
- * {@code rightChild << 5 | axis}; the word of a leaf holds {@code leafIndex << 5 | 31}. The
- * primitives of leaf {@code l} are {@code refs[leafStart[l] .. leafStart[l+1])}, one shared
- * array for all leaves. Hence up to 31 dimensions and 2^26 nodes.
+ * plane off the primitive bounds the builder chose). The word's low {@link #axisBits()} bits
+ * hold the split axis, or all ones ({@link #leafMark()}) for a leaf; the bits above hold the
+ * right child's index, or the leaf's index. The axis field is as narrow as the dimension
+ * allows (2 bits in 2-D and 3-D, 7 bits in 64-D), so a 3-D tree may hold 2^29 nodes and a
+ * 64-D one 2^24. The primitives of leaf {@code l} are {@code refs[leafStart[l] .. leafStart[l+1])},
+ * one shared array for all leaves.
  *
- * <p>The arrays are exposed read-only by convention to the traversal hot path.
+ * <p>The arrays are exposed read-only by convention to the hot paths (traversal, point
+ * queries), which decode a word as {@code w & leafMark()} and {@code w >>> axisBits()}.
  */
 public final class KdTree {
-    static final int AXIS_BITS = 5;
-    /** Axis value that marks a leaf. */
-    static final int LEAF_MARK = (1 << AXIS_BITS) - 1;
-    static final int MAX_NODE = (1 << (31 - AXIS_BITS)) - 1;
+    /** The most dimensions a tree may have. */
+    public static final int MAX_DIMENSION = 64;
 
     private final Box bounds;
     private final CostModel cost;
@@ -29,6 +30,7 @@ public final class KdTree {
     private final int[] leafStart;
     private final int[] refs;
     private final int budgetLeaves;
+    private final int axisBits, leafMark;
     private TreeStats stats;
 
     KdTree(Box bounds, CostModel cost, String builderName, int[] word, double[] split, int[] leafStart, int[] refs,
@@ -41,7 +43,27 @@ public final class KdTree {
         this.split = split;
         this.leafStart = leafStart;
         this.refs = refs;
+        this.axisBits = axisBits(bounds.dimension());
+        this.leafMark = (1 << axisBits) - 1;
     }
+
+    /** The width of a word's axis field in a {@code dimension}-D tree: wide enough for every axis and the leaf mark. */
+    public static int axisBits(int dimension) {
+        if (dimension < 1 || dimension > MAX_DIMENSION)
+            throw new IllegalArgumentException("a tree has 1 to " + MAX_DIMENSION + " dimensions, not " + dimension);
+        return 32 - Integer.numberOfLeadingZeros(dimension);
+    }
+
+    /** The largest node index a {@code dimension}-D tree can hold. */
+    public static int maxNode(int dimension) {
+        return (1 << (31 - axisBits(dimension))) - 1;
+    }
+
+    /** The width of the axis field at the bottom of a node's word. */
+    public int axisBits() { return axisBits; }
+
+    /** The axis field's value in a leaf's word (all ones): {@code (w & leafMark()) == leafMark()} tests for a leaf. */
+    public int leafMark() { return leafMark; }
 
     /** k, the dimension. */
     public int dimension() { return bounds.dimension(); }
@@ -66,12 +88,12 @@ public final class KdTree {
 
     // ---- node access, for traversal (hot path: no allocation) ----
 
-    public boolean isLeaf(int node) { return (word[node] & LEAF_MARK) == LEAF_MARK; }
-    public int axis(int node) { return word[node] & LEAF_MARK; }
+    public boolean isLeaf(int node) { return (word[node] & leafMark) == leafMark; }
+    public int axis(int node) { return word[node] & leafMark; }
     public double split(int node) { return split[node]; }
     public int leftChild(int node) { return node + 1; }
-    public int rightChild(int node) { return word[node] >>> AXIS_BITS; }
-    public int leafIndex(int node) { return word[node] >>> AXIS_BITS; }
+    public int rightChild(int node) { return word[node] >>> axisBits; }
+    public int leafIndex(int node) { return word[node] >>> axisBits; }
     public int leafStart(int node) { return leafStart[leafIndex(node)]; }
     public int leafEnd(int node) { return leafStart[leafIndex(node) + 1]; }
     public int leafSize(int node) { return leafEnd(node) - leafStart(node); }

@@ -18,11 +18,20 @@ public final class KdTreeWriter {
     private int[] refs = new int[64];
     private int refCount;
     private int budgetLeaves;
+    private final int dimension, axisBits, leafMark, maxNode;
+
+    /** A writer for a tree of {@code dimension} dimensions (1 .. {@link KdTree#MAX_DIMENSION}): it fixes the word's layout. */
+    public KdTreeWriter(int dimension) {
+        this.dimension = dimension;
+        axisBits = KdTree.axisBits(dimension);
+        leafMark = (1 << axisBits) - 1;
+        maxNode = KdTree.maxNode(dimension);
+    }
 
     /** Writes an interior node and returns its index; its left child is the next node written. */
     public int interior(int axis, double xi) {
-        if (axis < 0 || axis >= KdTree.LEAF_MARK)
-            throw new IllegalArgumentException("axis " + axis + " out of range 0.." + (KdTree.LEAF_MARK - 1));
+        if (axis < 0 || axis >= dimension)
+            throw new IllegalArgumentException("axis " + axis + " out of range 0.." + (dimension - 1));
         int n = newNode();
         word[n] = axis; // right child patched later
         split[n] = xi;
@@ -32,8 +41,8 @@ public final class KdTreeWriter {
     /** Sets the right child of interior node {@code node} to the next node to be written. */
     public void setRightChild(int node) {
         int child = nodes;
-        if (child > KdTree.MAX_NODE) throw new IllegalStateException("tree exceeds " + KdTree.MAX_NODE + " nodes");
-        word[node] = (child << KdTree.AXIS_BITS) | (word[node] & KdTree.LEAF_MARK);
+        if (child > maxNode) throw new IllegalStateException("tree exceeds " + maxNode + " nodes");
+        word[node] = (child << axisBits) | (word[node] & leafMark);
     }
 
     /** Writes a leaf holding {@code prims[0 .. count)} and returns its node index. */
@@ -55,7 +64,8 @@ public final class KdTreeWriter {
         leafStart[leaves] = refCount;
         refCount += count;
         leafStart[leaves + 1] = refCount;
-        word[n] = (leaves << KdTree.AXIS_BITS) | KdTree.LEAF_MARK;
+        if (leaves > maxNode) throw new IllegalStateException("tree exceeds " + maxNode + " leaves");
+        word[n] = (leaves << axisBits) | leafMark;
         split[n] = 0;
         leaves++;
         return n;
@@ -63,13 +73,15 @@ public final class KdTreeWriter {
 
     /** Appends the whole tree written by {@code sub} as the next subtree; returns its root index. */
     public int append(KdTreeWriter sub) {
+        if (sub.dimension != dimension) throw new IllegalArgumentException("a subtree of another dimension");
+        if ((long) nodes + sub.nodes > maxNode) throw new IllegalStateException("tree exceeds " + maxNode + " nodes");
         int base = nodes, leafBase = leaves, refBase = refCount;
         for (int i = 0; i < sub.nodes; i++) {
             int n = newNode();
             int w = sub.word[i];
-            boolean leaf = (w & KdTree.LEAF_MARK) == KdTree.LEAF_MARK;
+            boolean leaf = (w & leafMark) == leafMark;
             int shift = leaf ? leafBase : base;
-            word[n] = (((w >>> KdTree.AXIS_BITS) + shift) << KdTree.AXIS_BITS) | (w & KdTree.LEAF_MARK);
+            word[n] = (((w >>> axisBits) + shift) << axisBits) | (w & leafMark);
             split[n] = sub.split[i];
         }
         if (leaves + sub.leaves + 1 > leafStart.length)
@@ -110,6 +122,8 @@ public final class KdTreeWriter {
 
     /** Finishes the tree. */
     public KdTree finish(Box rootVoxel, CostModel cost, String builderName) {
+        if (rootVoxel.dimension() != dimension)
+            throw new IllegalArgumentException("a " + rootVoxel.dimension() + "-D root for a writer of another dimension");
         if (nodes == 0) leaf(new int[0], 0);
         return new KdTree(rootVoxel.copy(), cost, builderName,
                 Arrays.copyOf(word, nodes), Arrays.copyOf(split, nodes),

@@ -97,9 +97,9 @@ class KnnCommandTest {
                 "error: unknown builder 'nope' (known: sah, median-plane, object-median, centre-midpoint, sliding-midpoint)");
         assertError(CliRun.of("knn", points.toString(), "--queries", points.toString(), "--k", "1", "--out", dir.resolve("no/o.csv").toString()),
                 "error: --out " + dir.resolve("no/o.csv") + ": the folder " + dir.resolve("no") + " does not exist");
-        Path wide = file("wide.csv", "0" + ",0".repeat(31) + "\n");
+        Path wide = file("wide.csv", "0" + ",0".repeat(64) + "\n");
         assertError(CliRun.of("knn", wide.toString(), "--queries", wide.toString(), "--k", "1", "--out", out),
-                "error: the points are 32-D; a kd-tree here holds at most 31 dimensions");
+                "error: the points are 65-D; a kd-tree here holds at most 64 dimensions");
         assertError(CliRun.of("knn", points.toString(), "--k", "1", "--out", out),
                 "error: Missing required option: '--queries=FILE' (kdtree knn --help)");
     }

@@ -16,7 +16,7 @@ import org.kdtree.shape.PointsKd;
 
 /**
  * k-NN (with and without a maximum distance), radius and box queries against brute force over
- * all points, on every kind of data, in 2, 3, 8 and 31 dimensions, on the trees of every
+ * all points, on every kind of data, in 2, 3, 8, 32 and 64 dimensions, on the trees of every
  * registered builder: the same points, in the same order, at the same distances.
  */
 class ExactQueriesTest {

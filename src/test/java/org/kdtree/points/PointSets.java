@@ -20,8 +20,8 @@ final class PointSets {
         GRID
     }
 
-    /** The dimensions tested; 31 is the most a {@code KdTree} holds ({@link PointTree#MAX_DIMENSION}). */
-    static final int[] DIMENSIONS = {2, 3, 8, 31};
+    /** The dimensions tested; 64 is the most a {@code KdTree} holds ({@link PointTree#MAX_DIMENSION}). */
+    static final int[] DIMENSIONS = {2, 3, 8, 32, 64};
 
     static PointsKd of(Kind kind, int n, int k, long seed) {
         Random r = new Random(seed);

@@ -18,7 +18,7 @@ class KdTreeWriterTest {
     }
 
     @Test void depthFirstLayoutWithRightChildIndices() {
-        KdTreeWriter w = new KdTreeWriter();
+        KdTreeWriter w = new KdTreeWriter(2);
         writeSample(w);
         KdTree t = w.finish(Box.of2(0, 0, 4, 4), CostModel.WALD_HAVRAN, "test");
         assertThat(t.nodeCount()).isEqualTo(5);
@@ -39,7 +39,7 @@ class KdTreeWriterTest {
     }
 
     @Test void expectedCostFollowsTheRecursiveFormula() {
-        KdTreeWriter w = new KdTreeWriter();
+        KdTreeWriter w = new KdTreeWriter(2);
         writeSample(w);
         KdTree t = w.finish(Box.of2(0, 0, 4, 4), new CostModel(15, 20), "test");
         // perimeters: root 16; left [0,1]x[0,4] 10; right [1,4]x[0,4] 14; its children [1,4]x[0,2] 10 and [1,4]x[2,4] 10
@@ -49,9 +49,9 @@ class KdTreeWriterTest {
     }
 
     @Test void appendSplicesASubtreeWrittenElsewhere() {
-        KdTreeWriter sub = new KdTreeWriter();
+        KdTreeWriter sub = new KdTreeWriter(2);
         writeSample(sub);
-        KdTreeWriter w = new KdTreeWriter();
+        KdTreeWriter w = new KdTreeWriter(2);
         int root = w.interior(0, 0.5);
         w.leaf(new int[] {7}, 1);
         w.setRightChild(root);
@@ -64,5 +64,32 @@ class KdTreeWriterTest {
         assertThat(t.leafPrimitives(t.leftChild(inner))).containsExactly(1, 2);
         assertThat(t.leafPrimitives(t.rightChild(inner))).isEmpty();
         assertThat(t.leafPrimitives(1)).containsExactly(7);
+    }
+
+    @Test void theAxisFieldIsAsWideAsTheDimensionNeeds() {
+        assertThat(KdTree.axisBits(1)).isEqualTo(1);
+        assertThat(KdTree.axisBits(3)).isEqualTo(2);
+        assertThat(KdTree.axisBits(31)).isEqualTo(5);
+        assertThat(KdTree.axisBits(32)).isEqualTo(6);
+        assertThat(KdTree.axisBits(64)).isEqualTo(7);
+        assertThat(KdTree.maxNode(3)).isEqualTo((1 << 29) - 1);
+        assertThat(KdTree.maxNode(64)).isEqualTo((1 << 24) - 1);
+        org.assertj.core.api.Assertions.assertThatThrownBy(() -> KdTree.axisBits(65)).hasMessageContaining("1 to 64 dimensions");
+    }
+
+    @Test void aSixtyFourDimensionalTreeKeepsItsLastAxisApartFromItsLeaves() {
+        double[] lo = new double[64], hi = new double[64];
+        java.util.Arrays.fill(hi, 1);
+        KdTreeWriter w = new KdTreeWriter(64);
+        int root = w.interior(63, 0.5);
+        w.leaf(new int[] {0}, 1);
+        w.setRightChild(root);
+        w.leaf(new int[] {1}, 1);
+        KdTree t = w.finish(new Box(lo, hi), CostModel.WALD_HAVRAN, "test");
+        assertThat(t.isLeaf(0)).isFalse();
+        assertThat(t.axis(0)).isEqualTo(63);
+        assertThat(t.leafPrimitives(t.rightChild(0))).containsExactly(1);
+        org.assertj.core.api.Assertions.assertThatThrownBy(() -> new KdTreeWriter(64).interior(64, 0))
+                .hasMessageContaining("out of range");
     }
 }
