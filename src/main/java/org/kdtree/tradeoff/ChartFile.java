@@ -37,21 +37,30 @@ public final class ChartFile {
     private ChartFile() {
     }
 
-    /** Log scale on both axes, with a label at 1, 2 and 5 of every decade and unlabelled ticks between. */
+    /**
+     * Log scale on both axes. XChart labels the decades (its custom tick formatters assume linear
+     * axes, and its own log labels at every 1..9 overlap), so {@link #write} adds the ticks and
+     * labels at 2 and 5 of every decade itself, from {@link #intermediateTicks}.
+     */
     public static void logAxes(XYChart chart) {
         chart.getStyler().setXAxisLogarithmic(true).setYAxisLogarithmic(true);
-        chart.getStyler().setXAxisLogarithmicDecadeOnly(false).setYAxisLogarithmicDecadeOnly(false);
-        chart.getStyler().setxAxisTickLabelsFormattingFunction(ChartFile::tickLabel);
-        chart.getStyler().setyAxisTickLabelsFormattingFunction(ChartFile::tickLabel);
+        chart.getStyler().setXAxisLogarithmicDecadeOnly(true).setYAxisLogarithmicDecadeOnly(true);
     }
 
-    /** The label of a log axis's tick: its value at 1, 2 or 5 times a power of ten, otherwise none. */
+    /** The values 2 and 5 times a power of ten within {@code [lo, hi]}, where a log axis gets extra labelled ticks. */
+    public static List<Double> intermediateTicks(double lo, double hi) {
+        List<Double> out = new java.util.ArrayList<>();
+        if (!(lo > 0) || !(hi >= lo)) return out;
+        for (double decade = Math.pow(10, Math.floor(Math.log10(lo))); decade <= hi; decade *= 10)
+            for (int m : new int[] {2, 5}) {
+                double v = Double.parseDouble(m + "e" + Math.round(Math.log10(decade)));   // exact decimal, no drift
+                if (v >= lo && v <= hi) out.add(v);
+            }
+        return out;
+    }
+
+    /** How a tick value at 1, 2 or 5 times a power of ten is written: "20", "0.05", "2e6". */
     public static String tickLabel(double v) {
-        if (!(v > 0)) return "";
-        double decade = Math.pow(10, Math.floor(Math.log10(v) + 1e-9));
-        double m = v / decade;
-        boolean labelled = Math.abs(m - 1) < 1e-6 || Math.abs(m - 2) < 1e-6 || Math.abs(m - 5) < 1e-6;
-        if (!labelled) return "";
         if (v >= 1e6 || v < 1e-3) return String.format(Locale.ROOT, "%.0e", v).replace("e+0", "e").replace("e-0", "e-");
         return new java.math.BigDecimal(v).round(new java.math.MathContext(1)).stripTrailingZeros().toPlainString();
     }
@@ -93,11 +102,51 @@ public final class ChartFile {
         return svg;
     }
 
+    /**
+     * Draws the 2 and 5 ticks of both log axes, with their labels, where XChart drew its decades:
+     * the data's range fills the plot's central {@code plotContentSize} share, which places the axes.
+     */
+    private static void intermediateLabels(XYChart chart, Graphics2D g) {
+        double[] x = range(chart, true), y = range(chart, false);
+        if (x == null || y == null) return;
+        double pad = (1 - chart.getStyler().getPlotContentSize()) / 2 / chart.getStyler().getPlotContentSize();
+        double x0 = chart.getScreenXFromChart(x[0]), x1 = chart.getScreenXFromChart(x[1]);
+        double y0 = chart.getScreenYFromChart(y[0]), y1 = chart.getScreenYFromChart(y[1]);
+        double axisY = y0 + (y0 - y1) * pad, axisX = x0 - (x1 - x0) * pad;
+        g.setFont(chart.getStyler().getAxisTickLabelsFont());
+        g.setColor(chart.getStyler().getAxisTickLabelsColor());
+        var fm = g.getFontMetrics();
+        for (double v : intermediateTicks(x[0], x[1])) {
+            int sx = (int) Math.round(chart.getScreenXFromChart(v));
+            g.drawLine(sx, (int) axisY, sx, (int) axisY + 3);
+            String t = tickLabel(v);
+            g.drawString(t, sx - fm.stringWidth(t) / 2, (int) axisY + 5 + fm.getAscent());
+        }
+        for (double v : intermediateTicks(y[0], y[1])) {
+            int sy = (int) Math.round(chart.getScreenYFromChart(v));
+            g.drawLine((int) axisX - 3, sy, (int) axisX, sy);
+            String t = tickLabel(v);
+            g.drawString(t, (int) axisX - 5 - fm.stringWidth(t), sy + fm.getAscent() / 2 - 1);
+        }
+    }
+
+    /** The smallest and largest x (or y) over all series, or null when there is no data. */
+    private static double[] range(XYChart chart, boolean xAxis) {
+        double lo = Double.POSITIVE_INFINITY, hi = Double.NEGATIVE_INFINITY;
+        for (XYSeries s : chart.getSeriesMap().values())
+            for (double v : xAxis ? s.getXData() : s.getYData()) {
+                lo = Math.min(lo, v);
+                hi = Math.max(hi, v);
+            }
+        return lo <= hi ? new double[] {lo, hi} : null;
+    }
+
     private static void paint(XYChart chart, String caption, Graphics2D g) {
         int w = chart.getWidth(), h = chart.getHeight();
         g.setColor(Color.WHITE);
         g.fillRect(0, 0, w, h + CAPTION_HEIGHT);
         chart.paint(g, w, h);
+        if (chart.getStyler().isXAxisLogarithmic() && chart.getStyler().isYAxisLogarithmic()) intermediateLabels(chart, g);
         g.setColor(new Color(60, 60, 60));
         g.setFont(new Font(Font.SANS_SERIF, Font.PLAIN, 12));
         g.drawString(caption, 10, h + CAPTION_HEIGHT - 10);
