@@ -13,7 +13,7 @@ import org.kdtree.tree.KdTree;
  * <p>A ball stopped at a contact is set a hair ({@link #skin}) off the surface along the normal, so
  * that its next sweep does not start touching the same object and stick there. Velocities use
  * semi-implicit Euler (velocity first), which does not gain energy under constant gravity; a bounce
- * with restitution <= 1 does not either. Per step it counts the primitive tests the tree needed
+ * with restitution {@code <= 1} does not either. Per step it counts the primitive tests the tree needed
  * and what brute force would have needed (every primitive per sweep). Allocation-free per step.
  */
 public final class BallSimulation {
@@ -53,14 +53,28 @@ public final class BallSimulation {
         r = new double[capacity];
     }
 
-    /** Adds a ball; returns its index. */
+    /**
+     * Adds a ball.
+     *
+     * @param px     the centre's start, x
+     * @param py     the centre's start, y
+     * @param velX   the start velocity, x
+     * @param velY   the start velocity, y
+     * @param radius the ball's radius
+     * @return its index: 0 for the first ball added, then 1, 2, ...
+     * @throws IllegalStateException when {@code capacity} balls were added already
+     */
     public int addBall(double px, double py, double velX, double velY, double radius) {
         if (n == x.length) throw new IllegalStateException("capacity " + x.length + " reached");
         x[n] = px; y[n] = py; vx[n] = velX; vy[n] = velY; r[n] = radius;
         return n++;
     }
 
-    /** Advances every ball by {@code dt}. */
+    /**
+     * Advances every ball by {@code dt}, and counts this step's primitive tests.
+     *
+     * @param dt the step's duration
+     */
     public void step(double dt) {
         tests = bruteTests = 0;
         for (int b = 0; b < n; b++) move(b, dt);
@@ -93,26 +107,52 @@ public final class BallSimulation {
         }
     }
 
+    /** {@return the number of balls added} */
     public int balls() { return n; }
+
+    /**
+     * {@return ball {@code b}'s centre, x}
+     * @param b the ball's index, from {@link #addBall}
+     */
     public double x(int b) { return x[b]; }
+
+    /**
+     * {@return ball {@code b}'s centre, y}
+     * @param b the ball's index, from {@link #addBall}
+     */
     public double y(int b) { return y[b]; }
+
+    /**
+     * {@return ball {@code b}'s velocity, x}
+     * @param b the ball's index, from {@link #addBall}
+     */
     public double vx(int b) { return vx[b]; }
+
+    /**
+     * {@return ball {@code b}'s velocity, y}
+     * @param b the ball's index, from {@link #addBall}
+     */
     public double vy(int b) { return vy[b]; }
+
+    /**
+     * {@return ball {@code b}'s radius}
+     * @param b the ball's index, from {@link #addBall}
+     */
     public double radius(int b) { return r[b]; }
 
-    /** Kinetic plus potential energy of all balls (unit masses; potential 0 at the origin). */
+    /** {@return the kinetic plus potential energy of all balls} Unit masses; potential 0 at the origin. */
     public double energy() {
         double e = 0;
         for (int b = 0; b < n; b++) e += 0.5 * (vx[b] * vx[b] + vy[b] * vy[b]) - (gx * x[b] + gy * y[b]);
         return e;
     }
 
-    /** Primitive tests the tree needed in the last step. */
+    /** {@return the primitive tests the tree needed in the last step} */
     public long lastTests() { return tests; }
 
-    /** Primitive tests brute force would have needed in the last step: every primitive per sweep. */
+    /** {@return the primitive tests brute force would have needed in the last step} Every primitive per sweep. */
     public long lastBruteForceTests() { return bruteTests; }
 
-    /** How far off a surface a ball stopped at a contact is set. */
+    /** {@return how far off a surface a ball stopped at a contact is set} */
     public double skin() { return skin; }
 }

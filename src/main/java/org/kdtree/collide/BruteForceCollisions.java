@@ -8,11 +8,19 @@ package org.kdtree.collide;
 public final class BruteForceCollisions {
     private final Collider prims;
 
+    /** @param prims the primitives and their exact tests */
     public BruteForceCollisions(Collider prims) {
         this.prims = prims;
     }
 
-    /** As {@link OverlapQuery#overlapping}: the primitives within r of {@code centre}, in index order. */
+    /**
+     * As {@link OverlapQuery#overlapping}: the primitives within r of {@code centre}, in index order.
+     *
+     * @param centre the sphere's centre
+     * @param r      its radius, finite and at least 0
+     * @param out    receives the first {@code out.length} of them
+     * @return how many there are, even when more than {@code out.length}
+     */
     public int overlapping(double[] centre, double r, int[] out) {
         SphereQueries.checkPoint("centre", centre, prims.dimension());
         SphereQueries.checkRadius(r);
@@ -26,7 +34,16 @@ public final class BruteForceCollisions {
         return count;
     }
 
-    /** As {@link SweepQuery#firstContact}. */
+    /**
+     * As {@link SweepQuery#firstContact}: the first contact of a sphere moving from {@code s} to
+     * {@code s + d}.
+     *
+     * @param s       the centre at the start
+     * @param d       the motion
+     * @param r       the radius, finite and at least 0
+     * @param contact filled with the contact, or reset when there is none
+     * @return whether the sphere touches anything on the way
+     */
     public boolean firstContact(double[] s, double[] d, double r, Contact contact) {
         SphereQueries.checkPoint("start", s, prims.dimension());
         SphereQueries.checkPoint("motion", d, prims.dimension());

@@ -24,7 +24,11 @@ public final class Contact {
      */
     public final double[] normal = new double[3];
 
-    /** Forgets any contact. */
+    /**
+     * Forgets any contact.
+     *
+     * @return this contact
+     */
     public Contact reset() {
         primitive = -1;
         t = Double.POSITIVE_INFINITY;
@@ -34,6 +38,7 @@ public final class Contact {
         return this;
     }
 
+    /** {@return whether the sphere touches a primitive} */
     public boolean found() { return primitive >= 0; }
 
     /**

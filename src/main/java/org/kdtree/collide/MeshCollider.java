@@ -20,6 +20,11 @@ public final class MeshCollider implements Collider {
     private final double[] corners;
     private final boolean[] flat;
 
+    /**
+     * Copies the triangles' corners and decides which triangles have zero area.
+     *
+     * @param mesh the triangles; primitive i is the mesh's triangle i
+     */
     public MeshCollider(TriangleMesh mesh) {
         int n = mesh.size();
         corners = new double[9 * n];

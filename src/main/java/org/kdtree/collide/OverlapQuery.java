@@ -4,7 +4,7 @@ import org.kdtree.geom.Box;
 import org.kdtree.tree.KdTree;
 
 /**
- * All primitives overlapping a sphere (a circle in 2-D): those at distance <= r from its centre,
+ * All primitives overlapping a sphere (a circle in 2-D): those at distance {@code <= r} from its centre,
  * touching included.
  *
  * <p>The traversal descends into every child whose voxel, inflated by r, contains the centre: at
@@ -27,6 +27,10 @@ public final class OverlapQuery {
     private final int[] stack;
     private int tests;
 
+    /**
+     * @param tree  a tree over the primitives of {@code prims}
+     * @param prims the primitives' exact tests, of the tree's dimension
+     */
     public OverlapQuery(KdTree tree, Collider prims) {
         if (tree.dimension() != prims.dimension())
             throw new IllegalArgumentException("tree is " + tree.dimension() + "-D, primitives " + prims.dimension() + "-D");
@@ -47,6 +51,11 @@ public final class OverlapQuery {
      * particular order, each once) and returns how many there are. When there are more than
      * {@code out.length}, only the first {@code out.length} are written, and the full count is
      * still returned.
+     *
+     * @param centre the sphere's centre
+     * @param r      its radius, finite and at least 0
+     * @param out    receives the primitives' indices
+     * @return how many primitives overlap the sphere
      */
     public int overlapping(double[] centre, double r, int[] out) {
         SphereQueries.checkPoint("centre", centre, k);
@@ -79,9 +88,12 @@ public final class OverlapQuery {
         }
     }
 
-    /** Primitive tests the last query did (brute force does {@code size()}). */
+    /** {@return the primitive tests the last query did} Brute force does {@code size()}. */
     public int lastTests() { return tests; }
 
+    /** {@return the tree the queries descend} */
     public KdTree tree() { return tree; }
+
+    /** {@return the primitives' exact tests} */
     public Collider collider() { return prims; }
 }

@@ -20,6 +20,11 @@ public final class ShapeCollider implements Collider {
     private final int[] kind;
     private final double[] xy;
 
+    /**
+     * Copies each shape's kind and corners (the shapes are not kept).
+     *
+     * @param shapes the shapes; primitive i is shape i
+     */
     public ShapeCollider(Shapes2D shapes) {
         int n = shapes.size();
         kind = new int[n];

@@ -35,6 +35,10 @@ public final class SweepQuery {
     /** The motion's range clipped to the inflated scene box, from {@link #clipToScene}. */
     private double enter, exit;
 
+    /**
+     * @param tree  a tree over the primitives of {@code prims}
+     * @param prims the primitives' exact tests, of the tree's dimension
+     */
     public SweepQuery(KdTree tree, Collider prims) {
         if (tree.dimension() != prims.dimension())
             throw new IllegalArgumentException("tree is " + tree.dimension() + "-D, primitives " + prims.dimension() + "-D");
@@ -58,6 +62,12 @@ public final class SweepQuery {
      * {@code s + d}; fills {@code contact} and returns true, or resets it and returns false.
      * A sphere touching something at the start answers t = 0; a zero {@code d} asks whether the
      * sphere at {@code s} touches anything.
+     *
+     * @param s       the centre at the start (t = 0)
+     * @param d       the motion: the centre is at {@code s + d} at t = 1
+     * @param r       the radius, finite and at least 0
+     * @param contact filled with the first contact, or reset when there is none
+     * @return whether the sphere touches a primitive on the way
      */
     public boolean firstContact(double[] s, double[] d, double r, Contact contact) {
         SphereQueries.checkPoint("start", s, k);
@@ -139,9 +149,12 @@ public final class SweepQuery {
         stackMax[sp] = tMax;
     }
 
-    /** Primitive tests the last query did (brute force does {@code size()}). */
+    /** {@return the primitive tests the last query did} Brute force does {@code size()}. */
     public int lastTests() { return tests; }
 
+    /** {@return the tree the queries traverse} */
     public KdTree tree() { return tree; }
+
+    /** {@return the primitives' exact tests} */
     public Collider collider() { return prims; }
 }

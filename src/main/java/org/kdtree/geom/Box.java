@@ -14,7 +14,11 @@ public final class Box {
     private final double[] min;
     private final double[] max;
 
-    /** An empty box in {@code k} dimensions (min = +inf, max = -inf), ready to be grown. */
+    /**
+     * An empty box in {@code k} dimensions (min = +inf, max = -inf), ready to be grown.
+     *
+     * @param k the dimension, at least 1
+     */
     public Box(int k) {
         if (k < 1) throw new IllegalArgumentException("dimension must be >= 1, got " + k);
         min = new double[k];
@@ -22,7 +26,12 @@ public final class Box {
         setEmpty();
     }
 
-    /** A box with the given corners (copied). */
+    /**
+     * A box with the given corners (copied).
+     *
+     * @param min the lower corner: the smallest coordinate on each axis
+     * @param max the upper corner, of the same dimension
+     */
     public Box(double[] min, double[] max) {
         if (min.length != max.length || min.length < 1)
             throw new IllegalArgumentException("corners must have the same dimension >= 1");
@@ -30,40 +39,106 @@ public final class Box {
         this.max = max.clone();
     }
 
-    /** Convenience constructor for a 2-D box. */
+    /**
+     * Convenience constructor for a 2-D box.
+     *
+     * @param x0 the lower corner, x
+     * @param y0 the lower corner, y
+     * @param x1 the upper corner, x
+     * @param y1 the upper corner, y
+     * @return the box {@code [x0, x1] x [y0, y1]}
+     */
     public static Box of2(double x0, double y0, double x1, double y1) {
         return new Box(new double[] {x0, y0}, new double[] {x1, y1});
     }
 
-    /** Convenience constructor for a 3-D box. */
+    /**
+     * Convenience constructor for a 3-D box.
+     *
+     * @param x0 the lower corner, x
+     * @param y0 the lower corner, y
+     * @param z0 the lower corner, z
+     * @param x1 the upper corner, x
+     * @param y1 the upper corner, y
+     * @param z1 the upper corner, z
+     * @return the box {@code [x0, x1] x [y0, y1] x [z0, z1]}
+     */
     public static Box of3(double x0, double y0, double z0, double x1, double y1, double z1) {
         return new Box(new double[] {x0, y0, z0}, new double[] {x1, y1, z1});
     }
 
+    /** {@return k, the number of axes} */
     public int dimension() { return min.length; }
+
+    /**
+     * {@return the lower bound on an axis}
+     * @param axis 0 to k - 1
+     */
     public double min(int axis) { return min[axis]; }
+
+    /**
+     * {@return the upper bound on an axis}
+     * @param axis 0 to k - 1
+     */
     public double max(int axis) { return max[axis]; }
+
+    /**
+     * {@return max minus min on an axis} Negative for an axis on which the box is empty.
+     * @param axis 0 to k - 1
+     */
     public double extent(int axis) { return max[axis] - min[axis]; }
 
+    /**
+     * Sets the lower bound on an axis (a voxel's child starts at the split plane).
+     *
+     * @param axis 0 to k - 1
+     * @param v    the new lower bound
+     * @return this box
+     */
     public Box setMin(int axis, double v) { min[axis] = v; return this; }
+
+    /**
+     * Sets the upper bound on an axis (a voxel's child ends at the split plane).
+     *
+     * @param axis 0 to k - 1
+     * @param v    the new upper bound
+     * @return this box
+     */
     public Box setMax(int axis, double v) { max[axis] = v; return this; }
 
-    /** Makes this box empty, so that {@link #grow} starts afresh. */
+    /**
+     * Makes this box empty, so that {@link #grow} starts afresh.
+     *
+     * @return this box
+     */
     public Box setEmpty() {
         Arrays.fill(min, Double.POSITIVE_INFINITY);
         Arrays.fill(max, Double.NEGATIVE_INFINITY);
         return this;
     }
 
+    /**
+     * Makes this box a copy of {@code other}, without allocating.
+     *
+     * @param other a box of the same dimension
+     * @return this box
+     */
     public Box set(Box other) {
         System.arraycopy(other.min, 0, min, 0, min.length);
         System.arraycopy(other.max, 0, max, 0, max.length);
         return this;
     }
 
+    /** {@return a new box with the same corners} */
     public Box copy() { return new Box(min, max); }
 
-    /** Grows the box to contain the point {@code p} (read from {@code p[offset..offset+k)}). */
+    /**
+     * Grows the box to contain the point {@code p} (read from {@code p[offset..offset+k)}).
+     *
+     * @param p      an array holding the point's k coordinates
+     * @param offset where they start in {@code p}: a flat array can hold many points
+     * @return this box
+     */
     public Box grow(double[] p, int offset) {
         for (int a = 0; a < min.length; a++) {
             double v = p[offset + a];
@@ -73,7 +148,12 @@ public final class Box {
         return this;
     }
 
-    /** Grows the box to contain {@code other}. */
+    /**
+     * Grows the box to contain {@code other}: the bounds of a set of primitives, one at a time.
+     *
+     * @param other a box of the same dimension (an empty one changes nothing)
+     * @return this box
+     */
     public Box grow(Box other) {
         for (int a = 0; a < min.length; a++) {
             if (other.min[a] < min[a]) min[a] = other.min[a];
@@ -82,7 +162,12 @@ public final class Box {
         return this;
     }
 
-    /** Shrinks this box to its intersection with {@code other} (may become empty). */
+    /**
+     * Shrinks this box to its intersection with {@code other} (may become empty).
+     *
+     * @param other a box of the same dimension
+     * @return this box
+     */
     public Box intersect(Box other) {
         for (int a = 0; a < min.length; a++) {
             min[a] = Math.max(min[a], other.min[a]);
@@ -91,27 +176,33 @@ public final class Box {
         return this;
     }
 
-    /** True when min > max on some axis (the box holds no point). */
+    /** {@return true when {@code min > max} on some axis} The box then holds no point. */
     public boolean isEmpty() {
         for (int a = 0; a < min.length; a++) if (!(min[a] <= max[a])) return true;
         return false;
     }
 
-    /** True when every coordinate is finite (no NaN, no infinity). */
+    /** {@return true when every coordinate is finite} No NaN, no infinity. */
     public boolean isFinite() {
         for (int a = 0; a < min.length; a++)
             if (!Double.isFinite(min[a]) || !Double.isFinite(max[a])) return false;
         return true;
     }
 
-    /** True when the closed boxes share at least one point. */
+    /**
+     * {@return true when the closed boxes share at least one point} Touching faces count.
+     * @param other a box of the same dimension
+     */
     public boolean overlaps(Box other) {
         for (int a = 0; a < min.length; a++)
             if (other.max[a] < min[a] || other.min[a] > max[a]) return false;
         return true;
     }
 
-    /** True when the closed box contains the point. */
+    /**
+     * {@return true when the closed box contains the point} A point on a face counts.
+     * @param p the point's coordinates, at least k of them
+     */
     public boolean contains(double[] p) {
         for (int a = 0; a < min.length; a++) if (p[a] < min[a] || p[a] > max[a]) return false;
         return true;
@@ -121,6 +212,8 @@ public final class Box {
      * The "surface area" the SAH needs: the sum of the measures of the 2k faces.
      * Perimeter in 2-D, area in 3-D; a flat box keeps the measure of its faces, so a
      * zero-thickness voxel still has a well-defined, positive area.
+     *
+     * @return the sum of the faces' measures; 0 for an empty box
      */
     public double surfaceArea() {
         int k = min.length;
@@ -134,28 +227,40 @@ public final class Box {
         return 2 * sum;
     }
 
-    /** The measure of the box: length, area or volume. */
+    /** {@return the measure of the box: length, area or volume} 0 for an empty or flat box. */
     public double volume() {
         double v = 1;
         for (int a = 0; a < min.length; a++) v *= Math.max(0, max[a] - min[a]);
         return v;
     }
 
-    /** The axis of largest extent. */
+    /** {@return the axis of largest extent} The first one on a tie. */
     public int longestAxis() {
         int best = 0;
         for (int a = 1; a < min.length; a++) if (extent(a) > extent(best)) best = a;
         return best;
     }
 
-    /** The part of this box below the plane ({@code x_axis <= xi}), as a new box. */
+    /**
+     * The part of this box below the split plane ({@code x_axis <= xi}), as a new box.
+     *
+     * @param axis the plane's axis
+     * @param xi   the plane's position on it
+     * @return the lower child's voxel
+     */
     public Box lowerPart(int axis, double xi) {
         Box b = copy();
         b.max[axis] = xi;
         return b;
     }
 
-    /** The part of this box above the plane ({@code x_axis >= xi}), as a new box. */
+    /**
+     * The part of this box above the split plane ({@code x_axis >= xi}), as a new box.
+     *
+     * @param axis the plane's axis
+     * @param xi   the plane's position on it
+     * @return the upper child's voxel
+     */
     public Box upperPart(int axis, double xi) {
         Box b = copy();
         b.min[axis] = xi;

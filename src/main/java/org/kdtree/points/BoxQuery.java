@@ -20,6 +20,7 @@ public final class BoxQuery {
     private int[] found = new int[64];
     private int count, leavesVisited;
 
+    /** @param points the tree of points to query, shared with other queries */
     public BoxQuery(PointTree points) {
         this.points = points;
         k = points.dimension();
@@ -33,13 +34,18 @@ public final class BoxQuery {
         stack = new int[points.maxDepth() + 2];
     }
 
-    /** Leaves scanned by the last query. */
+    /** {@return the leaves scanned by the last query} */
     public int leavesVisited() { return leavesVisited; }
 
     /**
      * The points {@code p} with {@code min[a] <= p[a] <= max[a]} on every axis, by increasing
      * index: the first {@code min(count, indices.length)} go into {@code indices}. Returns the
      * count of all such points (0 when {@code min > max} on some axis).
+     *
+     * @param min     the box's lower corner, k coordinates, no NaN
+     * @param max     the box's upper corner, k coordinates, no NaN
+     * @param indices receives the points' indices
+     * @return how many points are inside the box, even when more than {@code indices.length}
      */
     public int inside(double[] min, double[] max, int[] indices) {
         check(min, "min");

@@ -6,6 +6,7 @@ import org.kdtree.geom.Ray;
 public final class BruteForce implements RayQuery {
     private final Intersector prims;
 
+    /** @param prims the primitives and their exact ray tests */
     public BruteForce(Intersector prims) {
         this.prims = prims;
     }
