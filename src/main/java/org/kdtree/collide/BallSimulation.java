@@ -60,6 +60,15 @@ public final class BallSimulation {
         return n++;
     }
 
+    /**
+     * Puts ball {@code b} at (px, py) with velocity (velX, velY), its radius kept: for instance to
+     * drop a ball that has left the scene again from above.
+     */
+    public void place(int b, double px, double py, double velX, double velY) {
+        if (b < 0 || b >= n) throw new IndexOutOfBoundsException("ball " + b + " of " + n);
+        x[b] = px; y[b] = py; vx[b] = velX; vy[b] = velY;
+    }
+
     /** Advances every ball by {@code dt}. */
     public void step(double dt) {
         tests = bruteTests = 0;

@@ -30,7 +30,8 @@ import org.kdtree.build.Builders;
 
 /**
  * The workbench window: the 2-D build canvas with its builder controls, statistics, tree view,
- * traversal stepper and nearest-neighbour stepper; the builder comparison; the 3-D view. {@link #open} shows it.
+ * traversal stepper and nearest-neighbour stepper; the builder comparison; the 3-D view; the
+ * bouncing balls of the collisions view. {@link #open} shows it.
  */
 public final class Workbench extends JFrame {
     private final WorkbenchModel model = new WorkbenchModel();
@@ -47,6 +48,7 @@ public final class Workbench extends JFrame {
     private final NearestStepperPanel nearest;
     private final JTabbedPane steppers = new JTabbedPane();
     private final CompareView compare;
+    private final CollisionsView collisions;
 
     /** Builds the window on the built-in talk-figures scene (call on the event thread). */
     public Workbench() {
@@ -80,6 +82,10 @@ public final class Workbench extends JFrame {
         tabs.addTab("3-D", new View3D(model, Path.of("scenes")));
         tabs.setMnemonicAt(2, KeyEvent.VK_3);
         tabs.setToolTipTextAt(2, "Build a 3-D scene from scenes/ and see its tree (Alt+3)");
+        collisions = new CollisionsView(model);
+        tabs.addTab("Collisions", collisions);
+        tabs.setMnemonicAt(3, KeyEvent.VK_L);
+        tabs.setToolTipTextAt(3, "Balls bouncing off the 2-D scene under gravity, with the tree's tests against brute force's (Alt+L)");
         setContentPane(tabs);
         setJMenuBar(menus());
         setPreferredSize(new Dimension(1280, 860));
@@ -99,6 +105,7 @@ public final class Workbench extends JFrame {
     public StepperPanel stepper() { return stepper; }
     public NearestStepperPanel nearest() { return nearest; }
     public CompareView compare() { return compare; }
+    public CollisionsView collisions() { return collisions; }
     public ScenePanel scenes() { return scenePanel; }
 
     private JComponent buildTab() {
@@ -206,6 +213,16 @@ public final class Workbench extends JFrame {
         knn.add(action("Play / pause", ctrlShift(KeyEvent.VK_P), "Play the search step by step", nearest::togglePlay));
         knn.add(action("Clear query", ctrlShift(KeyEvent.VK_K), "Remove the query point", model::clearQuery));
         bar.add(knn);
+
+        JMenu balls = new JMenu("Collisions");
+        balls.setMnemonic('O');
+        balls.add(action("Start / stop balls", ctrlShift(KeyEvent.VK_B), "Show the collisions view and start or stop its balls",
+                () -> { tabs.setSelectedComponent(collisions); collisions.toggle(); }));
+        balls.add(action("One frame", ctrlShift(KeyEvent.VK_F), "Show the collisions view and simulate one frame",
+                () -> { tabs.setSelectedComponent(collisions); collisions.stepOnce(); }));
+        balls.add(action("Drop the balls again", ctrlShift(KeyEvent.VK_R), "Show the collisions view and reset its balls",
+                () -> { tabs.setSelectedComponent(collisions); collisions.reset(); }));
+        bar.add(balls);
 
         JMenu view = new JMenu("View");
         view.setMnemonic('V');

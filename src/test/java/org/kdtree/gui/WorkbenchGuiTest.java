@@ -144,6 +144,35 @@ class WorkbenchGuiTest {
         assertThat(window.label("knn.label").text()).isEqualTo("no query");
     }
 
+    @Test void theCollisionsViewRunsFramesWithFewerTestsThanBruteForce() throws Exception {
+        window.menuItemWithPath("Scene", "Clustered (200)").click();
+        window.tabbedPane("tabs").selectTab("Collisions");
+        window.spinner("collide.balls").select(200);
+        assertThat(window.label("collide.frame").text()).isEqualTo("frame 0");
+        window.button("collide.step").click();
+        assertThat(window.label("collide.frame").text()).isEqualTo("frame 1");
+        window.button("collide.start").click();
+        assertThat(window.button("collide.start").text()).isEqualTo("Stop");
+        long deadline = System.nanoTime() + 30_000_000_000L;   // a guard against a hang, not a timing
+        while (GuiActionRunner.execute(() -> bench.collisions().frames()) < 8 && System.nanoTime() < deadline) Thread.sleep(30);
+        window.button("collide.start").click();
+        assertThat(GuiActionRunner.execute(() -> bench.collisions().running())).isFalse();
+        long frames = GuiActionRunner.execute(() -> bench.collisions().frames());
+        assertThat(frames).isGreaterThanOrEqualTo(8);
+        assertThat(window.label("collide.frame").text()).isEqualTo("frame " + frames);
+        long tree = number(window.label("collide.tests").text()), brute = number(window.label("collide.brute").text());
+        assertThat(brute).as("brute force: 200 objects per sweep, at least one sweep per ball").isGreaterThanOrEqualTo(200L * 200);
+        assertThat(tree).isLessThan(brute);
+        assertThat(tree).isEqualTo(GuiActionRunner.execute(() -> bench.collisions().lastTests()));
+
+        window.button("collide.reset").click();
+        assertThat(window.label("collide.frame").text()).isEqualTo("frame 0");
+    }
+
+    private static long number(String label) {
+        return Long.parseLong(label.replaceAll("[^0-9]", ""));
+    }
+
     @Test void aValueOutsideItsLimitIsFlaggedNotSilentlyReverted() {
         int nodes = bench.model().tree().nodeCount();
         window.textBox("kmaxdepth.text").setText("").enterText("1000\n");
