@@ -68,7 +68,7 @@ public final class CollisionsView extends JPanel {
     public CollisionsView(WorkbenchModel model) {
         super(new BorderLayout());
         this.model = model;
-        JPanel controls = new JPanel(new FlowLayout(FlowLayout.LEFT, 4, 2));
+        JPanel controls = new JPanel(new FlowLayout(FlowLayout.LEFT, 10, 2));
         controls.add(start);
         controls.add(button("Frame", "collide.step", "Simulate one frame (Ctrl+Shift+F)", this::stepOnce));
         controls.add(button("Reset", "collide.reset", "Drop the balls again from above the scene (Ctrl+Shift+R)", this::reset));

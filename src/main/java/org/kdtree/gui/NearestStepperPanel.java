@@ -17,6 +17,7 @@ import javax.swing.JPanel;
 import javax.swing.JSlider;
 import javax.swing.JSpinner;
 import javax.swing.Timer;
+import org.kdtree.collide.ShapeCollider;
 import org.kdtree.geom.Box;
 import org.kdtree.limits.Limits;
 import org.kdtree.shape.Shapes2D;
@@ -30,9 +31,9 @@ import org.kdtree.tree.KdTree;
  * distance bound, the object tested, the best list.
  */
 public final class NearestStepperPanel extends JPanel implements CanvasOverlay {
-    private static final Color ENTERED = new Color(0x40, 0xB0, 0x40, 45);
+    private static final Color ENTERED = new Color(0xFF, 0xC8, 0x30, 80);
     private static final Color NEAR_TINT = new Color(0x40, 0xB0, 0x40, 70), FAR_TINT = new Color(0x40, 0x80, 0xE0, 70);
-    private static final Color PRUNED_FILL = new Color(0x70, 0x70, 0x70, 70);
+    private static final Color PRUNED_FILL = new Color(0x50, 0x50, 0x50, 45);
     private static final BasicStroke DASHED = new BasicStroke(2f, BasicStroke.CAP_BUTT, BasicStroke.JOIN_MITER, 10,
             new float[] {6, 4}, 0);
     private static final BasicStroke THICK = new BasicStroke(3f), THIN = new BasicStroke(1.5f);
@@ -54,6 +55,9 @@ public final class NearestStepperPanel extends JPanel implements CanvasOverlay {
     private BitSet entered = new BitSet(), pruned = new BitSet();
     private Box[] voxels = new Box[0];
     private KdTree voxelsOf;
+    private ShapeCollider collider;
+    private Shapes2D colliderOf;
+    private final double[] closest = new double[3];
     private boolean updating;
 
     public NearestStepperPanel(WorkbenchModel model) {
@@ -83,9 +87,10 @@ public final class NearestStepperPanel extends JPanel implements CanvasOverlay {
         rejection.setForeground(new Color(170, 0, 0));
         buttons.add(rejection);
         JPanel labels = new JPanel(new GridLayout(0, 2, 12, 0));
-        for (JLabel l : new JLabel[] {nodeLabel, radiusLabel, testedLabel, bestLabel, resultLabel}) labels.add(l);
+        for (JLabel l : new JLabel[] {nodeLabel, radiusLabel, testedLabel, bestLabel}) labels.add(l);
         add(buttons, BorderLayout.NORTH);
         add(labels, BorderLayout.CENTER);
+        add(resultLabel, BorderLayout.SOUTH);
         model.addListener(c -> {
             if (c == WorkbenchModel.Change.TREE || c == WorkbenchModel.Change.QUERY) retrace();
         });
@@ -128,6 +133,10 @@ public final class NearestStepperPanel extends JPanel implements CanvasOverlay {
     private void retrace() {
         KdTree tree = model.tree();
         trace = NearestRecorder.record(tree, model.scene(), model.query(), k());
+        if (colliderOf != model.scene()) {
+            colliderOf = model.scene();
+            collider = new ShapeCollider(colliderOf);
+        }
         if (voxelsOf != tree) {
             voxels = StepperPanel.voxelIndex(tree);
             voxelsOf = tree;
@@ -253,8 +262,15 @@ public final class NearestStepperPanel extends JPanel implements CanvasOverlay {
             }
         }
         Shapes2D scene = model.scene();
-        for (NearestTrace.Neighbour n : s.best())
-            if (n.object() < scene.size()) TreePainter.paintShape(g, scene.get(n.object()), v, Palette.HIT, null, THICK);
+        g.setStroke(THIN);
+        for (NearestTrace.Neighbour n : s.best()) {   // each of the best, with a spoke to its point nearest the query
+            if (n.object() >= scene.size() || colliderOf != scene) continue;
+            TreePainter.paintShape(g, scene.get(n.object()), v, Palette.HIT, null, THICK);
+            collider.closestPoint(n.object(), q, closest);
+            g.setColor(Palette.HIT);
+            g.setStroke(THIN);
+            g.draw(TreeCanvas.line(v, q[0], q[1], closest[0], closest[1]));
+        }
         if (s.kind() == NearestTrace.Kind.TEST && s.object() < scene.size()) {
             TreePainter.paintShape(g, scene.get(s.object()), v, Palette.TESTED, null, THICK);
             if (!Double.isNaN(s.closestX())) {
