@@ -65,6 +65,7 @@ public final class CollisionsView extends JPanel {
     private long frames;
     private boolean stale = true;
 
+    /** A view over the scene and tree of {@code model}; the balls are dropped when it is first shown. */
     public CollisionsView(WorkbenchModel model) {
         super(new BorderLayout());
         this.model = model;
@@ -96,8 +97,12 @@ public final class CollisionsView extends JPanel {
         });
     }
 
+    /** Whether the balls are moving (the timer runs). */
     public boolean running() { return timer.isRunning(); }
+
+    /** Frames simulated since the balls were last dropped. */
     public long frames() { return frames; }
+
     /** Tests the tree needed in the last frame. */
     public long lastTests() { return sim == null ? 0 : sim.lastTests(); }
     /** Tests brute force would have needed in the last frame. */

@@ -60,6 +60,7 @@ public final class NearestStepperPanel extends JPanel implements CanvasOverlay {
     private final double[] closest = new double[3];
     private boolean updating;
 
+    /** A stepper for the query point of {@code model}, searched again on every change of tree or query. */
     public NearestStepperPanel(WorkbenchModel model) {
         super(new BorderLayout());
         this.model = model;
@@ -97,7 +98,10 @@ public final class NearestStepperPanel extends JPanel implements CanvasOverlay {
         retrace();
     }
 
+    /** The recorded search of the current query (empty without one). */
     public NearestTrace trace() { return trace; }
+
+    /** The step shown. */
     public int index() { return index; }
 
     /** The k searched for. */
@@ -106,11 +110,19 @@ public final class NearestStepperPanel extends JPanel implements CanvasOverlay {
     /** Sets k (within {@link Limits#STEPPER_K}) and searches again. */
     public void setK(int k) { kSpinner.setValue(Limits.STEPPER_K.check("k", k)); }
 
+    /** Shows the first step. */
     public void first() { show(0); }
+
+    /** Shows the step before the current one. */
     public void back() { show(index - 1); }
+
+    /** Shows the step after the current one. */
     public void forward() { show(index + 1); }
+
+    /** Shows the last step: the result. */
     public void last() { show(trace.size() - 1); }
 
+    /** Plays the search a step at a time, or pauses it. */
     public void togglePlay() {
         if (player.isRunning()) {
             player.stop();
@@ -137,7 +149,7 @@ public final class NearestStepperPanel extends JPanel implements CanvasOverlay {
             colliderOf = model.scene();
             collider = new ShapeCollider(colliderOf);
         }
-        if (voxelsOf != tree) {
+        if (trace.size() > 0 && voxelsOf != tree) {   // only with a query: a large tree's index is not free
             voxels = StepperPanel.voxelIndex(tree);
             voxelsOf = tree;
         }

@@ -65,8 +65,10 @@ public record NearestTrace(List<Step> steps, double[] query, int k, long nodes, 
     /** A trace with no steps, for when there is no query. */
     public static final NearestTrace EMPTY = new NearestTrace(List.of(), null, 0, 0, 0, 0, 0, List.of());
 
+    /** The number of steps. */
     public int size() { return steps.size(); }
 
+    /** Step {@code i}, 0 first. */
     public Step step(int i) { return steps.get(i); }
 
     /** The nodes entered in steps 0 .. {@code last}. */

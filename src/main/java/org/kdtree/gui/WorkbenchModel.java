@@ -210,6 +210,7 @@ public final class WorkbenchModel {
         fire(Change.QUERY);
     }
 
+    /** Removes the k-NN query point. */
     public void clearQuery() {
         query = null;
         fire(Change.QUERY);
