@@ -71,6 +71,21 @@ public final class BallSimulation {
     }
 
     /**
+     * Puts ball {@code b} at (px, py) with velocity (velX, velY), its radius kept: for instance to
+     * drop a ball that has left the scene again from above.
+     *
+     * @param b    the ball's number, {@code 0 .. balls() - 1}
+     * @param px   the new centre's x
+     * @param py   the new centre's y
+     * @param velX the new velocity's x
+     * @param velY the new velocity's y
+     */
+    public void place(int b, double px, double py, double velX, double velY) {
+        if (b < 0 || b >= n) throw new IndexOutOfBoundsException("ball " + b + " of " + n);
+        x[b] = px; y[b] = py; vx[b] = velX; vy[b] = velY;
+    }
+
+    /**
      * Advances every ball by {@code dt}, and counts this step's primitive tests.
      *
      * @param dt the step's duration

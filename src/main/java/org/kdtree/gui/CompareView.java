@@ -39,7 +39,7 @@ public final class CompareView extends JPanel {
             add(columns[i]);
         }
         model.addListener(c -> {
-            if (c != WorkbenchModel.Change.SELECTION) {
+            if (c != WorkbenchModel.Change.SELECTION && c != WorkbenchModel.Change.QUERY) {
                 stale = true;
                 if (isShowing()) refresh();
             }

@@ -7,7 +7,8 @@ public enum EditTool {
     POINT("Add point", "Click to add a point"),
     SEGMENT("Add segment", "Drag from one end to the other"),
     RECT("Add rectangle", "Drag from one corner to the opposite one"),
-    TRIANGLE("Add triangle", "Drag the base; the apex goes above its middle");
+    TRIANGLE("Add triangle", "Drag the base; the apex goes above its middle"),
+    KNN("k-NN query", "Click (or drag) to place the query point of the nearest-neighbour stepper");
 
     private final String label;
     private final String help;

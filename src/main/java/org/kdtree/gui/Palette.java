@@ -24,4 +24,10 @@ public final class Palette {
     public static final Color STACKED = new Color(0xA0, 0x60, 0xE0);
     public static final Color TESTED = new Color(0xE0, 0x30, 0x30);
     public static final Color HIT = new Color(0x00, 0x00, 0x00);
+    /** The nearest-neighbour stepper's query point and its search radius (the k-th best distance). */
+    public static final Color QUERY = new Color(0xC0, 0x00, 0x80);
+    /** Voxels the nearest-neighbour search pruned. */
+    public static final Color PRUNED = new Color(0x70, 0x70, 0x70);
+    /** Balls of the collisions view. */
+    public static final Color BALL = new Color(0xE0, 0x50, 0x20);
 }

@@ -73,7 +73,7 @@ public final class StepperPanel extends JPanel implements CanvasOverlay {
         add(buttons, BorderLayout.NORTH);
         add(labels, BorderLayout.CENTER);
         model.addListener(c -> {
-            if (c != WorkbenchModel.Change.SELECTION) retrace();
+            if (c != WorkbenchModel.Change.SELECTION && c != WorkbenchModel.Change.QUERY) retrace();
         });
         retrace();
     }

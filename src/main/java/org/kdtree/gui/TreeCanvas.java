@@ -18,7 +18,7 @@ import org.kdtree.shape.Shape2D;
 /**
  * The 2-D build canvas: the scene and its tree (see {@link TreePainter}), the leaf under the
  * mouse highlighted, zoom with the wheel, pan with the right or middle button, and left-button
- * editing or ray casting according to the current {@link EditTool}.
+ * editing, ray casting or placing the k-NN query according to the current {@link EditTool}.
  */
 public final class TreeCanvas extends JComponent {
     private final WorkbenchModel model;
@@ -122,7 +122,7 @@ public final class TreeCanvas extends JComponent {
         private double tol() { return 5 / view.scale(); }
 
         @Override public void mouseMoved(MouseEvent e) {
-            if (model.ray() != null) return;   // with a ray cast, the selected node is the traversal stepper's
+            if (model.ray() != null || model.query() != null) return;   // then the selected node is a stepper's
             model.selectNode(TreePainter.leafAt(model.tree(), view.worldX(e.getX()), view.worldY(e.getY())));
         }
 
@@ -133,6 +133,7 @@ public final class TreeCanvas extends JComponent {
             startX = view.worldX(e.getX());
             startY = view.worldY(e.getY());
             panning = !SwingUtilities.isLeftMouseButton(e);
+            if (!panning && tool == EditTool.KNN) model.setQuery(startX, startY);
             if (panning || tool != EditTool.SELECT) return;
             List<Shape2D> shapes = model.scene().shapes();
             int sel = model.selectedShape();
@@ -147,6 +148,8 @@ public final class TreeCanvas extends JComponent {
                 view.pan(e.getX() - lastX, e.getY() - lastY);
             } else if (tool == EditTool.RAY) {
                 model.setRay(startX, startY, x, y);
+            } else if (tool == EditTool.KNN) {
+                model.setQuery(x, y);
             } else if (tool == EditTool.SELECT) {
                 if (dragShape >= 0) preview = edited(x, y);
             } else {
@@ -164,6 +167,8 @@ public final class TreeCanvas extends JComponent {
                 panning = false;
             } else if (tool == EditTool.RAY) {
                 if (x != startX || y != startY) model.setRay(startX, startY, x, y);
+            } else if (tool == EditTool.KNN) {
+                if (x != startX || y != startY) model.setQuery(x, y);
             } else if (tool == EditTool.SELECT) {
                 if (dragShape >= 0 && (x != startX || y != startY)) model.replaceShape(dragShape, edited(x, y));
             } else {

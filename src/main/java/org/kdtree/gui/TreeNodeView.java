@@ -29,7 +29,7 @@ public final class TreeNodeView extends JScrollPane {
         setViewportView(jtree);
         model.addListener(c -> {
             if (c == WorkbenchModel.Change.TREE) reload();
-            if (c != WorkbenchModel.Change.RAY) follow();
+            if (c != WorkbenchModel.Change.RAY && c != WorkbenchModel.Change.QUERY) follow();
         });
         reload();
     }

@@ -29,8 +29,9 @@ import javax.swing.filechooser.FileNameExtensionFilter;
 import org.kdtree.build.Builders;
 
 /**
- * The workbench window: the 2-D build canvas with its builder controls, statistics, tree view
- * and traversal stepper; the builder comparison; the 3-D view. {@link #open} shows it.
+ * The workbench window: the 2-D build canvas with its builder controls, statistics, tree view,
+ * traversal stepper and nearest-neighbour stepper; the builder comparison; the 3-D view; the
+ * bouncing balls of the collisions view. {@link #open} shows it.
  */
 public final class Workbench extends JFrame {
     private final WorkbenchModel model = new WorkbenchModel();
@@ -44,7 +45,10 @@ public final class Workbench extends JFrame {
     private final JToolBar toolBar = new JToolBar("Tools", JToolBar.VERTICAL);
     private final JMenu toolsMenu = new JMenu("Tools");
     private final StepperPanel stepper;
+    private final NearestStepperPanel nearest;
+    private final JTabbedPane steppers = new JTabbedPane();
     private final CompareView compare;
+    private final CollisionsView collisions;
 
     /** Builds the window on the built-in talk-figures scene (call on the event thread). */
     public Workbench() {
@@ -59,6 +63,12 @@ public final class Workbench extends JFrame {
         super("kdtree workbench");
         stepper = new StepperPanel(model, tracer);
         canvas.addOverlay(stepper);
+        nearest = new NearestStepperPanel(model);
+        canvas.addOverlay(nearest);
+        model.addListener(c -> {   // show the stepper of what was just placed
+            if (c == WorkbenchModel.Change.RAY && model.ray() != null) steppers.setSelectedComponent(stepper);
+            if (c == WorkbenchModel.Change.QUERY && model.query() != null) steppers.setSelectedComponent(nearest);
+        });
         setDefaultCloseOperation(DISPOSE_ON_CLOSE);
         scenePanel.selectBuiltin(0);
         tabs.setName("tabs");
@@ -72,6 +82,10 @@ public final class Workbench extends JFrame {
         tabs.addTab("3-D", new View3D(model, Path.of("scenes")));
         tabs.setMnemonicAt(2, KeyEvent.VK_3);
         tabs.setToolTipTextAt(2, "Build a 3-D scene from scenes/ and see its tree (Alt+3)");
+        collisions = new CollisionsView(model);
+        tabs.addTab("Collisions", collisions);
+        tabs.setMnemonicAt(3, KeyEvent.VK_L);
+        tabs.setToolTipTextAt(3, "Balls bouncing off the 2-D scene under gravity, with the tree's tests against brute force's (Alt+L)");
         setContentPane(tabs);
         setJMenuBar(menus());
         setPreferredSize(new Dimension(1280, 860));
@@ -89,7 +103,9 @@ public final class Workbench extends JFrame {
     public StatsPanel stats() { return statsPanel; }
     public JTabbedPane tabs() { return tabs; }
     public StepperPanel stepper() { return stepper; }
+    public NearestStepperPanel nearest() { return nearest; }
     public CompareView compare() { return compare; }
+    public CollisionsView collisions() { return collisions; }
     public ScenePanel scenes() { return scenePanel; }
 
     private JComponent buildTab() {
@@ -111,7 +127,14 @@ public final class Workbench extends JFrame {
         split.setResizeWeight(1);
         JPanel tab = new JPanel(new BorderLayout());
         tab.add(split, BorderLayout.CENTER);
-        tab.add(stepper, BorderLayout.SOUTH);
+        steppers.setName("steppers");
+        steppers.addTab("Ray traversal", stepper);
+        steppers.setMnemonicAt(0, KeyEvent.VK_Y);
+        steppers.setToolTipTextAt(0, "Step through the cast ray's traversal (Algorithm 2); casting a ray shows it (Alt+Y)");
+        steppers.addTab("Nearest neighbours", nearest);
+        steppers.setMnemonicAt(1, KeyEvent.VK_E);
+        steppers.setToolTipTextAt(1, "Step through the k-NN search around the query point; placing a query shows it (Alt+E)");
+        tab.add(steppers, BorderLayout.SOUTH);
         return tab;
     }
 
@@ -181,6 +204,26 @@ public final class Workbench extends JFrame {
         trav.add(action("Clear ray", ctrl(KeyEvent.VK_K), "Remove the cast ray", model::clearRay));
         bar.add(trav);
 
+        JMenu knn = new JMenu("Nearest");
+        knn.setMnemonic('N');
+        knn.add(action("First step", ctrlShift(KeyEvent.VK_HOME), "Go to the first step of the k-NN search", nearest::first));
+        knn.add(action("Step back", ctrlShift(KeyEvent.VK_LEFT), "Go one step back", nearest::back));
+        knn.add(action("Step forward", ctrlShift(KeyEvent.VK_RIGHT), "Go one step forward", nearest::forward));
+        knn.add(action("Last step", ctrlShift(KeyEvent.VK_END), "Go to the k nearest objects", nearest::last));
+        knn.add(action("Play / pause", ctrlShift(KeyEvent.VK_P), "Play the search step by step", nearest::togglePlay));
+        knn.add(action("Clear query", ctrlShift(KeyEvent.VK_K), "Remove the query point", model::clearQuery));
+        bar.add(knn);
+
+        JMenu balls = new JMenu("Collisions");
+        balls.setMnemonic('O');
+        balls.add(action("Start / stop balls", ctrlShift(KeyEvent.VK_B), "Show the collisions view and start or stop its balls",
+                () -> { tabs.setSelectedComponent(collisions); collisions.toggle(); }));
+        balls.add(action("One frame", ctrlShift(KeyEvent.VK_F), "Show the collisions view and simulate one frame",
+                () -> { tabs.setSelectedComponent(collisions); collisions.stepOnce(); }));
+        balls.add(action("Drop the balls again", ctrlShift(KeyEvent.VK_R), "Show the collisions view and reset its balls",
+                () -> { tabs.setSelectedComponent(collisions); collisions.reset(); }));
+        bar.add(balls);
+
         JMenu view = new JMenu("View");
         view.setMnemonic('V');
         view.add(action("Fit scene", ctrl(KeyEvent.VK_0), "Fit the whole scene in the canvas", canvas::fit));
@@ -202,6 +245,10 @@ public final class Workbench extends JFrame {
 
     static KeyStroke ctrl(int key) {
         return KeyStroke.getKeyStroke(key, InputEvent.CTRL_DOWN_MASK);
+    }
+
+    static KeyStroke ctrlShift(int key) {
+        return KeyStroke.getKeyStroke(key, InputEvent.CTRL_DOWN_MASK | InputEvent.SHIFT_DOWN_MASK);
     }
 
     private void sceneLoaded() {

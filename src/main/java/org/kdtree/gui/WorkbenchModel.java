@@ -15,7 +15,8 @@ import org.kdtree.tree.KdTree;
 /**
  * The state the 2-D views share: the scene being edited, the builder settings, the tree built
  * from them (rebuilt on every change), the selected node and shape, and the cast ray. Listeners
- * hear what changed. Used on the Swing event thread only.
+ * hear what changed. Used on the Swing event thread only. It also holds the query point of the
+ * nearest-neighbour stepper.
  *
  * <p>A scene of up to {@link #BACKGROUND_ABOVE} objects is rebuilt at once, within the event;
  * a larger one on a background thread, so that the window stays responsive: listeners hear
@@ -25,7 +26,7 @@ import org.kdtree.tree.KdTree;
  */
 public final class WorkbenchModel {
     /** What changed, so that a view redoes only what it must. */
-    public enum Change { TREE, SELECTION, RAY, BUILDING }
+    public enum Change { TREE, SELECTION, RAY, BUILDING, QUERY }
 
     /** Scenes with more objects than this are built in the background. */
     public static final int BACKGROUND_ABOVE = 20_000;
@@ -53,6 +54,7 @@ public final class WorkbenchModel {
     private int selectedNode = -1;
     private int selectedShape = -1;
     private double[] ray;
+    private double[] query;
 
     public WorkbenchModel() {
         rebuild();
@@ -195,6 +197,23 @@ public final class WorkbenchModel {
     public void clearRay() {
         ray = null;
         fire(Change.RAY);
+    }
+
+    // ---- nearest-neighbour query ----
+
+    /** The query point of the k-NN stepper as {x, y}, or null. */
+    public double[] query() { return query == null ? null : query.clone(); }
+
+    /** Places the k-NN query point at (x, y). */
+    public void setQuery(double x, double y) {
+        query = new double[] {x, y};
+        fire(Change.QUERY);
+    }
+
+    /** Removes the k-NN query point. */
+    public void clearQuery() {
+        query = null;
+        fire(Change.QUERY);
     }
 
     private void fire(Change c) {

@@ -65,11 +65,17 @@ public final class Limits {
     /** Objects in a generated 2-D scene. */
     public static final Limit SCENE_OBJECTS = Limit.whole("objects", 1, 100_000);
 
+    // Workbench queries.
+    /** k of the workbench's nearest-neighbour stepper (each step shows the whole list of the k best). */
+    public static final Limit STEPPER_K = Limit.whole("stepper k", 1, 64);
+    /** Balls of the workbench's collisions view (stepped and drawn every frame). */
+    public static final Limit BALLS = Limit.whole("balls", 1, 5_000);
+
     /** All of them, in the order of docs/limits.md. */
     public static final List<Limit> ALL = List.of(THREADS, MAX_DEPTH, DEPTH_FACTOR, REFERENCE_BUDGET, KT, KI, LAMBDA,
             MIN_PRIMITIVES, BINS, EXACT_BELOW, IMAGE_SIDE, SAMPLES_PER_PIXEL, RAY_DEPTH, LIGHT_SAMPLES, PREVIEW_WIDTH,
             SPHERE_SEGMENTS, SPHERE_RINGS, FLAKE_LEVELS,
-            RUNS, WARMUP, GRID, RAY_COUNT, RAYS_PER_TRIANGLE, SCENE_OBJECTS);
+            RUNS, WARMUP, GRID, RAY_COUNT, RAYS_PER_TRIANGLE, SCENE_OBJECTS, STEPPER_K, BALLS);
 
     private Limits() {
     }

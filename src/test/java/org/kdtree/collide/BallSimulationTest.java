@@ -52,4 +52,14 @@ class BallSimulationTest {
         assertThat(energy).as("bounces with restitution 0.8 lost energy").isLessThan(start - 100);
         assertThat(tests).as("tree tests %d vs brute force %d", tests, bruteTests).isLessThan(bruteTests / 5);
     }
+
+    @Test void placeMovesABallAndKeepsItsRadius() {
+        Shapes2D scene = new Shapes2D(List.of(new Shape2D.Segment(0, 0, 10, 0)));
+        BallSimulation sim = new BallSimulation(Builders.create("sah").build(scene), scene, 2, 0, -10, 0.5);
+        sim.addBall(1, 5, 0, 0, 0.25);
+        sim.place(0, 3, 7, 1, -2);
+        assertThat(new double[] {sim.x(0), sim.y(0), sim.vx(0), sim.vy(0), sim.radius(0)}).containsExactly(3, 7, 1, -2, 0.25);
+        org.assertj.core.api.Assertions.assertThatThrownBy(() -> sim.place(1, 0, 0, 0, 0))
+                .isInstanceOf(IndexOutOfBoundsException.class).hasMessage("ball 1 of 1");
+    }
 }

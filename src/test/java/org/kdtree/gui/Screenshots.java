@@ -6,7 +6,8 @@ import javax.swing.SwingUtilities;
 
 /**
  * Takes the screenshots of docs/workbench.md from the real window: opens the workbench, sets
- * up each view, and grabs the screen with ImageMagick's {@code import}. Run under Xvfb:
+ * up each view, and grabs the screen with ImageMagick's {@code import} (or, where that is not
+ * installed, with AWT's {@code Robot}). Run under Xvfb:
  * <pre>
  * Xvfb :99 -screen 0 1300x900x24 &amp;
  * DISPLAY=:99 java -cp target/classes:target/test-classes:$(cat cp.txt) org.kdtree.gui.Screenshots docs/images
@@ -65,7 +66,38 @@ public final class Screenshots {
         });
         shot(out, "stepper.png");
 
-        on(() -> b.tabs().setSelectedIndex(1));
+        double[][] ray = new double[1][];
+        on(() -> {
+            ray[0] = m.ray();
+            m.clearRay();
+            NearestStepperPanel s = b.nearest();
+            s.setK(4);
+            m.setQuery(5.3, 3.6);
+            // the second node pruned once the list is full: the radius, a pruned voxel and its bound
+            int target = s.trace().size() - 1, seen = 0;
+            for (int i = 0; i < s.trace().size(); i++) {
+                NearestTrace.Step st = s.trace().step(i);
+                if (st.kind() == NearestTrace.Kind.PRUNE && Double.isFinite(st.kth()) && ++seen == 2) { target = i; break; }
+            }
+            s.first();
+            for (int i = 0; i < target; i++) s.forward();
+        });
+        shot(out, "knn.png");
+
+        on(() -> {
+            m.clearQuery();
+            b.scenes().selectBuiltin(1);
+            b.tabs().setSelectedIndex(3);
+            b.collisions().reset();
+            for (int i = 0; i < 90; i++) b.collisions().stepOnce();
+        });
+        shot(out, "collisions.png");
+
+        on(() -> {
+            b.scenes().selectBuiltin(2);
+            m.setRay(ray[0][0], ray[0][1], ray[0][0] + ray[0][2], ray[0][1] + ray[0][3]);
+            b.tabs().setSelectedIndex(1);
+        });
         shot(out, "compare.png");
 
         on(() -> b.tabs().setSelectedIndex(2));
@@ -92,8 +124,15 @@ public final class Screenshots {
 
     private static void shot(Path dir, String name) throws Exception {
         Thread.sleep(1200);
-        Process p = new ProcessBuilder("import", "-window", "root", "-crop", "1280x880+0+0", dir.resolve(name).toString())
-                .inheritIO().start();
+        Process p;
+        try {
+            p = new ProcessBuilder("import", "-window", "root", "-crop", "1280x880+0+0", dir.resolve(name).toString())
+                    .inheritIO().start();
+        } catch (java.io.IOException noImageMagick) {   // without ImageMagick, AWT's robot grabs the same pixels
+            java.awt.image.BufferedImage img = new java.awt.Robot().createScreenCapture(new java.awt.Rectangle(0, 0, 1280, 880));
+            javax.imageio.ImageIO.write(img, "png", dir.resolve(name).toFile());
+            return;
+        }
         if (p.waitFor() != 0) throw new IllegalStateException("import failed for " + name);
     }
 }

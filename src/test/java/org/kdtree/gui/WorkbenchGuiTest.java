@@ -105,6 +105,74 @@ class WorkbenchGuiTest {
         assertThat(bench.compare().statsText("median-plane")).contains("ray:");
     }
 
+    @Test void placeAKnnQueryAndStepToTheBruteForceAnswer() {
+        window.menuItemWithPath("Scene", "Clustered (200)").click();
+        window.tabbedPane("steppers").selectTab("Nearest neighbours");
+        window.spinner("knn.k").select(5);
+        window.toggleButton("tool.KNN").click();
+        int w = bench.canvas().getWidth(), h = bench.canvas().getHeight();
+        window.robot().click(bench.canvas(), new Point(w / 2 + 17, h / 2 - 11));
+        double[] q = bench.model().query();
+        assertThat(q).isNotNull();
+        assertThat(window.label("knn.label").text()).startsWith("step 1 /").endsWith("start at the root");
+        assertThat(window.label("knn.kth").text()).contains("radius): inf").contains("0 of 5");
+
+        window.button("knn.next").click();
+        assertThat(window.label("knn.label").text()).startsWith("step 2 /");
+        assertThat(window.label("knn.node").text()).startsWith("node #0");
+        assertThat(bench.model().selectedNode()).as("the tree view follows the k-NN stepper").isZero();
+        window.robot().moveMouse(bench.canvas(), new Point(w / 3, h / 3));
+        assertThat(bench.model().selectedNode()).isZero();
+        String radius = window.label("knn.kth").text();
+        for (int i = 0; i < 400 && !window.label("knn.kth").text().contains("5 of 5"); i++) window.button("knn.next").click();
+        assertThat(window.label("knn.kth").text()).as("stepping fills the list and shrinks the radius")
+                .isNotEqualTo(radius).contains("5 of 5").doesNotContain("inf");
+
+        window.button("knn.last").click();
+        assertThat(window.label("knn.label").text()).endsWith("done");
+        List<NearestTrace.Neighbour> expected = NearestBruteForce.nearest(bench.model().scene(), q, 5);
+        assertThat(bench.nearest().trace().result()).isEqualTo(expected);
+        assertThat(window.label("knn.result").text()).startsWith("result: " + NearestStepperPanel.listText(expected, 4))
+                .contains("pruned").contains("of 200 objects tested");
+        assertThat(window.label("knn.best").text()).isEqualTo("best: " + NearestStepperPanel.listText(expected, 6));
+        window.button("knn.prev").click();
+        assertThat(window.label("knn.label").text()).doesNotEndWith("done");
+
+        window.spinner("knn.k").select(1);
+        assertThat(bench.nearest().trace().result()).isEqualTo(expected.subList(0, 1));
+        window.menuItemWithPath("Nearest", "Clear query").click();
+        assertThat(window.label("knn.label").text()).isEqualTo("no query");
+    }
+
+    @Test void theCollisionsViewRunsFramesWithFewerTestsThanBruteForce() throws Exception {
+        window.menuItemWithPath("Scene", "Clustered (200)").click();
+        window.tabbedPane("tabs").selectTab("Collisions");
+        window.spinner("collide.balls").select(200);
+        assertThat(window.label("collide.frame").text()).isEqualTo("frame 0");
+        window.button("collide.step").click();
+        assertThat(window.label("collide.frame").text()).isEqualTo("frame 1");
+        window.button("collide.start").click();
+        assertThat(window.button("collide.start").text()).isEqualTo("Stop");
+        long deadline = System.nanoTime() + 30_000_000_000L;   // a guard against a hang, not a timing
+        while (GuiActionRunner.execute(() -> bench.collisions().frames()) < 8 && System.nanoTime() < deadline) Thread.sleep(30);
+        window.button("collide.start").click();
+        assertThat(GuiActionRunner.execute(() -> bench.collisions().running())).isFalse();
+        long frames = GuiActionRunner.execute(() -> bench.collisions().frames());
+        assertThat(frames).isGreaterThanOrEqualTo(8);
+        assertThat(window.label("collide.frame").text()).isEqualTo("frame " + frames);
+        long tree = number(window.label("collide.tests").text()), brute = number(window.label("collide.brute").text());
+        assertThat(brute).as("brute force: 200 objects per sweep, at least one sweep per ball").isGreaterThanOrEqualTo(200L * 200);
+        assertThat(tree).isLessThan(brute);
+        assertThat(tree).isEqualTo(GuiActionRunner.execute(() -> bench.collisions().lastTests()));
+
+        window.button("collide.reset").click();
+        assertThat(window.label("collide.frame").text()).isEqualTo("frame 0");
+    }
+
+    private static long number(String label) {
+        return Long.parseLong(label.replaceAll("[^0-9]", ""));
+    }
+
     @Test void aValueOutsideItsLimitIsFlaggedNotSilentlyReverted() {
         int nodes = bench.model().tree().nodeCount();
         window.textBox("kmaxdepth.text").setText("").enterText("1000\n");

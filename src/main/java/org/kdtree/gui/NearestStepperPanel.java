@@ -1,0 +1,337 @@
+package org.kdtree.gui;
+
+import java.awt.BasicStroke;
+import java.awt.BorderLayout;
+import java.awt.Color;
+import java.awt.FlowLayout;
+import java.awt.Graphics2D;
+import java.awt.GridLayout;
+import java.awt.geom.Ellipse2D;
+import java.util.BitSet;
+import java.util.List;
+import java.util.Locale;
+import javax.swing.BorderFactory;
+import javax.swing.JButton;
+import javax.swing.JLabel;
+import javax.swing.JPanel;
+import javax.swing.JSlider;
+import javax.swing.JSpinner;
+import javax.swing.Timer;
+import org.kdtree.collide.ShapeCollider;
+import org.kdtree.geom.Box;
+import org.kdtree.limits.Limits;
+import org.kdtree.shape.Shapes2D;
+import org.kdtree.tree.KdTree;
+
+/**
+ * The nearest-neighbour stepper: replays the recorded search for the k objects nearest to the
+ * query point (see {@link NearestTrace}) one event at a time, forward, back or playing, with the
+ * search's state in labels and on the canvas: the query point, the search radius (the circle of
+ * the k-th best distance), the nodes entered and pruned so far, the current node and its
+ * distance bound, the object tested, the best list.
+ */
+public final class NearestStepperPanel extends JPanel implements CanvasOverlay {
+    private static final Color ENTERED = new Color(0xFF, 0xC8, 0x30, 80);
+    private static final Color NEAR_TINT = new Color(0x40, 0xB0, 0x40, 70), FAR_TINT = new Color(0x40, 0x80, 0xE0, 70);
+    private static final Color PRUNED_FILL = new Color(0x50, 0x50, 0x50, 45);
+    private static final BasicStroke DASHED = new BasicStroke(2f, BasicStroke.CAP_BUTT, BasicStroke.JOIN_MITER, 10,
+            new float[] {6, 4}, 0);
+    private static final BasicStroke THICK = new BasicStroke(3f), THIN = new BasicStroke(1.5f);
+
+    private final WorkbenchModel model;
+    private final JLabel stepLabel = label("knn.label", "Which event of the nearest-neighbour search is shown");
+    private final JLabel nodeLabel = label("knn.node", "The node the search is at, and the distance from the query to its voxel");
+    private final JLabel radiusLabel = label("knn.kth", "The k-th best distance so far: the search radius (dashed circle); voxels beyond it are pruned");
+    private final JLabel testedLabel = label("knn.tested", "The object tested at this step (red) and its exact distance");
+    private final JLabel bestLabel = label("knn.best", "The k best objects so far (black), nearest first");
+    private final JLabel resultLabel = label("knn.result", "The k nearest objects and the search's cost");
+    private final JLabel rejection = label("knn.rejection", "Why a typed k is refused");
+    private final JSpinner kSpinner = LimitedSpinner.of(Limits.STEPPER_K, "k", 3, 1, this::reject);
+    private final JSlider slider = new JSlider(0, 0, 0);
+    private final Timer player = new Timer(350, e -> playStep());
+    private final JButton play;
+    private NearestTrace trace = NearestTrace.EMPTY;
+    private int index;
+    private BitSet entered = new BitSet(), pruned = new BitSet();
+    private Box[] voxels = new Box[0];
+    private KdTree voxelsOf;
+    private ShapeCollider collider;
+    private Shapes2D colliderOf;
+    private final double[] closest = new double[3];
+    private boolean updating;
+
+    /** A stepper for the query point of {@code model}, searched again on every change of tree or query. */
+    public NearestStepperPanel(WorkbenchModel model) {
+        super(new BorderLayout());
+        this.model = model;
+        setBorder(BorderFactory.createTitledBorder("Nearest-neighbour stepper - place a query with the k-NN query tool (F8)"));
+        JPanel buttons = new JPanel(new FlowLayout(FlowLayout.LEFT, 2, 0));
+        buttons.add(new JLabel("k"));
+        kSpinner.setName("knn.k");
+        kSpinner.setToolTipText("How many nearest objects to search for; " + LimitedSpinner.allowed(Limits.STEPPER_K));
+        kSpinner.addChangeListener(e -> retrace());
+        buttons.add(kSpinner);
+        buttons.add(button("|<", "knn.first", "First step (Ctrl+Shift+Home)", this::first));
+        buttons.add(button("<", "knn.prev", "Step back (Ctrl+Shift+Left)", this::back));
+        buttons.add(button(">", "knn.next", "Step forward (Ctrl+Shift+Right)", this::forward));
+        buttons.add(button(">|", "knn.last", "Last step: the result (Ctrl+Shift+End)", this::last));
+        play = button("Play", "knn.play", "Play or pause the search (Ctrl+Shift+P)", this::togglePlay);
+        buttons.add(play);
+        buttons.add(button("Clear", "knn.clear", "Remove the query point (Ctrl+Shift+K)", model::clearQuery));
+        slider.setName("knn.slider");
+        slider.setToolTipText("Drag to any step of the search");
+        slider.addChangeListener(e -> {
+            if (!updating) show(slider.getValue());
+        });
+        buttons.add(slider);
+        buttons.add(stepLabel);
+        rejection.setForeground(new Color(170, 0, 0));
+        buttons.add(rejection);
+        JPanel labels = new JPanel(new GridLayout(0, 2, 12, 0));
+        for (JLabel l : new JLabel[] {nodeLabel, radiusLabel, testedLabel, bestLabel}) labels.add(l);
+        add(buttons, BorderLayout.NORTH);
+        add(labels, BorderLayout.CENTER);
+        add(resultLabel, BorderLayout.SOUTH);
+        model.addListener(c -> {
+            if (c == WorkbenchModel.Change.TREE || c == WorkbenchModel.Change.QUERY) retrace();
+        });
+        retrace();
+    }
+
+    /** The recorded search of the current query (empty without one). */
+    public NearestTrace trace() { return trace; }
+
+    /** The step shown. */
+    public int index() { return index; }
+
+    /** The k searched for. */
+    public int k() { return ((Number) kSpinner.getValue()).intValue(); }
+
+    /** Sets k (within {@link Limits#STEPPER_K}) and searches again. */
+    public void setK(int k) { kSpinner.setValue(Limits.STEPPER_K.check("k", k)); }
+
+    /** Shows the first step. */
+    public void first() { show(0); }
+
+    /** Shows the step before the current one. */
+    public void back() { show(index - 1); }
+
+    /** Shows the step after the current one. */
+    public void forward() { show(index + 1); }
+
+    /** Shows the last step: the result. */
+    public void last() { show(trace.size() - 1); }
+
+    /** Plays the search a step at a time, or pauses it. */
+    public void togglePlay() {
+        if (player.isRunning()) {
+            player.stop();
+        } else {
+            if (index >= trace.size() - 1) show(0);
+            player.start();
+        }
+        play.setText(player.isRunning() ? "Pause" : "Play");
+    }
+
+    private void playStep() {
+        if (index >= trace.size() - 1) togglePlay();
+        else forward();
+    }
+
+    private void reject(String why) {
+        rejection.setText(why == null ? " " : why);
+    }
+
+    private void retrace() {
+        KdTree tree = model.tree();
+        trace = NearestRecorder.record(tree, model.scene(), model.query(), k());
+        if (colliderOf != model.scene()) {
+            colliderOf = model.scene();
+            collider = new ShapeCollider(colliderOf);
+        }
+        if (trace.size() > 0 && voxelsOf != tree) {   // only with a query: a large tree's index is not free
+            voxels = StepperPanel.voxelIndex(tree);
+            voxelsOf = tree;
+        }
+        updating = true;
+        slider.setMaximum(Math.max(0, trace.size() - 1));
+        updating = false;
+        show(0);
+        resultLabel.setText(resultText());
+    }
+
+    private void show(int i) {
+        index = Math.max(0, Math.min(i, trace.size() - 1));
+        updating = true;
+        slider.setValue(index);
+        updating = false;
+        entered = trace.enteredUpTo(index);
+        pruned = trace.prunedUpTo(index);
+        if (trace.size() == 0) {
+            stepLabel.setText("no query");
+            for (JLabel l : new JLabel[] {nodeLabel, radiusLabel, testedLabel, bestLabel}) l.setText(" ");
+        } else {
+            NearestTrace.Step s = trace.step(index);
+            describe(s);
+            if (s.node() >= 0) model.selectNode(s.node());   // the tree view follows the step
+        }
+        repaintCanvas();
+    }
+
+    private void describe(NearestTrace.Step s) {
+        KdTree t = model.tree();
+        stepLabel.setText(String.format(Locale.ROOT, "step %d / %d: %s", index + 1, trace.size(), kindText(s.kind())));
+        String node = "node: -";
+        if (s.node() >= 0) {
+            node = "node #" + s.node() + (t.isLeaf(s.node())
+                    ? " (leaf, " + t.leafSize(s.node()) + (t.leafSize(s.node()) == 1 ? " object)" : " objects)")
+                    : String.format(Locale.ROOT, " (%s = %.3f)", t.axis(s.node()) == 0 ? "x" : "y", t.split(s.node())));
+            if (!Double.isNaN(s.bound())) node += ", voxel at " + num(s.bound());
+            if (s.near() >= 0) node += ": near #" + s.near() + " first, then far #" + s.far();
+        }
+        nodeLabel.setText(node);
+        radiusLabel.setText("k-th distance (radius): " + num(s.kth()) + "   (" + s.best().size() + " of " + trace.k() + " found)");
+        testedLabel.setText(testedText(s));
+        bestLabel.setText("best: " + listText(s.best(), 6));
+    }
+
+    private static String testedText(NearestTrace.Step s) {
+        return switch (s.kind()) {
+            case TEST -> "tested: object " + s.object() + " at " + num(s.distance())
+                    + (s.improved() ? ": enters the best list" : Double.isInfinite(s.distance()) ? ": flat, never a neighbour"
+                    : ": beyond the k-th, dropped");
+            case MAILBOXED -> "tested: object " + s.object() + " was tested in another leaf (mailbox)";
+            case PRUNE -> "pruned: voxel at " + num(s.bound()) + " >= radius " + num(s.kth());
+            default -> "tested: -";
+        };
+    }
+
+    private String resultText() {
+        if (trace.size() == 0) return "result: place a query point (click with the k-NN query tool)";
+        return String.format(Locale.ROOT, "result: %s  (%d nodes, %d leaves, %d pruned, %d of %d objects tested)",
+                listText(trace.result(), 4), trace.nodes(), trace.leaves(), trace.pruned(), trace.tests(), model.scene().size());
+    }
+
+    /** The first {@code most} neighbours as "#object distance", then "..." if there are more. */
+    static String listText(List<NearestTrace.Neighbour> list, int most) {
+        if (list.isEmpty()) return "-";
+        StringBuilder b = new StringBuilder();
+        for (int i = 0; i < Math.min(most, list.size()); i++)
+            b.append(i == 0 ? "" : ", ").append('#').append(list.get(i).object()).append(' ').append(num(list.get(i).distance()));
+        return b.append(list.size() > most ? ", ... (" + list.size() + ")" : "").toString();
+    }
+
+    private static String kindText(NearestTrace.Kind k) {
+        return switch (k) {
+            case BEGIN -> "start at the root";
+            case INTERIOR -> "interior node: near child first";
+            case LEAF -> "leaf: test its objects";
+            case PRUNE -> "prune: the voxel lies beyond the radius";
+            case TEST -> "test an object's distance";
+            case MAILBOXED -> "object already tested (mailbox)";
+            case END -> "done";
+        };
+    }
+
+    private static String num(double v) {
+        if (Double.isNaN(v)) return "-";
+        if (Double.isInfinite(v)) return v > 0 ? "inf" : "-inf";
+        return String.format(Locale.ROOT, "%.3f", v);
+    }
+
+    private void repaintCanvas() {
+        java.awt.Window w = javax.swing.SwingUtilities.getWindowAncestor(this);
+        if (w != null) w.repaint();
+    }
+
+    // ---- drawing on the canvas ----
+
+    @Override public void paint(Graphics2D g, ViewTransform v) {
+        double[] q = model.query();
+        if (q == null || trace.size() == 0 || voxelsOf != model.tree()) return;
+        NearestTrace.Step s = trace.step(index);
+        for (int n = entered.nextSetBit(0); n >= 0; n = entered.nextSetBit(n + 1))
+            if (model.tree().isLeaf(n)) fill(g, v, n, ENTERED);
+        g.setStroke(DASHED);
+        for (int n = pruned.nextSetBit(0); n >= 0; n = pruned.nextSetBit(n + 1)) {
+            fill(g, v, n, PRUNED_FILL);
+            outline(g, v, n, Palette.PRUNED, DASHED);
+        }
+        if (s.near() >= 0) {
+            fill(g, v, s.near(), NEAR_TINT);
+            fill(g, v, s.far(), FAR_TINT);
+        }
+        if (s.node() >= 0) {
+            Color c = s.kind() == NearestTrace.Kind.PRUNE ? Palette.PRUNED : Palette.CURRENT_NODE;
+            outline(g, v, s.node(), c, THICK);
+            if (!Double.isNaN(s.bound()) && s.node() < voxels.length && voxels[s.node()] != null) {
+                Box b = voxels[s.node()];   // the voxel's point nearest the query: its distance is the bound
+                double bx = Math.min(Math.max(q[0], b.min(0)), b.max(0)), by = Math.min(Math.max(q[1], b.min(1)), b.max(1));
+                g.setColor(c);
+                g.setStroke(THIN);
+                g.draw(TreeCanvas.line(v, q[0], q[1], bx, by));
+                dot(g, v, bx, by, c, 4);
+            }
+        }
+        Shapes2D scene = model.scene();
+        g.setStroke(THIN);
+        for (NearestTrace.Neighbour n : s.best()) {   // each of the best, with a spoke to its point nearest the query
+            if (n.object() >= scene.size() || colliderOf != scene) continue;
+            TreePainter.paintShape(g, scene.get(n.object()), v, Palette.HIT, null, THICK);
+            collider.closestPoint(n.object(), q, closest);
+            g.setColor(Palette.HIT);
+            g.setStroke(THIN);
+            g.draw(TreeCanvas.line(v, q[0], q[1], closest[0], closest[1]));
+        }
+        if (s.kind() == NearestTrace.Kind.TEST && s.object() < scene.size()) {
+            TreePainter.paintShape(g, scene.get(s.object()), v, Palette.TESTED, null, THICK);
+            if (!Double.isNaN(s.closestX())) {
+                g.setColor(Palette.TESTED);
+                g.setStroke(THIN);
+                g.draw(TreeCanvas.line(v, q[0], q[1], s.closestX(), s.closestY()));
+                dot(g, v, s.closestX(), s.closestY(), Palette.TESTED, 4);
+            }
+        }
+        if (Double.isFinite(s.kth())) {
+            double r = s.kth() * v.scale();
+            g.setColor(Palette.QUERY);
+            g.setStroke(DASHED);
+            g.draw(new Ellipse2D.Double(v.screenX(q[0]) - r, v.screenY(q[1]) - r, 2 * r, 2 * r));
+        }
+        dot(g, v, q[0], q[1], Palette.QUERY, 5);
+    }
+
+    private void fill(Graphics2D g, ViewTransform v, int node, Color c) {
+        if (node < 0 || node >= voxels.length || voxels[node] == null) return;
+        g.setColor(c);
+        g.fill(TreePainter.rect(v, voxels[node]));
+    }
+
+    private void outline(Graphics2D g, ViewTransform v, int node, Color c, BasicStroke stroke) {
+        if (node < 0 || node >= voxels.length || voxels[node] == null) return;
+        g.setColor(c);
+        g.setStroke(stroke);
+        g.draw(TreePainter.rect(v, voxels[node]));
+    }
+
+    private static void dot(Graphics2D g, ViewTransform v, double x, double y, Color c, double r) {
+        g.setColor(c);
+        g.fill(new Ellipse2D.Double(v.screenX(x) - r, v.screenY(y) - r, 2 * r, 2 * r));
+    }
+
+    private JButton button(String text, String name, String tip, Runnable r) {
+        JButton b = new JButton(text);
+        b.setName(name);
+        b.setToolTipText(tip);
+        b.setFocusable(false);
+        b.addActionListener(e -> r.run());
+        return b;
+    }
+
+    private static JLabel label(String name, String tip) {
+        JLabel l = new JLabel(" ");
+        l.setName(name);
+        l.setToolTipText(tip);
+        return l;
+    }
+}
