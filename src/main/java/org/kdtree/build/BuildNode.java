@@ -40,6 +40,12 @@ public class BuildNode {
      * with their clipped bounds at the same indices of {@code clipped} (a builder's scratch
      * memory; nothing is copied). A subclass that keeps its clipped bounds in another form passes
      * null and overrides {@link #clippedMin}, {@link #clippedMax} and {@link #clippedBounds}.
+     * @param voxel the node's voxel V
+     * @param refs the array holding the node's primitive indices
+     * @param clipped the array holding their clipped bounds, {@code 2 k} per reference
+     * @param base where the node's references begin in {@code refs}
+     * @param size |T|, how many references the node has
+     * @param depth the node's depth; the root has depth 0
      */
     protected BuildNode(Box voxel, int[] refs, double[] clipped, int base, int size, int depth) {
         this.voxel = voxel;
@@ -51,40 +57,51 @@ public class BuildNode {
         this.k = voxel.dimension();
     }
 
-    /** The voxel V of this node; do not modify. */
+    /** {@return the voxel V of this node}; do not modify it. */
     public Box voxel() { return voxel; }
 
-    /** D(V), the depth of this node; the root has depth 0. */
+    /** {@return D(V), the depth of this node}; the root has depth 0. */
     public int depth() { return depth; }
 
-    /** |T|, the number of primitives overlapping the voxel. */
+    /** {@return |T|, the number of primitives overlapping the voxel} */
     public int size() { return size; }
 
-    /** k, the dimension. */
+    /** {@return k, the dimension} */
     public int dimension() { return k; }
 
-    /** How many references this node's subtree may hold ({@link ReferenceBudget}). */
+    /** {@return how many references this node's subtree may hold ({@link ReferenceBudget})} */
     public long budget() { return budget; }
 
     void budget(long references) {
         this.budget = references;
     }
 
-    /** The index of the j-th primitive of this node. */
+    /**
+     * {@return the index of the j-th primitive of this node}
+     * @param j 0 .. {@link #size()} - 1
+     */
     public int ref(int j) { return refs[base + j]; }
 
-    /** Lower bound on {@code axis} of the part of the j-th primitive inside the voxel. */
+    /**
+     * {@return the lower bound on {@code axis} of the part of the j-th primitive inside the voxel}
+     * @param j 0 .. {@link #size()} - 1
+     * @param axis the axis
+     */
     public double clippedMin(int j, int axis) { return clipped[2 * k * (base + j) + axis]; }
 
-    /** Upper bound on {@code axis} of the part of the j-th primitive inside the voxel. */
+    /**
+     * {@return the upper bound on {@code axis} of the part of the j-th primitive inside the voxel}
+     * @param j 0 .. {@link #size()} - 1
+     * @param axis the axis
+     */
     public double clippedMax(int j, int axis) { return clipped[2 * k * (base + j) + k + axis]; }
 
-    /** The primitive indices, {@link #size()} of them (the node's own array or a copy; do not modify). */
+    /** {@return the primitive indices, {@link #size()} of them} (the node's own array or a copy; do not modify). */
     public int[] refs() {
         return base == 0 && refs.length == size ? refs : java.util.Arrays.copyOfRange(refs, base, base + size);
     }
 
-    /** The flat clipped bounds, {@code 2 k} per reference (the node's own array or a copy; do not modify). */
+    /** {@return the flat clipped bounds, {@code 2 k} per reference} (the node's own array or a copy; do not modify). */
     public double[] clippedBounds() {
         return base == 0 && clipped.length == 2 * k * size ? clipped
                 : java.util.Arrays.copyOfRange(clipped, 2 * k * base, 2 * k * (base + size));
@@ -99,16 +116,18 @@ public class BuildNode {
     /**
      * Remembers the plane a builder chose while deciding {@code terminate}, so that
      * {@code findPlane} need not search again (the SAH finds its best plane once).
+     * @param plane the chosen split plane
+     * @param cost its SAH cost
      */
     public void plan(SplitPlane plane, double cost) {
         this.plannedPlane = plane;
         this.plannedCost = cost;
     }
 
-    /** The plane remembered by {@link #plan}, or null. */
+    /** {@return the plane remembered by {@link #plan}, or null} */
     public SplitPlane plannedPlane() { return plannedPlane; }
 
-    /** The cost remembered by {@link #plan}, or NaN. */
+    /** {@return the cost remembered by {@link #plan}, or NaN} */
     public double plannedCost() { return plannedCost; }
 
     /** Lets go of the arrays once the children are made, so deep recursions hold less memory. */

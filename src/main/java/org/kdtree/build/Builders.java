@@ -23,17 +23,28 @@ public final class Builders {
     private Builders() {
     }
 
-    /** Makes {@code factory}'s builders available under {@code name} (replacing any before). */
+    /**
+     * Makes {@code factory}'s builders available under {@code name} (replacing any before).
+     *
+     * @param name the builder's name, as the command line and workbench know it
+     * @param factory makes a new builder with its default settings
+     */
     public static synchronized void register(String name, Supplier<? extends KdTreeBuilder> factory) {
         BY_NAME.put(name, factory);
     }
 
-    /** The registered names, in registration order. */
+    /** {@return the registered names, in registration order} */
     public static synchronized Set<String> names() {
         return java.util.Collections.unmodifiableSet(new java.util.LinkedHashSet<>(BY_NAME.keySet()));
     }
 
-    /** A new builder of that name, with its default settings. */
+    /**
+     * A new builder of that name, with its default settings.
+     *
+     * @param name a registered name
+     * @return the new builder
+     * @throws IllegalArgumentException if no builder has that name
+     */
     public static synchronized KdTreeBuilder create(String name) {
         Supplier<? extends KdTreeBuilder> f = BY_NAME.get(name);
         if (f == null)

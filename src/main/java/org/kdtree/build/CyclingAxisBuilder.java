@@ -10,7 +10,12 @@ import org.kdtree.limits.Limits;
 public abstract class CyclingAxisBuilder extends KdTreeBuilder {
     private int minPrimitives = 2;
 
-    /** The axis for this node: {@code D(V) mod k}. */
+    /**
+     * The axis for this node: {@code D(V) mod k}.
+     *
+     * @param node the node to split
+     * @return its depth modulo the dimension
+     */
     protected static int axis(BuildNode node) {
         return node.depth() % node.dimension();
     }
@@ -19,10 +24,15 @@ public abstract class CyclingAxisBuilder extends KdTreeBuilder {
         return node.size() <= minPrimitives || node.depth() >= context.depthCap();
     }
 
-    /** Kmintri: a node with at most this many primitives becomes a leaf (default 2). */
+    /** {@return Kmintri}: a node with at most this many primitives becomes a leaf (default 2). */
     public int minPrimitives() { return minPrimitives; }
 
-    /** Sets Kmintri (>= 0). */
+    /**
+     * Sets Kmintri (>= 0).
+     *
+     * @param n Kmintri
+     * @return this builder
+     */
     public CyclingAxisBuilder minPrimitives(int n) {
         this.minPrimitives = Limits.MIN_PRIMITIVES.check("minPrimitives (Kmintri)", n);
         return this;

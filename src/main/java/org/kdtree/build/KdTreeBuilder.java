@@ -56,6 +56,8 @@ public abstract class KdTreeBuilder {
      *
      * @throws java.util.concurrent.CancellationException if the calling thread is interrupted
      *         during the build (the build stops at its next split)
+     * @param primitives the scene's primitives
+     * @return the tree
      */
     public final KdTree build(Primitives primitives) {
         Box rootVoxel = rootVoxel(primitives);
@@ -80,6 +82,9 @@ public abstract class KdTreeBuilder {
      * default Algorithm 1 below. A subclass with an engine of its own (the SAH's event engine)
      * overrides this, and must write the very tree the recursion would. Runs inside the build's
      * fork/join pool when {@link #threads()} is above 1.
+     * @param context the build's primitives, depth cap and fork threshold
+     * @param rootVoxel the scene box, the root's voxel
+     * @param out receives the nodes depth first
      */
     protected void construct(BuildContext context, Box rootVoxel, KdTreeWriter out) {
         Build build = (Build) context;
@@ -97,13 +102,25 @@ public abstract class KdTreeBuilder {
         return Math.max(2048, n / (32 * threads));
     }
 
-    /** The name under which this builder is reported, e.g. "sah". */
+    /** {@return the name under which this builder is reported, e.g. "sah"} */
     public abstract String name();
 
-    /** terminate(T, V): should this node become a leaf? */
+    /**
+     * terminate(T, V): should this node become a leaf?
+     *
+     * @param context the build in progress
+     * @param node the node T, V
+     * @return true to make the node a leaf
+     */
     protected abstract boolean terminate(BuildContext context, BuildNode node);
 
-    /** findPlane(T, V): the split plane for a node that does not terminate. */
+    /**
+     * findPlane(T, V): the split plane for a node that does not terminate.
+     *
+     * @param context the build in progress
+     * @param node the node T, V
+     * @return the plane to split it with
+     */
     protected abstract SplitPlane findPlane(BuildContext context, BuildNode node);
 
     /**
@@ -112,12 +129,22 @@ public abstract class KdTreeBuilder {
      * lying in the plane goes to the side {@link SplitPlane#planarLeft()} names; one crossing the
      * plane goes to both, with its bounds clipped to each child ("perfect splits", unless turned
      * off, in which case the child keeps the box of the parent's bounds cut by the plane).
+     * @param context the build in progress
+     * @param node the node to split
+     * @param plane the split plane, strictly inside the node's voxel
+     * @return the two children with their references
      */
     protected Children split(BuildContext context, BuildNode node, SplitPlane plane) {
         return Partition.split(context, node, plane, perfectSplits);
     }
 
-    /** Makes the root node: every primitive with its own bounds, in the scene's box. */
+    /**
+     * Makes the root node: every primitive with its own bounds, in the scene's box.
+     *
+     * @param context the build in progress
+     * @param rootVoxel the scene box
+     * @return the root node
+     */
     protected BuildNode makeRoot(BuildContext context, Box rootVoxel) {
         Primitives primitives = context.primitives();
         int n = primitives.size(), k = primitives.dimension();
@@ -190,7 +217,12 @@ public abstract class KdTreeBuilder {
         return all;
     }
 
-    /** The default depth cap, {@code round(8 + 1.3 log2 N)}, as pbrt and Wald and Havran use. */
+    /**
+     * The default depth cap, {@code round(8 + 1.3 log2 N)}, as pbrt and Wald and Havran use.
+     *
+     * @param n N, the number of primitives
+     * @return the cap
+     */
     public static int defaultMaxDepth(int n) {
         return automaticDepthCap(n, DEFAULT_DEPTH_FACTOR);
     }
@@ -200,51 +232,72 @@ public abstract class KdTreeBuilder {
         return (int) Math.min(DEPTH_LIMIT, Math.round(8 + factor * log2));
     }
 
-    /** The depth cap a build over {@code n} primitives uses: Kmaxdepth if set, else {@code round(8 + c log2 N)}. */
+    /**
+     * The depth cap a build over {@code n} primitives uses: Kmaxdepth if set, else {@code round(8 + c log2 N)}.
+     *
+     * @param n N, the number of primitives
+     * @return the cap
+     */
     public int depthCap(int n) {
         return maxDepth >= 0 ? maxDepth : automaticDepthCap(n, depthFactor);
     }
 
     // ---- settings ----
 
-    /** Kmaxdepth, or -1 for the default {@code 8 + 1.3 log2 N}. */
+    /** {@return Kmaxdepth, or -1 for the default {@code 8 + 1.3 log2 N}} */
     public int maxDepth() { return maxDepth; }
 
-    /** Sets Kmaxdepth (0 .. 64), or -1 for the default {@code 8 + 1.3 log2 N}. */
+    /**
+     * Sets Kmaxdepth (0 .. 64), or -1 for the default {@code 8 + 1.3 log2 N}.
+     *
+     * @param depth Kmaxdepth, or -1
+     * @return this builder
+     */
     public KdTreeBuilder maxDepth(int depth) {
         this.maxDepth = Limits.MAX_DEPTH.check("maxDepth", depth);
         return this;
     }
 
-    /** c in the automatic depth cap {@code 8 + c log2 N} (default 1.3), used when Kmaxdepth is not set. */
+    /** {@return c in the automatic depth cap {@code 8 + c log2 N}} (default 1.3), used when Kmaxdepth is not set. */
     public double depthFactor() { return depthFactor; }
 
     /**
      * Sets c (0 .. 4) in the automatic depth cap {@code 8 + c log2 N}: a lower cap builds a
      * smaller tree faster at some cost in quality (the SAH's quality presets set it).
+     * @param c the factor
+     * @return this builder
      */
     public KdTreeBuilder depthFactor(double c) {
         this.depthFactor = Limits.DEPTH_FACTOR.check("depthFactor", c);
         return this;
     }
 
-    /** B, the references per input primitive the tree may hold at the most (default 256; {@link ReferenceBudget}). */
+    /**
+     * {@return B, the references per input primitive the tree may hold at the most} (default 256; {@link ReferenceBudget}).
+     */
     public int referenceBudget() { return referenceBudget; }
 
     /**
      * Sets B (1 .. 65,536): the tree holds at most B references per input primitive; where the
      * geometry would need more, nodes become leaves early and the tree says how many
      * ({@link KdTree#budgetLeaves()}).
+     * @param perPrimitive B
+     * @return this builder
      */
     public KdTreeBuilder referenceBudget(int perPrimitive) {
         this.referenceBudget = Limits.REFERENCE_BUDGET.check("referenceBudget", perPrimitive);
         return this;
     }
 
-    /** Kt and Ki: the SAH uses them to choose planes; every tree reports its expected cost with them. */
+    /** {@return Kt and Ki}: the SAH uses them to choose planes; every tree reports its expected cost with them. */
     public CostModel costModel() { return costModel; }
 
-    /** Sets Kt and Ki (default 15 and 20). */
+    /**
+     * Sets Kt and Ki (default 15 and 20).
+     *
+     * @param model Kt and Ki
+     * @return this builder
+     */
     public KdTreeBuilder costModel(CostModel model) {
         Limits.KT.check("Kt", model.kt());
         Limits.KI.check("Ki", model.ki());
@@ -252,28 +305,35 @@ public abstract class KdTreeBuilder {
         return this;
     }
 
-    /** Whether straddling primitives are clipped to each child voxel (default true). */
+    /** {@return whether straddling primitives are clipped to each child voxel} (default true). */
     public boolean perfectSplits() { return perfectSplits; }
 
-    /** Turns perfect splits on (exact clipping, the default) or off (bounding boxes only). */
+    /**
+     * Turns perfect splits on (exact clipping, the default) or off (bounding boxes only).
+     *
+     * @param on true for perfect splits
+     * @return this builder
+     */
     public KdTreeBuilder perfectSplits(boolean on) {
         this.perfectSplits = on;
         return this;
     }
 
-    /** The number of threads a build uses (default 1). */
+    /** {@return the number of threads a build uses} (default 1). */
     public int threads() { return threads; }
 
     /**
      * Sets the number of threads (1 .. 256). With more than one, independent subtrees are built
      * in parallel (fork/join); the tree is the same as with one thread.
+     * @param n the number of threads
+     * @return this builder
      */
     public KdTreeBuilder threads(int n) {
         this.threads = Limits.THREADS.check("threads", n);
         return this;
     }
 
-    /** A one-line summary of the settings, e.g. for the command line. */
+    /** {@return a one-line summary of the settings}, e.g. for the command line. */
     public String describeSettings() {
         return "maxDepth=" + (maxDepth >= 0 ? String.valueOf(maxDepth)
                 : depthFactor == DEFAULT_DEPTH_FACTOR ? "auto" : "auto(8+" + depthFactor + " log2 N)") + " Kt=" + costModel.kt() + " Ki=" + costModel.ki()

@@ -2,6 +2,12 @@ package org.kdtree.build;
 
 /** An algorithm that finds the plane of least SAH cost for one node. */
 public interface PlaneSearch {
-    /** Offers every candidate plane of {@code node} to {@code best}. */
+    /**
+     * Offers every candidate plane of {@code node} to {@code best}.
+     *
+     * @param node the node whose voxel and primitives are searched
+     * @param sah the SAH cost of that voxel
+     * @param best keeps the cheapest plane offered
+     */
     void search(BuildNode node, SahCost sah, SahSplit best);
 }

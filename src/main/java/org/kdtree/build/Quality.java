@@ -21,12 +21,14 @@ public enum Quality {
         this.depthFactor = depthFactor;
     }
 
-    /** c in this preset's depth cap {@code 8 + c log2 N}. */
+    /** {@return c in this preset's depth cap {@code 8 + c log2 N}} */
     public double depthFactor() { return depthFactor; }
 
     /**
      * Sets {@code sah}'s algorithm (event) and automatic depth cap to this preset's, clearing an
      * explicit Kmaxdepth (set one after the preset to override it); other settings are left alone.
+     * @param sah the builder to set
+     * @return {@code sah}
      */
     public SahBuilder applyTo(SahBuilder sah) {
         sah.algorithm(SahBuilder.Algorithm.EVENT).maxDepth(-1);

@@ -39,7 +39,7 @@ public class SahBuilder extends KdTreeBuilder {
 
         Algorithm(PlaneSearch search) { this.search = search; }
 
-        /** Whether this algorithm finds the plane of least cost (NAIVE, SORTED and EVENT do). */
+        /** {@return whether this algorithm finds the plane of least cost} (NAIVE, SORTED and EVENT do). */
         public boolean exact() { return this != BINNED; }
     }
 
@@ -89,42 +89,71 @@ public class SahBuilder extends KdTreeBuilder {
         return node.plannedPlane();
     }
 
-    /** lambda, the weight of a plane that leaves one child empty (default 0.8; 1 disables the bonus). */
+    /** {@return lambda, the weight of a plane that leaves one child empty} (default 0.8; 1 disables the bonus). */
     public double emptyWeight() { return emptyWeight; }
 
-    /** Sets lambda ({@link Limits#LAMBDA}: 0.01 .. 1). */
+    /**
+     * Sets lambda ({@link Limits#LAMBDA}: 0.01 .. 1).
+     *
+     * @param lambda the weight
+     * @return this builder
+     */
     public SahBuilder emptyWeight(double lambda) {
         this.emptyWeight = Limits.LAMBDA.check("emptyWeight (lambda)", lambda);
         return this;
     }
 
+    /** {@return the plane-search algorithm} (default EVENT). */
     public Algorithm algorithm() { return algorithm; }
 
-    /** Chooses the plane-search algorithm (the tree is the same; the build time is not). */
+    /**
+     * Chooses the plane-search algorithm (the tree is the same; the build time is not).
+     *
+     * @param a the algorithm
+     * @return this builder
+     */
     public SahBuilder algorithm(Algorithm a) {
         this.algorithm = java.util.Objects.requireNonNull(a);
         return this;
     }
 
-    /** B, the number of bins per axis of {@link Algorithm#BINNED} (default 32). */
+    /** {@return B, the number of bins per axis of {@link Algorithm#BINNED}} (default 32). */
     public int bins() { return bins; }
 
-    /** Sets B (2 .. 1,000,000) for {@link Algorithm#BINNED}; ignored by the exact algorithms. */
+    /**
+     * Sets B (2 .. 1,000,000) for {@link Algorithm#BINNED}; ignored by the exact algorithms.
+     *
+     * @param b the number of bins
+     * @return this builder
+     */
     public SahBuilder bins(int b) {
         this.bins = Limits.BINS.check("bins", b);
         return this;
     }
 
-    /** Node size below which {@link Algorithm#BINNED} uses the exact sweep (default 64; 0 = bins everywhere). */
+    /**
+     * {@return the node size below which {@link Algorithm#BINNED} uses the exact sweep} (default 64; 0 = bins everywhere).
+     */
     public int exactBelow() { return exactBelow; }
 
-    /** Sets the node size below which {@link Algorithm#BINNED} uses the exact sweep (>= 0). */
+    /**
+     * Sets the node size below which {@link Algorithm#BINNED} uses the exact sweep (>= 0).
+     *
+     * @param n the node size
+     * @return this builder
+     */
     public SahBuilder exactBelow(int n) {
         this.exactBelow = Limits.EXACT_BELOW.check("exactBelow", n);
         return this;
     }
 
-    /** Sets Kt and Ki together. */
+    /**
+     * Sets Kt and Ki together.
+     *
+     * @param kt Kt, the cost of traversing a node
+     * @param ki Ki, the cost of intersecting a primitive
+     * @return this builder
+     */
     public SahBuilder costs(double kt, double ki) {
         costModel(new CostModel(kt, ki));
         return this;
@@ -136,7 +165,12 @@ public class SahBuilder extends KdTreeBuilder {
 
     @Override public SahBuilder referenceBudget(int perPrimitive) { super.referenceBudget(perPrimitive); return this; }
 
-    /** Applies a named preset ({@link Quality}): the event algorithm under that preset's depth cap. */
+    /**
+     * Applies a named preset ({@link Quality}): the event algorithm under that preset's depth cap.
+     *
+     * @param q the preset
+     * @return this builder
+     */
     public SahBuilder quality(Quality q) { return q.applyTo(this); }
 
     @Override public SahBuilder perfectSplits(boolean on) { super.perfectSplits(on); return this; }

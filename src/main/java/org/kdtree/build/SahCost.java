@@ -24,6 +24,12 @@ public final class SahCost {
     /** min, max, face and side per axis, packed in one array: {@code v[4 axis + 0..3]}. */
     private final double[] v;
 
+    /**
+     * The SAH cost of splitting {@code voxel}.
+     * @param model Kt and Ki
+     * @param emptyWeight lambda, the weight of a plane that leaves one child empty
+     * @param voxel the voxel V being split
+     */
     public SahCost(CostModel model, double emptyWeight, Box voxel) {
         this(model, emptyWeight, voxel.dimension());
         for (int a = 0; a < k; a++) {
@@ -84,18 +90,32 @@ public final class SahCost {
         return v[4 * a + 1] - v[4 * a];
     }
 
-    /** Half the voxel's surface area; zero for a voxel no ray can meet with positive probability. */
+    /** {@return half the voxel's surface area}; zero for a voxel no ray can meet with positive probability. */
     public double halfArea() { return halfArea; }
 
-    /** Kt, Ki of this cost. */
+    /** {@return Kt, Ki of this cost} */
     public CostModel model() { return model; }
 
-    /** Whether a plane at {@code x} on {@code axis} is a candidate: strictly inside the voxel. */
+    /**
+     * Whether a plane at {@code x} on {@code axis} is a candidate: strictly inside the voxel.
+     *
+     * @param axis the plane's axis
+     * @param x its position
+     * @return true if strictly inside
+     */
     public boolean inside(int axis, double x) {
         return x > v[4 * axis] && x < v[4 * axis + 1];
     }
 
-    /** C_V(p) for the plane {@code x_axis = x} with {@code nl} and {@code nr} primitives on each side. */
+    /**
+     * C_V(p) for the plane {@code x_axis = x} with {@code nl} and {@code nr} primitives on each side.
+     *
+     * @param axis the plane's axis
+     * @param x its position
+     * @param nl primitives on the left
+     * @param nr primitives on the right
+     * @return the expected cost of the split
+     */
     public double cost(int axis, double x, int nl, int nr) {
         int o = 4 * axis;
         double face = v[o + 2], side = v[o + 3];
@@ -105,7 +125,12 @@ public final class SahCost {
         return (nl == 0 || nr == 0) ? c * emptyWeight : c;
     }
 
-    /** The cost of making the voxel a leaf: |T| Ki. */
+    /**
+     * The cost of making the voxel a leaf: |T| Ki.
+     *
+     * @param n |T|, the number of primitives
+     * @return n Ki
+     */
     public double leafCost(int n) {
         return n * model.ki();
     }

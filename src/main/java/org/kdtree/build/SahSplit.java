@@ -16,6 +16,12 @@ public final class SahSplit {
     /**
      * Offers the plane {@code x_axis = x} with {@code nl} primitives strictly left, {@code nr}
      * strictly right and {@code np} lying in the plane; the planar ones go to the cheaper side.
+     * @param sah the cost of the voxel being split
+     * @param axis the plane's axis
+     * @param x its position
+     * @param nl primitives strictly left
+     * @param np primitives in the plane
+     * @param nr primitives strictly right
      */
     public void offer(SahCost sah, int axis, double x, int nl, int np, int nr) {
         if (!sah.inside(axis, x)) return;
@@ -43,12 +49,13 @@ public final class SahSplit {
 
     boolean planarLeft() { return planarLeft; }
 
-    /** True once some candidate has been offered. */
+    /** {@return true once some candidate has been offered} */
     public boolean found() { return axis >= 0; }
 
+    /** {@return the SAH cost of the best plane}, infinite until one is offered. */
     public double cost() { return cost; }
 
-    /** The plane; call only when {@link #found()}. */
+    /** {@return the plane}; call only when {@link #found()}. */
     public SplitPlane plane() { return new SplitPlane(axis, position, planarLeft); }
 
     @Override public String toString() {

@@ -30,10 +30,15 @@ public class SlidingMidpointBuilder extends KdTreeBuilder {
 
     @Override public String name() { return "sliding-midpoint"; }
 
-    /** The largest number of primitives a leaf holds unless they coincide or the depth cap is reached. */
+    /** {@return the largest number of primitives a leaf holds} unless they coincide or the depth cap is reached. */
     public int leafSize() { return leafSize; }
 
-    /** Sets the leaf size (1 .. 65,536). */
+    /**
+     * Sets the leaf size (1 .. 65,536).
+     *
+     * @param n the leaf size
+     * @return this builder
+     */
     public SlidingMidpointBuilder leafSize(int n) {
         if (n < 1 || n > 1 << 16) throw new IllegalArgumentException("leaf size must be in 1..65536, got " + n);
         this.leafSize = n;

@@ -19,6 +19,12 @@ public final class LibraryExample {
     private LibraryExample() {
     }
 
+    /**
+     * Runs the example.
+     *
+     * @param args an optional OBJ file (default {@code scenes/clustered-spheres.obj})
+     * @throws Exception if the mesh cannot be read
+     */
     public static void main(String[] args) throws Exception {
         TriangleMesh mesh = ObjMeshReader.read(Path.of(args.length > 0 ? args[0] : "scenes/clustered-spheres.obj"));
         KdTree tree = new SahBuilder().quality(Quality.EXACT).build(mesh);                 // Kt 15, Ki 20, lambda 0.8

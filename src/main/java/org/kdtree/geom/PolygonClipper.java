@@ -22,6 +22,11 @@ public final class PolygonClipper {
     private final int k;
     private double[] a, b;
 
+    /**
+     * A clipper for polygons in {@code k} dimensions, with its own scratch buffers.
+     *
+     * @param k the dimension
+     */
     public PolygonClipper(int k) {
         this.k = k;
         int cap = (4 + 2 * k) * k;
@@ -29,7 +34,12 @@ public final class PolygonClipper {
         b = new double[cap];
     }
 
-    /** This thread's clipper for dimension {@code k}. */
+    /**
+     * This thread's clipper for dimension {@code k}.
+     *
+     * @param k the dimension
+     * @return the calling thread's clipper, made on first use
+     */
     public static PolygonClipper forThread(int k) {
         PolygonClipper[] cache = PER_THREAD.get();
         if (k < cache.length) {

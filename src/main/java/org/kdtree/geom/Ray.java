@@ -11,21 +11,38 @@ public final class Ray {
     private final double[] direction;
     private final double[] inverse;
 
+    /**
+     * A ray in {@code k} dimensions with origin and direction all zero; {@link #set} it before use.
+     *
+     * @param k the dimension
+     */
     public Ray(int k) {
         origin = new double[k];
         direction = new double[k];
         inverse = new double[k];
     }
 
-    /** A ray with the given origin and direction (copied). */
+    /**
+     * A ray with the given origin and direction (copied).
+     *
+     * @param origin o, the ray's origin
+     * @param direction d, its direction, not all zero
+     */
     public Ray(double[] origin, double[] direction) {
         this(origin.length);
         set(origin, direction);
     }
 
+    /** {@return k, the dimension} */
     public int dimension() { return origin.length; }
 
-    /** Sets origin and direction (copied); the direction must not be all zero. */
+    /**
+     * Sets origin and direction (copied); the direction must not be all zero.
+     *
+     * @param o the origin
+     * @param d the direction
+     * @return this ray
+     */
     public Ray set(double[] o, double[] d) {
         for (int a = 0; a < origin.length; a++) {
             origin[a] = o[a];
@@ -35,7 +52,17 @@ public final class Ray {
         return this;
     }
 
-    /** Sets a 3-D ray. */
+    /**
+     * Sets a 3-D ray.
+     *
+     * @param ox origin x
+     * @param oy origin y
+     * @param oz origin z
+     * @param dx direction x
+     * @param dy direction y
+     * @param dz direction z
+     * @return this ray
+     */
     public Ray set(double ox, double oy, double oz, double dx, double dy, double dz) {
         origin[0] = ox; origin[1] = oy; origin[2] = oz;
         direction[0] = dx; direction[1] = dy; direction[2] = dz;
@@ -43,7 +70,15 @@ public final class Ray {
         return this;
     }
 
-    /** Sets a 2-D ray. */
+    /**
+     * Sets a 2-D ray.
+     *
+     * @param ox origin x
+     * @param oy origin y
+     * @param dx direction x
+     * @param dy direction y
+     * @return this ray
+     */
     public Ray set(double ox, double oy, double dx, double dy) {
         origin[0] = ox; origin[1] = oy;
         direction[0] = dx; direction[1] = dy;
@@ -51,12 +86,31 @@ public final class Ray {
         return this;
     }
 
+    /**
+     * {@return coordinate {@code axis} of the origin}
+     *
+     * @param axis the axis
+     */
     public double origin(int axis) { return origin[axis]; }
+    /**
+     * {@return component {@code axis} of the direction}
+     *
+     * @param axis the axis
+     */
     public double direction(int axis) { return direction[axis]; }
-    /** {@code 1 / direction(axis)}, +-infinity for a zero component of either sign. */
+    /**
+     * {@return {@code 1 / direction(axis)}}, +-infinity for a zero component of either sign.
+     *
+     * @param axis the axis
+     */
     public double inverseDirection(int axis) { return inverse[axis]; }
 
-    /** The point at parameter t on {@code axis}. */
+    /**
+     * {@return coordinate {@code axis} of the point at parameter t}
+     *
+     * @param t the ray parameter
+     * @param axis the axis
+     */
     public double at(double t, int axis) { return origin[axis] + t * direction[axis]; }
 
     @Override public String toString() {

@@ -34,7 +34,13 @@ public record Tolerance(double relative, double absolute) {
     /** Default for comparing double-precision ray distances. */
     public static final Tolerance DEFAULT = new Tolerance(1e-9, 1e-12);
 
-    /** True when {@code a} and {@code b} agree within this tolerance. */
+    /**
+     * True when {@code a} and {@code b} agree within this tolerance.
+     *
+     * @param a one value
+     * @param b the other
+     * @return whether they agree
+     */
     public boolean equal(double a, double b) {
         if (a == b) return true;
         double scale = Math.max(Math.abs(a), Math.abs(b));

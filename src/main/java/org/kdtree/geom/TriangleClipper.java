@@ -28,7 +28,7 @@ public final class TriangleClipper {
     /** The bounds of the two halves in {@link #clipSplit}: min x, y, z, then max x, y, z. */
     private final double[] lower = new double[6], upper = new double[6];
 
-    /** This thread's clipper. */
+    /** {@return this thread's clipper} */
     public static TriangleClipper forThread() {
         return PER_THREAD.get();
     }
@@ -37,6 +37,13 @@ public final class TriangleClipper {
      * Bounds of the part inside {@code box} of the triangle whose corners are the points
      * {@code i0, i1, i2} (indices of x, y, z triples) of {@code vertices}; {@code dest} is set
      * empty when the triangle misses the box. Same result as {@link PolygonClipper#clip} on the three corners.
+     * @param vertices x, y, z per vertex
+     * @param i0 the first corner's vertex index
+     * @param i1 the second corner's vertex index
+     * @param i2 the third corner's vertex index
+     * @param box the voxel to clip to
+     * @param dest receives the bounds
+     * @return {@code dest}
      */
     public Box clip(double[] vertices, int i0, int i1, int i2, Box box, Box dest) {
         int p0 = 3 * i0, p1 = 3 * i1, p2 = 3 * i2;
@@ -52,6 +59,15 @@ public final class TriangleClipper {
      * plane {@code x_axis = xi}: into {@code left} and {@code right}, each set empty when that part
      * is. Both are padded and clamped to their half of the box as {@link #clip} does; they may
      * differ from clipping to each half from scratch by rounding, never beyond the padding.
+     * @param vertices x, y, z per vertex
+     * @param i0 the first corner's vertex index
+     * @param i1 the second corner's vertex index
+     * @param i2 the third corner's vertex index
+     * @param box the voxel being split
+     * @param axis the split plane's axis
+     * @param xi the split plane's position
+     * @param left receives the bounds of the part below the plane
+     * @param right receives the bounds of the part above the plane
      */
     public void clipSplit(double[] vertices, int i0, int i1, int i2, Box box, int axis, double xi, Box left, Box right) {
         int p0 = 3 * i0, p1 = 3 * i1, p2 = 3 * i2;

@@ -22,20 +22,37 @@ import org.kdtree.limits.Limits;
  * tooltip and, for a typed value outside it, says so below instead of reverting silently.
  */
 public final class BuilderPanel extends JPanel {
+    /** The model whose builder settings this panel edits. */
     private final WorkbenchModel model;
+    /** The builder's name. */
     private final JComboBox<String> builder = new JComboBox<>(Builders.names().toArray(String[]::new));
+    /** Why a typed value is refused, or blank. */
     private final JLabel rejection = new JLabel(" ");
+    /** Kt, the cost of traversing a node. */
     private final JSpinner kt = LimitedSpinner.of(Limits.KT, "Kt", 15, 1, this::reject);
+    /** Ki, the cost of intersecting an object. */
     private final JSpinner ki = LimitedSpinner.of(Limits.KI, "Ki", 20, 1, this::reject);
+    /** lambda, the SAH's weight of a plane that leaves one child empty. */
     private final JSpinner lambda = LimitedSpinner.of(Limits.LAMBDA, "lambda", 0.8, 0.05, this::reject);
+    /** lambda as a slider, in hundredths. */
     private final JSlider lambdaSlider = new JSlider((int) Math.round(Limits.LAMBDA.min() * 100), 100, 80);
+    /** The SAH's plane-search algorithm (NAIVE, O(N^2), is left out: too slow to be live). */
     private final JComboBox<SahBuilder.Algorithm> algorithm = new JComboBox<>(java.util.Arrays.stream(SahBuilder.Algorithm.values())
             .filter(a -> a != SahBuilder.Algorithm.NAIVE).toArray(SahBuilder.Algorithm[]::new)); // O(N^2): too slow to be live
+    /** Kmintri, for the axis-cycling builders. */
     private final JSpinner minPrims = LimitedSpinner.of(Limits.MIN_PRIMITIVES, "Kmintri", 2, 1, this::reject);
+    /** Kmaxdepth, or -1 for the automatic depth cap. */
     private final JSpinner maxDepth = LimitedSpinner.of(Limits.MAX_DEPTH, "Kmaxdepth", -1, 1, this::reject);
+    /** The automatic depth cap the current scene gets. */
     private final JLabel autoDepth = new JLabel();
+    /** True while the panel sets its own controls, so that their listeners do not write back. */
     private boolean updating;
 
+    /**
+     * A panel editing the builder settings of {@code model}.
+     *
+     * @param model the workbench's model
+     */
     public BuilderPanel(WorkbenchModel model) {
         super(new GridBagLayout());
         this.model = model;
@@ -88,7 +105,11 @@ public final class BuilderPanel extends JPanel {
         rejection.setToolTipText(why);
     }
 
-    /** Selects the builder at {@code index} in the list (keyboard shortcut). */
+    /**
+     * Selects the builder at {@code index} in the list (keyboard shortcut).
+     *
+     * @param index 0-based, in {@link org.kdtree.build.Builders#names()} order
+     */
     public void selectBuilder(int index) {
         if (index < builder.getItemCount()) builder.setSelectedIndex(index);
     }

@@ -24,15 +24,50 @@ public record BuilderSettings(String builder, double kt, double ki, double lambd
     /** SAH with Wald and Havran's constants and the library's default plane search. */
     public static final BuilderSettings DEFAULT = new BuilderSettings("sah", 15, 20, 0.8, 2, -1, new SahBuilder().algorithm());
 
+    /**
+     * {@return these settings with another builder}
+     *
+     * @param name the builder's name
+     */
     public BuilderSettings withBuilder(String name) { return new BuilderSettings(name, kt, ki, lambda, minPrims, maxDepth, algorithm); }
+    /**
+     * {@return these settings with another Kt}
+     *
+     * @param v Kt, the cost of traversing a node
+     */
     public BuilderSettings withKt(double v) { return new BuilderSettings(builder, v, ki, lambda, minPrims, maxDepth, algorithm); }
+    /**
+     * {@return these settings with another Ki}
+     *
+     * @param v Ki, the cost of intersecting an object
+     */
     public BuilderSettings withKi(double v) { return new BuilderSettings(builder, kt, v, lambda, minPrims, maxDepth, algorithm); }
+    /**
+     * {@return these settings with another lambda}
+     *
+     * @param v lambda, the weight of a plane that leaves one child empty
+     */
     public BuilderSettings withLambda(double v) { return new BuilderSettings(builder, kt, ki, v, minPrims, maxDepth, algorithm); }
+    /**
+     * {@return these settings with another Kmintri}
+     *
+     * @param v Kmintri
+     */
     public BuilderSettings withMinPrims(int v) { return new BuilderSettings(builder, kt, ki, lambda, v, maxDepth, algorithm); }
+    /**
+     * {@return these settings with another Kmaxdepth}
+     *
+     * @param v Kmaxdepth, or -1 for the automatic depth cap
+     */
     public BuilderSettings withMaxDepth(int v) { return new BuilderSettings(builder, kt, ki, lambda, minPrims, v, algorithm); }
+    /**
+     * {@return these settings with another plane-search algorithm}
+     *
+     * @param a the SAH's algorithm
+     */
     public BuilderSettings withAlgorithm(SahBuilder.Algorithm a) { return new BuilderSettings(builder, kt, ki, lambda, minPrims, maxDepth, a); }
 
-    /** A new builder configured with these settings. */
+    /** {@return a new builder configured with these settings} */
     public KdTreeBuilder create() {
         KdTreeBuilder b = Builders.create(builder);
         b.costModel(new CostModel(kt, ki));
@@ -42,12 +77,20 @@ public record BuilderSettings(String builder, double kt, double ki, double lambd
         return b;
     }
 
-    /** Whether lambda applies to the builder of that name (an SAH builder). */
+    /**
+     * {@return whether lambda applies to the builder of that name} (an SAH builder).
+     *
+     * @param builder a builder's name
+     */
     public static boolean usesLambda(String builder) {
         return Builders.create(builder) instanceof SahBuilder;
     }
 
-    /** Whether Kmintri applies to the builder of that name (the talk's basic, axis-cycling builders). */
+    /**
+     * {@return whether Kmintri applies to the builder of that name} (the talk's basic, axis-cycling builders).
+     *
+     * @param builder a builder's name
+     */
     public static boolean usesMinPrims(String builder) {
         return Builders.create(builder) instanceof CyclingAxisBuilder;
     }

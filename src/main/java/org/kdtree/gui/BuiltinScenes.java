@@ -17,7 +17,7 @@ public final class BuiltinScenes {
     private BuiltinScenes() {
     }
 
-    /** The built-in scenes by name, in menu order; the first is the one the workbench opens on. */
+    /** {@return the built-in scenes by name, in menu order}; the first is the one the workbench opens on. */
     public static Map<String, Supplier<List<Shape2D>>> all() {
         Map<String, Supplier<List<Shape2D>>> m = new LinkedHashMap<>();
         m.put("Talk figures", BuiltinScenes::talkFigures);
@@ -28,7 +28,7 @@ public final class BuiltinScenes {
         return m;
     }
 
-    /** The random generators, each taking a count. */
+    /** {@return the random generators by name, each taking a count} */
     public static Map<String, java.util.function.IntFunction<List<Shape2D>>> generators() {
         Map<String, java.util.function.IntFunction<List<Shape2D>>> m = new LinkedHashMap<>();
         m.put("Uniform", n -> uniform(n, n));
@@ -38,7 +38,9 @@ public final class BuiltinScenes {
         return m;
     }
 
-    /** Like the talk's figures 2-5: two small objects at the left, a long thin one, a cluster at the right. */
+    /**
+     * {@return a scene like the talk's figures 2-5}: two small objects at the left, a long thin one, a cluster at the right.
+     */
     public static List<Shape2D> talkFigures() {
         return List.of(
                 new Shape2D.Rect(1, 1, 2, 2),
@@ -50,7 +52,12 @@ public final class BuiltinScenes {
                 new Shape2D.Point(9, 2));
     }
 
-    /** {@code n} small triangles spread uniformly. */
+    /**
+     * {@return {@code n} small triangles spread uniformly}
+     *
+     * @param n the number of triangles
+     * @param seed the random seed
+     */
     public static List<Shape2D> uniform(int n, long seed) {
         Random r = new Random(seed);
         List<Shape2D> out = new ArrayList<>(n);
@@ -59,7 +66,12 @@ public final class BuiltinScenes {
         return out;
     }
 
-    /** {@code n} small triangles in a few tight clusters, with empty space between: where the SAH shines. */
+    /**
+     * {@return {@code n} small triangles in a few tight clusters, with empty space between}: where the SAH shines.
+     *
+     * @param n the number of triangles
+     * @param seed the random seed
+     */
     public static List<Shape2D> clustered(int n, long seed) {
         Random r = new Random(seed);
         int k = 5;
@@ -75,14 +87,19 @@ public final class BuiltinScenes {
         return out;
     }
 
-    /** A long thin diagonal segment across a field of small rectangles: it lands in many leaves. */
+    /** {@return a long thin diagonal segment across a field of small rectangles}: it lands in many leaves. */
     public static List<Shape2D> longThin() {
         List<Shape2D> out = new ArrayList<>(uniformRects(40, 7));
         out.add(new Shape2D.Segment(0.2, 0.5, 9.8, 9.6));
         return out;
     }
 
-    /** {@code n} large rectangles piled on one another: no plane separates them. */
+    /**
+     * {@return {@code n} large rectangles piled on one another}: no plane separates them.
+     *
+     * @param n the number of rectangles
+     * @param seed the random seed
+     */
     public static List<Shape2D> overlapping(int n, long seed) {
         Random r = new Random(seed);
         List<Shape2D> out = new ArrayList<>(n);
@@ -93,7 +110,12 @@ public final class BuiltinScenes {
         return out;
     }
 
-    /** Points, segments, rectangles and triangles, in turn. */
+    /**
+     * {@return points, segments, rectangles and triangles, in turn}
+     *
+     * @param n the number of objects
+     * @param seed the random seed
+     */
     public static List<Shape2D> mixed(int n, long seed) {
         Random r = new Random(seed);
         List<Shape2D> out = new ArrayList<>(n);

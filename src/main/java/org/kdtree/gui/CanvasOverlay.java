@@ -4,5 +4,11 @@ import java.awt.Graphics2D;
 
 /** Something drawn over the scene and tree, such as the ray and the traversal's current step. */
 public interface CanvasOverlay {
+    /**
+     * Paints over the scene and tree, in screen coordinates.
+     *
+     * @param g the canvas's graphics
+     * @param view maps scene coordinates to pixels
+     */
     void paint(Graphics2D g, ViewTransform view);
 }

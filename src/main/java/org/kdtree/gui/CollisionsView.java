@@ -46,26 +46,48 @@ public final class CollisionsView extends JPanel {
     /** How far above the scene balls start, in scene extents (the first drop is spread over it). */
     private static final double DROP_HEIGHT = 0.6;
 
+    /** The model whose scene and tree the balls collide with. */
     private final WorkbenchModel model;
+    /** The panel the balls and objects are drawn in. */
     private final Arena arena = new Arena();
+    /** The number of balls to drop. */
     private final JSpinner count = LimitedSpinner.of(Limits.BALLS, "balls", 300, 50, this::reject);
+    /** Starts or stops the balls. */
     private final JButton start = button("Start", "collide.start", "Start or stop the balls (Ctrl+Shift+B)", this::toggle);
+    /** Frames simulated since the balls were dropped. */
     private final JLabel frameLabel = label("collide.frame", "Frames simulated since the balls were dropped");
+    /** Ball/object tests the tree needed in the last frame. */
     private final JLabel testsLabel = label("collide.tests", "Ball/object tests the tree needed in the last frame");
+    /** Tests brute force would need in the last frame. */
     private final JLabel bruteLabel = label("collide.brute", "Tests brute force would need in the last frame: every object per sweep");
+    /** The tree's tests as a share of brute force's. */
     private final JLabel ratioLabel = label("collide.ratio", "The tree's tests as a share of brute force's");
+    /** Why a typed ball count is refused, or blank. */
     private final JLabel rejection = label("collide.rejection", "Why a typed ball count is refused");
+    /** Advances the simulation one frame per tick. */
     private final Timer timer = new Timer(FRAME_MILLIS, e -> frame());
+    /** Drops the balls at random places (fixed seed: the same drop every time). */
     private final Random random = new Random(16);
+    /** The balls, or null before the first drop. */
     private BallSimulation sim;
+    /** The tree the balls were dropped into. */
     private KdTree simTree;
+    /** The scene the balls were dropped into. */
     private Shapes2D simScene;
+    /** The box the balls bounce in. */
     private Box simBox;
+    /** The scene's extent, which ball sizes and speeds scale with. */
     private double extent;
+    /** Frames simulated since the balls were last dropped. */
     private long frames;
+    /** True when the tree changed since the balls were dropped: the next start drops them again. */
     private boolean stale = true;
 
-    /** A view over the scene and tree of {@code model}; the balls are dropped when it is first shown. */
+    /**
+     * A view over the scene and tree of {@code model}; the balls are dropped when it is first shown.
+     *
+     * @param model the workbench's model
+     */
     public CollisionsView(WorkbenchModel model) {
         super(new BorderLayout());
         this.model = model;
@@ -97,15 +119,15 @@ public final class CollisionsView extends JPanel {
         });
     }
 
-    /** Whether the balls are moving (the timer runs). */
+    /** {@return whether the balls are moving} (the timer runs). */
     public boolean running() { return timer.isRunning(); }
 
-    /** Frames simulated since the balls were last dropped. */
+    /** {@return frames simulated since the balls were last dropped} */
     public long frames() { return frames; }
 
-    /** Tests the tree needed in the last frame. */
+    /** {@return tests the tree needed in the last frame} */
     public long lastTests() { return sim == null ? 0 : sim.lastTests(); }
-    /** Tests brute force would have needed in the last frame. */
+    /** {@return tests brute force would have needed in the last frame} */
     public long lastBruteForceTests() { return sim == null ? 0 : sim.lastBruteForceTests(); }
 
     /** Starts the balls, or stops them. */

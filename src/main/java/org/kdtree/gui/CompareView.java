@@ -25,11 +25,21 @@ public final class CompareView extends JPanel {
     /** The builders compared, in column order. */
     public static final List<String> BUILDERS = List.of("median-plane", "object-median", "sah");
 
+    /** The model whose scene, ray and settings the columns use. */
     private final WorkbenchModel model;
+    /** Records a ray's traversal in each column's tree. */
     private final StepperPanel.Tracer tracer;
+    /** One column per compared builder. */
     private final Column[] columns = new Column[BUILDERS.size()];
+    /** True when scene, ray or settings changed while the view was hidden: it refreshes when shown. */
     private boolean stale = true;
 
+    /**
+     * A view comparing the builders on the scene and ray of {@code model}.
+     *
+     * @param model the workbench's model
+     * @param tracer records the ray's traversal in each tree
+     */
     public CompareView(WorkbenchModel model, StepperPanel.Tracer tracer) {
         super(new GridLayout(1, BUILDERS.size(), 6, 0));
         this.model = model;
@@ -57,7 +67,11 @@ public final class CompareView extends JPanel {
         for (Column c : columns) c.update(scene, ray);
     }
 
-    /** The statistics text of a builder's column (for tests). */
+    /**
+     * {@return the statistics text of a builder's column} (for tests).
+     *
+     * @param builder the builder's name
+     */
     public String statsText(String builder) {
         return columns[BUILDERS.indexOf(builder)].stats.getText();
     }

@@ -25,6 +25,11 @@ public final class KdTreeModel implements TreeModel {
 
     private final KdTree tree;
 
+    /**
+     * A Swing tree model over the nodes of {@code tree}.
+     *
+     * @param tree the kd-tree
+     */
     public KdTreeModel(KdTree tree) {
         this.tree = tree;
     }
@@ -46,7 +51,11 @@ public final class KdTreeModel implements TreeModel {
         return c == tree.leftChild(p) ? 0 : c == tree.rightChild(p) ? 1 : -1;
     }
 
-    /** The path from the root to {@code node}: nodes are stored depth first, so each step is one comparison. */
+    /**
+     * {@return the path from the root to {@code node}}: nodes are stored depth first, so each step is one comparison.
+     *
+     * @param node a node's index
+     */
     public TreePath pathTo(int node) {
         List<Object> path = new ArrayList<>();
         int n = 0;

@@ -62,6 +62,11 @@ public final class NearestRecorder {
     /**
      * Records the search for the {@code k} objects of {@code scene} nearest to {@code query}
      * {x, y} through {@code tree} (built over {@code scene}); the empty trace without a query.
+     * @param tree the kd-tree over {@code scene}
+     * @param scene the 2-D scene
+     * @param query the query point {x, y}, or null
+     * @param k the number of neighbours wanted
+     * @return the recorded search
      */
     public static NearestTrace record(KdTree tree, Shapes2D scene, double[] query, int k) {
         if (query == null) return NearestTrace.EMPTY;

@@ -38,29 +38,54 @@ public final class NearestStepperPanel extends JPanel implements CanvasOverlay {
             new float[] {6, 4}, 0);
     private static final BasicStroke THICK = new BasicStroke(3f), THIN = new BasicStroke(1.5f);
 
+    /** The model whose scene, tree and query point are searched. */
     private final WorkbenchModel model;
+    /** Which event of the search is shown. */
     private final JLabel stepLabel = label("knn.label", "Which event of the nearest-neighbour search is shown");
+    /** The node the search is at, and the distance from the query to its voxel. */
     private final JLabel nodeLabel = label("knn.node", "The node the search is at, and the distance from the query to its voxel");
+    /** The k-th best distance so far: the search radius. */
     private final JLabel radiusLabel = label("knn.kth", "The k-th best distance so far: the search radius (dashed circle); voxels beyond it are pruned");
+    /** The object tested at this step and its exact distance. */
     private final JLabel testedLabel = label("knn.tested", "The object tested at this step (red) and its exact distance");
+    /** The k best objects so far, nearest first. */
     private final JLabel bestLabel = label("knn.best", "The k best objects so far (black), nearest first");
+    /** The k nearest objects and the search's cost. */
     private final JLabel resultLabel = label("knn.result", "The k nearest objects and the search's cost");
+    /** Why a typed k is refused, or blank. */
     private final JLabel rejection = label("knn.rejection", "Why a typed k is refused");
+    /** The k searched for. */
     private final JSpinner kSpinner = LimitedSpinner.of(Limits.STEPPER_K, "k", 3, 1, this::reject);
+    /** Chooses the step shown. */
     private final JSlider slider = new JSlider(0, 0, 0);
+    /** Advances one step per tick while playing. */
     private final Timer player = new Timer(350, e -> playStep());
+    /** Starts or stops playing. */
     private final JButton play;
+    /** The recorded search of the current query. */
     private NearestTrace trace = NearestTrace.EMPTY;
+    /** The step shown. */
     private int index;
+    /** Nodes entered, and nodes pruned, up to the step shown. */
     private BitSet entered = new BitSet(), pruned = new BitSet();
+    /** The voxel of each node of {@link #voxelsOf}. */
     private Box[] voxels = new Box[0];
+    /** The tree {@link #voxels} belong to. */
     private KdTree voxelsOf;
+    /** Exact distances from the query to the objects of {@link #colliderOf}. */
     private ShapeCollider collider;
+    /** The scene {@link #collider} measures. */
     private Shapes2D colliderOf;
+    /** Scratch for the closest point of an object to the query. */
     private final double[] closest = new double[3];
+    /** True while the panel sets its own controls, so that their listeners do not act. */
     private boolean updating;
 
-    /** A stepper for the query point of {@code model}, searched again on every change of tree or query. */
+    /**
+     * A stepper for the query point of {@code model}, searched again on every change of tree or query.
+     *
+     * @param model the workbench's model
+     */
     public NearestStepperPanel(WorkbenchModel model) {
         super(new BorderLayout());
         this.model = model;
@@ -98,16 +123,20 @@ public final class NearestStepperPanel extends JPanel implements CanvasOverlay {
         retrace();
     }
 
-    /** The recorded search of the current query (empty without one). */
+    /** {@return the recorded search of the current query} (empty without one). */
     public NearestTrace trace() { return trace; }
 
-    /** The step shown. */
+    /** {@return the step shown} */
     public int index() { return index; }
 
-    /** The k searched for. */
+    /** {@return the k searched for} */
     public int k() { return ((Number) kSpinner.getValue()).intValue(); }
 
-    /** Sets k (within {@link Limits#STEPPER_K}) and searches again. */
+    /**
+     * Sets k (within {@link Limits#STEPPER_K}) and searches again.
+     *
+     * @param k the number of neighbours
+     */
     public void setK(int k) { kSpinner.setValue(Limits.STEPPER_K.check("k", k)); }
 
     /** Shows the first step. */

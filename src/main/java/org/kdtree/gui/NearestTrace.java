@@ -65,18 +65,30 @@ public record NearestTrace(List<Step> steps, double[] query, int k, long nodes, 
     /** A trace with no steps, for when there is no query. */
     public static final NearestTrace EMPTY = new NearestTrace(List.of(), null, 0, 0, 0, 0, 0, List.of());
 
-    /** The number of steps. */
+    /** {@return the number of steps} */
     public int size() { return steps.size(); }
 
-    /** Step {@code i}, 0 first. */
+    /**
+     * {@return step {@code i}, 0 first}
+     *
+     * @param i the step's index
+     */
     public Step step(int i) { return steps.get(i); }
 
-    /** The nodes entered in steps 0 .. {@code last}. */
+    /**
+     * {@return the nodes entered in steps 0 .. {@code last}}
+     *
+     * @param last the last step counted
+     */
     public BitSet enteredUpTo(int last) {
         return upTo(last, false);
     }
 
-    /** The nodes pruned in steps 0 .. {@code last}. */
+    /**
+     * {@return the nodes pruned in steps 0 .. {@code last}}
+     *
+     * @param last the last step counted
+     */
     public BitSet prunedUpTo(int last) {
         return upTo(last, true);
     }

@@ -7,22 +7,37 @@ public final class Palette {
     private Palette() {
     }
 
+    /** The canvas's background. */
     public static final Color BACKGROUND = Color.WHITE;
     /** Fill of empty leaves: the talk's figures shade the voxels that hold nothing. */
     public static final Color EMPTY_VOXEL = new Color(0xD8, 0xE4, 0xD0);
+    /** Split lines, clipped to the voxel they cut. */
     public static final Color SPLIT_LINE = new Color(0x20, 0x20, 0x20);
+    /** The outline of the root voxel. */
     public static final Color ROOT_BOX = new Color(0x60, 0x60, 0x60);
+    /** Object outlines. */
     public static final Color OBJECT = new Color(0x2B, 0x5C, 0xB8);
+    /** Object fills. */
     public static final Color OBJECT_FILL = new Color(0x9C, 0xB8, 0xE8);
+    /** The selected leaf's voxel. */
     public static final Color HIGHLIGHT_VOXEL = new Color(0xFF, 0xF2, 0xA8);
+    /** The objects of the selected leaf. */
     public static final Color HIGHLIGHT_OBJECT = new Color(0xE0, 0x6A, 0x00);
+    /** The shape being edited. */
     public static final Color SELECTED_SHAPE = new Color(0xC0, 0x00, 0xC0);
+    /** The cast ray. */
     public static final Color RAY = new Color(0xD0, 0x10, 0x10);
+    /** The traversal stepper's current node. */
     public static final Color CURRENT_NODE = new Color(0xFF, 0xB0, 0x40);
+    /** The near child of the current interior node. */
     public static final Color NEAR_CHILD = new Color(0x40, 0xB0, 0x40);
+    /** The far child of the current interior node. */
     public static final Color FAR_CHILD = new Color(0x40, 0x80, 0xE0);
+    /** Far children saved on the stack. */
     public static final Color STACKED = new Color(0xA0, 0x60, 0xE0);
+    /** Objects tested in the current leaf. */
     public static final Color TESTED = new Color(0xE0, 0x30, 0x30);
+    /** The closest hit. */
     public static final Color HIT = new Color(0x00, 0x00, 0x00);
     /** The nearest-neighbour stepper's query point and its search radius (the k-th best distance). */
     public static final Color QUERY = new Color(0xC0, 0x00, 0x80);

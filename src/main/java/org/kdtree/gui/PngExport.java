@@ -10,6 +10,13 @@ public final class PngExport {
     private PngExport() {
     }
 
+    /**
+     * Writes {@code image} as a PNG file.
+     *
+     * @param image the picture
+     * @param file the PNG file, replaced if it exists
+     * @throws IOException if writing fails
+     */
     public static void write(BufferedImage image, Path file) throws IOException {
         if (!ImageIO.write(image, "png", file.toFile())) throw new IOException("no PNG writer available");
     }

@@ -16,18 +16,32 @@ import org.kdtree.shape.Shape2D;
 
 /** Picks a built-in scene, or generates a random one with a given count. */
 public final class ScenePanel extends JPanel {
+    /** The built-in scenes by name. */
     private final Map<String, Supplier<List<Shape2D>>> builtins = BuiltinScenes.all();
+    /** The random generators by name. */
     private final Map<String, IntFunction<List<Shape2D>>> generators = BuiltinScenes.generators();
+    /** Chooses a built-in scene. */
     private final JComboBox<String> scene = new JComboBox<>(builtins.keySet().toArray(String[]::new));
+    /** Chooses a random generator. */
     private final JComboBox<String> generator = new JComboBox<>(generators.keySet().toArray(String[]::new));
+    /** Generates a random scene. */
     private final JButton generate = new JButton("Generate");
+    /** How many objects the generator makes. */
     private final JSpinner count = LimitedSpinner.of(Limits.SCENE_OBJECTS, "objects", 500, 100,
             why -> generate.setEnabled(why == null));
+    /** Runs after a new scene replaced the old one. */
     private final Runnable onLoaded;
+    /** True while the panel names the loaded scene in its list, so that the list's listener does not load it again. */
     private boolean naming;
+    /** The model whose scene this panel replaces. */
     private final WorkbenchModel model;
 
-    /** {@code onLoaded} runs after a new scene replaced the old one (the workbench refits the view). */
+    /**
+     * {@code onLoaded} runs after a new scene replaced the old one (the workbench refits the view).
+     *
+     * @param model the workbench's model
+     * @param onLoaded runs after a new scene replaced the old one
+     */
     public ScenePanel(WorkbenchModel model, Runnable onLoaded) {
         super(new GridLayout(0, 1, 2, 2));
         this.model = model;
@@ -75,7 +89,11 @@ public final class ScenePanel extends JPanel {
         }
     }
 
-    /** Loads built-in scene number {@code index} (0-based). */
+    /**
+     * Loads built-in scene number {@code index} (0-based).
+     *
+     * @param index the scene's position in the list
+     */
     public void selectBuiltin(int index) {
         if (index < scene.getItemCount()) {
             if (scene.getSelectedIndex() == index) loadBuiltin((String) scene.getSelectedItem());
@@ -83,6 +101,11 @@ public final class ScenePanel extends JPanel {
         }
     }
 
+    /**
+     * Loads the built-in scene of that name.
+     *
+     * @param name a name from {@link BuiltinScenes#all()}
+     */
     public void loadBuiltin(String name) {
         model.setScene(name, builtins.get(name).get());
         onLoaded.run();

@@ -13,9 +13,16 @@ import org.kdtree.tree.TreeStats;
 
 /** The statistics of the current tree: build time, nodes, leaves, empty leaves, depth, refs per leaf, SAH cost. */
 public final class StatsPanel extends JPanel {
+    /** The value label of each statistic, by name. */
     private final Map<String, JLabel> values = new LinkedHashMap<>();
+    /** Shown while a background build runs. */
     private final JProgressBar progress = new JProgressBar();
 
+    /**
+     * A panel showing the statistics of the tree of {@code model}.
+     *
+     * @param model the workbench's model
+     */
     public StatsPanel(WorkbenchModel model) {
         super(new GridLayout(0, 2, 8, 1));
         setBorder(BorderFactory.createTitledBorder("Statistics"));
@@ -51,7 +58,11 @@ public final class StatsPanel extends JPanel {
         add(v);
     }
 
-    /** The text shown for statistic {@code name} (for tests). */
+    /**
+     * {@return the text shown for statistic {@code name}} (for tests).
+     *
+     * @param name the statistic's name
+     */
     public String value(String name) {
         return values.get(name).getText();
     }

@@ -28,27 +28,57 @@ import org.kdtree.tree.KdTree;
 public final class StepperPanel extends JPanel implements CanvasOverlay {
     /** Records a ray's traversal of a tree: the library's traverser behind a listener. */
     public interface Tracer {
+        /**
+         * {@return the recorded traversal of {@code ray} through {@code tree}}
+         *
+         * @param tree the kd-tree over {@code scene}
+         * @param scene the 2-D scene
+         * @param ray the ray {ox, oy, dx, dy}, or null
+         */
         TraversalTrace trace(KdTree tree, Shapes2D scene, double[] ray);
     }
 
+    /** The model whose tree and ray are traced. */
     private final WorkbenchModel model;
+    /** Records the ray's traversal. */
     private final Tracer tracer;
+    /** Which event of the traversal is shown. */
     private final JLabel stepLabel = label("step.label", "Which event of the traversal is shown");
+    /** The node Algorithm 2 is at. */
     private final JLabel nodeLabel = label("step.node", "The node Algorithm 2 is at");
+    /** The ray's interval in the node, and where it meets the split plane. */
     private final JLabel intervalLabel = label("step.interval", "The ray's interval in the node, and where it meets the split plane");
+    /** Near child, far child, and which the ray visits. */
     private final JLabel childrenLabel = label("step.children", "Near child (green), far child (blue), and which the ray visits");
+    /** Far children saved for later, bottom first. */
     private final JLabel stackLabel = label("step.stack", "Far children saved for later (purple, dashed), bottom first");
+    /** Objects tested in the current leaf. */
     private final JLabel testedLabel = label("step.tested", "Objects tested in the current leaf (red); + marks a hit closer than the best so far");
+    /** The closest hit and the ray's traversal cost. */
     private final JLabel resultLabel = label("step.result", "The closest hit and the ray's traversal cost");
+    /** Chooses the step shown. */
     private final JSlider slider = new JSlider(0, 0, 0);
+    /** Advances one step per tick while playing. */
     private final Timer player = new Timer(350, e -> playStep());
+    /** Starts or stops playing. */
     private final JButton play;
+    /** The recorded traversal of the current ray. */
     private TraversalTrace trace = TraversalTrace.EMPTY;
+    /** The step shown. */
     private int index;
+    /** The voxel of each node of {@link #voxelsOf}. */
     private Box[] voxels = new Box[0];
+    /** The tree {@link #voxels} belong to. */
     private KdTree voxelsOf;
+    /** True while the panel sets its own controls, so that their listeners do not act. */
     private boolean updating;
 
+    /**
+     * A stepper for the ray of {@code model}, traced again on every change of tree or ray.
+     *
+     * @param model the workbench's model
+     * @param tracer records the ray's traversal
+     */
     public StepperPanel(WorkbenchModel model, Tracer tracer) {
         super(new BorderLayout());
         this.model = model;
@@ -78,14 +108,21 @@ public final class StepperPanel extends JPanel implements CanvasOverlay {
         retrace();
     }
 
+    /** {@return the recorded traversal of the current ray} */
     public TraversalTrace trace() { return trace; }
+    /** {@return the step shown} */
     public int index() { return index; }
 
+    /** Shows the first step. */
     public void first() { show(0); }
+    /** Shows the step before. */
     public void back() { show(index - 1); }
+    /** Shows the step after. */
     public void forward() { show(index + 1); }
+    /** Shows the last step. */
     public void last() { show(trace.size() - 1); }
 
+    /** Starts or stops playing through the steps. */
     public void togglePlay() {
         if (player.isRunning()) {
             player.stop();

@@ -28,7 +28,14 @@ public final class TraversalRecorder implements TraversalListener {
     private TraversalRecorder() {
     }
 
-    /** Traces the closest hit of the 2-D ray {ox, oy, dx, dy} (t >= 0) through {@code tree}. */
+    /**
+     * Traces the closest hit of the 2-D ray {ox, oy, dx, dy} (t >= 0) through {@code tree}.
+     *
+     * @param tree the kd-tree over {@code scene}
+     * @param scene the 2-D scene
+     * @param ray the ray {ox, oy, dx, dy}, or null
+     * @return the recorded traversal ({@link TraversalTrace#EMPTY} without a ray)
+     */
     public static TraversalTrace record(KdTree tree, Shapes2D scene, double[] ray) {
         if (ray == null) return TraversalTrace.EMPTY;
         Traverser traverser = new Traverser(tree, new Shape2DIntersector(scene));

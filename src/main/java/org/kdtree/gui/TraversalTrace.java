@@ -17,7 +17,28 @@ import java.util.List;
  */
 public record TraversalTrace(List<Step> steps, long nodes, long leaves, long tests, int hitObject, double hitT) {
     /** What happened at a step. */
-    public enum Kind { BEGIN, MISSED_SCENE, INTERIOR, PUSH_FAR, POP, SKIP, LEAF, TEST, MAILBOXED, END }
+    public enum Kind {
+        /** The ray enters the scene box. */
+        BEGIN,
+        /** The ray misses the scene box. */
+        MISSED_SCENE,
+        /** An interior node: tSplit, the near and far children, and which the ray visits. */
+        INTERIOR,
+        /** The far child is saved on the stack. */
+        PUSH_FAR,
+        /** A saved node is taken from the stack. */
+        POP,
+        /** A saved node is dropped: it lies beyond the closest hit. */
+        SKIP,
+        /** A leaf is reached. */
+        LEAF,
+        /** An object of the leaf is tested. */
+        TEST,
+        /** An object already tested for this ray is not tested again. */
+        MAILBOXED,
+        /** The traversal is over. */
+        END
+    }
 
     /** A node saved on the stack with its interval. */
     public record Entry(int node, double tMin, double tMax) {
@@ -48,7 +69,13 @@ public record TraversalTrace(List<Step> steps, long nodes, long leaves, long tes
     /** A trace with no steps, for when there is no ray. */
     public static final TraversalTrace EMPTY = new TraversalTrace(List.of(), 0, 0, 0, -1, Double.NaN);
 
+    /** {@return the number of steps} */
     public int size() { return steps.size(); }
 
+    /**
+     * {@return step {@code i}, 0 first}
+     *
+     * @param i the step's index
+     */
     public Step step(int i) { return steps.get(i); }
 }

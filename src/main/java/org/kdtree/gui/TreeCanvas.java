@@ -21,14 +21,24 @@ import org.kdtree.shape.Shape2D;
  * editing, ray casting or placing the k-NN query according to the current {@link EditTool}.
  */
 public final class TreeCanvas extends JComponent {
+    /** The model whose scene and tree are drawn and edited. */
     private final WorkbenchModel model;
+    /** Maps scene coordinates to pixels. */
     private final ViewTransform view = new ViewTransform();
+    /** Painted over the scene and tree (the steppers). */
     private final List<CanvasOverlay> overlays = new ArrayList<>();
+    /** The edit tool in use. */
     private EditTool tool = EditTool.SELECT;
+    /** True once the view was fitted to the scene; false while the canvas had no size to fit into. */
     private boolean fitted;
     /** The shape or new shape being dragged, drawn as a preview until the drag ends. */
     private Shape2D preview;
 
+    /**
+     * A canvas drawing and editing the scene and tree of {@code model}.
+     *
+     * @param model the workbench's model
+     */
     public TreeCanvas(WorkbenchModel model) {
         this.model = model;
         setPreferredSize(new Dimension(720, 640));
@@ -41,16 +51,28 @@ public final class TreeCanvas extends JComponent {
         addMouseWheelListener(m);
     }
 
+    /** {@return the edit tool in use} */
     public EditTool tool() { return tool; }
 
+    /**
+     * Switches to another edit tool.
+     *
+     * @param t the tool
+     */
     public void setTool(EditTool t) {
         tool = t;
         setCursor(java.awt.Cursor.getPredefinedCursor(t == EditTool.SELECT ? java.awt.Cursor.DEFAULT_CURSOR
                 : java.awt.Cursor.CROSSHAIR_CURSOR));
     }
 
+    /** {@return the view, mapping scene coordinates to pixels} */
     public ViewTransform view() { return view; }
 
+    /**
+     * Adds something to paint over the scene and tree.
+     *
+     * @param o the overlay
+     */
     public void addOverlay(CanvasOverlay o) { overlays.add(o); }
 
     /** Fits the whole scene into the canvas. */
@@ -64,6 +86,11 @@ public final class TreeCanvas extends JComponent {
         repaint();
     }
 
+    /**
+     * Zooms by {@code factor} around the canvas's centre.
+     *
+     * @param factor above 1 to zoom in, below 1 to zoom out
+     */
     public void zoom(double factor) {
         view.zoomAt(getWidth() / 2.0, getHeight() / 2.0, factor);
         repaint();
@@ -81,7 +108,9 @@ public final class TreeCanvas extends JComponent {
 
     /** The scene and tree without selection, kept while tree, view and size stay the same. */
     private BufferedImage base;
+    /** The tree {@link #base} shows. */
     private Object baseTree;
+    /** The view {@link #base} was painted with. */
     private ViewTransform baseView;
 
     private void paintScene(Graphics2D g, ViewTransform v, int w, int h) {
@@ -101,7 +130,7 @@ public final class TreeCanvas extends JComponent {
                     new BasicStroke(2f, BasicStroke.CAP_BUTT, BasicStroke.JOIN_MITER, 10, new float[] {4, 3}, 0));
     }
 
-    /** The canvas as it looks now, at its current size (for PNG export). */
+    /** {@return the canvas as it looks now, at its current size} (for PNG export). */
     public BufferedImage snapshot() {
         int w = Math.max(getWidth(), 1), h = Math.max(getHeight(), 1);
         if (!fitted) fit();

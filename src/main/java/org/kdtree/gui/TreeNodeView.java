@@ -7,11 +7,20 @@ import javax.swing.tree.TreeSelectionModel;
 
 /** The tree as a {@link JTree}, kept in step with the canvas: hovering a leaf selects it here, and picking a node here highlights its voxel. */
 public final class TreeNodeView extends JScrollPane {
+    /** The Swing tree showing the kd-tree's nodes. */
     private final JTree jtree = new JTree();
+    /** The model whose tree is shown and whose selected node follows this view's. */
     private final WorkbenchModel model;
+    /** The Swing model over the current kd-tree. */
     private KdTreeModel treeModel;
+    /** True while the view follows the model's selection, so that it does not select back. */
     private boolean syncing;
 
+    /**
+     * A view of the nodes of the tree of {@code model}.
+     *
+     * @param model the workbench's model
+     */
     public TreeNodeView(WorkbenchModel model) {
         this.model = model;
         jtree.setName("kdtree");
@@ -34,6 +43,7 @@ public final class TreeNodeView extends JScrollPane {
         reload();
     }
 
+    /** {@return the Swing tree} */
     public JTree jtree() { return jtree; }
 
     private void reload() {

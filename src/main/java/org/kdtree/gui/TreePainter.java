@@ -27,10 +27,15 @@ public final class TreePainter {
 
     /** What to draw besides scene and tree. */
     public record Options(int selectedNode, int selectedShape, boolean antialias) {
+        /** No selection, antialiased. */
         public static final Options PLAIN = new Options(-1, -1, true);
     }
 
-    /** Pixel width of a split line at {@code depth}: 5 at the root, down to 1. */
+    /**
+     * {@return the pixel width of a split line at {@code depth}}: 5 at the root, down to 1.
+     *
+     * @param depth the depth of the node the line splits
+     */
     public static float lineWidth(int depth) {
         return Math.max(1f, 5f - depth);
     }
@@ -38,7 +43,17 @@ public final class TreePainter {
     /** Above this many objects (or four times as many nodes), drawing is without antialiasing: a repaint must stay interactive. */
     public static final int ANTIALIAS_LIMIT = 2000;
 
-    /** Paints the background, empty voxels, selection, objects and split lines into {@code g}. */
+    /**
+     * Paints the background, empty voxels, selection, objects and split lines into {@code g}.
+     *
+     * @param g the graphics to paint into
+     * @param width the width in pixels
+     * @param height the height in pixels
+     * @param scene the 2-D scene
+     * @param tree the kd-tree over {@code scene}
+     * @param v maps scene coordinates to pixels
+     * @param o what to draw besides scene and tree
+     */
     public static void paint(Graphics2D g, int width, int height, Shapes2D scene, KdTree tree, ViewTransform v,
                              Options o) {
         boolean aa = o.antialias() && scene.size() <= ANTIALIAS_LIMIT && tree.nodeCount() <= 4 * ANTIALIAS_LIMIT;
@@ -66,6 +81,12 @@ public final class TreePainter {
     /**
      * Draws only the selection over an already painted scene (translucent voxel, its objects, the
      * selected shape): the canvas keeps the rest in an image, so hovering stays fast on big scenes.
+     * @param g the graphics to paint into
+     * @param scene the 2-D scene
+     * @param tree the kd-tree over {@code scene}
+     * @param v maps scene coordinates to pixels
+     * @param selectedNode the selected node, or -1
+     * @param selectedShape the selected shape, or -1
      */
     public static void paintSelection(Graphics2D g, Shapes2D scene, KdTree tree, ViewTransform v, int selectedNode,
                                       int selectedShape) {
@@ -166,7 +187,16 @@ public final class TreePainter {
             paintShape(g, scene.get(selected), v, Palette.SELECTED_SHAPE, null, thick);
     }
 
-    /** Draws one shape: filled if {@code fill} is not null, then outlined. */
+    /**
+     * Draws one shape: filled if {@code fill} is not null, then outlined.
+     *
+     * @param g the graphics to paint into
+     * @param s the shape
+     * @param v maps scene coordinates to pixels
+     * @param line the outline's colour
+     * @param fill the fill colour, or null
+     * @param stroke the outline's stroke
+     */
     public static void paintShape(Graphics2D g, Shape2D s, ViewTransform v, Color line, Color fill, BasicStroke stroke) {
         Shape shape = outline(s, v);
         boolean area = s instanceof Shape2D.Rect || s instanceof Shape2D.Triangle || s instanceof Shape2D.Point;
@@ -179,7 +209,12 @@ public final class TreePainter {
         g.draw(shape);
     }
 
-    /** The screen outline of a shape (a point is a small disc). */
+    /**
+     * {@return the screen outline of a shape} (a point is a small disc).
+     *
+     * @param s the shape
+     * @param v maps scene coordinates to pixels
+     */
     public static Shape outline(Shape2D s, ViewTransform v) {
         double[] c = s.coords();
         if (s instanceof Shape2D.Point) {
@@ -209,13 +244,24 @@ public final class TreePainter {
         }
     }
 
-    /** The screen rectangle of a voxel. */
+    /**
+     * {@return the screen rectangle of a voxel}
+     *
+     * @param v maps scene coordinates to pixels
+     * @param b the voxel
+     */
     public static Rectangle2D rect(ViewTransform v, Box b) {
         double x0 = v.screenX(b.min(0)), x1 = v.screenX(b.max(0)), y0 = v.screenY(b.max(1)), y1 = v.screenY(b.min(1));
         return new Rectangle2D.Double(x0, y0, x1 - x0, y1 - y0);
     }
 
-    /** The leaf whose voxel holds the scene point (x, y), or -1 outside the root voxel. */
+    /**
+     * {@return the leaf whose voxel holds the scene point (x, y), or -1} outside the root voxel.
+     *
+     * @param tree the kd-tree
+     * @param x the point's x
+     * @param y the point's y
+     */
     public static int leafAt(KdTree tree, double x, double y) {
         Box b = tree.bounds();
         if (b.isEmpty() || x < b.min(0) || x > b.max(0) || y < b.min(1) || y > b.max(1)) return -1;
@@ -224,7 +270,12 @@ public final class TreePainter {
         return node;
     }
 
-    /** The voxel of {@code node} (a new box), or null if there is no such node. */
+    /**
+     * {@return the voxel of {@code node} (a new box), or null} if there is no such node.
+     *
+     * @param tree the kd-tree
+     * @param node a node's index
+     */
     public static Box voxelOf(KdTree tree, int node) {
         Box[] out = new Box[1];
         tree.walk(new TreeVisitor() {

@@ -50,20 +50,39 @@ import org.kdtree.tree.KdTree;
  * OBJ mesh, which has no camera, gets its tree built and its statistics shown.
  */
 public final class View3D extends JPanel {
+    /** Chooses the 3-D scene. */
     private final JComboBox<String> scene = new JComboBox<>();
+    /** Chooses the builder. */
     private final JComboBox<String> builder = new JComboBox<>(Builders.names().toArray(String[]::new));
+    /** Builds the tree and renders. */
     private final JButton build = new JButton("Render");
+    /** What the view is doing, or blank. */
     private final JLabel status = new JLabel(" ");
+    /** The image width in pixels. */
     private final JSpinner width = LimitedSpinner.of(Limits.PREVIEW_WIDTH, "Width", 480, 16, this::reject);
+    /** Stops a build or render under way. */
     private final JButton stop = new JButton("Stop");
+    /** The statistics of the last build or render. */
     private final JTextArea output = new JTextArea(20, 30);
+    /** Scales the image to the panel (off: 1:1, with scroll bars). */
     private final javax.swing.JCheckBox fit = new javax.swing.JCheckBox("Fit", true);
+    /** Shows the image rendered so far. */
     private final Picture picture = new Picture();
+    /** The scenes folder. */
     private final Path dir;
+    /** The model whose builder settings the build uses. */
     private final WorkbenchModel model;
+    /** Set by {@link #stop} to cancel the build or render under way. */
     private volatile boolean cancelled;
+    /** The thread building or rendering, or null. */
     private Thread running;
 
+    /**
+     * A view rendering the 3-D scenes of {@code scenesDir}.
+     *
+     * @param model the workbench's model
+     * @param scenesDir the folder of JSON scenes and OBJ meshes
+     */
     public View3D(WorkbenchModel model, Path scenesDir) {
         super(new BorderLayout());
         this.model = model;
@@ -159,7 +178,7 @@ public final class View3D extends JPanel {
         running.start();
     }
 
-    /** Whether a build or render is under way. */
+    /** {@return whether a build or render is under way} */
     public boolean busy() { return running != null; }
 
     /** A width outside its limit blocks Render and says why; a valid one frees it again. */
@@ -169,16 +188,21 @@ public final class View3D extends JPanel {
         build.setEnabled(why == null);
     }
 
-    /** Chooses the scene (a file name in the scenes folder) and the image width. */
+    /**
+     * Chooses the scene (a file name in the scenes folder) and the image width.
+     *
+     * @param sceneName a file name in the scenes folder
+     * @param imageWidth the image width in pixels
+     */
     public void choose(String sceneName, int imageWidth) {
         scene.setSelectedItem(sceneName);
         width.setValue(imageWidth);
     }
 
-    /** The statistics shown after the last build or render. */
+    /** {@return the statistics shown after the last build or render} */
     public String statisticsText() { return output.getText(); }
 
-    /** The image rendered so far (null before any render). */
+    /** {@return the image rendered so far} (null before any render). */
     public BufferedImage image() { return picture.img; }
 
     private void finished(String name, String text) {

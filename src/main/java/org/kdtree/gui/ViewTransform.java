@@ -10,7 +10,14 @@ import org.kdtree.geom.Box;
 public final class ViewTransform {
     private double scale = 1, offsetX, offsetY;
 
-    /** Fits {@code box}, with a margin, into a {@code width x height} pixel area. */
+    /**
+     * Fits {@code box}, with a margin, into a {@code width x height} pixel area.
+     *
+     * @param box the scene box to show
+     * @param width the area's width in pixels
+     * @param height the area's height in pixels
+     * @return this transform
+     */
     public ViewTransform fit(Box box, int width, int height) {
         double w = box.isEmpty() ? 0 : box.max(0) - box.min(0), h = box.isEmpty() ? 0 : box.max(1) - box.min(1);
         // a point-sized scene (or none) gets a 10 x 10 window; a flat one the extent of its long side
@@ -28,16 +35,49 @@ public final class ViewTransform {
         return this;
     }
 
+    /** {@return pixels per scene unit} */
     public double scale() { return scale; }
 
+    /**
+     * {@return the pixel column of scene x}
+     *
+     * @param x a scene x
+     */
     public double screenX(double x) { return offsetX + x * scale; }
+    /**
+     * {@return the pixel row of scene y} (y grows upward in the scene, downward on screen).
+     *
+     * @param y a scene y
+     */
     public double screenY(double y) { return offsetY - y * scale; }
+    /**
+     * {@return the scene x of pixel column {@code px}}
+     *
+     * @param px a pixel column
+     */
     public double worldX(double px) { return (px - offsetX) / scale; }
+    /**
+     * {@return the scene y of pixel row {@code py}}
+     *
+     * @param py a pixel row
+     */
     public double worldY(double py) { return (offsetY - py) / scale; }
 
+    /**
+     * {@return the scene point at pixel (px, py)}
+     *
+     * @param px a pixel column
+     * @param py a pixel row
+     */
     public Point2D.Double toWorld(double px, double py) { return new Point2D.Double(worldX(px), worldY(py)); }
 
-    /** Zooms by {@code factor} around the pixel (px, py). */
+    /**
+     * Zooms by {@code factor} around the pixel (px, py).
+     *
+     * @param px the pixel column that stays put
+     * @param py the pixel row that stays put
+     * @param factor above 1 to zoom in, below 1 to zoom out
+     */
     public void zoomAt(double px, double py, double factor) {
         double wx = worldX(px), wy = worldY(py);
         scale *= factor;
@@ -45,17 +85,27 @@ public final class ViewTransform {
         offsetY = py + wy * scale;
     }
 
-    /** Moves the view by (dx, dy) pixels. */
+    /**
+     * Moves the view by (dx, dy) pixels.
+     *
+     * @param dx pixels to the right
+     * @param dy pixels down
+     */
     public void pan(double dx, double dy) {
         offsetX += dx;
         offsetY += dy;
     }
 
-    /** Whether {@code o} maps every point as this one does. */
+    /**
+     * {@return whether {@code o} maps every point as this one does}
+     *
+     * @param o another transform, or null
+     */
     public boolean sameAs(ViewTransform o) {
         return o != null && o.scale == scale && o.offsetX == offsetX && o.offsetY == offsetY;
     }
 
+    /** {@return a copy of this transform} */
     public ViewTransform copy() {
         ViewTransform t = new ViewTransform();
         t.scale = scale; t.offsetX = offsetX; t.offsetY = offsetY;

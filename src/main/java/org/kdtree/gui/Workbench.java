@@ -34,20 +34,35 @@ import org.kdtree.build.Builders;
  * bouncing balls of the collisions view. {@link #open} shows it.
  */
 public final class Workbench extends JFrame {
+    /** The scene, settings, tree and selection every view shows. */
     private final WorkbenchModel model = new WorkbenchModel();
+    /** The 2-D canvas. */
     private final TreeCanvas canvas = new TreeCanvas(model);
+    /** Edits the builder settings. */
     private final BuilderPanel builderPanel = new BuilderPanel(model);
+    /** Shows the tree's statistics. */
     private final StatsPanel statsPanel = new StatsPanel(model);
+    /** Loads and generates scenes. */
     private final ScenePanel scenePanel = new ScenePanel(model, this::sceneLoaded);
+    /** Shows the tree's nodes. */
     private final TreeNodeView treeView = new TreeNodeView(model);
+    /** The side panel's tabs. */
     private final JTabbedPane tabs = new JTabbedPane();
+    /** Makes the tool buttons exclusive. */
     private final ButtonGroup toolGroup = new ButtonGroup();
+    /** The edit tools. */
     private final JToolBar toolBar = new JToolBar("Tools", JToolBar.VERTICAL);
+    /** The edit tools, as a menu. */
     private final JMenu toolsMenu = new JMenu("Tools");
+    /** The ray traversal stepper. */
     private final StepperPanel stepper;
+    /** The k-NN stepper. */
     private final NearestStepperPanel nearest;
+    /** The two steppers' tabs. */
     private final JTabbedPane steppers = new JTabbedPane();
+    /** The builders side by side. */
     private final CompareView compare;
+    /** The ball collisions view. */
     private final CollisionsView collisions;
 
     /** Builds the window on the built-in talk-figures scene (call on the event thread). */
@@ -98,14 +113,23 @@ public final class Workbench extends JFrame {
         SwingUtilities.invokeLater(() -> new Workbench().setVisible(true));
     }
 
+    /** {@return the scene, settings, tree and selection every view shows} */
     public WorkbenchModel model() { return model; }
+    /** {@return the 2-D canvas} */
     public TreeCanvas canvas() { return canvas; }
+    /** {@return the statistics panel} */
     public StatsPanel stats() { return statsPanel; }
+    /** {@return the side panel's tabs} */
     public JTabbedPane tabs() { return tabs; }
+    /** {@return the ray traversal stepper} */
     public StepperPanel stepper() { return stepper; }
+    /** {@return the k-NN stepper} */
     public NearestStepperPanel nearest() { return nearest; }
+    /** {@return the builders side by side} */
     public CompareView compare() { return compare; }
+    /** {@return the ball collisions view} */
     public CollisionsView collisions() { return collisions; }
+    /** {@return the scene panel} */
     public ScenePanel scenes() { return scenePanel; }
 
     private JComponent buildTab() {

@@ -26,13 +26,29 @@ import org.kdtree.tree.KdTree;
  */
 public final class WorkbenchModel {
     /** What changed, so that a view redoes only what it must. */
-    public enum Change { TREE, SELECTION, RAY, BUILDING, QUERY }
+    public enum Change {
+        /** A new scene or tree. */
+        TREE,
+        /** The selected node or shape. */
+        SELECTION,
+        /** The cast ray. */
+        RAY,
+        /** A background build started. */
+        BUILDING,
+        /** The k-NN query point. */
+        QUERY
+    }
 
     /** Scenes with more objects than this are built in the background. */
     public static final int BACKGROUND_ABOVE = 20_000;
 
     /** Hears the model's changes. */
     public interface Listener {
+        /**
+         * Called after each change.
+         *
+         * @param what what changed
+         */
         void changed(Change what);
     }
 
@@ -56,18 +72,31 @@ public final class WorkbenchModel {
     private double[] ray;
     private double[] query;
 
+    /** A model with an empty scene and the default builder settings. */
     public WorkbenchModel() {
         rebuild();
     }
 
+    /**
+     * Adds a listener of changes.
+     *
+     * @param l the listener
+     */
     public void addListener(Listener l) { listeners.add(l); }
 
     // ---- scene ----
 
+    /** {@return the scene} */
     public Shapes2D scene() { return scene; }
+    /** {@return the scene's name} */
     public String sceneName() { return sceneName; }
 
-    /** Replaces the whole scene (and forgets the selection). */
+    /**
+     * Replaces the whole scene (and forgets the selection).
+     *
+     * @param name the scene's name
+     * @param newShapes the shapes
+     */
     public void setScene(String name, List<? extends Shape2D> newShapes) {
         sceneName = name;
         shapes = new ArrayList<>(newShapes);
@@ -76,27 +105,53 @@ public final class WorkbenchModel {
         rebuild();
     }
 
-    /** Opens a .scene2d file (errors name the file and line). */
+    /**
+     * Opens a .scene2d file (errors name the file and line).
+     *
+     * @param file the file
+     * @throws java.io.IOException if the file cannot be read or is malformed
+     */
     public void load(java.nio.file.Path file) throws java.io.IOException {
         setScene(file.getFileName().toString(), org.kdtree.io.Scene2DFormat.read(file).shapes());
     }
 
-    /** Saves the scene as a .scene2d file. */
+    /**
+     * Saves the scene as a .scene2d file.
+     *
+     * @param file the file, replaced if it exists
+     * @throws java.io.IOException if writing fails
+     */
     public void save(java.nio.file.Path file) throws java.io.IOException {
         org.kdtree.io.Scene2DFormat.write(scene, file);
     }
 
+    /**
+     * Adds a shape, selects it and rebuilds the tree.
+     *
+     * @param s the shape
+     */
     public void addShape(Shape2D s) {
         shapes.add(s);
         selectedShape = shapes.size() - 1;
         rebuild();
     }
 
+    /**
+     * Replaces shape {@code i} and rebuilds the tree.
+     *
+     * @param i the shape's index
+     * @param s the new shape
+     */
     public void replaceShape(int i, Shape2D s) {
         shapes.set(i, s);
         rebuild();
     }
 
+    /**
+     * Removes shape {@code i}, clears the shape selection and rebuilds the tree.
+     *
+     * @param i the shape's index
+     */
     public void removeShape(int i) {
         shapes.remove(i);
         selectedShape = -1;
@@ -105,20 +160,27 @@ public final class WorkbenchModel {
 
     // ---- builder ----
 
+    /** {@return the builder settings} */
     public BuilderSettings settings() { return settings; }
 
+    /**
+     * Changes the builder settings and rebuilds the tree (nothing happens if they are equal).
+     *
+     * @param s the new settings
+     */
     public void setSettings(BuilderSettings s) {
         if (s.equals(settings)) return;
         settings = s;
         rebuild();
     }
 
+    /** {@return the tree of the scene} (the previous one while a background build runs). */
     public KdTree tree() { return tree; }
 
-    /** Wall-clock time of the last build, in milliseconds. */
+    /** {@return the wall-clock time of the last build, in milliseconds} */
     public double buildMillis() { return buildMillis; }
 
-    /** Whether a background build is under way (the views still show the previous tree). */
+    /** {@return whether a background build is under way} (the views still show the previous tree). */
     public boolean building() { return building; }
 
     private void rebuild() {
@@ -164,18 +226,28 @@ public final class WorkbenchModel {
 
     // ---- selection ----
 
-    /** The selected tree node (the leaf under the mouse, or the node picked in the tree view), or -1. */
+    /** {@return the selected tree node (the leaf under the mouse, or the node picked in the tree view), or -1} */
     public int selectedNode() { return selectedNode; }
 
+    /**
+     * Selects a tree node.
+     *
+     * @param node the node's index, or -1 for none
+     */
     public void selectNode(int node) {
         if (node == selectedNode) return;
         selectedNode = node;
         fire(Change.SELECTION);
     }
 
-    /** The shape being edited, or -1. */
+    /** {@return the shape being edited, or -1} */
     public int selectedShape() { return selectedShape; }
 
+    /**
+     * Selects a shape to edit.
+     *
+     * @param i the shape's index, or -1 for none
+     */
     public void selectShape(int i) {
         if (i == selectedShape) return;
         selectedShape = i;
@@ -184,16 +256,24 @@ public final class WorkbenchModel {
 
     // ---- ray ----
 
-    /** The cast ray as {ox, oy, dx, dy}, or null. */
+    /** {@return the cast ray as {ox, oy, dx, dy}, or null} */
     public double[] ray() { return ray == null ? null : ray.clone(); }
 
-    /** Casts a ray from (ox, oy) towards (tx, ty); a zero-length drag clears it. */
+    /**
+     * Casts a ray from (ox, oy) towards (tx, ty); a zero-length drag clears it.
+     *
+     * @param ox the origin's x
+     * @param oy the origin's y
+     * @param tx x of a point the ray passes through
+     * @param ty y of that point
+     */
     public void setRay(double ox, double oy, double tx, double ty) {
         double dx = tx - ox, dy = ty - oy;
         ray = dx == 0 && dy == 0 ? null : new double[] {ox, oy, dx, dy};
         fire(Change.RAY);
     }
 
+    /** Removes the cast ray. */
     public void clearRay() {
         ray = null;
         fire(Change.RAY);
@@ -201,10 +281,15 @@ public final class WorkbenchModel {
 
     // ---- nearest-neighbour query ----
 
-    /** The query point of the k-NN stepper as {x, y}, or null. */
+    /** {@return the query point of the k-NN stepper as {x, y}, or null} */
     public double[] query() { return query == null ? null : query.clone(); }
 
-    /** Places the k-NN query point at (x, y). */
+    /**
+     * Places the k-NN query point at (x, y).
+     *
+     * @param x the query point's x
+     * @param y the query point's y
+     */
     public void setQuery(double x, double y) {
         query = new double[] {x, y};
         fire(Change.QUERY);

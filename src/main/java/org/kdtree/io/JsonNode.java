@@ -38,7 +38,14 @@ public final class JsonNode {
         this.path = path;
     }
 
-    /** Parses one JSON document; syntax errors become {@link SceneFormatException}s with the line. */
+    /**
+     * Parses one JSON document; syntax errors become {@link SceneFormatException}s with the line.
+     *
+     * @param reader the JSON text
+     * @param file the file name errors give
+     * @return the document's root value
+     * @throws SceneFormatException for a syntax error or a file that is not one JSON value
+     */
     public static JsonNode parse(Reader reader, String file) throws SceneFormatException {
         String text;
         try {
@@ -112,18 +119,29 @@ public final class JsonNode {
         return m.find() ? Integer.parseInt(m.group(1)) : 0;
     }
 
+    /** {@return the name of the file this value came from} */
     public String file() { return file; }
+    /** {@return the 1-based line this value starts on} */
     public int line() { return line; }
+    /** {@return this value's path in the document, such as {@code $.lights[1].samples}} */
     public String path() { return path; }
 
-    /** An error about this value, naming file, line and field. */
+    /**
+     * {@return an error about this value, naming file, line and field}
+     *
+     * @param problem what is wrong
+     */
     public SceneFormatException error(String problem) {
         return new SceneFormatException(file, line, path + ": " + problem);
     }
 
+    /** {@return whether this value is a JSON object} */
     public boolean isObject() { return value instanceof Map; }
+    /** {@return whether this value is a JSON array} */
     public boolean isArray() { return value instanceof List; }
+    /** {@return whether this value is a JSON string} */
     public boolean isString() { return value instanceof String && !number; }
+    /** {@return whether this value is a JSON number} */
     public boolean isNumber() { return number; }
 
     @SuppressWarnings("unchecked")
@@ -132,23 +150,50 @@ public final class JsonNode {
         return (Map<String, JsonNode>) value;
     }
 
-    /** A required field of this object. */
+    /**
+     * {@return a required field of this object}
+     *
+     * @param name the field's name
+     * @throws SceneFormatException if this is not an object or the field is missing
+     */
     public JsonNode get(String name) throws SceneFormatException {
         JsonNode n = fields().get(name);
         if (n == null) throw error("missing field '" + name + "'");
         return n;
     }
 
-    /** An optional field of this object, or null. */
+    /**
+     * {@return an optional field of this object, or null}
+     *
+     * @param name the field's name
+     * @throws SceneFormatException if this is not an object
+     */
     public JsonNode opt(String name) throws SceneFormatException {
         return fields().get(name);
     }
 
+    /**
+     * {@return whether this object has the field}
+     *
+     * @param name the field's name
+     * @throws SceneFormatException if this is not an object
+     */
     public boolean has(String name) throws SceneFormatException { return fields().containsKey(name); }
 
+    /**
+     * {@return the names of this object's fields}
+     *
+     * @throws SceneFormatException if this is not an object
+     */
     public Set<String> fieldNames() throws SceneFormatException { return fields().keySet(); }
 
-    /** Rejects fields outside {@code known}: a typo should not be silently ignored. */
+    /**
+     * Rejects fields outside {@code known}: a typo should not be silently ignored.
+     *
+     * @param known the field names allowed
+     * @return this object
+     * @throws SceneFormatException naming the first unknown field, or if this is not an object
+     */
     public JsonNode allowOnly(String... known) throws SceneFormatException {
         Set<String> ok = Set.of(known);
         for (Map.Entry<String, JsonNode> e : fields().entrySet())
@@ -157,23 +202,42 @@ public final class JsonNode {
         return this;
     }
 
+    /**
+     * {@return this array's elements}
+     *
+     * @throws SceneFormatException if this is not an array
+     */
     @SuppressWarnings("unchecked")
     public List<JsonNode> array() throws SceneFormatException {
         if (!isArray()) throw error("expected an array");
         return (List<JsonNode>) value;
     }
 
+    /**
+     * {@return this string}
+     *
+     * @throws SceneFormatException if this is not a string
+     */
     public String string() throws SceneFormatException {
         if (!isString()) throw error("expected a string");
         return (String) value;
     }
 
+    /**
+     * {@return this boolean}
+     *
+     * @throws SceneFormatException if this is not true or false
+     */
     public boolean bool() throws SceneFormatException {
         if (!(value instanceof Boolean b)) throw error("expected true or false");
         return b;
     }
 
-    /** A finite number. */
+    /**
+     * {@return this number, which must be finite}
+     *
+     * @throws SceneFormatException if this is not a finite number
+     */
     public double number() throws SceneFormatException {
         if (!number) throw error("expected a number");
         double d = Double.parseDouble((String) value);
@@ -181,19 +245,35 @@ public final class JsonNode {
         return d;
     }
 
-    /** A number at least {@code min}. */
+    /**
+     * {@return this number, which must be at least {@code min}}
+     *
+     * @param min the smallest value allowed
+     * @throws SceneFormatException if this is not a number or is below {@code min}
+     */
     public double number(double min) throws SceneFormatException {
         double d = number();
         if (d < min) throw error("must be at least " + min + ", got " + d);
         return d;
     }
 
-    /** An integer in [min, max]. */
+    /**
+     * {@return this number, which must be an integer in [min, max]}
+     *
+     * @param min the smallest value allowed
+     * @param max the largest value allowed
+     * @throws SceneFormatException if this is not such an integer
+     */
     public int integer(int min, int max) throws SceneFormatException {
         return integer(Limit.whole("value", min, max));
     }
 
-    /** A whole number that {@code limit} allows. */
+    /**
+     * {@return this number, which must be a whole number that {@code limit} allows}
+     *
+     * @param limit the allowed range
+     * @throws SceneFormatException if this is not such a number
+     */
     public int integer(Limit limit) throws SceneFormatException {
         double d = number();
         if (d != Math.rint(d)) throw error("expected a whole number, got " + value);
@@ -201,7 +281,11 @@ public final class JsonNode {
         return (int) d;
     }
 
-    /** Three numbers {@code [x, y, z]}, or a single number meaning all three. */
+    /**
+     * {@return three numbers {@code [x, y, z]}}, or a single number meaning all three.
+     *
+     * @throws SceneFormatException if this is neither a number nor an array of three numbers
+     */
     public double[] triple() throws SceneFormatException {
         if (number) {
             double d = number();

@@ -46,7 +46,12 @@ public final class MtlMaterials {
     private MtlMaterials() {
     }
 
-    /** Reads a library: material name to material. */
+    /**
+     * {@return a material library read from {@code file}: material name to material}
+     *
+     * @param file the MTL file
+     * @throws IOException if the file cannot be read or is malformed
+     */
     public static Map<String, Material> read(Path file) throws IOException {
         if (!Files.isRegularFile(file)) throw new SceneFormatException(file.toString(), 0, "no such material library");
         String text = TextLines.readAll(file);
@@ -101,7 +106,11 @@ public final class MtlMaterials {
         throw new SceneFormatException(name, line, key + ": '" + token + "' is not a non-negative number");
     }
 
-    /** The MTL illumination model mapped onto a renderer material (see the class comment). */
+    /**
+     * {@return the MTL illumination model mapped onto a renderer material} (see the class comment).
+     *
+     * @param m the MTL material
+     */
     public static Material toMaterial(Mtl m) {
         Vec3 kd = color(m.getKd(), Vec3.ZERO), ks = color(m.getKs(), Vec3.ZERO), ke = color(m.getKe(), Vec3.ZERO);
         double ns = m.getNs() != null ? m.getNs() : 1;

@@ -25,7 +25,12 @@ import java.util.Map;
 public record ObjMaterialMesh(double[] vertices, int[] indices, int[] materialOf, List<String> materialNames,
                               List<Integer> usemtlLines, List<Path> libraries, Path file) {
 
-    /** Reads an OBJ file; errors name the file and line. */
+    /**
+     * {@return the mesh and materials of an OBJ file}; errors name the file and line.
+     *
+     * @param file the OBJ file
+     * @throws IOException if the file cannot be read or is malformed
+     */
     public static ObjMaterialMesh read(Path file) throws IOException {
         if (!Files.isRegularFile(file)) throw new SceneFormatException(file.toString(), 0, "no such file");
         String name = file.toString();
@@ -90,5 +95,6 @@ public record ObjMaterialMesh(double[] vertices, int[] indices, int[] materialOf
                 List.copyOf(materialIndex.keySet()), List.copyOf(firstUse), List.copyOf(libs), file);
     }
 
+    /** {@return the number of triangles} */
     public int triangleCount() { return materialOf.length; }
 }

@@ -22,14 +22,25 @@ public final class ObjMeshReader {
     private ObjMeshReader() {
     }
 
-    /** Reads an OBJ file. */
+    /**
+     * {@return the mesh of an OBJ file}
+     *
+     * @param file the OBJ file
+     * @throws IOException if the file cannot be read or is malformed
+     */
     public static TriangleMesh read(Path file) throws IOException {
         try (TextLines lines = TextLines.open(file)) {
             return read(lines);
         }
     }
 
-    /** Reads OBJ text; {@code name} is used in error messages. */
+    /**
+     * {@return the mesh of OBJ text}
+     *
+     * @param reader the OBJ text
+     * @param name used in error messages
+     * @throws IOException if the text cannot be read or is malformed
+     */
     public static TriangleMesh read(Reader reader, String name) throws IOException {
         return read(TextLines.of(reader, name));
     }
@@ -63,7 +74,12 @@ public final class ObjMeshReader {
         }
     }
 
-    /** Reads an OBJ file from the class path (bundled scenes). */
+    /**
+     * {@return the mesh of an OBJ file on the class path} (bundled scenes).
+     *
+     * @param resource the resource's name
+     * @throws IOException if there is no such resource or it is malformed
+     */
     public static TriangleMesh readResource(String resource) throws IOException {
         var stream = ObjMeshReader.class.getResourceAsStream(resource);
         if (stream == null) throw new SceneFormatException(resource, 0, "no such resource");

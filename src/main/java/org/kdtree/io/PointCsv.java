@@ -18,14 +18,25 @@ public final class PointCsv {
     private PointCsv() {
     }
 
-    /** Reads a point file; a file without any point is an error. */
+    /**
+     * {@return the points of a point file}; a file without any point is an error.
+     *
+     * @param file the CSV file
+     * @throws IOException if the file cannot be read or is malformed
+     */
     public static PointsKd read(Path file) throws IOException {
         try (TextLines lines = TextLines.open(file)) {
             return read(lines);
         }
     }
 
-    /** Reads point CSV text; {@code name} is used in error messages. */
+    /**
+     * {@return the points of point CSV text}
+     *
+     * @param reader the CSV text
+     * @param name used in error messages
+     * @throws IOException if the text cannot be read or is malformed
+     */
     public static PointsKd read(Reader reader, String name) throws IOException {
         return read(TextLines.of(reader, name));
     }

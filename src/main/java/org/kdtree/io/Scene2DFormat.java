@@ -27,12 +27,25 @@ public final class Scene2DFormat {
     private Scene2DFormat() {
     }
 
+    /**
+     * {@return the shapes of a {@code .scene2d} file}
+     *
+     * @param file the file
+     * @throws IOException if the file cannot be read or is malformed
+     */
     public static Shapes2D read(Path file) throws IOException {
         try (TextLines lines = TextLines.open(file)) {
             return read(lines);
         }
     }
 
+    /**
+     * {@return the shapes of 2-D scene text}
+     *
+     * @param text the text
+     * @param name used in error messages
+     * @throws SceneFormatException if the text is malformed
+     */
     public static Shapes2D parse(String text, String name) throws SceneFormatException {
         try {
             return read(new StringReader(text), name);
@@ -43,6 +56,13 @@ public final class Scene2DFormat {
         }
     }
 
+    /**
+     * {@return the shapes of 2-D scene text}
+     *
+     * @param reader the text
+     * @param name used in error messages
+     * @throws IOException if the text cannot be read or is malformed
+     */
     public static Shapes2D read(Reader reader, String name) throws IOException {
         return read(TextLines.of(reader, name));
     }
@@ -89,7 +109,13 @@ public final class Scene2DFormat {
         };
     }
 
-    /** Writes the shapes in the format {@link #read} accepts. */
+    /**
+     * Writes the shapes in the format {@link #read} accepts.
+     *
+     * @param scene the shapes
+     * @param out receives the text
+     * @throws IOException if writing fails
+     */
     public static void write(Shapes2D scene, Writer out) throws IOException {
         for (Shape2D s : scene.shapes()) {
             StringBuilder b = new StringBuilder(s.keyword());
@@ -99,6 +125,13 @@ public final class Scene2DFormat {
         out.flush();
     }
 
+    /**
+     * Writes the shapes to a file in the format {@link #read} accepts.
+     *
+     * @param scene the shapes
+     * @param file the file, replaced if it exists
+     * @throws IOException if writing fails
+     */
     public static void write(Shapes2D scene, Path file) throws IOException {
         try (Writer w = Files.newBufferedWriter(file, StandardCharsets.UTF_8)) {
             write(scene, w);

@@ -37,7 +37,12 @@ public final class SceneFile {
         this.dir = dir;
     }
 
-    /** Reads a scene file; OBJ files it names are resolved against its folder. */
+    /**
+     * {@return the scene of a scene file}; OBJ files it names are resolved against its folder.
+     *
+     * @param path the scene file
+     * @throws IOException if a file cannot be read or is malformed
+     */
     public static Scene read(Path path) throws IOException {
         try (Reader r = new StringReader(TextLines.readAll(path))) {
             Path dir = path.toAbsolutePath().getParent();
@@ -46,7 +51,14 @@ public final class SceneFile {
         }
     }
 
-    /** Reads scene JSON text; {@code name} is used in errors, {@code dir} resolves OBJ files. */
+    /**
+     * {@return the scene of scene JSON text}
+     *
+     * @param reader the JSON text
+     * @param name used in error messages
+     * @param dir the folder OBJ files are resolved against
+     * @throws IOException if a file cannot be read or is malformed
+     */
     public static Scene read(Reader reader, String name, Path dir) throws IOException {
         return new SceneFile(name, dir).parse(JsonNode.parse(reader, name), name);
     }

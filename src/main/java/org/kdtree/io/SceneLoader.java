@@ -10,6 +10,12 @@ public final class SceneLoader {
     private SceneLoader() {
     }
 
+    /**
+     * {@return the primitives of an {@code .obj} or {@code .scene2d} file}
+     *
+     * @param file the file
+     * @throws IOException if the file cannot be read, is malformed or has another extension
+     */
     public static Primitives load(Path file) throws IOException {
         String name = file.getFileName().toString().toLowerCase(Locale.ROOT);
         if (name.endsWith(".obj")) return ObjMeshReader.read(file);

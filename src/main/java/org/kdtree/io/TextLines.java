@@ -33,7 +33,13 @@ public final class TextLines implements Closeable {
         this.name = name;
     }
 
-    /** Opens {@code file}; a missing file is a one-line error naming it. */
+    /**
+     * Opens {@code file}; a missing file is a one-line error naming it.
+     *
+     * @param file the file
+     * @return its lines
+     * @throws IOException if the file is missing or cannot be opened
+     */
     public static TextLines open(Path file) throws IOException {
         if (!Files.isRegularFile(file)) throw new SceneFormatException(file.toString(), 0, "no such file");
         InputStream bytes = Files.newInputStream(file);
@@ -41,12 +47,22 @@ public final class TextLines implements Closeable {
                 .onMalformedInput(CodingErrorAction.REPLACE).onUnmappableCharacter(CodingErrorAction.REPLACE)), file.toString());
     }
 
-    /** Lines of text already decoded; {@code name} is used in error messages. */
+    /**
+     * {@return lines of text already decoded}
+     *
+     * @param reader the text
+     * @param name used in error messages
+     */
     public static TextLines of(Reader reader, String name) {
         return new TextLines(reader, name);
     }
 
-    /** The whole of {@code file}, checked as {@link #next} checks each line, lines ended by {@code \n}. */
+    /**
+     * {@return the whole of {@code file}, checked as {@link #next} checks each line}, lines ended by {@code \n}.
+     *
+     * @param file the file
+     * @throws IOException if the file is missing, unreadable or malformed
+     */
     public static String readAll(Path file) throws IOException {
         StringBuilder text = new StringBuilder();
         try (TextLines lines = open(file)) {
@@ -55,7 +71,11 @@ public final class TextLines implements Closeable {
         return text.toString();
     }
 
-    /** The next line, or null at the end of the text. */
+    /**
+     * {@return the next line, or null at the end of the text}
+     *
+     * @throws IOException if reading fails or the line is not UTF-8
+     */
     public String next() throws IOException {
         String s = in.readLine();
         if (s == null) return null;
@@ -68,10 +88,10 @@ public final class TextLines implements Closeable {
         return s;
     }
 
-    /** The 1-based number of the line {@link #next} returned last. */
+    /** {@return the 1-based number of the line {@link #next} returned last} */
     public int line() { return line; }
 
-    /** The name errors give for this text. */
+    /** {@return the name errors give for this text} */
     public String name() { return name; }
 
     @Override public void close() throws IOException {

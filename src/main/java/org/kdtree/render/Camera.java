@@ -14,7 +14,14 @@ public final class Camera {
     private final int width, height;
 
     /**
+     * A camera at {@code eye} looking at {@code lookAt}.
+     *
+     * @param eye the eye point
+     * @param lookAt the point the camera looks at, in the image centre
+     * @param upHint a direction that is up in the image (need not be orthogonal to the view direction)
      * @param fovDegrees vertical field of view, in (0, 180)
+     * @param width image width in pixels
+     * @param height image height in pixels
      */
     public Camera(Vec3 eye, Vec3 lookAt, Vec3 upHint, double fovDegrees, int width, int height) {
         this.eye = eye;
@@ -26,16 +33,29 @@ public final class Camera {
         this.height = Limits.IMAGE_SIDE.check("height", height);
     }
 
+    /** {@return the eye point} */
     public Vec3 eye() { return eye; }
+    /** {@return the image width in pixels} */
     public int width() { return width; }
+    /** {@return the image height in pixels} */
     public int height() { return height; }
 
-    /** The same camera at another image size (the aspect ratio follows the size). */
+    /**
+     * {@return the same camera at another image size} (the aspect ratio follows the size).
+     *
+     * @param w the new width in pixels
+     * @param h the new height in pixels
+     */
     public Camera withSize(int w, int h) {
         return new Camera(eye, eye.plus(forward), up, Math.toDegrees(2 * Math.atan(tanHalfFov)), w, h);
     }
 
-    /** The unit direction of the ray through image point (px, py), in pixels from the top-left. */
+    /**
+     * {@return the unit direction of the ray through image point (px, py)}, in pixels from the top-left.
+     *
+     * @param px x in pixels
+     * @param py y in pixels
+     */
     public Vec3 direction(double px, double py) {
         double aspect = (double) width / height;
         double sx = (2 * px / width - 1) * tanHalfFov * aspect;

@@ -21,5 +21,6 @@ public enum Effect {
     /** Several jittered camera rays per pixel. */
     ANTIALIASING;
 
+    /** {@return the effect's name in lower case with spaces, for reports} */
     public String label() { return name().toLowerCase(java.util.Locale.ROOT).replace('_', ' '); }
 }

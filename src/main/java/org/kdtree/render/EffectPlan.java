@@ -22,6 +22,11 @@ public final class EffectPlan {
     private final EnumSet<Effect> effects = EnumSet.noneOf(Effect.class);
     private final List<String> notes = new ArrayList<>();
 
+    /**
+     * Works out the plan for {@code scene}.
+     *
+     * @param scene the scene to render
+     */
     public EffectPlan(Scene scene) {
         List<Material> ms = scene.materials();
         maxDepth = scene.maxDepth();
@@ -58,29 +63,55 @@ public final class EffectPlan {
         if (scene.samplesPerPixel() > 1) effects.add(Effect.ANTIALIASING);
     }
 
-    /** Whether rays reflect off material {@code m}. */
+    /**
+     * {@return whether rays reflect off material {@code m}}
+     *
+     * @param m a material index
+     */
     public boolean reflects(int m) { return reflects[m]; }
 
-    /** Whether rays refract through material {@code m}. */
+    /**
+     * {@return whether rays refract through material {@code m}}
+     *
+     * @param m a material index
+     */
     public boolean refracts(int m) { return refracts[m]; }
 
-    /** Whether the lights shade material {@code m}. */
+    /**
+     * {@return whether the lights shade material {@code m}}
+     *
+     * @param m a material index
+     */
     public boolean lit(int m) { return lit[m]; }
 
-    /** Whether shadow rays are cast toward light {@code l}. */
+    /**
+     * {@return whether shadow rays are cast toward light {@code l}}
+     *
+     * @param l a light index
+     */
     public boolean shadowRays(int l) { return shadowRays[l]; }
 
-    /** Samples per shading point on light {@code l}: 1 except for area lights. */
+    /**
+     * {@return samples per shading point on light {@code l}}: 1 except for area lights.
+     *
+     * @param l a light index
+     */
     public int lightSamples(int l) { return lightSamples[l]; }
 
+    /** {@return the scene's depth limit: the longest chain of secondary rays after the camera ray} */
     public int maxDepth() { return maxDepth; }
 
-    /** The effects this plan simulates. */
+    /** {@return the effects this plan simulates} */
     public Set<Effect> effects() { return EnumSet.copyOf(effects); }
 
+    /**
+     * {@return whether this plan simulates effect {@code e}}
+     *
+     * @param e the effect
+     */
     public boolean simulates(Effect e) { return effects.contains(e); }
 
-    /** One line per fact, for the render summary. */
+    /** {@return one line per fact, for the render summary} */
     public String describe() {
         StringBuilder s = new StringBuilder("effects: ");
         if (effects.isEmpty()) s.append("none (flat colours)");

@@ -23,17 +23,30 @@ public final class GeometryBuilder {
     private final Matrix3d normalTransform = new Matrix3d();
     private final Vector3d tmp = new Vector3d();
 
-    /** Sets the transform applied to the vertices added from now on (identity to start). */
+    /**
+     * Sets the transform applied to the vertices added from now on (identity to start).
+     *
+     * @param m the transform
+     * @return this builder
+     */
     public GeometryBuilder transform(Matrix4dc m) {
         transform.set(m);
         m.normal(normalTransform);
         return this;
     }
 
+    /** {@return the number of vertices added so far} */
     public int vertexCount() { return vertexCount; }
+    /** {@return the number of triangles added so far} */
     public int triangleCount() { return triangleCount; }
 
-    /** Adds a vertex (transformed) with a normal (zero for none); returns its index. */
+    /**
+     * Adds a vertex (transformed) with a normal (zero for none); returns its index.
+     *
+     * @param p the position, before the transform
+     * @param n the normal, before the transform, or zero for none
+     * @return the vertex's index
+     */
     public int vertex(Vec3 p, Vec3 n) {
         if (3 * vertexCount + 3 > vertices.length) {
             vertices = Arrays.copyOf(vertices, vertices.length * 2);
@@ -48,7 +61,15 @@ public final class GeometryBuilder {
         return vertexCount++;
     }
 
-    /** Adds triangle (a, b, c) of already added vertices. */
+    /**
+     * Adds triangle (a, b, c) of already added vertices.
+     *
+     * @param a the first vertex's index
+     * @param b the second vertex's index
+     * @param c the third vertex's index
+     * @param material the material index
+     * @param smoothShaded whether to interpolate the vertex normals
+     */
     public void triangle(int a, int b, int c, int material, boolean smoothShaded) {
         if (3 * triangleCount + 3 > indices.length) {
             indices = Arrays.copyOf(indices, indices.length * 2);
@@ -63,14 +84,22 @@ public final class GeometryBuilder {
         triangleCount++;
     }
 
-    /** Adds a flat quad a-b-c-d (counter-clockwise seen from the front). */
+    /**
+     * Adds a flat quad a-b-c-d (counter-clockwise seen from the front).
+     *
+     * @param a the first corner
+     * @param b the second corner
+     * @param c the third corner
+     * @param d the fourth corner
+     * @param material the material index
+     */
     public void quad(Vec3 a, Vec3 b, Vec3 c, Vec3 d, int material) {
         int i = vertex(a, Vec3.ZERO), j = vertex(b, Vec3.ZERO), k = vertex(c, Vec3.ZERO), l = vertex(d, Vec3.ZERO);
         triangle(i, j, k, material, false);
         triangle(i, k, l, material, false);
     }
 
-    /** The collected geometry. */
+    /** {@return the collected geometry} */
     public SceneGeometry finish() {
         TriangleMesh mesh = new TriangleMesh(Arrays.copyOf(vertices, 3 * vertexCount),
                 Arrays.copyOf(indices, 3 * triangleCount));

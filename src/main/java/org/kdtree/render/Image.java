@@ -7,15 +7,30 @@ public final class Image {
     private final int width, height;
     private final float[] rgb;
 
+    /**
+     * A black image.
+     *
+     * @param width width in pixels
+     * @param height height in pixels
+     */
     public Image(int width, int height) {
         this.width = width;
         this.height = height;
         this.rgb = new float[3 * width * height];
     }
 
+    /** {@return the width in pixels} */
     public int width() { return width; }
+    /** {@return the height in pixels} */
     public int height() { return height; }
 
+    /**
+     * Sets pixel (x, y) to the radiance {@code c}.
+     *
+     * @param x the column, from the left
+     * @param y the row, from the top
+     * @param c the linear RGB radiance
+     */
     public void set(int x, int y, Vec3 c) {
         int i = 3 * (y * width + x);
         rgb[i] = (float) c.x();
@@ -23,16 +38,22 @@ public final class Image {
         rgb[i + 2] = (float) c.z();
     }
 
-    /** Channel {@code c} (0 red, 1 green, 2 blue) of pixel (x, y). */
+    /**
+     * {@return channel {@code c} (0 red, 1 green, 2 blue) of pixel (x, y)}
+     *
+     * @param x the column, from the left
+     * @param y the row, from the top
+     * @param c the channel
+     */
     public float get(int x, int y, int c) { return rgb[3 * (y * width + x) + c]; }
 
-    /** Whether any channel of any pixel is NaN, infinite or negative: never for a correct render. */
+    /** {@return whether any channel of any pixel is NaN, infinite or negative}: never for a correct render. */
     public boolean hasInvalidPixels() {
         for (float v : rgb) if (!(v >= 0) || Float.isInfinite(v)) return true;
         return false;
     }
 
-    /** 8-bit sRGB (gamma 2.2, clamped), as written to PNG. */
+    /** {@return the image in 8-bit sRGB (gamma 2.2, clamped)}, as written to PNG. */
     public BufferedImage toBufferedImage() {
         BufferedImage img = new BufferedImage(width, height, BufferedImage.TYPE_INT_RGB);
         for (int y = 0; y < height; y++)
@@ -46,7 +67,12 @@ public final class Image {
         return (int) Math.round(255 * v);
     }
 
-    /** Writes the image as PNG. */
+    /**
+     * Writes the image as PNG.
+     *
+     * @param file the PNG file; missing folders are made
+     * @throws java.io.IOException if writing fails
+     */
     public void writePng(java.nio.file.Path file) throws java.io.IOException {
         java.nio.file.Path parent = file.toAbsolutePath().getParent();
         if (parent != null) java.nio.file.Files.createDirectories(parent);

@@ -4,10 +4,10 @@ import org.kdtree.limits.Limits;
 
 /** A light source. Lights are not geometry: they are never hit by rays. */
 public sealed interface Light {
-    /** Radiant colour (already multiplied by any intensity). */
+    /** {@return the radiant colour} (already multiplied by any intensity). */
     Vec3 color();
 
-    /** Whether the scene file allows this light to cast shadows at all (default true). */
+    /** {@return whether the scene file allows this light to cast shadows at all} (default true). */
     boolean castsShadows();
 
     /** A point light; its contribution falls off with the squared distance. */
@@ -25,20 +25,35 @@ public sealed interface Light {
      */
     record Area(Vec3 center, Vec3 normal, double size, int samples, Vec3 color, boolean castsShadows)
             implements Light {
+        /**
+         * Checks the number of samples.
+         *
+         * @param center the square's centre
+         * @param normal the unit normal along which it shines
+         * @param size the square's edge length
+         * @param samples points sampled per shading point
+         * @param color its total power
+         * @param castsShadows whether it casts shadows
+         */
         public Area {
             Limits.LIGHT_SAMPLES.check("samples", samples);
         }
 
-        /** A unit vector in the light's plane. */
+        /** {@return a unit vector in the light's plane} */
         public Vec3 edgeU() {
             Vec3 a = Math.abs(normal.x()) < 0.9 ? new Vec3(1, 0, 0) : new Vec3(0, 1, 0);
             return normal.cross(a).normalized();
         }
 
-        /** The second unit vector in the light's plane. */
+        /** {@return the second unit vector in the light's plane} */
         public Vec3 edgeV() { return normal.cross(edgeU()); }
 
-        /** The point at (s, t) in [0,1)^2 on the square. */
+        /**
+         * {@return the point at (s, t) in [0,1)^2 on the square}
+         *
+         * @param s the coordinate along {@link #edgeU()}
+         * @param t the coordinate along {@link #edgeV()}
+         */
         public Vec3 pointAt(double s, double t) {
             return center.plus(edgeU().times((s - 0.5) * size)).plus(edgeV().times((t - 0.5) * size));
         }

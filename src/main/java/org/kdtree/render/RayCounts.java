@@ -6,13 +6,28 @@ import java.util.Arrays;
 public final class RayCounts {
     private final long[] counts = new long[RayKind.values().length];
 
+    /**
+     * Counts one ray of {@code kind}.
+     *
+     * @param kind the ray's kind
+     */
     public void add(RayKind kind) { counts[kind.ordinal()]++; }
 
+    /**
+     * {@return the rays of {@code kind} counted}
+     *
+     * @param kind the kind
+     */
     public long get(RayKind kind) { return counts[kind.ordinal()]; }
 
+    /** {@return the rays of all kinds counted} */
     public long total() { return Arrays.stream(counts).sum(); }
 
-    /** Adds all of {@code other}'s counts to this. */
+    /**
+     * Adds all of {@code other}'s counts to this.
+     *
+     * @param other the counts to add
+     */
     public void merge(RayCounts other) {
         for (int i = 0; i < counts.length; i++) counts[i] += other.counts[i];
     }

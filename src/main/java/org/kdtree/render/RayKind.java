@@ -11,5 +11,6 @@ public enum RayKind {
     /** Refraction into or out of glass. */
     REFRACTION;
 
+    /** {@return the kind's name in lower case, for reports} */
     public String label() { return name().toLowerCase(java.util.Locale.ROOT); }
 }

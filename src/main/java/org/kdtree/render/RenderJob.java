@@ -17,7 +17,14 @@ import org.kdtree.tree.KdTree;
  */
 public record RenderJob(Scene scene, KdTree tree, long buildNanos, RenderResult result) {
 
-    /** Builds the tree and renders. */
+    /**
+     * Builds the tree and renders.
+     *
+     * @param scene the scene
+     * @param builder builds the tree over the scene's triangles
+     * @param options threads, tiles and progress
+     * @return the finished job
+     */
     public static RenderJob run(Scene scene, KdTreeBuilder builder, Renderer.Options options) {
         long t0 = System.nanoTime();
         KdTree tree = builder.build(scene.mesh());
@@ -27,12 +34,19 @@ public record RenderJob(Scene scene, KdTree tree, long buildNanos, RenderResult 
         return new RenderJob(scene, tree, buildNanos, result);
     }
 
-    /** "1 light", "2 lights": a count with its noun, in the plural where it is not one. */
+    /**
+     * {@return a count with its noun}, in the plural where it is not one: "1 light", "2 lights".
+     *
+     * @param n the count
+     * @param noun the noun in the singular
+     */
     public static String count(long n, String noun) {
         return String.format(Locale.ROOT, "%,d %s%s", n, noun, n == 1 ? "" : "s");
     }
 
-    /** The summary printed after a render: scene, plan, times, rays by kind and per second, tree statistics. */
+    /**
+     * {@return the summary printed after a render}: scene, plan, times, rays by kind and per second, tree statistics.
+     */
     public String summary() {
         StringBuilder s = new StringBuilder();
         Camera c = scene.camera();

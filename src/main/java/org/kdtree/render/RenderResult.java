@@ -13,7 +13,14 @@ package org.kdtree.render;
 public record RenderResult(Image image, EffectPlan plan, RayCounts rays, long renderNanos, int threads,
                            int[][] pixelRays) {
 
-    /** Rays of {@code kind} cast for pixel (x, y); needs a render that recorded them. */
+    /**
+     * {@return rays of {@code kind} cast for pixel (x, y)}; needs a render that recorded them.
+     *
+     * @param kind the kind
+     * @param x the pixel's column
+     * @param y the pixel's row
+     * @throws IllegalStateException if per-pixel rays were not recorded
+     */
     public int pixelRays(RayKind kind, int x, int y) {
         if (pixelRays == null) throw new IllegalStateException("per-pixel rays were not recorded");
         return pixelRays[kind.ordinal()][y * image.width() + x];

@@ -23,25 +23,48 @@ public final class Renderer {
      * @param recordPixelRays whether to keep per-pixel ray counts by kind (tests)
      */
     public record Options(int threads, int tileSize, TileListener progress, boolean recordPixelRays) {
-        /** All cores, 16-pixel tiles, no progress bar, no per-pixel counts. */
+        /** {@return all cores, 16-pixel tiles, no progress bar, no per-pixel counts} */
         public static Options defaults() {
             return new Options(Runtime.getRuntime().availableProcessors(), 16, null, false);
         }
 
+        /**
+         * {@return these options with {@code n} threads}
+         *
+         * @param n the number of threads
+         */
         public Options withThreads(int n) { return new Options(n, tileSize, progress, recordPixelRays); }
+        /**
+         * {@return these options reporting progress to {@code p}}
+         *
+         * @param p told of each finished tile
+         */
         public Options withProgress(TileListener p) { return new Options(threads, tileSize, p, recordPixelRays); }
+        /** {@return these options with per-pixel ray counts recorded} */
         public Options recordingPixelRays() { return new Options(threads, tileSize, progress, true); }
     }
 
     /** Hears of finished tiles, from the worker threads (possibly out of order). */
     public interface TileListener {
+        /**
+         * Called when a tile is finished.
+         *
+         * @param done the tiles finished so far
+         * @param total the tiles in the image
+         */
         void tilesDone(int done, int total);
     }
 
     private Renderer() {
     }
 
-    /** Renders {@code scene}, asking {@code queries} for one ray query per thread. */
+    /**
+     * {@return the rendered image and its statistics}
+     *
+     * @param scene the scene
+     * @param queries makes one ray query (tree traversal) per thread
+     * @param options threads, tiles and progress
+     */
     public static RenderResult render(Scene scene, Supplier<? extends RayQuery> queries, Options options) {
         EffectPlan plan = new EffectPlan(scene);
         int w = scene.camera().width(), h = scene.camera().height(), ts = options.tileSize();

@@ -14,8 +14,12 @@ public final class SceneGeometry {
     private final boolean[] smooth;
 
     /**
+     * Triangles with their materials and normals.
+     *
+     * @param mesh the triangles
+     * @param materialOf per triangle: its material index; not copied
      * @param normals x, y, z per vertex (unit, or zero where unused); not copied
-     * @param smooth  per triangle: interpolate vertex normals; not copied
+     * @param smooth per triangle: interpolate vertex normals; not copied
      */
     public SceneGeometry(TriangleMesh mesh, int[] materialOf, double[] normals, boolean[] smooth) {
         if (materialOf.length != mesh.size() || smooth.length != mesh.size() || normals.length != mesh.vertices().length)
@@ -26,14 +30,24 @@ public final class SceneGeometry {
         this.smooth = smooth;
     }
 
+    /** {@return the triangles} */
     public TriangleMesh mesh() { return mesh; }
 
+    /** {@return the number of triangles} */
     public int triangleCount() { return mesh.size(); }
 
-    /** The material index of triangle {@code t}. */
+    /**
+     * {@return the material index of triangle {@code t}}
+     *
+     * @param t the triangle's index
+     */
     public int materialOf(int t) { return materialOf[t]; }
 
-    /** The unnormalised geometric normal (v1 - v0) x (v2 - v0) of triangle {@code t}. */
+    /**
+     * {@return the unnormalised geometric normal (v1 - v0) x (v2 - v0) of triangle {@code t}}
+     *
+     * @param t the triangle's index
+     */
     public Vec3 geometricNormal(int t) {
         double[] v = mesh.vertices();
         int[] ix = mesh.indices();
@@ -43,12 +57,24 @@ public final class SceneGeometry {
         return e1.cross(e2);
     }
 
-    /** The point with barycentrics (u, v) on triangle {@code t}: exact to rounding of the vertices' size. */
+    /**
+     * {@return the point with barycentrics (u, v) on triangle {@code t}}: exact to rounding of the vertices' size.
+     *
+     * @param t the triangle's index
+     * @param u the first barycentric coordinate
+     * @param v the second barycentric coordinate
+     */
     public Vec3 point(int t, double u, double v) {
         return interpolate(mesh.vertices(), t, u, v);
     }
 
-    /** The unit shading normal at (u, v): interpolated if the triangle is smooth, else geometric. */
+    /**
+     * {@return the unit shading normal at (u, v)}: interpolated if the triangle is smooth, else geometric.
+     *
+     * @param t the triangle's index
+     * @param u the first barycentric coordinate
+     * @param v the second barycentric coordinate
+     */
     public Vec3 shadingNormal(int t, double u, double v) {
         if (!smooth[t]) return geometricNormal(t).normalized();
         Vec3 n = interpolate(normals, t, u, v);

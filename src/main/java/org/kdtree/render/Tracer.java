@@ -33,6 +33,13 @@ public final class Tracer {
     private final Hit hit = new Hit();
     private final double[] st = new double[2];
 
+    /**
+     * A tracer for one thread.
+     *
+     * @param scene the scene
+     * @param plan which rays to cast
+     * @param query this thread's ray queries against the tree
+     */
     public Tracer(Scene scene, EffectPlan plan, RayQuery query) {
         this.scene = scene;
         this.plan = plan;
@@ -43,10 +50,15 @@ public final class Tracer {
         this.sampler = new PixelSampler(scene.seed());
     }
 
-    /** The rays this tracer has cast so far. */
+    /** {@return the rays this tracer has cast so far} */
     public RayCounts counts() { return counts; }
 
-    /** The mean radiance of pixel (x, y) over the scene's samples per pixel. */
+    /**
+     * {@return the mean radiance of pixel (x, y) over the scene's samples per pixel}
+     *
+     * @param x the pixel's column
+     * @param y the pixel's row
+     */
     public Vec3 pixel(int x, int y) {
         sampler.startPixel(x, y);
         int n = scene.samplesPerPixel();

@@ -7,7 +7,12 @@ public final class PointsKd implements Primitives {
     private final int k;
     private final double[] coords;
 
-    /** @param coords k coordinates per point, point after point (not copied) */
+    /**
+     * Points in k dimensions.
+     *
+     * @param k the dimension, at least 1
+     * @param coords k coordinates per point, point after point (not copied)
+     */
     public PointsKd(int k, double[] coords) {
         if (k < 1) throw new IllegalArgumentException("dimension must be >= 1, got " + k);
         if (coords.length % k != 0)
@@ -19,6 +24,12 @@ public final class PointsKd implements Primitives {
                 throw new InvalidGeometryException(describe(i / k) + " has a non-finite coordinate (" + coords[i] + ")");
     }
 
+    /**
+     * {@return coordinate {@code axis} of point {@code i}}
+     *
+     * @param i the point's index
+     * @param axis the axis
+     */
     public double coord(int i, int axis) { return coords[i * k + axis]; }
 
     @Override public int dimension() { return k; }

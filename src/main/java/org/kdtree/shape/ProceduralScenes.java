@@ -13,7 +13,14 @@ public final class ProceduralScenes {
     private ProceduralScenes() {
     }
 
-    /** {@code n} random triangles with corners up to {@code size} from a uniform centre in the unit cube. */
+    /**
+     * {@code n} random triangles with corners up to {@code size} from a uniform centre in the unit cube.
+     *
+     * @param n the number of triangles
+     * @param size the largest corner offset from a triangle's centre
+     * @param seed the random seed
+     * @return the mesh
+     */
     public static TriangleMesh uniform(int n, double size, long seed) {
         Random r = new Random(seed);
         double[] v = new double[9 * n];
@@ -28,12 +35,24 @@ public final class ProceduralScenes {
         return new TriangleMesh(v, sequence(3 * n));
     }
 
-    /** {@code n} random triangles of a size that keeps the scene's density alike for every n. */
+    /**
+     * {@code n} random triangles of a size that keeps the scene's density alike for every n.
+     *
+     * @param n the number of triangles
+     * @param seed the random seed
+     * @return the mesh
+     */
     public static TriangleMesh uniform(int n, long seed) {
         return uniform(n, 2.0 / Math.cbrt(n), seed);
     }
 
-    /** {@code n} small triangles in five tight Gaussian clusters, every 50th one large. */
+    /**
+     * {@code n} small triangles in five tight Gaussian clusters, every 50th one large.
+     *
+     * @param n the number of triangles
+     * @param seed the random seed
+     * @return the mesh
+     */
     public static TriangleMesh clustered(int n, long seed) {
         Random r = new Random(seed);
         double[][] centers = new double[5][3];
@@ -56,6 +75,10 @@ public final class ProceduralScenes {
     /**
      * A closed, bumpy, mesh-like surface: a sphere of {@code rings x segments} quads (two
      * triangles each, shared vertices, as a scanned mesh has) with radial waves and noise.
+     * @param rings the number of rings, pole to pole
+     * @param segments the number of segments around
+     * @param seed the random seed
+     * @return the mesh
      */
     public static TriangleMesh surface(int rings, int segments, long seed) {
         Random r = new Random(seed);
@@ -84,7 +107,13 @@ public final class ProceduralScenes {
         return new TriangleMesh(v, idx);
     }
 
-    /** A mesh-like surface of about {@code n} triangles (rings : segments = 1 : 2). */
+    /**
+     * A mesh-like surface of about {@code n} triangles (rings : segments = 1 : 2).
+     *
+     * @param n the approximate number of triangles
+     * @param seed the random seed
+     * @return the mesh
+     */
     public static TriangleMesh surface(int n, long seed) {
         int rings = Math.max(2, (int) Math.round(Math.sqrt(n / 4.0)));
         return surface(rings, Math.max(3, n / (2 * rings)), seed);
@@ -95,6 +124,9 @@ public final class ProceduralScenes {
      * on the x-z plane, copy (gx, gz) offset by (1.1 gx extent.x, 0, 1.1 gz extent.z), the
      * extent taken over all vertices. Copies are numbered gx-major ({@code copy = gx * g + gz});
      * triangle t of copy c becomes {@code c * T + t}, T the mesh's triangle count.
+     * @param mesh the mesh to repeat
+     * @param g copies along x and along z
+     * @return the grid of {@code g * g} copies ({@code mesh} itself when g is 1)
      */
     public static TriangleMesh grid(TriangleMesh mesh, int g) {
         Limits.GRID.check("grid", g);
@@ -125,7 +157,12 @@ public final class ProceduralScenes {
         return new TriangleMesh(vs, fs);
     }
 
-    /** The spec's bounding box: min/max over all vertices, referenced by a triangle or not. */
+    /**
+     * The spec's bounding box: min/max over all vertices, referenced by a triangle or not.
+     *
+     * @param mesh the mesh
+     * @return its vertex bounds
+     */
     public static Box vertexBounds(TriangleMesh mesh) {
         Box b = new Box(3);
         double[] v = mesh.vertices();

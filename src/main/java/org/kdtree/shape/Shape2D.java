@@ -6,16 +6,25 @@ import org.kdtree.geom.PolygonClipper;
 /** One object of a 2-D workbench scene: a point, a segment, a rectangle or a triangle. */
 public sealed interface Shape2D permits Shape2D.Point, Shape2D.Segment, Shape2D.Rect, Shape2D.Triangle {
 
-    /** Writes this shape's bounds into a 2-D {@code dest}. */
+    /**
+     * Writes this shape's bounds into a 2-D {@code dest}.
+     *
+     * @param dest a 2-D box
+     */
     void bounds(Box dest);
 
-    /** Writes the bounds of the part inside {@code voxel} into {@code dest} (empty if none). */
+    /**
+     * Writes the bounds of the part inside {@code voxel} into {@code dest} (empty if none).
+     *
+     * @param voxel the voxel to clip to
+     * @param dest receives the bounds
+     */
     void clip(Box voxel, Box dest);
 
-    /** The coordinates, in the order of the scene file format. */
+    /** {@return the coordinates, in the order of the scene file format} */
     double[] coords();
 
-    /** The keyword of the scene file format: point, segment, rect, triangle. */
+    /** {@return the keyword of the scene file format: point, segment, rect, triangle} */
     String keyword();
 
     /** A point (x, y). */
@@ -41,6 +50,14 @@ public sealed interface Shape2D permits Shape2D.Point, Shape2D.Segment, Shape2D.
 
     /** An axis-aligned rectangle, filled, with corners (x0, y0) and (x1, y1) in any order. */
     record Rect(double x0, double y0, double x1, double y1) implements Shape2D {
+        /**
+         * Orders the corners so that (x0, y0) is the lower left one.
+         *
+         * @param x0 x of one corner
+         * @param y0 y of one corner
+         * @param x1 x of the opposite corner
+         * @param y1 y of the opposite corner
+         */
         public Rect {
             double ax = Math.min(x0, x1), bx = Math.max(x0, x1);
             double ay = Math.min(y0, y1), by = Math.max(y0, y1);

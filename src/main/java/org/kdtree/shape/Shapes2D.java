@@ -7,7 +7,12 @@ import org.kdtree.geom.Box;
 public final class Shapes2D implements Primitives {
     private final List<Shape2D> shapes;
 
-    /** Wraps a copy of the list; rejects NaN or infinite coordinates, naming the shape. */
+    /**
+     * Wraps a copy of the list; rejects NaN or infinite coordinates, naming the shape.
+     *
+     * @param shapes the shapes, primitive i being the i-th
+     * @throws InvalidGeometryException for a non-finite coordinate
+     */
     public Shapes2D(List<? extends Shape2D> shapes) {
         this.shapes = List.copyOf(shapes);
         for (int i = 0; i < this.shapes.size(); i++) {
@@ -18,7 +23,13 @@ public final class Shapes2D implements Primitives {
         }
     }
 
+    /**
+     * {@return shape {@code i}}
+     *
+     * @param i the primitive's index
+     */
     public Shape2D get(int i) { return shapes.get(i); }
+    /** {@return the shapes, unmodifiable} */
     public List<Shape2D> shapes() { return shapes; }
 
     @Override public int dimension() { return 2; }

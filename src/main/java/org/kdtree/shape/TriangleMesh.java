@@ -64,15 +64,22 @@ public final class TriangleMesh implements Primitives {
                     + " (the ray/triangle test would underflow); scale the scene up");
     }
 
-    /** The flat vertex array (x, y, z per vertex); do not modify. */
+    /** {@return the flat vertex array (x, y, z per vertex)}; do not modify. */
     public double[] vertices() { return vertices; }
 
-    /** The flat index array (three per triangle); do not modify. */
+    /** {@return the flat index array (three per triangle)}; do not modify. */
     public int[] indices() { return indices; }
 
+    /** {@return the number of vertices} */
     public int vertexCount() { return vertices.length / 3; }
 
-    /** Coordinate {@code axis} of corner {@code corner} (0..2) of triangle {@code t}. */
+    /**
+     * {@return coordinate {@code axis} of corner {@code corner} (0..2) of triangle {@code t}}
+     *
+     * @param t the triangle's index
+     * @param corner 0, 1 or 2
+     * @param axis the axis
+     */
     public double corner(int t, int corner, int axis) {
         return vertices[3 * indices[3 * t + corner] + axis];
     }

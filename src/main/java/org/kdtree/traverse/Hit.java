@@ -13,7 +13,11 @@ public final class Hit {
     /** Barycentric coordinates of the hit on a triangle (u for vertex 1, v for vertex 2). */
     public double u, v;
 
-    /** Forgets any hit. */
+    /**
+     * Forgets any hit.
+     *
+     * @return this hit
+     */
     public Hit reset() {
         primitive = -1;
         t = Double.POSITIVE_INFINITY;
@@ -21,6 +25,7 @@ public final class Hit {
         return this;
     }
 
+    /** {@return whether a primitive was hit} */
     public boolean found() { return primitive >= 0; }
 
     @Override public String toString() {

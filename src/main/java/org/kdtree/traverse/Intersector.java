@@ -7,10 +7,10 @@ import org.kdtree.geom.Ray;
  * Implementations must be safe for concurrent use and allocate nothing per call.
  */
 public interface Intersector {
-    /** k, the dimension. */
+    /** {@return k, the dimension} */
     int dimension();
 
-    /** The number of primitives. */
+    /** {@return the number of primitives} */
     int size();
 
     /**
@@ -19,6 +19,12 @@ public interface Intersector {
      * {@code hit} and returns true; otherwise leaves {@code hit} untouched and returns false.
      * A ray meeting a primitive exactly on an edge or vertex hits it; degenerate primitives
      * are never hit.
+     * @param i the primitive's index
+     * @param ray the ray
+     * @param tMin the start of the ray's range
+     * @param tMax the end of the ray's range
+     * @param hit the closest hit so far; updated on a closer hit
+     * @return whether a closer hit was recorded
      */
     boolean intersect(int i, Ray ray, double tMin, double tMax, Hit hit);
 }

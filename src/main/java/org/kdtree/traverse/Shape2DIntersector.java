@@ -26,6 +26,11 @@ public final class Shape2DIntersector implements Intersector {
     /** Up to three vertices (x, y) per shape; rectangles store their two corners. */
     private final double[] xy;
 
+    /**
+     * An intersector for the shapes, with their vertices copied into flat arrays.
+     *
+     * @param shapes the 2-D scene
+     */
     public Shape2DIntersector(Shapes2D shapes) {
         int n = shapes.size();
         kind = new int[n];

@@ -39,31 +39,83 @@ public interface TraversalListener {
     /** A listener that ignores everything. */
     TraversalListener NONE = new TraversalListener() { };
 
-    /** The ray enters the scene box over {@code [tMin, tMax]} (already clipped to the caller's range). */
+    /**
+     * The ray enters the scene box over {@code [tMin, tMax]} (already clipped to the caller's range).
+     *
+     * @param tMin where the ray enters the scene box
+     * @param tMax where it leaves
+     */
     default void begin(double tMin, double tMax) { }
 
     /** The ray misses the scene box (or the caller's range is empty): nothing is visited. */
     default void missedScene() { }
 
-    /** An interior node: its split plane, the ray's interval in it, and the decision taken. */
+    /**
+     * An interior node: its split plane, the ray's interval in it, and the decision taken.
+     *
+     * @param node the interior node's index
+     * @param axis its split axis
+     * @param split its split plane's position
+     * @param tMin where the ray enters the node's voxel
+     * @param tMax where it leaves
+     * @param tSplit where it meets the split plane
+     * @param near the near child, the one the ray enters first
+     * @param far the far child
+     * @param visit which of them the ray visits
+     */
     default void interior(int node, int axis, double split, double tMin, double tMax, double tSplit,
                           int near, int far, Visit visit) { }
 
-    /** The far child is saved on the stack, to be visited over {@code [tMin, tMax]}. */
+    /**
+     * The far child is saved on the stack, to be visited over {@code [tMin, tMax]}.
+     *
+     * @param node the far child's index
+     * @param tMin where the ray enters it
+     * @param tMax where it leaves
+     */
     default void pushFar(int node, double tMin, double tMax) { }
 
-    /** A saved node is taken from the stack; {@code skipped} when it lies beyond the closest hit. */
+    /**
+     * A saved node is taken from the stack; {@code skipped} when it lies beyond the closest hit.
+     *
+     * @param node the saved node's index
+     * @param tMin where the ray enters it
+     * @param tMax where it leaves
+     * @param skipped whether it is dropped as lying beyond the closest hit
+     */
     default void pop(int node, double tMin, double tMax, boolean skipped) { }
 
-    /** A leaf with {@code count} primitive references, visited over {@code [tMin, tMax]}. */
+    /**
+     * A leaf with {@code count} primitive references, visited over {@code [tMin, tMax]}.
+     *
+     * @param node the leaf's index
+     * @param tMin where the ray enters the leaf
+     * @param tMax where it leaves
+     * @param count the number of primitive references
+     */
     default void leaf(int node, double tMin, double tMax, int count) { }
 
-    /** A primitive was tested; {@code hit} with its t when it was hit (NaN otherwise). */
+    /**
+     * A primitive was tested; {@code hit} with its t when it was hit (NaN otherwise).
+     *
+     * @param primitive the primitive's index
+     * @param hit whether the ray hit it
+     * @param t the hit's parameter, or NaN
+     */
     default void primitive(int primitive, boolean hit, double t) { }
 
-    /** A primitive referenced again in this leaf was not tested again (mailboxing). */
+    /**
+     * A primitive referenced again in this leaf was not tested again (mailboxing).
+     *
+     * @param primitive the primitive's index
+     */
     default void mailboxed(int primitive) { }
 
-    /** The query is over; {@code hit} holds the result of a closest-hit query (none for others). */
+    /**
+     * The query is over; {@code hit} holds the result of a closest-hit query (none for others).
+     *
+     * @param found whether the query found a hit
+     * @param hit the closest hit, for a closest-hit query
+     */
     default void end(boolean found, Hit hit) { }
 }

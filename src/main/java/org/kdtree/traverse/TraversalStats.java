@@ -19,12 +19,22 @@ public final class TraversalStats implements TraversalListener {
     /** Rays traced. */
     public long rays;
 
+    /**
+     * Sets every count to zero.
+     *
+     * @return these statistics
+     */
     public TraversalStats reset() {
         nodes = leaves = primitiveTests = hits = mailboxed = rays = 0;
         return this;
     }
 
-    /** Adds another's counts to these. */
+    /**
+     * Adds another's counts to these.
+     *
+     * @param o the counts to add
+     * @return these statistics
+     */
     public TraversalStats add(TraversalStats o) {
         nodes += o.nodes; leaves += o.leaves; primitiveTests += o.primitiveTests;
         hits += o.hits; mailboxed += o.mailboxed; rays += o.rays;

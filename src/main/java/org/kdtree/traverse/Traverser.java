@@ -54,6 +54,13 @@ public final class Traverser implements RayQuery {
     /** The ray's range clipped to the scene box, from {@link #clipToScene}. */
     private double enter, exit;
 
+    /**
+     * A traverser of {@code tree} over {@code prims}, the primitives it was built over.
+     *
+     * @param tree the tree
+     * @param prims the intersector for the tree's primitives
+     * @throws IllegalArgumentException if their dimensions differ
+     */
     public Traverser(KdTree tree, Intersector prims) {
         if (tree.dimension() != prims.dimension())
             throw new IllegalArgumentException("tree is " + tree.dimension() + "-D, primitives " + prims.dimension() + "-D");
@@ -78,7 +85,9 @@ public final class Traverser implements RayQuery {
         fast = prims instanceof TriangleIntersector t ? new MeshTraversal(tree, t, mailbox, depth) : null;
     }
 
+    /** {@return the tree} */
     public KdTree tree() { return tree; }
+    /** {@return the intersector for the tree's primitives} */
     public Intersector intersector() { return prims; }
 
     @Override public boolean closestHit(Ray ray, double tMin, double tMax, Hit hit) {
@@ -86,7 +95,16 @@ public final class Traverser implements RayQuery {
         return closestHit(ray, tMin, tMax, hit, TraversalListener.NONE);
     }
 
-    /** {@link #closestHit(Ray, double, double, Hit)}, reporting each step to {@code listener}. */
+    /**
+     * {@link #closestHit(Ray, double, double, Hit)}, reporting each step to {@code listener}.
+     *
+     * @param ray the ray
+     * @param tMin the start of the ray's range
+     * @param tMax the end of the ray's range
+     * @param hit receives the closest hit
+     * @param listener is told each step
+     * @return whether the ray hit a primitive
+     */
     public boolean closestHit(Ray ray, double tMin, double tMax, Hit hit, TraversalListener listener) {
         hit.reset();
         boolean found = trace(CLOSEST, ray, tMin, tMax, hit, null, listener);
@@ -99,7 +117,15 @@ public final class Traverser implements RayQuery {
         return anyHit(ray, tMin, tMax, TraversalListener.NONE);
     }
 
-    /** {@link #anyHit(Ray, double, double)}, reporting each step to {@code listener}. */
+    /**
+     * {@link #anyHit(Ray, double, double)}, reporting each step to {@code listener}.
+     *
+     * @param ray the ray
+     * @param tMin the start of the ray's range
+     * @param tMax the end of the ray's range
+     * @param listener is told each step
+     * @return whether the ray hit a primitive
+     */
     public boolean anyHit(Ray ray, double tMin, double tMax, TraversalListener listener) {
         boolean found = trace(ANY, ray, tMin, tMax, scratch.reset(), null, listener);
         listener.end(found, scratch);
@@ -110,12 +136,24 @@ public final class Traverser implements RayQuery {
      * Every intersection with {@code tMin <= t <= tMax}, one per primitive hit (its closest point
      * in the range), sorted by t (ties by primitive). Allocates the list: for the workbench, not
      * for hot loops.
+     * @param ray the ray
+     * @param tMin the start of the ray's range
+     * @param tMax the end of the ray's range
+     * @return the hits
      */
     public List<Hit> allHits(Ray ray, double tMin, double tMax) {
         return allHits(ray, tMin, tMax, TraversalListener.NONE);
     }
 
-    /** {@link #allHits(Ray, double, double)}, reporting each step to {@code listener}. */
+    /**
+     * {@link #allHits(Ray, double, double)}, reporting each step to {@code listener}.
+     *
+     * @param ray the ray
+     * @param tMin the start of the ray's range
+     * @param tMax the end of the ray's range
+     * @param listener is told each step
+     * @return the hits
+     */
     public List<Hit> allHits(Ray ray, double tMin, double tMax, TraversalListener listener) {
         List<Hit> all = new ArrayList<>();
         trace(ALL, ray, tMin, tMax, scratch.reset(), all, listener);

@@ -26,6 +26,11 @@ public final class TriangleIntersector implements Intersector {
     private final double[] corners;
     private final int size;
 
+    /**
+     * An intersector for the mesh's triangles, with their corners copied into a flat array.
+     *
+     * @param mesh the triangles
+     */
     public TriangleIntersector(TriangleMesh mesh) {
         this.size = mesh.size();
         this.corners = flatCorners(mesh);
@@ -34,10 +39,14 @@ public final class TriangleIntersector implements Intersector {
     @Override public int dimension() { return 3; }
     @Override public int size() { return size; }
 
-    /** x, y, z of corners 0, 1, 2 per triangle (NaN for degenerate ones); do not modify. */
+    /** {@return x, y, z of corners 0, 1, 2 per triangle (NaN for degenerate ones)}; do not modify. */
     public double[] cornerArray() { return corners; }
 
-    /** Whether triangle {@code t} has zero area and is therefore never hit. */
+    /**
+     * {@return whether triangle {@code t} has zero area and is therefore never hit}
+     *
+     * @param t the triangle's index
+     */
     public boolean isDegenerate(int t) { return Double.isNaN(corners[9 * t]); }
 
     @Override public boolean intersect(int i, Ray ray, double tMin, double tMax, Hit hit) {
@@ -89,6 +98,11 @@ public final class TriangleIntersector implements Intersector {
     /**
      * The closest hit over all triangles, by brute force with the per-ray shear computed once: the
      * same answers as {@link BruteForce} on this intersector, faster (for checking large runs).
+     * @param ray the ray
+     * @param tMin the start of the ray's range
+     * @param tMax the end of the ray's range
+     * @param hit receives the closest hit
+     * @return whether the ray hit a triangle
      */
     public boolean closestHitAll(Ray ray, double tMin, double tMax, Hit hit) {
         hit.reset();

@@ -47,71 +47,138 @@ public final class KdTree {
         this.leafMark = (1 << axisBits) - 1;
     }
 
-    /** The width of a word's axis field in a {@code dimension}-D tree: wide enough for every axis and the leaf mark. */
+    /**
+     * The width of a word's axis field in a {@code dimension}-D tree: wide enough for every axis and the leaf mark.
+     *
+     * @param dimension k, 1 .. {@link #MAX_DIMENSION}
+     * @return the number of low bits of a word that hold the axis or the leaf mark
+     * @throws IllegalArgumentException if {@code dimension} is out of range
+     */
     public static int axisBits(int dimension) {
         if (dimension < 1 || dimension > MAX_DIMENSION)
             throw new IllegalArgumentException("a tree has 1 to " + MAX_DIMENSION + " dimensions, not " + dimension);
         return 32 - Integer.numberOfLeadingZeros(dimension);
     }
 
-    /** The largest node index a {@code dimension}-D tree can hold. */
+    /**
+     * The largest node index a {@code dimension}-D tree can hold.
+     *
+     * @param dimension k, 1 .. {@link #MAX_DIMENSION}
+     * @return the largest index a node (or leaf) of such a tree may have
+     */
     public static int maxNode(int dimension) {
         return (1 << (31 - axisBits(dimension))) - 1;
     }
 
-    /** The width of the axis field at the bottom of a node's word. */
+    /** {@return the width of the axis field at the bottom of a node's word} */
     public int axisBits() { return axisBits; }
 
-    /** The axis field's value in a leaf's word (all ones): {@code (w & leafMark()) == leafMark()} tests for a leaf. */
+    /**
+     * {@return the axis field's value in a leaf's word (all ones)}: {@code (w & leafMark()) == leafMark()} tests for a leaf.
+     */
     public int leafMark() { return leafMark; }
 
-    /** k, the dimension. */
+    /** {@return k, the dimension} */
     public int dimension() { return bounds.dimension(); }
 
-    /** The root voxel (a copy). */
+    /** {@return the root voxel (a copy)} */
     public Box bounds() { return bounds.copy(); }
 
-    /** The Kt and Ki used for {@link TreeStats#expectedCost()}. */
+    /** {@return the Kt and Ki used for {@link TreeStats#expectedCost()}} */
     public CostModel costModel() { return cost; }
 
-    /** The name of the builder that made this tree. */
+    /** {@return the name of the builder that made this tree} */
     public String builderName() { return builderName; }
 
+    /** {@return the number of nodes, interior and leaf} */
     public int nodeCount() { return word.length; }
 
     /**
      * Leaves the build made early because the reference budget ran out
      * ({@code KdTreeBuilder.referenceBudget}); 0 when the tree is the one the builder's own rules make.
+     * @return the number of such early leaves
      */
     public int budgetLeaves() { return budgetLeaves; }
+    /** {@return the number of leaves} */
     public int leafCount() { return leafStart.length - 1; }
 
     // ---- node access, for traversal (hot path: no allocation) ----
 
+    /**
+     * {@return whether {@code node} is a leaf}
+     * @param node a node index
+     */
     public boolean isLeaf(int node) { return (word[node] & leafMark) == leafMark; }
+    /**
+     * {@return the split axis of interior node {@code node}}
+     * @param node an interior node's index
+     */
     public int axis(int node) { return word[node] & leafMark; }
+    /**
+     * {@return the split plane's position on the axis of interior node {@code node}}
+     * @param node an interior node's index
+     */
     public double split(int node) { return split[node]; }
+    /**
+     * {@return the left (lower) child of interior node {@code node}: always {@code node + 1}}
+     * @param node an interior node's index
+     */
     public int leftChild(int node) { return node + 1; }
+    /**
+     * {@return the upper child of interior node {@code node}}
+     * @param node an interior node's index
+     */
     public int rightChild(int node) { return word[node] >>> axisBits; }
+    /**
+     * {@return the index among the leaves of leaf node {@code node}}
+     * @param node a leaf node's index
+     */
     public int leafIndex(int node) { return word[node] >>> axisBits; }
+    /**
+     * {@return where the references of leaf {@code node} begin in {@link #refArray()}}
+     * @param node a leaf node's index
+     */
     public int leafStart(int node) { return leafStart[leafIndex(node)]; }
+    /**
+     * {@return where the references of leaf {@code node} end (exclusive) in {@link #refArray()}}
+     * @param node a leaf node's index
+     */
     public int leafEnd(int node) { return leafStart[leafIndex(node) + 1]; }
+    /**
+     * {@return the number of primitive references in leaf {@code node}}
+     * @param node a leaf node's index
+     */
     public int leafSize(int node) { return leafEnd(node) - leafStart(node); }
-    /** The i-th entry of the shared leaf reference array. */
+    /**
+     * {@return the i-th entry of the shared leaf reference array}
+     * @param i an index into {@link #refArray()}
+     */
     public int ref(int i) { return refs[i]; }
 
-    /** The raw arrays, for flat hot loops (traversal); never modify them. */
+    /**
+     * {@return the node words (axis or leaf mark, child or leaf index)}: the raw array for flat hot loops; never modify it.
+     */
     public int[] wordArray() { return word; }
+    /** {@return the split positions per node}: the raw array; never modify it. */
     public double[] splitArray() { return split; }
+    /** {@return the start of each leaf's references, plus one final end}: the raw array; never modify it. */
     public int[] leafStartArray() { return leafStart; }
+    /** {@return the shared leaf reference array (primitive indices)}: the raw array; never modify it. */
     public int[] refArray() { return refs; }
 
-    /** The primitives of a leaf node, as a new array. */
+    /**
+     * {@return the primitives referenced by a leaf node, as a new array}
+     * @param node a leaf node's index
+     */
     public int[] leafPrimitives(int node) {
         return java.util.Arrays.copyOfRange(refs, leafStart(node), leafEnd(node));
     }
 
-    /** Visits every node depth first, left child first, with its voxel and depth. */
+    /**
+     * Visits every node depth first, left child first, with its voxel and depth.
+     *
+     * @param visitor receives every interior node and leaf
+     */
     public void walk(TreeVisitor visitor) {
         walk(0, 0, bounds.copy(), visitor);
     }
@@ -132,13 +199,13 @@ public final class KdTree {
         voxel.setMin(axis, lo);
     }
 
-    /** The tree's statistics (computed once). */
+    /** {@return the tree's statistics (computed once)} */
     public TreeStats stats() {
         if (stats == null) stats = TreeStatistics.of(this);
         return stats;
     }
 
-    /** Bytes held by the arrays (12 per node, 4 per leaf, 4 per reference, plus headers). */
+    /** {@return bytes held by the arrays (12 per node, 4 per leaf, 4 per reference, plus headers)} */
     public long memoryBytes() {
         return 16L * 4 + 4L * word.length + 8L * split.length + 4L * leafStart.length + 4L * refs.length;
     }

@@ -20,7 +20,11 @@ public final class KdTreeWriter {
     private int budgetLeaves;
     private final int dimension, axisBits, leafMark, maxNode;
 
-    /** A writer for a tree of {@code dimension} dimensions (1 .. {@link KdTree#MAX_DIMENSION}): it fixes the word's layout. */
+    /**
+     * A writer for a tree of {@code dimension} dimensions (1 .. {@link KdTree#MAX_DIMENSION}): it fixes the word's layout.
+     *
+     * @param dimension k, the tree's dimension
+     */
     public KdTreeWriter(int dimension) {
         this.dimension = dimension;
         axisBits = KdTree.axisBits(dimension);
@@ -28,7 +32,13 @@ public final class KdTreeWriter {
         maxNode = KdTree.maxNode(dimension);
     }
 
-    /** Writes an interior node and returns its index; its left child is the next node written. */
+    /**
+     * Writes an interior node and returns its index; its left child is the next node written.
+     *
+     * @param axis the split axis, 0 .. k-1
+     * @param xi the split plane's position on {@code axis}
+     * @return the new node's index
+     */
     public int interior(int axis, double xi) {
         if (axis < 0 || axis >= dimension)
             throw new IllegalArgumentException("axis " + axis + " out of range 0.." + (dimension - 1));
@@ -38,14 +48,24 @@ public final class KdTreeWriter {
         return n;
     }
 
-    /** Sets the right child of interior node {@code node} to the next node to be written. */
+    /**
+     * Sets the right child of interior node {@code node} to the next node to be written.
+     *
+     * @param node an interior node written earlier
+     */
     public void setRightChild(int node) {
         int child = nodes;
         if (child > maxNode) throw new IllegalStateException("tree exceeds " + maxNode + " nodes");
         word[node] = (child << axisBits) | (word[node] & leafMark);
     }
 
-    /** Writes a leaf holding {@code prims[0 .. count)} and returns its node index. */
+    /**
+     * Writes a leaf holding {@code prims[0 .. count)} and returns its node index.
+     *
+     * @param prims primitive indices
+     * @param count how many of them the leaf holds
+     * @return the leaf's node index
+     */
     public int leaf(int[] prims, int count) {
         return leaf(prims, 0, count);
     }
@@ -55,7 +75,14 @@ public final class KdTreeWriter {
         budgetLeaves++;
     }
 
-    /** Writes a leaf holding {@code prims[from .. from + count)} and returns its node index. */
+    /**
+     * Writes a leaf holding {@code prims[from .. from + count)} and returns its node index.
+     *
+     * @param prims primitive indices
+     * @param from the first of them the leaf holds
+     * @param count how many it holds
+     * @return the leaf's node index
+     */
     public int leaf(int[] prims, int from, int count) {
         int n = newNode();
         if (leaves + 2 > leafStart.length) leafStart = Arrays.copyOf(leafStart, leafStart.length * 2);
@@ -71,7 +98,12 @@ public final class KdTreeWriter {
         return n;
     }
 
-    /** Appends the whole tree written by {@code sub} as the next subtree; returns its root index. */
+    /**
+     * Appends the whole tree written by {@code sub} as the next subtree; returns its root index.
+     *
+     * @param sub a finished writer of the same dimension
+     * @return the node index of the appended subtree's root
+     */
     public int append(KdTreeWriter sub) {
         if (sub.dimension != dimension) throw new IllegalArgumentException("a subtree of another dimension");
         if ((long) nodes + sub.nodes > maxNode) throw new IllegalStateException("tree exceeds " + maxNode + " nodes");
@@ -99,6 +131,8 @@ public final class KdTreeWriter {
      * Makes room for {@code nodes} nodes, about half of them leaves, and {@code refs} leaf
      * references, so that a builder that can estimate its tree's size spares the copies of
      * growing by doubling. Writing beyond it still works.
+     * @param nodes the expected number of nodes
+     * @param refs the expected number of leaf references
      */
     public void reserve(int nodes, int refs) {
         if (word.length < nodes) {
@@ -117,10 +151,17 @@ public final class KdTreeWriter {
         budgetLeaves = 0;
     }
 
-    /** The number of nodes written so far. */
+    /** {@return the number of nodes written so far} */
     public int nodeCount() { return nodes; }
 
-    /** Finishes the tree. */
+    /**
+     * Finishes the tree.
+     *
+     * @param rootVoxel the scene box, the root's voxel
+     * @param cost the Kt and Ki the tree reports its expected cost with
+     * @param builderName the name of the builder, for reports
+     * @return the tree
+     */
     public KdTree finish(Box rootVoxel, CostModel cost, String builderName) {
         if (rootVoxel.dimension() != dimension)
             throw new IllegalArgumentException("a " + rootVoxel.dimension() + "-D root for a writer of another dimension");

@@ -16,7 +16,7 @@ package org.kdtree.tree;
 public record TreeStats(int nodes, int leaves, int emptyLeaves, int maxDepth, double averageLeafDepth,
                         long references, double averageRefsPerLeaf, long memoryBytes, double expectedCost) {
 
-    /** Several lines of "name: value", for the command line. */
+    /** {@return several lines of "name: value", for the command line} */
     public String describe() {
         return String.format(java.util.Locale.ROOT,
                 "nodes: %d%nleaves: %d%nempty leaves: %d%nmax depth: %d%naverage leaf depth: %.2f%n"
