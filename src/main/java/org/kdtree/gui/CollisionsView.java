@@ -53,17 +53,17 @@ public final class CollisionsView extends JPanel {
     /** The number of balls to drop. */
     private final JSpinner count = LimitedSpinner.of(Limits.BALLS, "balls", 300, 50, this::reject);
     /** Starts or stops the balls. */
-    private final JButton start = button("Start", "collide.start", "Start or stop the balls (Ctrl+Shift+B)", this::toggle);
+    private final JButton start = Widgets.button("Start", "collide.start", "Start or stop the balls (Ctrl+Shift+B)", this::toggle);
     /** Frames simulated since the balls were dropped. */
-    private final JLabel frameLabel = label("collide.frame", "Frames simulated since the balls were dropped");
+    private final JLabel frameLabel = Widgets.label("collide.frame", "Frames simulated since the balls were dropped");
     /** Ball/object tests the tree needed in the last frame. */
-    private final JLabel testsLabel = label("collide.tests", "Ball/object tests the tree needed in the last frame");
+    private final JLabel testsLabel = Widgets.label("collide.tests", "Ball/object tests the tree needed in the last frame");
     /** Tests brute force would need in the last frame. */
-    private final JLabel bruteLabel = label("collide.brute", "Tests brute force would need in the last frame: every object per sweep");
+    private final JLabel bruteLabel = Widgets.label("collide.brute", "Tests brute force would need in the last frame: every object per sweep");
     /** The tree's tests as a share of brute force's. */
-    private final JLabel ratioLabel = label("collide.ratio", "The tree's tests as a share of brute force's");
+    private final JLabel ratioLabel = Widgets.label("collide.ratio", "The tree's tests as a share of brute force's");
     /** Why a typed ball count is refused, or blank. */
-    private final JLabel rejection = label("collide.rejection", "Why a typed ball count is refused");
+    private final JLabel rejection = Widgets.label("collide.rejection", "Why a typed ball count is refused");
     /** Advances the simulation one frame per tick. */
     private final Timer timer = new Timer(FRAME_MILLIS, e -> frame());
     /** Drops the balls at random places (fixed seed: the same drop every time). */
@@ -93,8 +93,8 @@ public final class CollisionsView extends JPanel {
         this.model = model;
         JPanel controls = new JPanel(new FlowLayout(FlowLayout.LEFT, 10, 2));
         controls.add(start);
-        controls.add(button("Frame", "collide.step", "Simulate one frame (Ctrl+Shift+F)", this::stepOnce));
-        controls.add(button("Reset", "collide.reset", "Drop the balls again from above the scene (Ctrl+Shift+R)", this::reset));
+        controls.add(Widgets.button("Frame", "collide.step", "Simulate one frame (Ctrl+Shift+F)", this::stepOnce));
+        controls.add(Widgets.button("Reset", "collide.reset", "Drop the balls again from above the scene (Ctrl+Shift+R)", this::reset));
         controls.add(new JLabel("balls"));
         count.setName("collide.balls");
         count.setToolTipText("How many balls fall (a change drops them again); " + LimitedSpinner.allowed(Limits.BALLS));
@@ -205,21 +205,7 @@ public final class CollisionsView extends JPanel {
         rejection.setText(why == null ? " " : why);
     }
 
-    private static JButton button(String text, String name, String tip, Runnable r) {
-        JButton b = new JButton(text);
-        b.setName(name);
-        b.setToolTipText(tip);
-        b.setFocusable(false);
-        b.addActionListener(e -> r.run());
-        return b;
-    }
 
-    private static JLabel label(String name, String tip) {
-        JLabel l = new JLabel(" ");
-        l.setName(name);
-        l.setToolTipText(tip);
-        return l;
-    }
 
     /** The scene, its tree and the balls. */
     private final class Arena extends JComponent {

@@ -3,7 +3,6 @@ package org.kdtree.gui;
 import java.awt.BasicStroke;
 import java.awt.BorderLayout;
 import java.awt.Color;
-import java.awt.FlowLayout;
 import java.awt.Graphics2D;
 import java.awt.GridLayout;
 import java.awt.geom.Ellipse2D;
@@ -11,12 +10,9 @@ import java.util.BitSet;
 import java.util.List;
 import java.util.Locale;
 import javax.swing.BorderFactory;
-import javax.swing.JButton;
 import javax.swing.JLabel;
 import javax.swing.JPanel;
-import javax.swing.JSlider;
 import javax.swing.JSpinner;
-import javax.swing.Timer;
 import org.kdtree.collide.ShapeCollider;
 import org.kdtree.geom.Box;
 import org.kdtree.limits.Limits;
@@ -41,31 +37,23 @@ public final class NearestStepperPanel extends JPanel implements CanvasOverlay {
     /** The model whose scene, tree and query point are searched. */
     private final WorkbenchModel model;
     /** Which event of the search is shown. */
-    private final JLabel stepLabel = label("knn.label", "Which event of the nearest-neighbour search is shown");
+    private final JLabel stepLabel = Widgets.label("knn.label", "Which event of the nearest-neighbour search is shown");
     /** The node the search is at, and the distance from the query to its voxel. */
-    private final JLabel nodeLabel = label("knn.node", "The node the search is at, and the distance from the query to its voxel");
+    private final JLabel nodeLabel = Widgets.label("knn.node", "The node the search is at, and the distance from the query to its voxel");
     /** The k-th best distance so far: the search radius. */
-    private final JLabel radiusLabel = label("knn.kth", "The k-th best distance so far: the search radius (dashed circle); voxels beyond it are pruned");
+    private final JLabel radiusLabel = Widgets.label("knn.kth", "The k-th best distance so far: the search radius (dashed circle); voxels beyond it are pruned");
     /** The object tested at this step and its exact distance. */
-    private final JLabel testedLabel = label("knn.tested", "The object tested at this step (red) and its exact distance");
+    private final JLabel testedLabel = Widgets.label("knn.tested", "The object tested at this step (red) and its exact distance");
     /** The k best objects so far, nearest first. */
-    private final JLabel bestLabel = label("knn.best", "The k best objects so far (black), nearest first");
+    private final JLabel bestLabel = Widgets.label("knn.best", "The k best objects so far (black), nearest first");
     /** The k nearest objects and the search's cost. */
-    private final JLabel resultLabel = label("knn.result", "The k nearest objects and the search's cost");
+    private final JLabel resultLabel = Widgets.label("knn.result", "The k nearest objects and the search's cost");
     /** Why a typed k is refused, or blank. */
-    private final JLabel rejection = label("knn.rejection", "Why a typed k is refused");
+    private final JLabel rejection = Widgets.label("knn.rejection", "Why a typed k is refused");
     /** The k searched for. */
     private final JSpinner kSpinner = LimitedSpinner.of(Limits.STEPPER_K, "k", 3, 1, this::reject);
-    /** Chooses the step shown. */
-    private final JSlider slider = new JSlider(0, 0, 0);
-    /** Advances one step per tick while playing. */
-    private final Timer player = new Timer(350, e -> playStep());
-    /** Starts or stops playing. */
-    private final JButton play;
     /** The recorded search of the current query. */
     private NearestTrace trace = NearestTrace.EMPTY;
-    /** The step shown. */
-    private int index;
     /** Nodes entered, and nodes pruned, up to the step shown. */
     private BitSet entered = new BitSet(), pruned = new BitSet();
     /** The voxel of each node of {@link #voxelsOf}. */
@@ -78,8 +66,8 @@ public final class NearestStepperPanel extends JPanel implements CanvasOverlay {
     private Shapes2D colliderOf;
     /** Scratch for the closest point of an object to the query. */
     private final double[] closest = new double[3];
-    /** True while the panel sets its own controls, so that their listeners do not act. */
-    private boolean updating;
+    /** The step buttons and slider; they keep the step shown. */
+    private final StepControls controls = new StepControls("knn", "search", "Ctrl+Shift", this::showStep);
 
     /**
      * A stepper for the query point of {@code model}, searched again on every change of tree or query.
@@ -90,25 +78,13 @@ public final class NearestStepperPanel extends JPanel implements CanvasOverlay {
         super(new BorderLayout());
         this.model = model;
         setBorder(BorderFactory.createTitledBorder("Nearest-neighbour stepper - place a query with the k-NN query tool (F8)"));
-        JPanel buttons = new JPanel(new FlowLayout(FlowLayout.LEFT, 2, 0));
+        JPanel buttons = controls.bar();
         buttons.add(new JLabel("k"));
         kSpinner.setName("knn.k");
         kSpinner.setToolTipText("How many nearest objects to search for; " + LimitedSpinner.allowed(Limits.STEPPER_K));
         kSpinner.addChangeListener(e -> retrace());
         buttons.add(kSpinner);
-        buttons.add(button("|<", "knn.first", "First step (Ctrl+Shift+Home)", this::first));
-        buttons.add(button("<", "knn.prev", "Step back (Ctrl+Shift+Left)", this::back));
-        buttons.add(button(">", "knn.next", "Step forward (Ctrl+Shift+Right)", this::forward));
-        buttons.add(button(">|", "knn.last", "Last step: the result (Ctrl+Shift+End)", this::last));
-        play = button("Play", "knn.play", "Play or pause the search (Ctrl+Shift+P)", this::togglePlay);
-        buttons.add(play);
-        buttons.add(button("Clear", "knn.clear", "Remove the query point (Ctrl+Shift+K)", model::clearQuery));
-        slider.setName("knn.slider");
-        slider.setToolTipText("Drag to any step of the search");
-        slider.addChangeListener(e -> {
-            if (!updating) show(slider.getValue());
-        });
-        buttons.add(slider);
+        buttons.add(Widgets.button("Clear", "knn.clear", "Remove the query point (Ctrl+Shift+K)", model::clearQuery));
         buttons.add(stepLabel);
         rejection.setForeground(new Color(170, 0, 0));
         buttons.add(rejection);
@@ -127,7 +103,7 @@ public final class NearestStepperPanel extends JPanel implements CanvasOverlay {
     public NearestTrace trace() { return trace; }
 
     /** {@return the step shown} */
-    public int index() { return index; }
+    public int index() { return controls.index(); }
 
     /** {@return the k searched for} */
     public int k() { return ((Number) kSpinner.getValue()).intValue(); }
@@ -140,32 +116,19 @@ public final class NearestStepperPanel extends JPanel implements CanvasOverlay {
     public void setK(int k) { kSpinner.setValue(Limits.STEPPER_K.check("k", k)); }
 
     /** Shows the first step. */
-    public void first() { show(0); }
+    public void first() { controls.first(); }
 
     /** Shows the step before the current one. */
-    public void back() { show(index - 1); }
+    public void back() { controls.back(); }
 
     /** Shows the step after the current one. */
-    public void forward() { show(index + 1); }
+    public void forward() { controls.forward(); }
 
     /** Shows the last step: the result. */
-    public void last() { show(trace.size() - 1); }
+    public void last() { controls.last(); }
 
     /** Plays the search a step at a time, or pauses it. */
-    public void togglePlay() {
-        if (player.isRunning()) {
-            player.stop();
-        } else {
-            if (index >= trace.size() - 1) show(0);
-            player.start();
-        }
-        play.setText(player.isRunning() ? "Pause" : "Play");
-    }
-
-    private void playStep() {
-        if (index >= trace.size() - 1) togglePlay();
-        else forward();
-    }
+    public void togglePlay() { controls.togglePlay(); }
 
     private void reject(String why) {
         rejection.setText(why == null ? " " : why);
@@ -182,25 +145,19 @@ public final class NearestStepperPanel extends JPanel implements CanvasOverlay {
             voxels = StepperPanel.voxelIndex(tree);
             voxelsOf = tree;
         }
-        updating = true;
-        slider.setMaximum(Math.max(0, trace.size() - 1));
-        updating = false;
-        show(0);
+        controls.reset(trace.size());
         resultLabel.setText(resultText());
     }
 
-    private void show(int i) {
-        index = Math.max(0, Math.min(i, trace.size() - 1));
-        updating = true;
-        slider.setValue(index);
-        updating = false;
+    /** Draws step {@code index} of the trace in the labels and on the canvas. */
+    private void showStep(int index) {
         entered = trace.enteredUpTo(index);
         pruned = trace.prunedUpTo(index);
         if (trace.size() == 0) {
             stepLabel.setText("no query");
             for (JLabel l : new JLabel[] {nodeLabel, radiusLabel, testedLabel, bestLabel}) l.setText(" ");
         } else {
-            NearestTrace.Step s = trace.step(index);
+            NearestTrace.Step s = trace.step(controls.index());
             describe(s);
             if (s.node() >= 0) model.selectNode(s.node());   // the tree view follows the step
         }
@@ -209,7 +166,7 @@ public final class NearestStepperPanel extends JPanel implements CanvasOverlay {
 
     private void describe(NearestTrace.Step s) {
         KdTree t = model.tree();
-        stepLabel.setText(String.format(Locale.ROOT, "step %d / %d: %s", index + 1, trace.size(), kindText(s.kind())));
+        stepLabel.setText(String.format(Locale.ROOT, "step %d / %d: %s", controls.index() + 1, trace.size(), kindText(s.kind())));
         String node = "node: -";
         if (s.node() >= 0) {
             node = "node #" + s.node() + (t.isLeaf(s.node())
@@ -278,7 +235,7 @@ public final class NearestStepperPanel extends JPanel implements CanvasOverlay {
     @Override public void paint(Graphics2D g, ViewTransform v) {
         double[] q = model.query();
         if (q == null || trace.size() == 0 || voxelsOf != model.tree()) return;
-        NearestTrace.Step s = trace.step(index);
+        NearestTrace.Step s = trace.step(controls.index());
         for (int n = entered.nextSetBit(0); n >= 0; n = entered.nextSetBit(n + 1))
             if (model.tree().isLeaf(n)) fill(g, v, n, ENTERED);
         g.setStroke(DASHED);
@@ -348,19 +305,5 @@ public final class NearestStepperPanel extends JPanel implements CanvasOverlay {
         g.fill(new Ellipse2D.Double(v.screenX(x) - r, v.screenY(y) - r, 2 * r, 2 * r));
     }
 
-    private JButton button(String text, String name, String tip, Runnable r) {
-        JButton b = new JButton(text);
-        b.setName(name);
-        b.setToolTipText(tip);
-        b.setFocusable(false);
-        b.addActionListener(e -> r.run());
-        return b;
-    }
 
-    private static JLabel label(String name, String tip) {
-        JLabel l = new JLabel(" ");
-        l.setName(name);
-        l.setToolTipText(tip);
-        return l;
-    }
 }

@@ -3,18 +3,14 @@ package org.kdtree.gui;
 import java.awt.BasicStroke;
 import java.awt.BorderLayout;
 import java.awt.Color;
-import java.awt.FlowLayout;
 import java.awt.Graphics2D;
 import java.awt.GridLayout;
 import java.awt.geom.Ellipse2D;
 import java.util.Locale;
 import java.util.stream.Collectors;
 import javax.swing.BorderFactory;
-import javax.swing.JButton;
 import javax.swing.JLabel;
 import javax.swing.JPanel;
-import javax.swing.JSlider;
-import javax.swing.Timer;
 import org.kdtree.geom.Box;
 import org.kdtree.shape.Shapes2D;
 import org.kdtree.tree.KdTree;
@@ -43,35 +39,27 @@ public final class StepperPanel extends JPanel implements CanvasOverlay {
     /** Records the ray's traversal. */
     private final Tracer tracer;
     /** Which event of the traversal is shown. */
-    private final JLabel stepLabel = label("step.label", "Which event of the traversal is shown");
+    private final JLabel stepLabel = Widgets.label("step.label", "Which event of the traversal is shown");
     /** The node Algorithm 2 is at. */
-    private final JLabel nodeLabel = label("step.node", "The node Algorithm 2 is at");
+    private final JLabel nodeLabel = Widgets.label("step.node", "The node Algorithm 2 is at");
     /** The ray's interval in the node, and where it meets the split plane. */
-    private final JLabel intervalLabel = label("step.interval", "The ray's interval in the node, and where it meets the split plane");
+    private final JLabel intervalLabel = Widgets.label("step.interval", "The ray's interval in the node, and where it meets the split plane");
     /** Near child, far child, and which the ray visits. */
-    private final JLabel childrenLabel = label("step.children", "Near child (green), far child (blue), and which the ray visits");
+    private final JLabel childrenLabel = Widgets.label("step.children", "Near child (green), far child (blue), and which the ray visits");
     /** Far children saved for later, bottom first. */
-    private final JLabel stackLabel = label("step.stack", "Far children saved for later (purple, dashed), bottom first");
+    private final JLabel stackLabel = Widgets.label("step.stack", "Far children saved for later (purple, dashed), bottom first");
     /** Objects tested in the current leaf. */
-    private final JLabel testedLabel = label("step.tested", "Objects tested in the current leaf (red); + marks a hit closer than the best so far");
+    private final JLabel testedLabel = Widgets.label("step.tested", "Objects tested in the current leaf (red); + marks a hit closer than the best so far");
     /** The closest hit and the ray's traversal cost. */
-    private final JLabel resultLabel = label("step.result", "The closest hit and the ray's traversal cost");
-    /** Chooses the step shown. */
-    private final JSlider slider = new JSlider(0, 0, 0);
-    /** Advances one step per tick while playing. */
-    private final Timer player = new Timer(350, e -> playStep());
-    /** Starts or stops playing. */
-    private final JButton play;
+    private final JLabel resultLabel = Widgets.label("step.result", "The closest hit and the ray's traversal cost");
     /** The recorded traversal of the current ray. */
     private TraversalTrace trace = TraversalTrace.EMPTY;
-    /** The step shown. */
-    private int index;
     /** The voxel of each node of {@link #voxelsOf}. */
     private Box[] voxels = new Box[0];
     /** The tree {@link #voxels} belong to. */
     private KdTree voxelsOf;
-    /** True while the panel sets its own controls, so that their listeners do not act. */
-    private boolean updating;
+    /** The step buttons and slider; they keep the step shown. */
+    private final StepControls controls = new StepControls("step", "traversal", "Ctrl", this::showStep);
 
     /**
      * A stepper for the ray of {@code model}, traced again on every change of tree or ray.
@@ -84,19 +72,7 @@ public final class StepperPanel extends JPanel implements CanvasOverlay {
         this.model = model;
         this.tracer = tracer;
         setBorder(BorderFactory.createTitledBorder("Traversal stepper (Algorithm 2) - cast a ray with the Cast ray tool (F3)"));
-        JPanel buttons = new JPanel(new FlowLayout(FlowLayout.LEFT, 2, 0));
-        buttons.add(button("|<", "step.first", "First step (Ctrl+Home)", this::first));
-        buttons.add(button("<", "step.prev", "Step back (Ctrl+Left)", this::back));
-        buttons.add(button(">", "step.next", "Step forward (Ctrl+Right)", this::forward));
-        buttons.add(button(">|", "step.last", "Last step: the result (Ctrl+End)", this::last));
-        play = button("Play", "step.play", "Play or pause the traversal (Ctrl+P)", this::togglePlay);
-        buttons.add(play);
-        slider.setName("step.slider");
-        slider.setToolTipText("Drag to any step of the traversal");
-        slider.addChangeListener(e -> {
-            if (!updating) show(slider.getValue());
-        });
-        buttons.add(slider);
+        JPanel buttons = controls.bar();
         buttons.add(stepLabel);
         JPanel labels = new JPanel(new GridLayout(0, 2, 12, 0));
         for (JLabel l : new JLabel[] {nodeLabel, intervalLabel, childrenLabel, testedLabel, stackLabel, resultLabel}) labels.add(l);
@@ -111,32 +87,19 @@ public final class StepperPanel extends JPanel implements CanvasOverlay {
     /** {@return the recorded traversal of the current ray} */
     public TraversalTrace trace() { return trace; }
     /** {@return the step shown} */
-    public int index() { return index; }
+    public int index() { return controls.index(); }
 
     /** Shows the first step. */
-    public void first() { show(0); }
+    public void first() { controls.first(); }
     /** Shows the step before. */
-    public void back() { show(index - 1); }
+    public void back() { controls.back(); }
     /** Shows the step after. */
-    public void forward() { show(index + 1); }
+    public void forward() { controls.forward(); }
     /** Shows the last step. */
-    public void last() { show(trace.size() - 1); }
+    public void last() { controls.last(); }
 
     /** Starts or stops playing through the steps. */
-    public void togglePlay() {
-        if (player.isRunning()) {
-            player.stop();
-        } else {
-            if (index >= trace.size() - 1) show(0);
-            player.start();
-        }
-        play.setText(player.isRunning() ? "Pause" : "Play");
-    }
-
-    private void playStep() {
-        if (index >= trace.size() - 1) togglePlay();
-        else forward();
-    }
+    public void togglePlay() { controls.togglePlay(); }
 
     private void retrace() {
         KdTree tree = model.tree();
@@ -145,18 +108,12 @@ public final class StepperPanel extends JPanel implements CanvasOverlay {
             voxels = voxelIndex(tree);
             voxelsOf = tree;
         }
-        updating = true;
-        slider.setMaximum(Math.max(0, trace.size() - 1));
-        updating = false;
-        show(0);
+        controls.reset(trace.size());
         resultLabel.setText(resultText());
     }
 
-    private void show(int i) {
-        index = Math.max(0, Math.min(i, trace.size() - 1));
-        updating = true;
-        slider.setValue(index);
-        updating = false;
+    /** Draws step {@code index} of the trace in the labels and on the canvas. */
+    private void showStep(int index) {
         if (trace.size() == 0) {
             stepLabel.setText(model.ray() == null ? "no ray" : "no traversal");
             for (JLabel l : new JLabel[] {nodeLabel, intervalLabel, childrenLabel, stackLabel, testedLabel}) l.setText(" ");
@@ -169,7 +126,7 @@ public final class StepperPanel extends JPanel implements CanvasOverlay {
 
     private void describe(TraversalTrace.Step s) {
         KdTree t = model.tree();
-        stepLabel.setText(String.format(Locale.ROOT, "step %d / %d: %s", index + 1, trace.size(), kindText(s.kind())));
+        stepLabel.setText(String.format(Locale.ROOT, "step %d / %d: %s", controls.index() + 1, trace.size(), kindText(s.kind())));
         nodeLabel.setText(s.node() < 0 ? "node: -" : "node #" + s.node() + (t.isLeaf(s.node())
                 ? " (leaf, " + t.leafSize(s.node()) + (t.leafSize(s.node()) == 1 ? " object)" : " objects)")
                 : String.format(Locale.ROOT, " (%s = %.3f)", t.axis(s.node()) == 0 ? "x" : "y", t.split(s.node()))));
@@ -236,7 +193,7 @@ public final class StepperPanel extends JPanel implements CanvasOverlay {
         g.draw(TreeCanvas.line(v, ray[0], ray[1], ray[0] + tEnd * ray[2], ray[1] + tEnd * ray[3]));
         dot(g, v, ray[0], ray[1], Palette.RAY, 4);
         if (trace.size() == 0 || voxelsOf != tree) return;
-        TraversalTrace.Step s = trace.step(index);
+        TraversalTrace.Step s = trace.step(controls.index());
         BasicStroke dashed = new BasicStroke(2f, BasicStroke.CAP_BUTT, BasicStroke.JOIN_MITER, 10, new float[] {6, 4}, 0);
         for (TraversalTrace.Entry e : s.stack()) outline(g, v, e.node(), Palette.STACKED, dashed);
         if (s.near() >= 0) {
@@ -301,19 +258,5 @@ public final class StepperPanel extends JPanel implements CanvasOverlay {
         return out;
     }
 
-    private JButton button(String text, String name, String tip, Runnable r) {
-        JButton b = new JButton(text);
-        b.setName(name);
-        b.setToolTipText(tip);
-        b.setFocusable(false);
-        b.addActionListener(e -> r.run());
-        return b;
-    }
 
-    private static JLabel label(String name, String tip) {
-        JLabel l = new JLabel(" ");
-        l.setName(name);
-        l.setToolTipText(tip);
-        return l;
-    }
 }
