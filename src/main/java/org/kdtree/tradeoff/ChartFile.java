@@ -45,6 +45,17 @@ public final class ChartFile {
         chart.getStyler().setyAxisTickLabelsFormattingFunction(ChartFile::tickLabel);
     }
 
+    /**
+     * Log scale on the y axis only, for charts whose x is a fraction or a small count (recall,
+     * dimension), which a log scale would only distort. The ticks are XChart's own (every
+     * 1..9 of each decade): XChart 3.8.8 with {@link #tickLabel} as the label function on a
+     * log axis can loop for minutes or fail on an empty label when the data span certain ranges
+     * (for example 0.5 to 200), and these charts' ranges are not known in advance.
+     */
+    public static void logYAxis(XYChart chart) {
+        chart.getStyler().setYAxisLogarithmic(true).setYAxisLogarithmicDecadeOnly(false);
+    }
+
     /** The label of a log axis's tick: its value at 1, 2 or 5 times a power of ten, otherwise none. */
     public static String tickLabel(double v) {
         if (!(v > 0)) return "";
