@@ -153,15 +153,15 @@ public final class KnnStudyCommand implements Callable<Integer> {
             NeighbourStudy s = new NeighbourStudy(tree, queries, k, runs);
             bar.print(System.out, String.format(Locale.ROOT, "%-24s %8s %14s %10s %12s", "search", "recall", "queries/s",
                     "speed-up", "leaves/query"));
-            measure(bar, 1, results, s::bruteForce);
-            measure(bar, 2, results, s::exact);
+            measure(bar, 1, "brute force", results, s::bruteForce);
+            measure(bar, 2, "exact kd-tree", results, s::exact);
             for (int i = 0; i < budgets.size(); i++) {
                 int budget = budgets.get(i);
-                measure(bar, 3 + i, results, () -> s.budget(budget));
+                measure(bar, 3 + i, "budget " + budget, results, () -> s.budget(budget));
             }
             for (int i = 0; epsilons != null && i < epsilons.size(); i++) {
                 double eps = epsilons.get(i);
-                measure(bar, 3 + budgets.size() + i, results, () -> s.epsilon(eps));
+                measure(bar, 3 + budgets.size() + i, "epsilon " + eps, results, () -> s.epsilon(eps));
             }
         }
         Files.writeString(csvFile(), NeighbourStudy.csv(results));
@@ -172,10 +172,11 @@ public final class KnnStudyCommand implements Callable<Integer> {
         return 0;
     }
 
-    private static void measure(ProgressBar bar, int step, List<NeighbourResult> results,
+    /** Announces step {@code step} on the bar, measures it, and prints its line above the bar. */
+    private static void measure(ProgressBar bar, int step, String name, List<NeighbourResult> results,
                                 java.util.function.Supplier<NeighbourResult> what) {
+        bar.step(step, name);
         NeighbourResult r = what.get();
-        bar.step(step, r.name());
         results.add(r);
         bar.print(System.out, String.format(Locale.ROOT, "%-24s %8.4f %14.0f %10.2f %12.1f", r.name(), r.recall(),
                 r.queriesPerSecond(), r.speedUp(), r.leavesPerQuery()));
