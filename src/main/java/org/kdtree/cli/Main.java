@@ -7,7 +7,7 @@ import picocli.CommandLine.Command;
 @Command(name = "kdtree", mixinStandardHelpOptions = true, version = "kdtree 0.1",
         description = "k-d trees for ray tracing: build, inspect, trace, render; nearest neighbours of points.",
         subcommands = {GuiCommand.class, StatsCommand.class, RaycastCommand.class, RenderCommand.class, TradeoffCommand.class,
-                KnnCommand.class})
+                KnnCommand.class, KnnStudyCommand.class})
 public final class Main implements Runnable {
     public static void main(String[] args) {
         int code = run(args);

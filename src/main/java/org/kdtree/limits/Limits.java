@@ -61,6 +61,20 @@ public final class Limits {
     /** Rays per triangle at which a trade-off chart adds trace time to build time. */
     public static final Limit RAYS_PER_TRIANGLE = Limit.real("rays per triangle", 0.001, 1_000_000);
 
+    // Nearest neighbours of points.
+    /** k, the neighbours asked of each query point (the answer has min(k, points) of them). */
+    public static final Limit NEIGHBOURS = Limit.whole("neighbours k", 1, 100_000);
+    /** Best-bin-first's budget: leaves a nearest-neighbour search scans before it stops. */
+    public static final Limit LEAF_BUDGET = Limit.whole("leaf budget", 1, 1_000_000_000);
+    /** eps of the (1 + eps) bound of an approximate nearest-neighbour search; 0 is exact. */
+    public static final Limit EPSILON = Limit.real("epsilon", 0, 1000).noting("0 = exact");
+    /** Points of a generated point set. */
+    public static final Limit POINT_COUNT = Limit.whole("points", 1, 50_000_000);
+    /** Query points of a generated query set. */
+    public static final Limit QUERY_COUNT = Limit.whole("queries", 1, 10_000_000);
+    /** Dimensions of a tree (and so of a point set): {@code KdTree.MAX_DIMENSION} is this limit's maximum. */
+    public static final Limit DIMENSION = Limit.whole("dimension", 1, 64);
+
     // Scenes.
     /** Objects in a generated 2-D scene. */
     public static final Limit SCENE_OBJECTS = Limit.whole("objects", 1, 100_000);
@@ -75,7 +89,8 @@ public final class Limits {
     public static final List<Limit> ALL = List.of(THREADS, MAX_DEPTH, DEPTH_FACTOR, REFERENCE_BUDGET, KT, KI, LAMBDA,
             MIN_PRIMITIVES, BINS, EXACT_BELOW, IMAGE_SIDE, SAMPLES_PER_PIXEL, RAY_DEPTH, LIGHT_SAMPLES, PREVIEW_WIDTH,
             SPHERE_SEGMENTS, SPHERE_RINGS, FLAKE_LEVELS,
-            RUNS, WARMUP, GRID, RAY_COUNT, RAYS_PER_TRIANGLE, SCENE_OBJECTS, STEPPER_K, BALLS);
+            RUNS, WARMUP, GRID, RAY_COUNT, RAYS_PER_TRIANGLE,
+            NEIGHBOURS, LEAF_BUDGET, EPSILON, POINT_COUNT, QUERY_COUNT, DIMENSION, SCENE_OBJECTS, STEPPER_K, BALLS);
 
     private Limits() {
     }

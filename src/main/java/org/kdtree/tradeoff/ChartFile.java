@@ -59,6 +59,16 @@ public final class ChartFile {
         return out;
     }
 
+    /**
+     * Log scale on the y axis only, for charts whose x is a fraction or a small count (recall,
+     * dimension), which a log scale would only distort; labelled as {@link #logAxes} labels.
+     *
+     * @param chart the chart to set up
+     */
+    public static void logYAxis(XYChart chart) {
+        chart.getStyler().setYAxisLogarithmic(true).setYAxisLogarithmicDecadeOnly(true);
+    }
+
     /** How a tick value at 1, 2 or 5 times a power of ten is written: "20", "0.05", "2e6". */
     public static String tickLabel(double v) {
         if (v >= 1e6 || v < 1e-3) return String.format(Locale.ROOT, "%.0e", v).replace("e+0", "e").replace("e-0", "e-");
@@ -103,7 +113,7 @@ public final class ChartFile {
     }
 
     /**
-     * Draws the 2 and 5 ticks of both log axes, with their labels, where XChart drew its decades:
+     * Draws the 2 and 5 ticks of each log axis, with their labels, where XChart drew its decades:
      * the data's range fills the plot's central {@code plotContentSize} share, which places the axes.
      */
     private static void intermediateLabels(XYChart chart, Graphics2D g) {
@@ -116,13 +126,13 @@ public final class ChartFile {
         g.setFont(chart.getStyler().getAxisTickLabelsFont());
         g.setColor(chart.getStyler().getAxisTickLabelsColor());
         var fm = g.getFontMetrics();
-        for (double v : intermediateTicks(x[0], x[1])) {
+        for (double v : chart.getStyler().isXAxisLogarithmic() ? intermediateTicks(x[0], x[1]) : List.<Double>of()) {
             int sx = (int) Math.round(chart.getScreenXFromChart(v));
             g.drawLine(sx, (int) axisY, sx, (int) axisY + 3);
             String t = tickLabel(v);
             g.drawString(t, sx - fm.stringWidth(t) / 2, (int) axisY + 5 + fm.getAscent());
         }
-        for (double v : intermediateTicks(y[0], y[1])) {
+        for (double v : chart.getStyler().isYAxisLogarithmic() ? intermediateTicks(y[0], y[1]) : List.<Double>of()) {
             int sy = (int) Math.round(chart.getScreenYFromChart(v));
             g.drawLine((int) axisX - 3, sy, (int) axisX, sy);
             String t = tickLabel(v);
@@ -146,7 +156,7 @@ public final class ChartFile {
         g.setColor(Color.WHITE);
         g.fillRect(0, 0, w, h + CAPTION_HEIGHT);
         chart.paint(g, w, h);
-        if (chart.getStyler().isXAxisLogarithmic() && chart.getStyler().isYAxisLogarithmic()) intermediateLabels(chart, g);
+        intermediateLabels(chart, g);
         g.setColor(new Color(60, 60, 60));
         g.setFont(new Font(Font.SANS_SERIF, Font.PLAIN, 12));
         g.drawString(caption, 10, h + CAPTION_HEIGHT - 10);

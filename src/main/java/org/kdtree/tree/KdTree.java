@@ -19,8 +19,8 @@ import org.kdtree.geom.Box;
  * queries), which decode a word as {@code w & leafMark()} and {@code w >>> axisBits()}.
  */
 public final class KdTree {
-    /** The most dimensions a tree may have. */
-    public static final int MAX_DIMENSION = 64;
+    /** The most dimensions a tree may have ({@link org.kdtree.limits.Limits#DIMENSION}). */
+    public static final int MAX_DIMENSION = (int) org.kdtree.limits.Limits.DIMENSION.max();
 
     private final Box bounds;
     private final CostModel cost;

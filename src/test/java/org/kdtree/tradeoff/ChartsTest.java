@@ -58,6 +58,44 @@ class ChartsTest {
         assertWritten(chart);
     }
 
+    @Test void theNeighbourChartHasRecallAcrossAndLogQueriesPerSecond() throws Exception {
+        List<NeighbourResult> results = new ArrayList<>();
+        results.add(new NeighbourResult(NeighbourSearch.BRUTE_FORCE, "", 1, 2e3, 0, 1));
+        results.add(new NeighbourResult(NeighbourSearch.EXACT, "", 1, 5e4, 40, 25));
+        for (int b = 1; b <= 64; b *= 2)
+            results.add(new NeighbourResult(NeighbourSearch.BEST_BIN_FIRST, "" + b, 1 - 0.4 / b, 4e5 / b, b, 200.0 / b));
+        for (double e : new double[] {0.5, 1, 2})
+            results.add(new NeighbourResult(NeighbourSearch.EPSILON, "" + e, 1 - 0.05 * e, 1e5 * e, 10 / e, 50 * e));
+        XYChart chart = NeighbourChart.chart(results, "test");
+        assertThat(chart.getStyler().isXAxisLogarithmic()).as("recall is a fraction: linear").isFalse();
+        assertLogY(chart);
+        assertThat(chart.getSeriesMap().keySet()).containsExactly("best-bin-first", "epsilon",
+                "exact kd-tree (exact)", "brute force (exact)");
+        assertThat(chart.getSeriesMap().get("best-bin-first").getXData()).hasSize(7);
+        assertDistinct(List.copyOf(chart.getSeriesMap().values()));
+        assertWritten(chart);
+    }
+
+    @Test void theDimensionChartHasTheSpeedUpOnALogAxisAndTheBreakEvenLine() throws Exception {
+        List<DimensionResult> results = new ArrayList<>();
+        for (int d : new int[] {2, 4, 8, 16, 31}) results.add(new DimensionResult(d, 1e6 / d / d, 2e4 / d, d * d, 600));
+        XYChart chart = DimensionChart.chart(results, "test");
+        assertLogY(chart);
+        assertThat(chart.getSeriesMap().get("break-even (1)").getYData()).containsOnly(1.0);
+        assertDistinct(List.copyOf(chart.getSeriesMap().values()));
+        assertWritten(chart);
+    }
+
+    /** A log y axis: XChart labels its decades, ChartFile the 2s and 5s between (checked on the data's range). */
+    private static void assertLogY(XYChart chart) {
+        assertThat(chart.getStyler().isYAxisLogarithmic()).isTrue();
+        assertThat(chart.getStyler().isYAxisLogarithmicDecadeOnly()).isTrue();
+        double lo = Double.POSITIVE_INFINITY, hi = 0;
+        for (XYSeries s : chart.getSeriesMap().values())
+            for (double y : s.getYData()) { lo = Math.min(lo, y); hi = Math.max(hi, y); }
+        assertThat(ChartFile.intermediateTicks(lo, hi)).hasSizeGreaterThanOrEqualTo(2);
+    }
+
     /**
      * Both axes logarithmic, XChart labelling the decades, and at least two labelled ticks at 2 or
      * 5 of a decade within the data's range on each axis (drawn by ChartFile).

@@ -1,0 +1,45 @@
+package org.kdtree.tradeoff;
+
+import java.awt.BasicStroke;
+import java.io.IOException;
+import java.nio.file.Path;
+import java.util.ArrayList;
+import java.util.List;
+import org.knowm.xchart.XYChart;
+import org.knowm.xchart.XYChartBuilder;
+import org.knowm.xchart.XYSeries;
+import org.knowm.xchart.style.Styler;
+
+/**
+ * The dimension sweep's chart: the exact kd-tree search's speed-up over brute force (y, log)
+ * against the dimension (x, linear: on uniform data the speed-up falls about exponentially with
+ * it, a straight line here), with the break-even line at 1 where the tree stops helping.
+ */
+public final class DimensionChart {
+    private DimensionChart() {
+    }
+
+    /** Writes the chart as PNG and SVG with {@code caption} under it ({@link ChartFile}). */
+    public static void write(List<DimensionResult> results, String title, String caption, Path png) throws IOException {
+        ChartFile.write(chart(results, title), caption, png);
+    }
+
+    /** The chart itself (tests read its series and axes). */
+    static XYChart chart(List<DimensionResult> results, String title) {
+        XYChart chart = new XYChartBuilder().width(900).height(600).title(title)
+                .xAxisTitle("dimension").yAxisTitle("speed-up of the exact kd-tree search over brute force").build();
+        chart.getStyler().setMarkerSize(9).setLegendPosition(Styler.LegendPosition.OutsideE);
+        ChartFile.logYAxis(chart);
+        double[] dims = results.stream().mapToDouble(DimensionResult::dimension).toArray();
+        List<XYSeries> series = new ArrayList<>();
+        series.add(chart.addSeries("exact kd-tree / brute force", dims,
+                results.stream().mapToDouble(DimensionResult::speedUp).toArray()));
+        double lo = results.stream().mapToInt(DimensionResult::dimension).min().orElse(1);
+        double hi = results.stream().mapToInt(DimensionResult::dimension).max().orElse(1);
+        XYSeries even = chart.addSeries("break-even (1)", new double[] {lo, hi}, new double[] {1, 1});
+        series.add(even);
+        ChartFile.distinctMarkers(series);
+        even.setLineStyle(new BasicStroke(1.5f, BasicStroke.CAP_BUTT, BasicStroke.JOIN_MITER, 10, new float[] {6, 4}, 0));
+        return chart;
+    }
+}

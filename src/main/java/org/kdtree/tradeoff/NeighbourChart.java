@@ -1,0 +1,61 @@
+package org.kdtree.tradeoff;
+
+import java.awt.BasicStroke;
+import java.io.IOException;
+import java.nio.file.Path;
+import java.util.ArrayList;
+import java.util.List;
+import org.knowm.xchart.XYChart;
+import org.knowm.xchart.XYChartBuilder;
+import org.knowm.xchart.XYSeries;
+import org.knowm.xchart.style.Styler;
+
+/**
+ * The accuracy chart of a nearest-neighbour study: recall at k (x) against queries per second
+ * (y, log), one line per approximate search (best-bin-first budgets, epsilon values), and the
+ * exact kd-tree search and brute force as horizontal reference lines ending at recall 1.
+ */
+public final class NeighbourChart {
+    private NeighbourChart() {
+    }
+
+    /** Writes the chart as PNG and SVG with {@code caption} under it ({@link ChartFile}). */
+    public static void write(List<NeighbourResult> results, String title, String caption, Path png) throws IOException {
+        ChartFile.write(chart(results, title), caption, png);
+    }
+
+    /** The chart itself (tests read its series and axes). */
+    static XYChart chart(List<NeighbourResult> results, String title) {
+        XYChart chart = new XYChartBuilder().width(900).height(600).title(title)
+                .xAxisTitle("recall at k (fraction of the true k nearest found)").yAxisTitle("queries per second").build();
+        chart.getStyler().setMarkerSize(9).setLegendPosition(Styler.LegendPosition.OutsideE);
+        ChartFile.logYAxis(chart);
+        double left = leftEdge(results);
+        chart.getStyler().setXAxisMin(left).setXAxisMax(1.0);
+        List<XYSeries> series = new ArrayList<>();
+        for (NeighbourSearch s : List.of(NeighbourSearch.BEST_BIN_FIRST, NeighbourSearch.EPSILON)) {
+            List<NeighbourResult> rows = results.stream().filter(r -> r.search() == s).toList();
+            if (!rows.isEmpty()) series.add(chart.addSeries(s.label(), rows.stream().mapToDouble(NeighbourResult::recall).toArray(),
+                    rows.stream().mapToDouble(NeighbourResult::queriesPerSecond).toArray()));
+        }
+        for (NeighbourSearch s : List.of(NeighbourSearch.EXACT, NeighbourSearch.BRUTE_FORCE))
+            results.stream().filter(r -> r.search() == s).findFirst().ifPresent(r ->
+                    series.add(reference(chart, s.label() + " (exact)", left, r.queriesPerSecond())));
+        ChartFile.distinctMarkers(series);
+        return chart;
+    }
+
+    /** A horizontal line at {@code qps} from the chart's left edge to a marker at recall 1. */
+    private static XYSeries reference(XYChart chart, String name, double left, double qps) {
+        XYSeries line = chart.addSeries(name, new double[] {left, 1}, new double[] {qps, qps});
+        line.setXYSeriesRenderStyle(XYSeries.XYSeriesRenderStyle.Line);
+        line.setLineStyle(new BasicStroke(1.5f, BasicStroke.CAP_BUTT, BasicStroke.JOIN_MITER, 10, new float[] {6, 4}, 0));
+        return line;
+    }
+
+    /** The x axis starts at the lowest recall rounded down to a tenth, and shows at least 0.9 .. 1. */
+    private static double leftEdge(List<NeighbourResult> results) {
+        double lowest = results.stream().mapToDouble(NeighbourResult::recall).min().orElse(1);
+        return Math.min(0.9, Math.floor(lowest * 10) / 10);
+    }
+}
