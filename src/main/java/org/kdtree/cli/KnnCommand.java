@@ -22,10 +22,11 @@ import picocli.CommandLine.Parameters;
  */
 @Command(name = "knn", mixinStandardHelpOptions = true,
         description = {"The k nearest neighbours of each query point (exact, Euclidean).",
-                "Points and queries: CSV, one point per line, coordinates separated by commas;",
+                "Points and queries: CSV, one point per line, comma-separated coordinates;",
                 "blank lines and lines starting with # are skipped.",
-                "Writes one line per query, in query order: the 0-based indices of its neighbours",
-                "in POINTS, nearest first, comma-separated (ties by lower index; empty if none).",
+                "Writes one line per query, in query order: the 0-based indices of its",
+                "neighbours in POINTS, nearest first, comma-separated (ties by lower index;",
+                "an empty line if none).",
                 "Prints one summary line."})
 public final class KnnCommand implements Callable<Integer> {
     @Parameters(paramLabel = "POINTS", description = "The points (CSV).")

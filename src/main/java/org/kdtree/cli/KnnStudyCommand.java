@@ -31,12 +31,14 @@ import picocli.CommandLine.Parameters;
  * kd-tree search stops beating brute force. See docs/points.md, "What accuracy costs".
  */
 @Command(name = "knn-study", mixinStandardHelpOptions = true,
-        description = {"What accuracy costs for k nearest neighbours: for each best-bin-first budget (leaves scanned)",
-                "and each epsilon, the recall at k (fraction of the true k nearest found, against a brute-force",
-                "oracle) and the queries per second, with the exact kd-tree search and brute force as references.",
-                "Data: POINTS and --queries files (CSV, as for knn), or --generate uniform|clustered.",
-                "With --dimensions, instead: the exact search against brute force on generated data at each",
-                "dimension, showing where kd-trees stop helping. One thread; writes a table, CSV and a chart."})
+        description = {"What accuracy costs for k nearest neighbours: for each best-bin-first",
+                "budget (leaves scanned) and each epsilon, the recall at k (the fraction of",
+                "the true k nearest found, against brute force) and the queries per second,",
+                "with the exact kd-tree search and brute force as references.",
+                "Data: POINTS and --queries files (CSV, as for knn), or --generate.",
+                "With --dimensions: the exact search against brute force on generated data",
+                "at each dimension, where kd-trees stop helping.",
+                "One thread; prints a table, writes a CSV and a chart (PNG and SVG)."})
 public final class KnnStudyCommand implements Callable<Integer> {
     @Parameters(paramLabel = "POINTS", arity = "0..1", description = "The points (CSV); or use --generate.")
     Path pointsFile;

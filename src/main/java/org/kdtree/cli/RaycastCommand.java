@@ -27,7 +27,8 @@ import org.kdtree.tradeoff.RaySet;
  * {@code --rays FILE --hits FILE}, the closest hits of a user's own rays. See docs/raycast.md.
  */
 @Command(name = "raycast", mixinStandardHelpOptions = true,
-        description = {"Ray-casting benchmark (docs/benchmark-spec.md), or trace your own rays. Prints one line:",
+        description = {"The ray-casting benchmark (docs/benchmark-spec.md), or your own rays.",
+                "The benchmark prints one line:",
                 "  system mesh tris build_ms nodes leaves depth",
                 "  P_hits P_tsum P_mrays R_hits R_tsum R_mrays",
                 "With --rays FILE --hits FILE: traces the rays of FILE, one per line as",

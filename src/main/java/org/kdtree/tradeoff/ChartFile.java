@@ -32,7 +32,11 @@ public final class ChartFile {
     private static final Color[] COLOURS = {new Color(0x1f77b4), new Color(0xff7f0e), new Color(0x2ca02c),
             new Color(0xd62728), new Color(0x9467bd), new Color(0x8c564b), new Color(0xe377c2), new Color(0x7f7f7f),
             new Color(0x17becf)};
-    private static final int CAPTION_HEIGHT = 28;
+    /** The caption's font, and the height of one of its lines. */
+    private static final Font CAPTION_FONT = new Font(Font.SANS_SERIF, Font.PLAIN, 12);
+    private static final int CAPTION_LINE = 16;
+    /** How the axes write numbers, the same for XChart's decades and the ticks drawn here. */
+    private static final String NUMBER_PATTERN = "#,##0.####";
 
     private ChartFile() {
     }
@@ -45,6 +49,7 @@ public final class ChartFile {
     public static void logAxes(XYChart chart) {
         chart.getStyler().setXAxisLogarithmic(true).setYAxisLogarithmic(true);
         chart.getStyler().setXAxisLogarithmicDecadeOnly(true).setYAxisLogarithmicDecadeOnly(true);
+        chart.getStyler().setXAxisDecimalPattern(NUMBER_PATTERN).setYAxisDecimalPattern(NUMBER_PATTERN);
     }
 
     /** The values 2 and 5 times a power of ten within {@code [lo, hi]}, where a log axis gets extra labelled ticks. */
@@ -67,12 +72,12 @@ public final class ChartFile {
      */
     public static void logYAxis(XYChart chart) {
         chart.getStyler().setYAxisLogarithmic(true).setYAxisLogarithmicDecadeOnly(true);
+        chart.getStyler().setYAxisDecimalPattern(NUMBER_PATTERN);
     }
 
-    /** How a tick value at 1, 2 or 5 times a power of ten is written: "20", "0.05", "2e6". */
+    /** How a tick value is written, as XChart writes the decades: "20", "0.05", "2,000,000". */
     public static String tickLabel(double v) {
-        if (v >= 1e6 || v < 1e-3) return String.format(Locale.ROOT, "%.0e", v).replace("e+0", "e").replace("e-0", "e-");
-        return new java.math.BigDecimal(v).round(new java.math.MathContext(1)).stripTrailingZeros().toPlainString();
+        return new java.text.DecimalFormat(NUMBER_PATTERN, java.text.DecimalFormatSymbols.getInstance(Locale.ROOT)).format(v);
     }
 
     /**
@@ -95,17 +100,18 @@ public final class ChartFile {
 
     /** Writes {@code png} and, beside it, the same chart as SVG (same name, {@code .svg}); returns the SVG's path. */
     public static Path write(XYChart chart, String caption, Path png) throws IOException {
-        int w = chart.getWidth(), h = chart.getHeight() + CAPTION_HEIGHT;
+        List<String> lines = captionLines(caption, chart.getWidth() - 20);
+        int w = chart.getWidth(), h = chart.getHeight() + CAPTION_LINE * lines.size() + 10;
         BufferedImage image = new BufferedImage(w, h, BufferedImage.TYPE_INT_RGB);
         Graphics2D g = image.createGraphics();
         g.setRenderingHint(RenderingHints.KEY_ANTIALIASING, RenderingHints.VALUE_ANTIALIAS_ON);
         g.setRenderingHint(RenderingHints.KEY_TEXT_ANTIALIASING, RenderingHints.VALUE_TEXT_ANTIALIAS_ON);
-        paint(chart, caption, g);
+        paint(chart, lines, g);
         g.dispose();
         if (!ImageIO.write(image, "png", png.toFile())) throw new IOException(png + ": no PNG writer");
         Path svg = png.resolveSibling(png.getFileName().toString().replaceFirst("(?i)\\.png$", "") + ".svg");
         VectorGraphics2D vg = new VectorGraphics2D();
-        paint(chart, caption, vg);
+        paint(chart, lines, vg);
         try (OutputStream out = Files.newOutputStream(svg)) {
             Processors.get("svg").getDocument(vg.getCommands(), new PageSize(0, 0, w, h)).writeTo(out);
         }
@@ -151,14 +157,34 @@ public final class ChartFile {
         return lo <= hi ? new double[] {lo, hi} : null;
     }
 
-    private static void paint(XYChart chart, String caption, Graphics2D g) {
+    /** The caption broken at its " · " separators into lines that fit {@code width} pixels. */
+    private static List<String> captionLines(String caption, int width) {
+        Graphics2D g = new BufferedImage(1, 1, BufferedImage.TYPE_INT_RGB).createGraphics();
+        var fm = g.getFontMetrics(CAPTION_FONT);
+        g.dispose();
+        List<String> lines = new java.util.ArrayList<>();
+        String line = "";
+        for (String part : caption.split(" · ")) {
+            String longer = line.isEmpty() ? part : line + " · " + part;
+            if (!line.isEmpty() && fm.stringWidth(longer) > width) {
+                lines.add(line);
+                line = part;
+            } else {
+                line = longer;
+            }
+        }
+        lines.add(line);
+        return lines;
+    }
+
+    private static void paint(XYChart chart, List<String> caption, Graphics2D g) {
         int w = chart.getWidth(), h = chart.getHeight();
         g.setColor(Color.WHITE);
-        g.fillRect(0, 0, w, h + CAPTION_HEIGHT);
+        g.fillRect(0, 0, w, h + CAPTION_LINE * caption.size() + 10);
         chart.paint(g, w, h);
         intermediateLabels(chart, g);
         g.setColor(new Color(60, 60, 60));
-        g.setFont(new Font(Font.SANS_SERIF, Font.PLAIN, 12));
-        g.drawString(caption, 10, h + CAPTION_HEIGHT - 10);
+        g.setFont(CAPTION_FONT);
+        for (int i = 0; i < caption.size(); i++) g.drawString(caption.get(i), 10, h + CAPTION_LINE * (i + 1));
     }
 }

@@ -27,8 +27,8 @@ class ChartsTest {
         assertThat(ChartFile.intermediateTicks(1000, 100_000)).containsExactly(2000.0, 5000.0, 20_000.0, 50_000.0);
         assertThat(ChartFile.tickLabel(20)).isEqualTo("20");
         assertThat(ChartFile.tickLabel(0.05)).isEqualTo("0.05");
-        assertThat(ChartFile.tickLabel(5000)).isEqualTo("5000");
-        assertThat(ChartFile.tickLabel(2e6)).isEqualTo("2e6");
+        assertThat(ChartFile.tickLabel(5000)).isEqualTo("5,000");
+        assertThat(ChartFile.tickLabel(2e6)).isEqualTo("2,000,000");
     }
 
     @Test void theTradeoffChartHasLabelledLogAxesDistinctMarkersAndUnits() throws Exception {
