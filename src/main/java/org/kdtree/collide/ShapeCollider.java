@@ -1,6 +1,14 @@
 package org.kdtree.collide;
 
+import static org.kdtree.shape.ShapeKind.NEVER;
+import static org.kdtree.shape.ShapeKind.POINT;
+import static org.kdtree.shape.ShapeKind.RECT;
+import static org.kdtree.shape.ShapeKind.SEGMENT;
+import static org.kdtree.shape.ShapeKind.TRIANGLE;
+import static org.kdtree.shape.ShapeKind.orient;
+
 import org.kdtree.shape.Shape2D;
+import org.kdtree.shape.ShapeKind;
 import org.kdtree.shape.Shapes2D;
 
 /**
@@ -13,7 +21,6 @@ import org.kdtree.shape.Shapes2D;
  * ({@code traverse.Shape2DIntersector}'s rule); a zero-length segment is its point.
  */
 public final class ShapeCollider implements Collider {
-    private static final int POINT = 0, SEGMENT = 1, RECT = 2, TRIANGLE = 3, NEVER = 4;
     /** Up to four corners (x, y) per shape, in boundary order; a rectangle's four. */
     private static final int STRIDE = 8;
 
@@ -37,16 +44,10 @@ public final class ShapeCollider implements Collider {
                 double[] q = {r.x0(), r.y0(), r.x1(), r.y0(), r.x1(), r.y1(), r.x0(), r.y1()};
                 System.arraycopy(q, 0, xy, b, 8);
             } else System.arraycopy(c, 0, xy, b, c.length);
-            kind[i] = kindOf(s, c);
+            kind[i] = ShapeKind.of(s);
         }
     }
 
-    private static int kindOf(Shape2D s, double[] c) {
-        if (s instanceof Shape2D.Point) return POINT;
-        if (s instanceof Shape2D.Segment) return SEGMENT;
-        if (s instanceof Shape2D.Rect r) return r.x0() < r.x1() && r.y0() < r.y1() ? RECT : NEVER;
-        return orient(c[0], c[1], c[2], c[3], c[4], c[5]) != 0 ? TRIANGLE : NEVER;
-    }
 
     @Override public int dimension() { return 2; }
     @Override public int size() { return kind.length; }
@@ -144,8 +145,4 @@ public final class ShapeCollider implements Collider {
         return (o1 >= 0 && o2 >= 0 && o3 >= 0) || (o1 <= 0 && o2 <= 0 && o3 <= 0);
     }
 
-    /** Twice the signed area of (a, b, p). */
-    private static double orient(double ax, double ay, double bx, double by, double px, double py) {
-        return (bx - ax) * (py - ay) - (by - ay) * (px - ax);
-    }
 }

@@ -1,7 +1,15 @@
 package org.kdtree.traverse;
 
+import static org.kdtree.shape.ShapeKind.NEVER;
+import static org.kdtree.shape.ShapeKind.POINT;
+import static org.kdtree.shape.ShapeKind.RECT;
+import static org.kdtree.shape.ShapeKind.SEGMENT;
+import static org.kdtree.shape.ShapeKind.TRIANGLE;
+import static org.kdtree.shape.ShapeKind.orient;
+
 import org.kdtree.geom.Ray;
 import org.kdtree.shape.Shape2D;
+import org.kdtree.shape.ShapeKind;
 import org.kdtree.shape.Shapes2D;
 
 /**
@@ -20,7 +28,6 @@ import org.kdtree.shape.Shapes2D;
  * from inside, u and v are 0.
  */
 public final class Shape2DIntersector implements Intersector {
-    private static final int POINT = 0, SEGMENT = 1, RECT = 2, TRIANGLE = 3, NEVER = 4;
 
     private final int[] kind;
     /** Up to three vertices (x, y) per shape; rectangles store their two corners. */
@@ -39,16 +46,10 @@ public final class Shape2DIntersector implements Intersector {
             Shape2D s = shapes.get(i);
             double[] c = s.coords();
             System.arraycopy(c, 0, xy, 6 * i, c.length);
-            kind[i] = kindOf(s, c);
+            kind[i] = ShapeKind.of(s);
         }
     }
 
-    private static int kindOf(Shape2D s, double[] c) {
-        if (s instanceof Shape2D.Point) return POINT;
-        if (s instanceof Shape2D.Segment) return SEGMENT;
-        if (s instanceof Shape2D.Rect r) return r.x0() < r.x1() && r.y0() < r.y1() ? RECT : NEVER;
-        return orient(c[0], c[1], c[2], c[3], c[4], c[5]) != 0 ? TRIANGLE : NEVER;
-    }
 
     @Override public int dimension() { return 2; }
     @Override public int size() { return kind.length; }
@@ -154,8 +155,4 @@ public final class Shape2DIntersector implements Intersector {
         return true;
     }
 
-    /** Twice the signed area of (a, b, p): positive when p is left of a->b. */
-    private static double orient(double ax, double ay, double bx, double by, double px, double py) {
-        return (bx - ax) * (py - ay) - (by - ay) * (px - ax);
-    }
 }
