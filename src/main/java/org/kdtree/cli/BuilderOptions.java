@@ -51,7 +51,11 @@ public final class BuilderOptions {
     @Option(names = "--no-perfect-splits", description = "Use bounding boxes instead of exact clipping.")
     boolean noPerfectSplits;
 
-    /** A builder configured from the options; each value is checked against its {@link Limits} entry first. */
+    /**
+     * A builder configured from the options; each value is checked against its {@link Limits} entry first.
+     *
+     * @return a new builder of the chosen kind, with every given option applied
+     */
     public KdTreeBuilder create() {
         checkLimits();
         KdTreeBuilder b = Builders.create(builder);

@@ -9,12 +9,23 @@ import picocli.CommandLine.Command;
         subcommands = {GuiCommand.class, StatsCommand.class, RaycastCommand.class, RenderCommand.class, TradeoffCommand.class,
                 KnnCommand.class, KnnStudyCommand.class})
 public final class Main implements Runnable {
+    /**
+     * Runs the command line and exits with its code, unless it opened the workbench and succeeded
+     * (then the window keeps the JVM running).
+     *
+     * @param args the command and its options
+     */
     public static void main(String[] args) {
         int code = run(args);
         if (code != 0 || !GuiCommand.opened()) System.exit(code); // the workbench's window keeps the JVM alive
     }
 
-    /** Runs the command line and returns the exit code (for tests). */
+    /**
+     * Runs the command line and returns the exit code (for tests).
+     *
+     * @param args the command and its options
+     * @return the exit code: 0 on success, nonzero on failure
+     */
     public static int run(String... args) {
         CommandLine cl = new CommandLine(new Main());
         cl.setCaseInsensitiveEnumValuesAllowed(true);

@@ -20,7 +20,17 @@ public final class RayFile {
     private RayFile() {
     }
 
-    /** Traces every ray of {@code in} with {@code query}, writing one line per ray; returns the ray count. */
+    /**
+     * Traces every ray of {@code in} with {@code query}, writing one line per ray; returns the ray count.
+     *
+     * @param in    the ray file, read to its end
+     * @param name  the file's name, for error messages
+     * @param query the query that finds each ray's closest hit
+     * @param out   where the result lines go (flushed at the end)
+     * @return the number of rays traced
+     * @throws IOException if {@code in} cannot be read, or a line is malformed
+     *                     ({@link SceneFormatException}, with the line number)
+     */
     public static long trace(BufferedReader in, String name, RayQuery query, PrintWriter out) throws IOException {
         Ray ray = new Ray(3);
         Hit hit = new Hit();

@@ -28,13 +28,19 @@ public final class Metric {
         this.kind = p == 2 ? EUCLIDEAN_KIND : p == 1 ? MANHATTAN_KIND : p == Double.POSITIVE_INFINITY ? CHEBYSHEV_KIND : GENERAL_KIND;
     }
 
-    /** The Minkowski metric of order {@code p}: p >= 1 (below 1 it is no metric), or positive infinity. */
+    /**
+     * The Minkowski metric of order {@code p}: p >= 1 (below 1 it is no metric), or positive infinity.
+     *
+     * @param p the order, >= 1 or {@link Double#POSITIVE_INFINITY}
+     * @return the metric; one of the constants for p = 1, 2 or infinity
+     * @throws IllegalArgumentException if {@code p} is below 1 or NaN
+     */
     public static Metric minkowski(double p) {
         if (!(p >= 1)) throw new IllegalArgumentException("a Minkowski metric needs p >= 1 (or infinity), got " + p);
         return p == 2 ? EUCLIDEAN : p == 1 ? MANHATTAN : p == Double.POSITIVE_INFINITY ? CHEBYSHEV : new Metric(p);
     }
 
-    /** p, the order. */
+    /** {@return p, the order} */
     public double p() { return p; }
 
     /** The contribution of one axis whose coordinates differ by {@code diff}. */
@@ -88,7 +94,12 @@ public final class Metric {
         return acc;
     }
 
-    /** The true distance of an accumulated one: its p-th root. */
+    /**
+     * The true distance of an accumulated one: its p-th root.
+     *
+     * @param accumulated an accumulated distance, {@code sum |d_a|^p} (for p = infinity, {@code max |d_a|})
+     * @return the true distance
+     */
     public double distance(double accumulated) {
         return switch (kind) {
             case EUCLIDEAN_KIND -> Math.sqrt(accumulated);
@@ -97,7 +108,12 @@ public final class Metric {
         };
     }
 
-    /** The accumulated form of a true distance: its p-th power. */
+    /**
+     * The accumulated form of a true distance: its p-th power.
+     *
+     * @param distance a true distance
+     * @return its accumulated form, as the queries compare distances
+     */
     public double accumulated(double distance) {
         return switch (kind) {
             case EUCLIDEAN_KIND -> distance * distance;

@@ -40,22 +40,37 @@ public final class NearestQuery extends VoxelDescent {
     /** The largest accumulated distance a neighbour may have (slack included), +infinity without a maximum. */
     private double cap;
 
+    /**
+     * A query over {@code points}: exact, Euclidean, no leaf budget.
+     *
+     * @param points the points to search, shared with other queries
+     */
     public NearestQuery(PointTree points) {
         super(points);
     }
 
-    /** Sets the metric (default {@link Metric#EUCLIDEAN}). */
+    /**
+     * Sets the metric (default {@link Metric#EUCLIDEAN}).
+     *
+     * @param m the metric
+     * @return this query
+     */
     public NearestQuery metric(Metric m) {
         setMetric(m);
         return epsilon(epsilon);
     }
 
+    /** {@return the metric distances are measured in} */
     public Metric metric() { return metric; }
 
     /**
      * Sets eps >= 0 (default 0, exact): prune a voxel unless its distance times {@code 1 + eps}
      * is within the current k-th distance. Every neighbour returned is then within
      * {@code (1 + eps)} times the distance of the true neighbour of its rank.
+     *
+     * @param eps the allowed relative error, finite and >= 0
+     * @return this query
+     * @throws IllegalArgumentException if {@code eps} is negative, infinite or NaN
      */
     public NearestQuery epsilon(double eps) {
         if (!(eps >= 0 && eps < Double.POSITIVE_INFINITY)) throw new IllegalArgumentException("epsilon must be finite and >= 0, got " + eps);
@@ -64,12 +79,17 @@ public final class NearestQuery extends VoxelDescent {
         return this;
     }
 
+    /** {@return eps, the allowed relative error (0: exact)} */
     public double epsilon() { return epsilon; }
 
     /**
      * Sets the budget of leaves (>= 1, or {@link #UNLIMITED}, the default): with a budget, the
      * search is best-bin-first and stops once it has scanned that many leaves; a budget at least
      * the tree's leaf count gives the exact answer.
+     *
+     * @param leaves the most leaves a query scans, >= 1, or {@link #UNLIMITED}
+     * @return this query
+     * @throws IllegalArgumentException if {@code leaves < 1}
      */
     public NearestQuery maxLeaves(int leaves) {
         if (leaves < 1) throw new IllegalArgumentException("max leaves must be >= 1, got " + leaves);
@@ -77,15 +97,23 @@ public final class NearestQuery extends VoxelDescent {
         return this;
     }
 
+    /** {@return the budget of leaves per query, {@link #UNLIMITED} for none} */
     public int maxLeaves() { return maxLeaves; }
 
-    /** Leaves scanned by the last query (a measure of its work). */
+    /** {@return the leaves scanned by the last query (a measure of its work)} */
     public int leavesVisited() { return leavesVisited; }
 
     /**
      * The {@code k} points nearest to {@code query} (fewer if there are fewer points), nearest
      * first, into {@code indices} and, unless null, their distances into {@code distances}; both
      * must hold {@code min(k, number of points)} values. Returns how many were written.
+     *
+     * @param query     the query point, one coordinate per dimension
+     * @param k         how many neighbours to find, >= 1
+     * @param indices   receives the neighbours' point indices, nearest first
+     * @param distances receives their true distances, or null
+     * @return the number of neighbours written, {@code min(k, number of points)}
+     * @throws IllegalArgumentException if {@code k < 1} or an array is too short
      */
     public int nearest(double[] query, int k, int[] indices, double[] distances) {
         return nearest(query, k, Double.POSITIVE_INFINITY, indices, distances);
@@ -94,6 +122,15 @@ public final class NearestQuery extends VoxelDescent {
     /**
      * As {@link #nearest(double[], int, int[], double[])}, keeping only the points at distance
      * {@code <= maxDistance} (>= 0; infinity for no limit), so possibly fewer than k.
+     *
+     * @param query       the query point, one coordinate per dimension
+     * @param k           how many neighbours to find at most, >= 1
+     * @param maxDistance the largest distance a neighbour may have, >= 0 (infinity for no limit)
+     * @param indices     receives the neighbours' point indices, nearest first
+     * @param distances   receives their true distances, or null
+     * @return the number of neighbours written, at most {@code min(k, number of points)}
+     * @throws IllegalArgumentException if {@code k < 1}, {@code maxDistance} is negative or NaN,
+     *                                  or an array is too short
      */
     public int nearest(double[] query, int k, double maxDistance, int[] indices, double[] distances) {
         if (k < 1) throw new IllegalArgumentException("k must be >= 1, got " + k);

@@ -36,7 +36,14 @@ public final class PointTree {
         this.maxDepth = maxDepth(tree);
     }
 
-    /** Builds {@code builder}'s tree over {@code points} (at most {@link #MAX_DIMENSION}-D). */
+    /**
+     * Builds {@code builder}'s tree over {@code points} (at most {@link #MAX_DIMENSION}-D).
+     *
+     * @param points  the points, at most {@link #MAX_DIMENSION}-D
+     * @param builder the builder that makes the tree
+     * @return the points with their new tree
+     * @throws IllegalArgumentException if the points have more than {@link #MAX_DIMENSION} dimensions
+     */
     public static PointTree build(PointsKd points, KdTreeBuilder builder) {
         if (points.dimension() > MAX_DIMENSION)
             throw new IllegalArgumentException("the points are " + points.dimension() + "-D; a kd-tree here holds at most "
@@ -44,9 +51,13 @@ public final class PointTree {
         return new PointTree(points, builder.build(points));
     }
 
+    /** {@return the points, in their input order} */
     public PointsKd points() { return points; }
+    /** {@return the tree built over the points} */
     public KdTree tree() { return tree; }
+    /** {@return k, the number of coordinates of each point} */
     public int dimension() { return points.dimension(); }
+    /** {@return the number of points} */
     public int size() { return points.size(); }
 
     /** The coordinates in leaf order: those of {@code tree().ref(j)} at {@code [j k, (j + 1) k)}; never modify. */

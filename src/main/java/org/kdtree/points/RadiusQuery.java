@@ -14,19 +14,30 @@ public final class RadiusQuery extends VoxelDescent {
     private int count;
     private double reach;
 
+    /**
+     * A query over {@code points}, Euclidean.
+     *
+     * @param points the points to search, shared with other queries
+     */
     public RadiusQuery(PointTree points) {
         super(points);
     }
 
-    /** Sets the metric (default {@link Metric#EUCLIDEAN}). */
+    /**
+     * Sets the metric (default {@link Metric#EUCLIDEAN}).
+     *
+     * @param m the metric
+     * @return this query
+     */
     public RadiusQuery metric(Metric m) {
         setMetric(m);
         return this;
     }
 
+    /** {@return the metric distances are measured in} */
     public Metric metric() { return metric; }
 
-    /** Leaves scanned by the last query. */
+    /** {@return the leaves scanned by the last query} */
     public int leavesVisited() { return leavesVisited; }
 
     /**
@@ -34,6 +45,14 @@ public final class RadiusQuery extends VoxelDescent {
      * first {@code min(count, indices.length)} go into {@code indices} and, unless null, their
      * distances into {@code distances} (at least as long as {@code indices}). Returns the count
      * of all such points, which may exceed what the arrays hold: call again with larger ones.
+     *
+     * @param query     the query point, one coordinate per dimension
+     * @param radius    the largest distance a match may have, finite and >= 0
+     * @param indices   receives the matches' point indices, nearest first
+     * @param distances receives their true distances, or null
+     * @return the number of points within {@code radius}, whether or not they all fit
+     * @throws IllegalArgumentException if {@code radius} is negative, infinite or NaN, or
+     *                                  {@code distances} is shorter than {@code indices}
      */
     public int within(double[] query, double radius, int[] indices, double[] distances) {
         if (!(radius >= 0 && radius < Double.POSITIVE_INFINITY)) throw new IllegalArgumentException("radius must be finite and >= 0, got " + radius);

@@ -36,6 +36,10 @@ public final class BruteForceNeighbours {
      * Scans for the {@code min(k, points)} nearest points to {@code query} and returns the
      * squared distance of the farthest of them, the k-th: every point at most that far is a
      * correct neighbour (so that of two points at the same distance either will do).
+     *
+     * @param query the query point, one coordinate per dimension
+     * @param k     how many neighbours, >= 1 (fewer if there are fewer points)
+     * @return the squared Euclidean distance of the {@code min(k, points)}-th nearest point
      */
     public double kthSquaredDistance(double[] query, int k) {
         int kk = Math.min(k, n);

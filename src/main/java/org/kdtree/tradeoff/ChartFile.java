@@ -45,6 +45,8 @@ public final class ChartFile {
      * Log scale on both axes. XChart labels the decades (its custom tick formatters assume linear
      * axes, and its own log labels at every 1..9 overlap), so {@link #write} adds the ticks and
      * labels at 2 and 5 of every decade itself, from {@link #intermediateTicks}.
+     *
+     * @param chart the chart to set up
      */
     public static void logAxes(XYChart chart) {
         chart.getStyler().setXAxisLogarithmic(true).setYAxisLogarithmic(true);
@@ -52,7 +54,13 @@ public final class ChartFile {
         chart.getStyler().setXAxisDecimalPattern(NUMBER_PATTERN).setYAxisDecimalPattern(NUMBER_PATTERN);
     }
 
-    /** The values 2 and 5 times a power of ten within {@code [lo, hi]}, where a log axis gets extra labelled ticks. */
+    /**
+     * The values 2 and 5 times a power of ten within {@code [lo, hi]}, where a log axis gets extra labelled ticks.
+     *
+     * @param lo the low end of the axis's range, > 0
+     * @param hi the high end, >= {@code lo}
+     * @return the values in ascending order; empty if the range is not positive or is empty
+     */
     public static List<Double> intermediateTicks(double lo, double hi) {
         List<Double> out = new java.util.ArrayList<>();
         if (!(lo > 0) || !(hi >= lo)) return out;
@@ -75,7 +83,12 @@ public final class ChartFile {
         chart.getStyler().setYAxisDecimalPattern(NUMBER_PATTERN);
     }
 
-    /** How a tick value is written, as XChart writes the decades: "20", "0.05", "2,000,000". */
+    /**
+     * How a tick value is written, as XChart writes the decades: "20", "0.05", "2,000,000".
+     *
+     * @param v the tick's value
+     * @return its label
+     */
     public static String tickLabel(double v) {
         return new java.text.DecimalFormat(NUMBER_PATTERN, java.text.DecimalFormatSymbols.getInstance(Locale.ROOT)).format(v);
     }
@@ -83,6 +96,8 @@ public final class ChartFile {
     /**
      * Gives the i-th series marker i mod 7 and colour i mod 9: 7 and 9 are coprime, so no two of
      * up to 63 series look alike.
+     *
+     * @param series the chart's series, in the order they were added
      */
     public static void distinctMarkers(List<XYSeries> series) {
         for (int i = 0; i < series.size(); i++) {
@@ -92,13 +107,27 @@ public final class ChartFile {
         }
     }
 
-    /** "what was measured · N threads on a machine of C cores · date", for under a chart. */
+    /**
+     * "what was measured · N threads on a machine of C cores · date", for under a chart.
+     *
+     * @param what    what was measured
+     * @param threads the threads the measurement used
+     * @return the caption, with this machine's core count and today's date
+     */
     public static String caption(String what, int threads) {
         return what + " · " + threads + (threads == 1 ? " thread" : " threads") + " on a machine of "
                 + Runtime.getRuntime().availableProcessors() + " cores · " + LocalDate.now();
     }
 
-    /** Writes {@code png} and, beside it, the same chart as SVG (same name, {@code .svg}); returns the SVG's path. */
+    /**
+     * Writes {@code png} and, beside it, the same chart as SVG (same name, {@code .svg}); returns the SVG's path.
+     *
+     * @param chart   the chart to draw
+     * @param caption the text under the chart, wrapped to its width
+     * @param png     the PNG file to write
+     * @return the path of the SVG written
+     * @throws IOException if either file cannot be written
+     */
     public static Path write(XYChart chart, String caption, Path png) throws IOException {
         List<String> lines = captionLines(caption, chart.getWidth() - 20);
         int w = chart.getWidth(), h = chart.getHeight() + CAPTION_LINE * lines.size() + 10;

@@ -19,7 +19,15 @@ public final class DimensionChart {
     private DimensionChart() {
     }
 
-    /** Writes the chart as PNG and SVG with {@code caption} under it ({@link ChartFile}). */
+    /**
+     * Writes the chart as PNG and SVG with {@code caption} under it ({@link ChartFile}).
+     *
+     * @param results the measurements to draw
+     * @param title   the chart's title
+     * @param caption the text under the chart
+     * @param png     the PNG file to write; the SVG goes beside it
+     * @throws IOException if a file cannot be written
+     */
     public static void write(List<DimensionResult> results, String title, String caption, Path png) throws IOException {
         ChartFile.write(chart(results, title), caption, png);
     }

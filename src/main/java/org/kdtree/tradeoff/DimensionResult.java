@@ -13,17 +13,17 @@ import java.util.Locale;
  */
 public record DimensionResult(int dimension, double exactQps, double bruteQps, double leavesPerQuery, int leaves) {
 
-    /** How many times faster the tree answers than brute force; below 1 it no longer helps. */
+    /** {@return how many times faster the tree answers than brute force; below 1 it no longer helps} */
     public double speedUp() {
         return exactQps / bruteQps;
     }
 
-    /** The CSV header matching {@link #csvRow}. */
+    /** {@return the CSV header matching {@link #csvRow}} */
     public static String csvHeader() {
         return "dimension,exact_queries_per_s,brute_force_queries_per_s,speed_up,leaves_per_query,leaves";
     }
 
-    /** One CSV row. */
+    /** {@return this result as one CSV row, without a line end} */
     public String csvRow() {
         return String.format(Locale.ROOT, "%d,%.1f,%.1f,%.4f,%.2f,%d", dimension, exactQps, bruteQps, speedUp(),
                 leavesPerQuery, leaves);

@@ -38,7 +38,12 @@ public final class DimensionSweep {
         this.builder = builder;
     }
 
-    /** Builds the tree at {@code dimension} and times its exact search and brute force. */
+    /**
+     * Builds the tree at {@code dimension} and times its exact search and brute force.
+     *
+     * @param dimension the points' dimension
+     * @return the two speeds and the tree's leaves
+     */
     public DimensionResult measure(int dimension) {
         PointTree tree = PointTree.build(kind.points(n, dimension, seed), builder);
         NeighbourStudy study = new NeighbourStudy(tree, kind.queries(queryCount, dimension, seed), k, runs);
@@ -47,7 +52,12 @@ public final class DimensionSweep {
                 exact.leavesPerQuery(), tree.tree().leafCount());
     }
 
-    /** The results as CSV, one row per dimension, in the order given. */
+    /**
+     * The results as CSV, one row per dimension, in the order given.
+     *
+     * @param results the measurements
+     * @return the header and one line per result
+     */
     public static String csv(List<DimensionResult> results) {
         StringBuilder sb = new StringBuilder(DimensionResult.csvHeader()).append('\n');
         for (DimensionResult r : results) sb.append(r.csvRow()).append('\n');

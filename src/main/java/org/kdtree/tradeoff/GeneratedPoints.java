@@ -20,23 +20,43 @@ public enum GeneratedPoints {
     private static final int CLUSTERS = 10;
     private static final double SPREAD = 0.02;
 
-    /** The kind named {@code name} ("uniform", "clustered"; any case), or an error listing both. */
+    /**
+     * The kind named {@code name} ("uniform", "clustered"; any case), or an error listing both.
+     *
+     * @param name the kind's name, as given to {@code --generate}
+     * @return the kind
+     * @throws IllegalArgumentException if {@code name} names neither kind
+     */
     public static GeneratedPoints named(String name) {
         for (GeneratedPoints g : values()) if (g.label().equals(name.toLowerCase(Locale.ROOT))) return g;
         throw new IllegalArgumentException("--generate must be uniform or clustered, got '" + name + "'");
     }
 
-    /** The lower-case name used on the command line and in captions. */
+    /** {@return the lower-case name used on the command line and in captions} */
     public String label() {
         return name().toLowerCase(Locale.ROOT);
     }
 
-    /** {@code n} data points of {@code dimension} coordinates. */
+    /**
+     * {@code n} data points of {@code dimension} coordinates.
+     *
+     * @param n         how many points
+     * @param dimension coordinates per point
+     * @param seed      the seed; the same seed gives the same points
+     * @return the points
+     */
     public PointsKd points(int n, int dimension, long seed) {
         return draw(n, dimension, seed, new SplitMix64(seed ^ 0x243F6A8885A308D3L));
     }
 
-    /** {@code count} query points from the distribution of {@link #points} with the same seed. */
+    /**
+     * {@code count} query points from the distribution of {@link #points} with the same seed.
+     *
+     * @param count     how many points
+     * @param dimension coordinates per point
+     * @param seed      the data's seed (a separate stream is drawn from it)
+     * @return the query points
+     */
     public PointsKd queries(int count, int dimension, long seed) {
         return draw(count, dimension, seed, new SplitMix64(seed ^ 0x13198A2E03707344L));
     }

@@ -26,6 +26,13 @@ public final class GrowthChart {
     private GrowthChart() {
     }
 
+    /**
+     * Reads the CSV files and writes the chart for one scene, exiting with 2 on a usage error and
+     * 1 if no row is for the scene.
+     *
+     * @param args the PNG to write, the scene, then one or more JMH CSV files
+     * @throws IOException if a CSV file cannot be read or is not a build benchmark's, or the chart cannot be written
+     */
     public static void main(String[] args) throws IOException {
         if (args.length < 3) {
             System.err.println("usage: GrowthChart OUT.png SCENE JMH.csv...");

@@ -16,18 +16,18 @@ import java.util.Locale;
 public record NeighbourResult(NeighbourSearch search, String setting, double recall, double queriesPerSecond,
                               double leavesPerQuery, double speedUp) {
 
-    /** The CSV header matching {@link #csvRow}. */
+    /** {@return the CSV header matching {@link #csvRow}} */
     public static String csvHeader() {
         return "search,setting,recall,queries_per_s,leaves_per_query,speed_up";
     }
 
-    /** One CSV row. */
+    /** {@return this result as one CSV row, without a line end} */
     public String csvRow() {
         return String.format(Locale.ROOT, "%s,%s,%.6f,%.1f,%.2f,%.4f", search.label(), setting, recall,
                 queriesPerSecond, leavesPerQuery, speedUp);
     }
 
-    /** The name of this row in a table: the search and its setting. */
+    /** {@return the name of this row in a table: the search and its setting} */
     public String name() {
         return setting.isEmpty() ? search.label() : search.label() + " " + setting;
     }

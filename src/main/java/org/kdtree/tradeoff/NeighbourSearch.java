@@ -17,7 +17,7 @@ public enum NeighbourSearch {
         this.label = label;
     }
 
-    /** How tables, CSV files and legends name it. */
+    /** {@return how tables, CSV files and legends name it} */
     public String label() {
         return label;
     }

@@ -49,34 +49,44 @@ public final class NeighbourStudy {
         for (int j = 0; j < kth.length; j++) kth[j] = brute.kthSquaredDistance(this.queries[j], k);
     }
 
-    /** The queries answered by scanning every point: the baseline (recall 1, speed-up 1). */
+    /** {@return the queries answered by scanning every point: the baseline (recall 1, speed-up 1)} */
     public NeighbourResult bruteForce() {
         return new NeighbourResult(NeighbourSearch.BRUTE_FORCE, "", 1, bruteQueriesPerSecond(), 0, 1);
     }
 
-    /** The kd-tree's exact search. */
+    /** {@return the kd-tree's exact search, measured} */
     public NeighbourResult exact() {
         return measure(NeighbourSearch.EXACT, "", new NearestQuery(tree));
     }
 
-    /** Best-bin-first, stopping after {@code maxLeaves} leaves ({@link NearestQuery#UNLIMITED}: exact). */
+    /**
+     * Best-bin-first, stopping after {@code maxLeaves} leaves ({@link NearestQuery#UNLIMITED}: exact).
+     *
+     * @param maxLeaves the budget of leaves per query, >= 1
+     * @return the search's recall and speed
+     */
     public NeighbourResult budget(int maxLeaves) {
         String setting = maxLeaves == NearestQuery.UNLIMITED ? "unlimited" : Integer.toString(maxLeaves);
         return measure(NeighbourSearch.BEST_BIN_FIRST, setting, new NearestQuery(tree).maxLeaves(maxLeaves));
     }
 
-    /** The search with the {@code (1 + eps)} bound. */
+    /**
+     * The search with the {@code (1 + eps)} bound.
+     *
+     * @param eps the allowed relative error, finite and >= 0
+     * @return the search's recall and speed
+     */
     public NeighbourResult epsilon(double eps) {
         return measure(NeighbourSearch.EPSILON, org.kdtree.limits.Limit.format(eps), new NearestQuery(tree).epsilon(eps));
     }
 
-    /** Brute force's queries per second, measured on first use. */
+    /** {@return brute force's queries per second, measured on first use} */
     public double bruteQueriesPerSecond() {
         if (Double.isNaN(bruteQps)) bruteQps = queries.length / medianSeconds(this::bruteForcePass);
         return bruteQps;
     }
 
-    /** The number of query points. */
+    /** {@return the number of query points} */
     public int queryCount() {
         return queries.length;
     }
@@ -132,7 +142,12 @@ public final class NeighbourStudy {
         return r;
     }
 
-    /** The results as CSV, one row each, in the order given. */
+    /**
+     * The results as CSV, one row each, in the order given.
+     *
+     * @param results the measurements
+     * @return the header and one line per result
+     */
     public static String csv(List<NeighbourResult> results) {
         StringBuilder sb = new StringBuilder(NeighbourResult.csvHeader()).append('\n');
         for (NeighbourResult r : results) sb.append(r.csvRow()).append('\n');

@@ -22,14 +22,22 @@ public final class RaySet {
         this.rays = rays;
     }
 
+    /** {@return the set's name, "P" or "R"} */
     public String name() { return name; }
 
+    /** {@return the number of rays} */
     public int size() { return rays.length / 6; }
 
-    /** Origin and direction of ray {@code i}: {@code rays()[6 i .. 6 i + 6)}. */
+    /** {@return the rays: origin and direction of ray {@code i} at {@code rays()[6 i .. 6 i + 6)}; never modify} */
     public double[] rays() { return rays; }
 
-    /** Set P: a {@code res x res} pinhole camera looking at the box from direction (1, 0.5, 2), 40 degrees. */
+    /**
+     * Set P: a {@code res x res} pinhole camera looking at the box from direction (1, 0.5, 2), 40 degrees.
+     *
+     * @param bounds the scene's box, which the camera looks at
+     * @param res    the image's width and height in pixels, one ray each
+     * @return the {@code res * res} rays, row by row from the top, unit directions
+     */
     public static RaySet primary(Box bounds, int res) {
         double[] c = new double[3];
         double d = 0;
@@ -59,7 +67,13 @@ public final class RaySet {
         return new RaySet("P", r);
     }
 
-    /** Set R: {@code n} rays with uniform origins in the box and uniform directions (splitmix64, seed 42). */
+    /**
+     * Set R: {@code n} rays with uniform origins in the box and uniform directions (splitmix64, seed 42).
+     *
+     * @param bounds the scene's box, where the origins lie
+     * @param n      how many rays
+     * @return the rays, unit directions
+     */
     public static RaySet random(Box bounds, int n) {
         SplitMix64 rng = new SplitMix64(42);
         double[] r = new double[6 * n];

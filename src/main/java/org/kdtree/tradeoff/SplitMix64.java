@@ -4,11 +4,16 @@ package org.kdtree.tradeoff;
 public final class SplitMix64 {
     private long state;
 
+    /**
+     * A generator starting from {@code seed}.
+     *
+     * @param seed the initial state
+     */
     public SplitMix64(long seed) {
         state = seed;
     }
 
-    /** The next 64-bit value (unsigned, in a long). */
+    /** {@return the next 64-bit value (unsigned, in a long)} */
     public long nextLong() {
         state += 0x9E3779B97F4A7C15L;
         long z = state;
@@ -17,7 +22,7 @@ public final class SplitMix64 {
         return z ^ (z >>> 31);
     }
 
-    /** A double in [0, 1): the top 53 bits times 2^-53. */
+    /** {@return a double in [0, 1): the top 53 bits of the next value times 2^-53} */
     public double nextDouble() {
         return (nextLong() >>> 11) * 0x1.0p-53;
     }

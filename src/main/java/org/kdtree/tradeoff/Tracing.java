@@ -15,7 +15,13 @@ public final class Tracing {
     public record Checksum(long hits, double tSum) {
     }
 
-    /** Traces every ray (with a Traverser: its fast path, no listener) and returns the checksum. */
+    /**
+     * Traces every ray (with a Traverser: its fast path, no listener) and returns the checksum.
+     *
+     * @param traverser finds each ray's closest hit
+     * @param set       the rays, each traced over t in [0, infinity)
+     * @return how many rays hit, and the sum of their hit distances
+     */
     public static Checksum trace(RayQuery traverser, RaySet set) {
         double[] r = set.rays();
         Ray ray = new Ray(3);
@@ -32,7 +38,14 @@ public final class Tracing {
         return new Checksum(hits, sum);
     }
 
-    /** Traces about {@code limit} rays spread over the whole set with a listener that counts nodes visited and triangle tests. */
+    /**
+     * Traces about {@code limit} rays spread over the whole set with a listener that counts nodes visited and triangle tests.
+     *
+     * @param traverser finds each ray's closest hit
+     * @param set       the rays to sample, every {@code size / limit}-th one
+     * @param limit     about how many rays to trace
+     * @return the counts summed over the rays traced
+     */
     public static TraversalStats count(Traverser traverser, RaySet set, int limit) {
         double[] r = set.rays();
         int n = r.length / 6;

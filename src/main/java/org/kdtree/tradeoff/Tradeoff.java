@@ -23,6 +23,8 @@ public final class Tradeoff {
     private final int countedRays;
 
     /**
+     * @param mesh        the scene every variant builds its tree over
+     * @param rays        the ray workload traced with each tree
      * @param runs        timed builds and traces per variant (the median is kept), after one warm-up
      * @param threads     threads for the builds (tracing is single-threaded)
      * @param countedRays rays traced once more with a listener to count nodes and tests per ray
@@ -35,7 +37,12 @@ public final class Tradeoff {
         this.countedRays = Math.max(1, countedRays);
     }
 
-    /** Measures one variant. */
+    /**
+     * Measures one variant.
+     *
+     * @param v the variant
+     * @return its build time, tree quality and trace speed
+     */
     public TradeoffResult run(Variant v) {
         KdTreeBuilder builder = v.create().threads(threads);
         KdTree tree = builder.build(mesh);
@@ -64,6 +71,9 @@ public final class Tradeoff {
     /**
      * The Pareto front of build time against trace time: results no other result beats on both
      * (at least as fast to build and to trace, and faster on one).
+     *
+     * @param results the measurements
+     * @return for each result, in order, whether it is on the front
      */
     public static boolean[] paretoFront(List<TradeoffResult> results) {
         boolean[] front = new boolean[results.size()];
@@ -76,7 +86,12 @@ public final class Tradeoff {
         return front;
     }
 
-    /** The results as CSV, with a Pareto column. */
+    /**
+     * The results as CSV, with a Pareto column.
+     *
+     * @param results the measurements
+     * @return the header and one line per result, in order
+     */
     public static String csv(List<TradeoffResult> results) {
         boolean[] front = paretoFront(results);
         StringBuilder sb = new StringBuilder(TradeoffResult.csvHeader()).append('\n');

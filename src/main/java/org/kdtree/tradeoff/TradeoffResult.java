@@ -21,12 +21,22 @@ public record TradeoffResult(String variant, String settings, double buildMs, do
                              long memoryBytes, double nodesPerRay, double testsPerRay, double raysPerSecond,
                              int triangles) {
 
-    /** Time to trace {@code raysPerTriangle x triangles} rays, in ms. */
+    /**
+     * Time to trace {@code raysPerTriangle x triangles} rays, in ms.
+     *
+     * @param raysPerTriangle rays per triangle of the scene
+     * @return the trace time at this result's speed, in ms
+     */
     public double traceMs(double raysPerTriangle) {
         return raysPerTriangle * triangles / raysPerSecond * 1e3;
     }
 
-    /** Build plus trace time for {@code raysPerTriangle x triangles} rays, in ms: the time to answer them all. */
+    /**
+     * Build plus trace time for {@code raysPerTriangle x triangles} rays, in ms: the time to answer them all.
+     *
+     * @param raysPerTriangle rays per triangle of the scene
+     * @return {@link #buildMs} plus {@link #traceMs}, in ms
+     */
     public double totalMs(double raysPerTriangle) {
         return buildMs + traceMs(raysPerTriangle);
     }

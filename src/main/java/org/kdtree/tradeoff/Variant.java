@@ -13,7 +13,7 @@ import org.kdtree.build.SahBuilder.Algorithm;
 /** One builder configuration of the trade-off study: a short name and a factory. */
 public record Variant(String name, Supplier<KdTreeBuilder> factory) {
 
-    /** A new builder with this variant's settings. */
+    /** {@return a new builder with this variant's settings} */
     public KdTreeBuilder create() {
         return factory.get();
     }
@@ -23,6 +23,8 @@ public record Variant(String name, Supplier<KdTreeBuilder> factory) {
      * and 0.5 (and the sorted algorithm, same tree, for its build time), binned SAH with B = 8,
      * 32, 256 (and pure binning without the exact sweep of small nodes), SAH without perfect
      * splits, SAH under depth caps 12, 16 and 20, and the quality presets fast and balanced.
+     *
+     * @return the variants, in that order
      */
     public static List<Variant> all() {
         List<Variant> v = new ArrayList<>();
@@ -42,7 +44,7 @@ public record Variant(String name, Supplier<KdTreeBuilder> factory) {
         return v;
     }
 
-    /** A few variants for a quick look (and for tests): median plane, exact SAH, binned B = 8 and 32. */
+    /** {@return a few variants for a quick look (and for tests): median plane, exact SAH, binned B = 8 and 32} */
     public static List<Variant> quick() {
         return all().stream().filter(v -> List.of("median-plane", "sah-exact-l0.8", "sah-binned-b8", "sah-binned-b32")
                 .contains(v.name())).toList();
