@@ -34,7 +34,6 @@ import org.kdtree.io.SceneLoader;
 import org.kdtree.render.EffectPlan;
 import org.kdtree.render.Image;
 import org.kdtree.render.RayCounts;
-import org.kdtree.render.RayKind;
 import org.kdtree.render.RenderJob;
 import org.kdtree.render.Scene;
 import org.kdtree.render.Tracer;
@@ -279,17 +278,12 @@ public final class View3D extends JPanel {
         out.append(plan.describe()).append('\n');
         out.append(String.format(Locale.ROOT, "builder: %s (%s)%nbuild time: %.1f ms%nrender time: %.1f ms%s%n",
                 b.name(), b.describeSettings(), (t1 - t0) / 1e6, (t2 - t1) / 1e6, cancelled ? " (stopped)" : ""));
-        out.append("rays:\n");
-        double sec = Math.max(1e-9, (t2 - t1) / 1e9);
-        for (RayKind k : RayKind.values())
-            out.append(String.format(Locale.ROOT, "  %-10s %,12d  %,12.0f rays/s%n", k.label(), total.get(k), total.get(k) / sec));
-        out.append(String.format(Locale.ROOT, "  %-10s %,12d  %,12.0f rays/s%n", "total", total.total(), total.total() / sec));
+        out.append(RenderJob.rayLines(total, t2 - t1));
         out.append("tree:\n");
         for (String line : tree.stats().describe().split("\\R")) out.append("  ").append(line).append('\n');
         return out.toString();
     }
 
-    /** The image as it fills in. */
     /** The image: scaled to fit the panel (keeping its aspect ratio), or at 1:1 with scroll bars. */
     private final class Picture extends JComponent implements javax.swing.Scrollable {
         private BufferedImage img;

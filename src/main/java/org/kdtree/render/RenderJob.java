@@ -57,14 +57,25 @@ public record RenderJob(Scene scene, KdTree tree, long buildNanos, RenderResult 
         s.append(result.plan().describe()).append(System.lineSeparator());
         s.append(String.format(Locale.ROOT, "build time: %.1f ms (%s)%n", buildNanos / 1e6, tree.builderName()));
         s.append(String.format(Locale.ROOT, "render time: %.1f ms%n", result.renderNanos() / 1e6));
-        s.append("rays:").append(System.lineSeparator());
-        // counts per kind; one rate for them all: the kinds are traced interleaved, not timed apart
-        for (RayKind k : RayKind.values())
-            s.append(String.format(Locale.ROOT, "  %-10s %,14d%n", k.label(), result.rays().get(k)));
-        s.append(String.format(Locale.ROOT, "  %-10s %,14d  (%,.0f rays/s over the render time)%n", "total", result.rays().total(),
-                result.rays().total() / Math.max(1e-9, result.renderNanos() / 1e9)));
+        s.append(rayLines(result.rays(), result.renderNanos()));
         s.append("tree:").append(System.lineSeparator());
         for (String line : tree.stats().describe().split("\\R")) s.append("  ").append(line).append(System.lineSeparator());
+        return s.toString();
+    }
+
+    /**
+     * {@return the "rays:" lines of a render's report: the count of each kind, and one rate for
+     * them all}. The kinds are traced interleaved, not timed apart, so a rate per kind would only
+     * divide its count by the whole render time.
+     *
+     * @param rays        the rays cast, by kind
+     * @param renderNanos the render's wall-clock time
+     */
+    public static String rayLines(RayCounts rays, long renderNanos) {
+        StringBuilder s = new StringBuilder("rays:").append(System.lineSeparator());
+        for (RayKind k : RayKind.values()) s.append(String.format(Locale.ROOT, "  %-10s %,14d%n", k.label(), rays.get(k)));
+        s.append(String.format(Locale.ROOT, "  %-10s %,14d  (%,.0f rays/s over the render time)%n", "total", rays.total(),
+                rays.total() / Math.max(1e-9, renderNanos / 1e9)));
         return s.toString();
     }
 }
