@@ -161,7 +161,7 @@ public final class NearestStepperPanel extends JPanel implements CanvasOverlay {
             describe(s);
             if (s.node() >= 0) model.selectNode(s.node());   // the tree view follows the step
         }
-        repaintCanvas();
+        Widgets.repaintWindow(this);
     }
 
     private void describe(NearestTrace.Step s) {
@@ -172,22 +172,22 @@ public final class NearestStepperPanel extends JPanel implements CanvasOverlay {
             node = "node #" + s.node() + (t.isLeaf(s.node())
                     ? " (leaf, " + t.leafSize(s.node()) + (t.leafSize(s.node()) == 1 ? " object)" : " objects)")
                     : String.format(Locale.ROOT, " (%s = %.3f)", t.axis(s.node()) == 0 ? "x" : "y", t.split(s.node())));
-            if (!Double.isNaN(s.bound())) node += ", voxel at " + num(s.bound());
+            if (!Double.isNaN(s.bound())) node += ", voxel at " + Widgets.num(s.bound());
             if (s.near() >= 0) node += ": near #" + s.near() + " first, then far #" + s.far();
         }
         nodeLabel.setText(node);
-        radiusLabel.setText("k-th distance (radius): " + num(s.kth()) + "   (" + s.best().size() + " of " + trace.k() + " found)");
+        radiusLabel.setText("k-th distance (radius): " + Widgets.num(s.kth()) + "   (" + s.best().size() + " of " + trace.k() + " found)");
         testedLabel.setText(testedText(s));
         bestLabel.setText("best: " + listText(s.best(), 6));
     }
 
     private static String testedText(NearestTrace.Step s) {
         return switch (s.kind()) {
-            case TEST -> "tested: object " + s.object() + " at " + num(s.distance())
+            case TEST -> "tested: object " + s.object() + " at " + Widgets.num(s.distance())
                     + (s.improved() ? ": enters the best list" : Double.isInfinite(s.distance()) ? ": flat, never a neighbour"
                     : ": beyond the k-th, dropped");
             case MAILBOXED -> "tested: object " + s.object() + " was tested in another leaf (mailbox)";
-            case PRUNE -> "pruned: voxel at " + num(s.bound()) + " >= radius " + num(s.kth());
+            case PRUNE -> "pruned: voxel at " + Widgets.num(s.bound()) + " >= radius " + Widgets.num(s.kth());
             default -> "tested: -";
         };
     }
@@ -203,7 +203,7 @@ public final class NearestStepperPanel extends JPanel implements CanvasOverlay {
         if (list.isEmpty()) return "-";
         StringBuilder b = new StringBuilder();
         for (int i = 0; i < Math.min(most, list.size()); i++)
-            b.append(i == 0 ? "" : ", ").append('#').append(list.get(i).object()).append(' ').append(num(list.get(i).distance()));
+            b.append(i == 0 ? "" : ", ").append('#').append(list.get(i).object()).append(' ').append(Widgets.num(list.get(i).distance()));
         return b.append(list.size() > most ? ", ... (" + list.size() + ")" : "").toString();
     }
 
@@ -219,16 +219,6 @@ public final class NearestStepperPanel extends JPanel implements CanvasOverlay {
         };
     }
 
-    private static String num(double v) {
-        if (Double.isNaN(v)) return "-";
-        if (Double.isInfinite(v)) return v > 0 ? "inf" : "-inf";
-        return String.format(Locale.ROOT, "%.3f", v);
-    }
-
-    private void repaintCanvas() {
-        java.awt.Window w = javax.swing.SwingUtilities.getWindowAncestor(this);
-        if (w != null) w.repaint();
-    }
 
     // ---- drawing on the canvas ----
 

@@ -121,7 +121,7 @@ public final class StepperPanel extends JPanel implements CanvasOverlay {
             describe(trace.step(index));
             if (trace.step(index).node() >= 0) model.selectNode(trace.step(index).node());   // the tree view follows the step
         }
-        repaintCanvas();
+        Widgets.repaintWindow(this);
     }
 
     private void describe(TraversalTrace.Step s) {
@@ -130,11 +130,11 @@ public final class StepperPanel extends JPanel implements CanvasOverlay {
         nodeLabel.setText(s.node() < 0 ? "node: -" : "node #" + s.node() + (t.isLeaf(s.node())
                 ? " (leaf, " + t.leafSize(s.node()) + (t.leafSize(s.node()) == 1 ? " object)" : " objects)")
                 : String.format(Locale.ROOT, " (%s = %.3f)", t.axis(s.node()) == 0 ? "x" : "y", t.split(s.node()))));
-        intervalLabel.setText(String.format(Locale.ROOT, "tMin = %s   tMax = %s   tSplit = %s", num(s.tMin()), num(s.tMax()), num(s.tSplit())));
+        intervalLabel.setText(String.format(Locale.ROOT, "tMin = %s   tMax = %s   tSplit = %s", Widgets.num(s.tMin()), Widgets.num(s.tMax()), Widgets.num(s.tSplit())));
         childrenLabel.setText(s.near() < 0 ? "near / far: -" : "near #" + s.near() + ", far #" + s.far() + ": " + s.visit());
         stackLabel.setText(stackText(s.stack()));
         testedLabel.setText("tested: " + (s.tested().isEmpty() ? "-" : s.tested().stream().map(String::valueOf)
-                .collect(Collectors.joining(", "))) + (s.bestObject() >= 0 ? "   best: object " + s.bestObject() + " at t = " + num(s.bestT()) : ""));
+                .collect(Collectors.joining(", "))) + (s.bestObject() >= 0 ? "   best: object " + s.bestObject() + " at t = " + Widgets.num(s.bestT()) : ""));
     }
 
     /** The stack, top first; only the top three entries, as the next pops take them. */
@@ -144,14 +144,14 @@ public final class StepperPanel extends JPanel implements CanvasOverlay {
         for (int i = stack.size() - 1; i >= Math.max(0, stack.size() - 3); i--) {
             TraversalTrace.Entry e = stack.get(i);
             b.append(i == stack.size() - 1 ? "" : ", ").append('#').append(e.node())
-                    .append(" [").append(num(e.tMin())).append(", ").append(num(e.tMax())).append(']');
+                    .append(" [").append(Widgets.num(e.tMin())).append(", ").append(Widgets.num(e.tMax())).append(']');
         }
         return b.append(stack.size() > 3 ? ", ..." : "").toString();
     }
 
     private String resultText() {
         if (model.ray() == null) return "result: cast a ray (drag with the Cast ray tool)";
-        String hit = trace.hitObject() >= 0 ? "hit object " + trace.hitObject() + " at t = " + num(trace.hitT()) : "no hit";
+        String hit = trace.hitObject() >= 0 ? "hit object " + trace.hitObject() + " at t = " + Widgets.num(trace.hitT()) : "no hit";
         return String.format(Locale.ROOT, "result: %s  (%d nodes, %d leaves, %d tests)", hit, trace.nodes(), trace.leaves(), trace.tests());
     }
 
@@ -170,16 +170,6 @@ public final class StepperPanel extends JPanel implements CanvasOverlay {
         };
     }
 
-    private static String num(double v) {
-        if (Double.isNaN(v)) return "-";
-        if (Double.isInfinite(v)) return v > 0 ? "inf" : "-inf";
-        return String.format(Locale.ROOT, "%.3f", v);
-    }
-
-    private void repaintCanvas() {
-        java.awt.Window w = javax.swing.SwingUtilities.getWindowAncestor(this);
-        if (w != null) w.repaint();
-    }
 
     // ---- drawing on the canvas ----
 

@@ -37,4 +37,25 @@ final class Widgets {
         l.setToolTipText(tip);
         return l;
     }
+
+    /**
+     * {@return a stepper's number as its labels show it: 3 decimals, "inf" or "-" for none}
+     *
+     * @param v the number, possibly infinite or NaN
+     */
+    static String num(double v) {
+        if (Double.isNaN(v)) return "-";
+        if (Double.isInfinite(v)) return v > 0 ? "inf" : "-inf";
+        return String.format(java.util.Locale.ROOT, "%.3f", v);
+    }
+
+    /**
+     * Repaints the whole window holding {@code c}, so that a stepper's canvas overlay follows its step.
+     *
+     * @param c a component of the window
+     */
+    static void repaintWindow(java.awt.Component c) {
+        java.awt.Window w = javax.swing.SwingUtilities.getWindowAncestor(c);
+        if (w != null) w.repaint();
+    }
 }
