@@ -9,6 +9,7 @@ import java.util.concurrent.Callable;
 import org.kdtree.build.Builders;
 import org.kdtree.build.KdTreeBuilder;
 import org.kdtree.io.PointCsv;
+import org.kdtree.limits.Limits;
 import org.kdtree.points.NearestQuery;
 import org.kdtree.points.PointTree;
 import org.kdtree.shape.PointsKd;
@@ -49,7 +50,7 @@ public final class KnnCommand implements Callable<Integer> {
     Path outFile;
 
     @Override public Integer call() throws Exception {
-        if (k < 1) throw new IllegalArgumentException("--k must be >= 1, got " + k);
+        Limits.NEIGHBOURS.check("--k", k);
         if (radius != null && !(radius >= 0 && radius < Double.POSITIVE_INFINITY))
             throw new IllegalArgumentException("--radius must be a finite number >= 0, got " + radius);
         KdTreeBuilder b = Builders.create(builder);

@@ -88,7 +88,7 @@ class KnnCommandTest {
         assertError(CliRun.of("knn", points.toString(), "--queries", q3.toString(), "--k", "1", "--out", out),
                 "error: " + q3 + ": the queries are 3-D, the points 2-D (" + points + ")");
         assertError(CliRun.of("knn", points.toString(), "--queries", points.toString(), "--k", "0", "--out", out),
-                "error: --k must be >= 1, got 0");
+                "error: --k must be between 1 and 100000, got 0");
         assertError(CliRun.of("knn", points.toString(), "--queries", points.toString(), "--k", "1", "--radius", "-1", "--out", out),
                 "error: --radius must be a finite number >= 0, got -1.0");
         assertError(CliRun.of("knn", bad.toString(), "--queries", points.toString(), "--k", "1", "--out", out),
