@@ -94,7 +94,7 @@ class KnnCommandTest {
         assertError(CliRun.of("knn", bad.toString(), "--queries", points.toString(), "--k", "1", "--out", out),
                 "error: " + bad + ":2: a point needs 2 coordinates, as on line 1, got 1");
         assertError(CliRun.of("knn", points.toString(), "--queries", points.toString(), "--k", "1", "--builder", "nope", "--out", out),
-                "error: unknown builder 'nope' (known: sah, median-plane, object-median, centre-midpoint, sliding-midpoint)");
+                "error: unknown builder 'nope' (known: sah, median-plane, object-median, sliding-midpoint, centre-midpoint)");
         assertError(CliRun.of("knn", points.toString(), "--queries", points.toString(), "--k", "1", "--out", dir.resolve("no/o.csv").toString()),
                 "error: --out " + dir.resolve("no/o.csv") + ": the folder " + dir.resolve("no") + " does not exist");
         Path wide = file("wide.csv", "0" + ",0".repeat(64) + "\n");
