@@ -60,7 +60,7 @@ public final class RenderCommand implements Callable<Integer> {
         if (threads != null) o = o.withThreads(Limits.THREADS.check("--threads", threads));
         RenderJob job;
         try (ProgressBar bar = progress.bar(1, "tiles")) {
-            job = RenderJob.run(s, options.create(), o.withProgress((done, total) -> bar.update(done, total)));
+            job = RenderJob.run(s, options.create(), o.withProgress((done, total, image) -> bar.update(done, total)));
         }
         job.result().image().writePng(output);
         System.out.print(job.summary());

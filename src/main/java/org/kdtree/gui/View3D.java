@@ -13,6 +13,7 @@ import java.util.ArrayList;
 import java.util.List;
 import java.util.Locale;
 import java.util.concurrent.atomic.AtomicInteger;
+import java.util.concurrent.atomic.AtomicReference;
 import java.util.stream.Stream;
 import javax.swing.BorderFactory;
 import javax.swing.JButton;
@@ -31,15 +32,13 @@ import org.kdtree.limits.Limits;
 import org.kdtree.build.KdTreeBuilder;
 import org.kdtree.io.SceneFile;
 import org.kdtree.io.SceneLoader;
-import org.kdtree.render.EffectPlan;
 import org.kdtree.render.Image;
-import org.kdtree.render.RayCounts;
 import org.kdtree.render.RenderJob;
+import org.kdtree.render.Renderer;
 import org.kdtree.render.Scene;
 import org.kdtree.render.Tracer;
 import org.kdtree.shape.Primitives;
 import org.kdtree.traverse.Traverser;
-import org.kdtree.traverse.TriangleIntersector;
 import org.kdtree.tree.KdTree;
 
 /**
@@ -223,65 +222,32 @@ public final class View3D extends JPanel {
                 + "build time: %.1f ms%n%s%n", file.getFileName(), RenderJob.count(p.size(), "primitive"), b.name(), b.describeSettings(), ms, tree.stats().describe());
     }
 
-    /** Renders tile by tile over all cores; the picture shows the image as tiles complete. */
+    /**
+     * Renders with the library's renderer ({@link RenderJob}, as the render command does) over all
+     * cores; the picture shows the image as tiles complete, and Stop ends it after the tiles under way.
+     */
     private String render(Path file, KdTreeBuilder b, int w) throws IOException {
         Scene s = SceneFile.read(file);
         int h = Math.max(1, (int) Math.round(w * (double) s.camera().height() / s.camera().width()));
-        Scene scene3 = s.withImageSize(w, h);
-        long t0 = System.nanoTime();
-        KdTree tree = b.build(scene3.mesh());
-        long t1 = System.nanoTime();
-        TriangleIntersector triangles = new TriangleIntersector(scene3.mesh());
-        EffectPlan plan = new EffectPlan(scene3);
-        Image image = new Image(w, h);
-        int ts = 16, tilesX = (w + ts - 1) / ts, tiles = tilesX * ((h + ts - 1) / ts);
-        AtomicInteger next = new AtomicInteger(), done = new AtomicInteger();
-        Timer refresh = new Timer(150, e -> picture.show(image.toBufferedImage(), done.get(), tiles));
+        AtomicReference<Image> growing = new AtomicReference<>();
+        AtomicInteger done = new AtomicInteger(), total = new AtomicInteger(1);
+        Timer refresh = new Timer(150, e -> {
+            Image img = growing.get();
+            if (img != null) picture.show(img.toBufferedImage(), done.get(), total.get());
+        });
         SwingUtilities.invokeLater(refresh::start);
-        int threads = Math.max(1, Runtime.getRuntime().availableProcessors());
-        List<Thread> workers = new ArrayList<>();
-        List<RayCounts> counts = new ArrayList<>();
-        for (int i = 0; i < threads; i++) {
-            Tracer tracer = new Tracer(scene3, plan, new Traverser(tree, triangles));
-            counts.add(tracer.counts());
-            Thread t = new Thread(() -> {
-                for (int tile; !cancelled && (tile = next.getAndIncrement()) < tiles; ) {
-                    int x0 = (tile % tilesX) * ts, y0 = (tile / tilesX) * ts;
-                    for (int y = y0; y < Math.min(h, y0 + ts); y++)
-                        for (int x = x0; x < Math.min(w, x0 + ts); x++) image.set(x, y, tracer.pixel(x, y));
-                    done.incrementAndGet();
-                }
-            }, "workbench-render");
-            t.setDaemon(true);
-            workers.add(t);
-            t.start();
-        }
-        for (Thread t : workers) {
-            try {
-                t.join();
-            } catch (InterruptedException e) {
-                Thread.currentThread().interrupt();
-                cancelled = true;
-            }
-        }
-        long t2 = System.nanoTime();
+        Renderer.Options options = Renderer.Options.defaults().withStop(() -> cancelled)
+                .withProgress((d, t, image) -> {
+                    growing.set(image);
+                    total.set(t);
+                    done.accumulateAndGet(d, Math::max);
+                });
+        RenderJob job = RenderJob.run(s.withImageSize(w, h), b, options);
         SwingUtilities.invokeLater(() -> {
             refresh.stop();
-            picture.show(image.toBufferedImage(), done.get(), tiles);
+            picture.show(job.result().image().toBufferedImage(), done.get(), total.get());
         });
-        RayCounts total = new RayCounts();
-        for (RayCounts c : counts) total.merge(c);
-        StringBuilder out = new StringBuilder();
-        out.append(String.format(Locale.ROOT, "scene: %s (%s)%nimage: %d x %d, %s per pixel, %s%n",
-                file.getFileName(), RenderJob.count(scene3.mesh().size(), "triangle"), w, h,
-                RenderJob.count(scene3.samplesPerPixel(), "sample"), RenderJob.count(threads, "thread")));
-        out.append(plan.describe()).append('\n');
-        out.append(String.format(Locale.ROOT, "builder: %s (%s)%nbuild time: %.1f ms%nrender time: %.1f ms%s%n",
-                b.name(), b.describeSettings(), (t1 - t0) / 1e6, (t2 - t1) / 1e6, cancelled ? " (stopped)" : ""));
-        out.append(RenderJob.rayLines(total, t2 - t1));
-        out.append("tree:\n");
-        for (String line : tree.stats().describe().split("\\R")) out.append("  ").append(line).append('\n');
-        return out.toString();
+        return job.summary();
     }
 
     /** The image: scaled to fit the panel (keeping its aspect ratio), or at 1:1 with scroll bars. */

@@ -56,7 +56,8 @@ public record RenderJob(Scene scene, KdTree tree, long buildNanos, RenderResult 
                 count(scene.samplesPerPixel(), "sample"), count(result.threads(), "thread")));
         s.append(result.plan().describe()).append(System.lineSeparator());
         s.append(String.format(Locale.ROOT, "build time: %.1f ms (%s)%n", buildNanos / 1e6, tree.builderName()));
-        s.append(String.format(Locale.ROOT, "render time: %.1f ms%n", result.renderNanos() / 1e6));
+        s.append(String.format(Locale.ROOT, "render time: %.1f ms%s%n", result.renderNanos() / 1e6,
+                result.stopped() ? " (stopped before the last tile)" : ""));
         s.append(rayLines(result.rays(), result.renderNanos()));
         s.append("tree:").append(System.lineSeparator());
         for (String line : tree.stats().describe().split("\\R")) s.append("  ").append(line).append(System.lineSeparator());

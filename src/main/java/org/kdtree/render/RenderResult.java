@@ -9,9 +9,10 @@ package org.kdtree.render;
  * @param renderNanos wall-clock time of the tracing
  * @param threads     threads used
  * @param pixelRays   per kind, rays cast on behalf of each pixel (row-major), or null when not recorded
+ * @param stopped     whether the render was stopped before every tile was done
  */
 public record RenderResult(Image image, EffectPlan plan, RayCounts rays, long renderNanos, int threads,
-                           int[][] pixelRays) {
+                           int[][] pixelRays, boolean stopped) {
 
     /**
      * {@return rays of {@code kind} cast for pixel (x, y)}; needs a render that recorded them.

@@ -7,6 +7,7 @@ import java.util.concurrent.ExecutorService;
 import java.util.concurrent.Executors;
 import java.util.concurrent.Future;
 import java.util.concurrent.atomic.AtomicInteger;
+import java.util.function.BooleanSupplier;
 import java.util.function.Supplier;
 import org.kdtree.traverse.RayQuery;
 
@@ -21,27 +22,35 @@ public final class Renderer {
      * @param tileSize        tile edge in pixels
      * @param progress        told each time a tile is finished, or null
      * @param recordPixelRays whether to keep per-pixel ray counts by kind (tests)
+     * @param stop            asked before each tile whether to stop (the workbench's Stop), or null
      */
-    public record Options(int threads, int tileSize, TileListener progress, boolean recordPixelRays) {
-        /** {@return all cores, 16-pixel tiles, no progress bar, no per-pixel counts} */
+    public record Options(int threads, int tileSize, TileListener progress, boolean recordPixelRays, BooleanSupplier stop) {
+        /** {@return all cores, 16-pixel tiles, no progress bar, no per-pixel counts, never stopped} */
         public static Options defaults() {
-            return new Options(Runtime.getRuntime().availableProcessors(), 16, null, false);
+            return new Options(Runtime.getRuntime().availableProcessors(), 16, null, false, null);
         }
+
+        /**
+         * {@return these options, stopping when {@code s} says so}
+         *
+         * @param s asked before each tile; true stops the render, the tiles done so far kept
+         */
+        public Options withStop(BooleanSupplier s) { return new Options(threads, tileSize, progress, recordPixelRays, s); }
 
         /**
          * {@return these options with {@code n} threads}
          *
          * @param n the number of threads
          */
-        public Options withThreads(int n) { return new Options(n, tileSize, progress, recordPixelRays); }
+        public Options withThreads(int n) { return new Options(n, tileSize, progress, recordPixelRays, stop); }
         /**
          * {@return these options reporting progress to {@code p}}
          *
          * @param p told of each finished tile
          */
-        public Options withProgress(TileListener p) { return new Options(threads, tileSize, p, recordPixelRays); }
+        public Options withProgress(TileListener p) { return new Options(threads, tileSize, p, recordPixelRays, stop); }
         /** {@return these options with per-pixel ray counts recorded} */
-        public Options recordingPixelRays() { return new Options(threads, tileSize, progress, true); }
+        public Options recordingPixelRays() { return new Options(threads, tileSize, progress, true, stop); }
     }
 
     /** Hears of finished tiles, from the worker threads (possibly out of order). */
@@ -49,10 +58,11 @@ public final class Renderer {
         /**
          * Called when a tile is finished.
          *
-         * @param done the tiles finished so far
+         * @param done  the tiles finished so far
          * @param total the tiles in the image
+         * @param image the image being filled in (read it, do not write it: the workbench shows it as it grows)
          */
-        void tilesDone(int done, int total);
+        void tilesDone(int done, int total, Image image);
     }
 
     private Renderer() {
@@ -71,7 +81,8 @@ public final class Renderer {
         int tilesX = (w + ts - 1) / ts, tilesY = (h + ts - 1) / ts, tiles = tilesX * tilesY;
         Image image = new Image(w, h);
         int[][] pixelRays = options.recordPixelRays() ? new int[RayKind.values().length][w * h] : null;
-        TileListener progress = options.progress() != null ? options.progress() : (d, t) -> { };
+        TileListener progress = options.progress() != null ? options.progress() : (d, t, i) -> { };
+        BooleanSupplier stop = options.stop() != null ? options.stop() : () -> false;
         AtomicInteger next = new AtomicInteger(), done = new AtomicInteger();
         int threads = Math.max(1, options.threads());
         ExecutorService pool = Executors.newFixedThreadPool(threads, r -> {
@@ -85,17 +96,17 @@ public final class Renderer {
             for (int i = 0; i < threads; i++) {
                 workers.add(pool.submit(() -> {
                     Tracer tracer = new Tracer(scene, plan, queries.get());
-                    for (int tile; (tile = next.getAndIncrement()) < tiles; ) {
+                    for (int tile; !stop.getAsBoolean() && (tile = next.getAndIncrement()) < tiles; ) {
                         int x0 = (tile % tilesX) * ts, y0 = (tile / tilesX) * ts;
                         renderTile(tracer, image, pixelRays, x0, y0, Math.min(w, x0 + ts), Math.min(h, y0 + ts));
-                        progress.tilesDone(done.incrementAndGet(), tiles);
+                        progress.tilesDone(done.incrementAndGet(), tiles, image);
                     }
                     return tracer.counts();
                 }));
             }
             RayCounts total = new RayCounts();
             for (Future<RayCounts> f : workers) total.merge(f.get());
-            return new RenderResult(image, plan, total, System.nanoTime() - t0, threads, pixelRays);
+            return new RenderResult(image, plan, total, System.nanoTime() - t0, threads, pixelRays, done.get() < tiles);
         } catch (InterruptedException e) {
             Thread.currentThread().interrupt();
             throw new IllegalStateException("render interrupted", e);
