@@ -1,5 +1,6 @@
 package org.kdtree.build;
 
+import org.kdtree.geom.Tolerance;
 import org.kdtree.geom.Box;
 import org.kdtree.geom.SplitPlane;
 import org.kdtree.shape.Primitives;
@@ -133,7 +134,7 @@ final class Partition {
     private static Box grown(Box b) {
         Box g = b.copy();
         for (int a = 0; a < b.dimension(); a++) {
-            double pad = 2e-15 * Math.max(Math.abs(b.min(a)), Math.abs(b.max(a))) + Double.MIN_NORMAL;
+            double pad = Tolerance.BOX_PAD * Math.max(Math.abs(b.min(a)), Math.abs(b.max(a))) + Double.MIN_NORMAL;
             g.setMin(a, b.min(a) - pad).setMax(a, b.max(a) + pad);
         }
         return g;

@@ -14,8 +14,8 @@ package org.kdtree.geom;
  * each thread its own.
  */
 public final class PolygonClipper {
-    /** Relative padding of computed coordinates: about 4.5 units in the last place. */
-    static final double PAD = 1e-15;
+    /** Relative padding of computed coordinates ({@link Tolerance#CLIP_PAD}). */
+    static final double PAD = Tolerance.CLIP_PAD;
     private static final ThreadLocal<PolygonClipper[]> PER_THREAD =
             ThreadLocal.withInitial(() -> new PolygonClipper[8]);
 

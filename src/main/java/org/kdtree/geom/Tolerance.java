@@ -2,10 +2,12 @@ package org.kdtree.geom;
 
 /**
  * The one place for numeric tolerances, passed where needed rather than scattered as
- * literals (after Apache Commons Geometry).
+ * literals (after Apache Commons Geometry): each constant below is the one the code uses, with
+ * the reason for its value.
  *
- * <p>Construction needs none: it compares exact coordinates. Tests and ray queries use
- * a relative tolerance scaled by the magnitude of the values they compare.
+ * <p>The SAH's plane choice needs none: it compares exact coordinates. Clipping pads its
+ * results, the traversal and the point and sphere queries allow a relative slack so that
+ * rounding never loses an answer, and tests compare with an instance of this record.
  *
  * @param relative relative tolerance, e.g. {@code 1e-9}
  * @param absolute absolute floor, for values near zero
@@ -30,6 +32,51 @@ public record Tolerance(double relative, double absolute) {
      * in a plane's t can never prune a voxel the sphere touches. Costs a few extra tests, never a miss.
      */
     public static final double VOXEL_PAD = 0x1p-40;
+
+    /**
+     * Relative slack on the ray traversal's interval comparisons (tMin, tMax against tSplit):
+     * 2^-46, a few hundred ulps, far above the rounding of tSplit, so that a ray through a
+     * split plane or a voxel's corner never skips the voxel holding its hit.
+     */
+    public static final double TRAVERSAL_SLACK = 0x1p-46;
+
+    /**
+     * Relative slack on point queries' pruning: a voxel whose computed distance exceeds the bound
+     * by less than this is still visited. Incremental sums round differently from a point's own
+     * sum, and a point on a voxel's face at exactly the k-th distance (a tie, common on grid data)
+     * must not be lost to an ulp. It costs at most a few extra voxels.
+     */
+    public static final double PRUNE_SLACK = 1e-10;
+
+    /**
+     * Relative padding of clipped coordinates: about 4.5 units in the last place, so that the
+     * clipped bounds of a primitive are never smaller than its exact part inside the voxel.
+     */
+    public static final double CLIP_PAD = 1e-15;
+
+    /**
+     * Relative growth of a box before a primitive is tested against it (twice {@link #CLIP_PAD},
+     * about 8 ulps), so that bounds computed by two roundings still meet.
+     */
+    public static final double BOX_PAD = 2e-15;
+
+    /**
+     * Relative offset of a secondary ray's origin from the surface it leaves (doubles round at
+     * about 1e-16 relative): no self-intersection at any scale, and no visible gap either.
+     */
+    public static final double RAY_OFFSET = 1e-9;
+
+    /**
+     * How far short of a point light a shadow ray stops, relative to its length, so that the
+     * light's own panel does not occlude it.
+     */
+    public static final double SHADOW_SHORTFALL = 1e-7;
+
+    /**
+     * Below this many ulps of the coordinates' square (times 4), a triangle's double-precision
+     * cross product cannot tell a degenerate triangle from a thin one; exact arithmetic decides.
+     */
+    public static final double DEGENERATE_ULPS = 64;
 
     /** Default for comparing double-precision ray distances. */
     public static final Tolerance DEFAULT = new Tolerance(1e-9, 1e-12);

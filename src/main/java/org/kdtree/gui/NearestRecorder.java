@@ -1,5 +1,6 @@
 package org.kdtree.gui;
 
+import org.kdtree.geom.Tolerance;
 import java.util.ArrayList;
 import java.util.List;
 import org.kdtree.collide.ShapeCollider;
@@ -23,11 +24,8 @@ import org.kdtree.tree.KdTree;
  * (distance, index) would order them.
  */
 public final class NearestRecorder {
-    /**
-     * Relative slack on pruning (on squared distances): a voxel exactly at the k-th distance, or
-     * past it by rounding only, is still entered, so that a tie is never lost to an ulp.
-     */
-    static final double SLACK = 1e-10;
+    /** Relative slack on pruning, on squared distances ({@link Tolerance#PRUNE_SLACK}), as the point queries use. */
+    static final double SLACK = Tolerance.PRUNE_SLACK;
 
     private final KdTree tree;
     private final ShapeCollider collider;

@@ -1,5 +1,6 @@
 package org.kdtree.points;
 
+import org.kdtree.geom.Tolerance;
 import org.kdtree.tree.KdTree;
 
 /**
@@ -16,13 +17,8 @@ import org.kdtree.tree.KdTree;
  * <p>One instance per thread: the offsets and the query live in fields; nothing is allocated.
  */
 abstract class VoxelDescent {
-    /**
-     * Relative slack on pruning: a voxel whose computed distance exceeds the bound by less than
-     * this is still visited. The incremental sums round differently from a point's own sum, and a
-     * point lying on a voxel's face at exactly the k-th distance (a tie, common on grid data)
-     * must not be lost to an ulp. It costs at most a few extra voxels.
-     */
-    static final double SLACK = 1e-10;
+    /** Relative slack on pruning ({@link Tolerance#PRUNE_SLACK}): ties at the bound are never lost to an ulp. */
+    static final double SLACK = Tolerance.PRUNE_SLACK;
 
     final PointTree points;
     final int k;

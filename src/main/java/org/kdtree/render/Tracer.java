@@ -1,5 +1,6 @@
 package org.kdtree.render;
 
+import org.kdtree.geom.Tolerance;
 import java.util.List;
 import org.kdtree.geom.Ray;
 import org.kdtree.traverse.Hit;
@@ -16,10 +17,10 @@ import org.kdtree.traverse.RayQuery;
  * self-intersection at any scale, and no visible gap either.
  */
 public final class Tracer {
-    /** Relative offset of secondary ray origins (doubles round at ~1e-16 relative). */
-    public static final double OFFSET = 1e-9;
-    /** Shadow rays toward a point stop this far short of it (relative), so a light's own panel does not occlude it. */
-    private static final double SHADOW_END = 1 - 1e-7;
+    /** Relative offset of secondary ray origins ({@link Tolerance#RAY_OFFSET}). */
+    public static final double OFFSET = Tolerance.RAY_OFFSET;
+    /** Shadow rays toward a point stop short of it ({@link Tolerance#SHADOW_SHORTFALL}), so a light's own panel does not occlude it. */
+    private static final double SHADOW_END = 1 - Tolerance.SHADOW_SHORTFALL;
 
     private final Scene scene;
     private final EffectPlan plan;

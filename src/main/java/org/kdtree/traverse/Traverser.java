@@ -1,5 +1,6 @@
 package org.kdtree.traverse;
 
+import org.kdtree.geom.Tolerance;
 import java.util.ArrayList;
 import java.util.Comparator;
 import java.util.List;
@@ -33,8 +34,8 @@ import org.kdtree.tree.KdTree;
  * k-dimensional loop, which reports each step to a {@link TraversalListener}.
  */
 public final class Traverser implements RayQuery {
-    /** Relative slack on interval comparisons: a few hundred ulps, far above rounding of tSplit. */
-    static final double SLACK = 0x1p-46;
+    /** Relative slack on interval comparisons ({@link Tolerance#TRAVERSAL_SLACK}). */
+    static final double SLACK = Tolerance.TRAVERSAL_SLACK;
 
     private static final int CLOSEST = 0, ANY = 1, ALL = 2;
 

@@ -1,5 +1,6 @@
 package org.kdtree.traverse;
 
+import org.kdtree.geom.Tolerance;
 import java.math.BigDecimal;
 import org.kdtree.geom.Ray;
 import org.kdtree.shape.TriangleMesh;
@@ -137,7 +138,7 @@ public final class TriangleIntersector implements Intersector {
         double scale = 0;
         for (int k = 0; k < 9; k++) scale = Math.max(scale, Math.abs(c[b + k]));
         // Far from zero the double cross product decides; near zero only exact arithmetic can.
-        double bound = 64 * Math.ulp(1.0) * 4 * scale * scale;
+        double bound = Tolerance.DEGENERATE_ULPS * Math.ulp(1.0) * 4 * scale * scale;
         if (Math.abs(nx) > bound || Math.abs(ny) > bound || Math.abs(nz) > bound) return false;
         BigDecimal[] p = new BigDecimal[9];
         for (int k = 0; k < 9; k++) p[k] = new BigDecimal(c[b + k]);
