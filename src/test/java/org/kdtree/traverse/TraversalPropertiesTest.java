@@ -5,6 +5,7 @@ import static org.assertj.core.api.Assertions.assertThat;
 import java.util.List;
 import net.jqwik.api.Arbitraries;
 import net.jqwik.api.Arbitrary;
+import org.kdtree.testing.GridArbitraries;
 import net.jqwik.api.Combinators;
 import net.jqwik.api.ForAll;
 import net.jqwik.api.Property;
@@ -21,19 +22,11 @@ import org.kdtree.shape.TriangleMesh;
  * degenerate triangles, and rays in split planes or through vertices come up often.
  */
 class TraversalPropertiesTest {
-    @Provide Arbitrary<Double> coord() {
-        return Arbitraries.integers().between(0, 16).map(i -> i / 4.0);
-    }
+    @Provide Arbitrary<Double> coord() { return GridArbitraries.coord(); }
 
-    @Provide Arbitrary<double[]> point() {
-        return Combinators.combine(coord(), coord(), coord()).as((x, y, z) -> new double[] {x, y, z});
-    }
+    @Provide Arbitrary<double[]> point() { return GridArbitraries.point(); }
 
-    @Provide Arbitrary<List<double[]>> triangles() {
-        return point().list().ofSize(3).list().ofMinSize(1).ofMaxSize(40)
-                .map(ts -> ts.stream().map(t -> new double[] {t.get(0)[0], t.get(0)[1], t.get(0)[2], t.get(1)[0],
-                        t.get(1)[1], t.get(1)[2], t.get(2)[0], t.get(2)[1], t.get(2)[2]}).toList());
-    }
+    @Provide Arbitrary<List<double[]>> triangles() { return GridArbitraries.triangles(); }
 
     @Provide Arbitrary<double[]> direction() {
         Arbitrary<Double> c = Arbitraries.of(0.0, -0.0, 1.0, -1.0, 0.5, -0.5, 0.25, 2.0, -3.0);
