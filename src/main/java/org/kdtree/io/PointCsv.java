@@ -4,6 +4,8 @@ import java.io.IOException;
 import java.io.Reader;
 import java.nio.file.Path;
 import java.util.Arrays;
+import org.kdtree.geom.Tolerance;
+import org.kdtree.shape.InvalidGeometryException;
 import org.kdtree.shape.PointsKd;
 
 /**
@@ -59,11 +61,19 @@ public final class PointCsv {
             for (String f : fields) coords[n++] = coordinate(f.strip(), in);
         }
         if (k == 0) throw new SceneFormatException(in.name(), 0, "no points (one point per line, coordinates separated by commas)");
-        return new PointsKd(k, Arrays.copyOf(coords, n));
+        try {
+            return new PointsKd(k, Arrays.copyOf(coords, n));
+        } catch (InvalidGeometryException e) {   // the points as a whole, such as an extent too small
+            throw new SceneFormatException(in.name(), 0, e.getMessage());
+        }
     }
 
     private static double coordinate(String field, TextLines in) throws SceneFormatException {
         if (field.isEmpty()) throw new SceneFormatException(in.name(), in.line(), "an empty field where a coordinate belongs");
-        return ObjMeshReader.number(field, in.name(), in.line());
+        double x = ObjMeshReader.number(field, in.name(), in.line());
+        if (Math.abs(x) > Tolerance.MAX_COORDINATE)
+            throw new SceneFormatException(in.name(), in.line(), "the coordinate " + field
+                    + " is outside the supported range -1e100 .. 1e100 (squared distances would overflow); scale the points down");
+        return x;
     }
 }

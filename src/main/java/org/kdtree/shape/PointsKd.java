@@ -1,6 +1,7 @@
 package org.kdtree.shape;
 
 import org.kdtree.geom.Box;
+import org.kdtree.geom.Tolerance;
 
 /** Points in k dimensions held in one flat array: the classic k-d tree of the talk's section 2. */
 public final class PointsKd implements Primitives {
@@ -12,6 +13,8 @@ public final class PointsKd implements Primitives {
      *
      * @param k the dimension, at least 1
      * @param coords k coordinates per point, point after point (not copied)
+     * @throws InvalidGeometryException for a non-finite coordinate, or points outside the range the
+     *         queries support ({@link Tolerance#MAX_COORDINATE}, {@link Tolerance#MIN_EXTENT})
      */
     public PointsKd(int k, double[] coords) {
         if (k < 1) throw new IllegalArgumentException("dimension must be >= 1, got " + k);
@@ -19,9 +22,27 @@ public final class PointsKd implements Primitives {
             throw new IllegalArgumentException(coords.length + " coordinates do not make whole " + k + "-D points");
         this.k = k;
         this.coords = coords;
-        for (int i = 0; i < coords.length; i++)
+        for (int i = 0; i < coords.length; i++) {
             if (!Double.isFinite(coords[i]))
                 throw new InvalidGeometryException(describe(i / k) + " has a non-finite coordinate (" + coords[i] + ")");
+            if (Math.abs(coords[i]) > Tolerance.MAX_COORDINATE)
+                throw new InvalidGeometryException(describe(i / k) + " has the coordinate " + coords[i]
+                        + ": the supported range is -1e100 .. 1e100 (squared distances would overflow); scale the points down");
+        }
+        checkExtent();
+    }
+
+    /** Refuses points that differ by less than {@link Tolerance#MIN_EXTENT} on every axis, but not all by 0: squared distances would underflow. */
+    private void checkExtent() {
+        double largest = 0;
+        for (int a = 0; a < k; a++) {
+            double lo = Double.POSITIVE_INFINITY, hi = Double.NEGATIVE_INFINITY;
+            for (int i = a; i < coords.length; i += k) { lo = Math.min(lo, coords[i]); hi = Math.max(hi, coords[i]); }
+            if (hi > lo) largest = Math.max(largest, hi - lo);
+        }
+        if (largest > 0 && largest < Tolerance.MIN_EXTENT)
+            throw new InvalidGeometryException("the points span only " + largest + ": the smallest supported extent is 1e-100"
+                    + " (squared distances would underflow); scale the points up");
     }
 
     /**

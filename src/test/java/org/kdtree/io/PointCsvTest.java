@@ -36,6 +36,13 @@ class PointCsvTest {
                 .hasMessage("pts.csv:3: a point needs 2 coordinates, as on line 1, got 3");
     }
 
+    @Test void coordinatesOutsideTheQueriesRangeAreRefusedWithTheLine() {
+        assertThatThrownBy(() -> read("0,1\n2,1e200\n")).isInstanceOf(SceneFormatException.class)
+                .hasMessageStartingWith("pts.csv:2: the coordinate 1e200 is outside the supported range -1e100 .. 1e100");
+        assertThatThrownBy(() -> read("0,0\n1e-200,0\n")).isInstanceOf(SceneFormatException.class)
+                .hasMessageStartingWith("pts.csv: the points span only 1.0E-200: the smallest supported extent is 1e-100");
+    }
+
     @Test void aFieldThatIsNotANumberNamesTheLine() {
         assertThatThrownBy(() -> read("0,1\n2,x\n")).isInstanceOf(SceneFormatException.class)
                 .hasMessage("pts.csv:2: 'x' is not a number");
