@@ -10,12 +10,14 @@ final class SphereQueries {
     static void checkPoint(String what, double[] p, int k) {
         if (p.length < k) throw new IllegalArgumentException(what + " has " + p.length + " coordinates, the scene " + k);
         for (int a = 0; a < k; a++)
-            if (!Double.isFinite(p[a])) throw new IllegalArgumentException(what + " has a non-finite coordinate: " + p[a]);
+            if (!(Math.abs(p[a]) <= Tolerance.MAX_COORDINATE))   // also NaN and infinities
+                throw new IllegalArgumentException(what + " has the coordinate " + p[a]
+                        + ": the supported range is -1e100 .. 1e100 (squared distances would overflow)");
     }
 
     static void checkRadius(double r) {
-        if (!(r >= 0) || r == Double.POSITIVE_INFINITY)
-            throw new IllegalArgumentException("radius must be finite and >= 0: " + r);
+        if (!(r >= 0 && r <= Tolerance.MAX_COORDINATE))
+            throw new IllegalArgumentException("radius must be between 0 and 1e100, got " + r);
     }
 
     /** {@link Tolerance#VOXEL_PAD} times the largest magnitude involved. */

@@ -1,5 +1,6 @@
 package org.kdtree.shape;
 
+import org.kdtree.geom.Tolerance;
 import java.util.List;
 import org.kdtree.geom.Box;
 
@@ -11,7 +12,8 @@ public final class Shapes2D implements Primitives {
      * Wraps a copy of the list; rejects NaN or infinite coordinates, naming the shape.
      *
      * @param shapes the shapes, primitive i being the i-th
-     * @throws InvalidGeometryException for a non-finite coordinate
+     * @throws InvalidGeometryException for a non-finite coordinate, or one beyond
+     *         {@link Tolerance#MAX_COORDINATE} (the ray and circle tests' products would overflow)
      */
     public Shapes2D(List<? extends Shape2D> shapes) {
         this.shapes = List.copyOf(shapes);
@@ -19,6 +21,9 @@ public final class Shapes2D implements Primitives {
             for (double c : this.shapes.get(i).coords()) {
                 if (!Double.isFinite(c))
                     throw new InvalidGeometryException(describe(i) + " has a non-finite coordinate (" + c + ")");
+                if (Math.abs(c) > Tolerance.MAX_COORDINATE)
+                    throw new InvalidGeometryException(describe(i) + " has the coordinate " + c
+                            + ": the supported range is -1e100 .. 1e100 (the ray and circle tests would overflow); scale the scene down");
             }
         }
     }
