@@ -9,28 +9,30 @@ import java.awt.GridLayout;
 import java.awt.event.HierarchyEvent;
 import java.util.List;
 import java.util.Locale;
-import javax.swing.BorderFactory;
+import javax.swing.JComboBox;
 import javax.swing.JComponent;
 import javax.swing.JLabel;
 import javax.swing.JPanel;
+import org.kdtree.build.Builders;
 import org.kdtree.shape.Shapes2D;
 import org.kdtree.tree.KdTree;
 import org.kdtree.tree.TreeStats;
 
 /**
- * The three builders side by side on the workbench's scene, with the same Kt, Ki, lambda,
- * Kmintri and Kmaxdepth: each tree drawn, its statistics, and the cast ray's traversal cost in it.
+ * Three builders side by side on the workbench's scene, with the same Kt, Ki, lambda, Kmintri
+ * and Kmaxdepth: each tree drawn, its statistics, and the cast ray's traversal cost in it. Each
+ * column chooses its builder among all registered ones (a student's too).
  */
 public final class CompareView extends JPanel {
-    /** The builders compared, in column order. */
-    public static final List<String> BUILDERS = List.of("median-plane", "object-median", "sah");
+    /** The builders the columns show at first, in column order. */
+    public static final List<String> DEFAULT_BUILDERS = List.of("median-plane", "object-median", "sah");
 
     /** The model whose scene, ray and settings the columns use. */
     private final WorkbenchModel model;
     /** Records a ray's traversal in each column's tree. */
     private final StepperPanel.Tracer tracer;
     /** One column per compared builder. */
-    private final Column[] columns = new Column[BUILDERS.size()];
+    private final Column[] columns = new Column[DEFAULT_BUILDERS.size()];
     /** True when scene, ray or settings changed while the view was hidden: it refreshes when shown. */
     private boolean stale = true;
 
@@ -41,11 +43,11 @@ public final class CompareView extends JPanel {
      * @param tracer records the ray's traversal in each tree
      */
     public CompareView(WorkbenchModel model, StepperPanel.Tracer tracer) {
-        super(new GridLayout(1, BUILDERS.size(), 6, 0));
+        super(new GridLayout(1, DEFAULT_BUILDERS.size(), 6, 0));
         this.model = model;
         this.tracer = tracer;
         for (int i = 0; i < columns.length; i++) {
-            columns[i] = new Column(BUILDERS.get(i));
+            columns[i] = new Column(i, DEFAULT_BUILDERS.get(i));
             add(columns[i]);
         }
         model.addListener(c -> {
@@ -73,24 +75,50 @@ public final class CompareView extends JPanel {
      * @param builder the builder's name
      */
     public String statsText(String builder) {
-        return columns[BUILDERS.indexOf(builder)].stats.getText();
+        for (Column c : columns) if (c.builder.equals(builder)) return c.stats.getText();
+        throw new IllegalArgumentException("no column shows " + builder);
     }
 
-    /** One builder: its canvas, statistics and ray cost. */
+    /**
+     * Shows {@code builder}'s tree in column {@code column} (0-based), as its builder box does.
+     *
+     * @param column  the column
+     * @param builder a registered builder's name
+     */
+    public void choose(int column, String builder) {
+        columns[column].chooser.setSelectedItem(builder);
+    }
+
+    /** One builder, chosen in its box: its canvas, statistics and ray cost. */
     private final class Column extends JPanel {
-        private final String builder;
+        private final JComboBox<String> chooser = new JComboBox<>(Builders.names().toArray(String[]::new));
+        private String builder;
         private final JLabel stats = new JLabel();
         private final Mini canvas = new Mini();
 
-        Column(String builder) {
+        Column(int index, String initial) {
             super(new BorderLayout());
-            this.builder = builder;
-            setBorder(BorderFactory.createTitledBorder(builder));
-            stats.setName("compare." + builder);
-            stats.setToolTipText("Statistics of the " + builder + " tree, and the cast ray's traversal in it");
-            canvas.setToolTipText("The " + builder + " tree over the same scene; the leaves the ray visits are shaded orange");
+            builder = initial;
+            chooser.setSelectedItem(initial);
+            chooser.setName("compare.builder." + index);
+            chooser.setToolTipText("The builder this column shows: any registered builder, a student's too");
+            chooser.addActionListener(e -> {
+                builder = (String) chooser.getSelectedItem();
+                label();
+                if (isShowing()) update(model.scene(), model.ray());
+                else stale = true;
+            });
+            label();
+            canvas.setToolTipText("This column's tree over the same scene; the leaves the ray visits are shaded orange");
+            add(chooser, BorderLayout.NORTH);
             add(canvas, BorderLayout.CENTER);
             add(stats, BorderLayout.SOUTH);
+        }
+
+        /** Names the statistics after the builder shown (tests find them by it). */
+        private void label() {
+            stats.setName("compare." + builder);
+            stats.setToolTipText("Statistics of the " + builder + " tree, and the cast ray's traversal in it");
         }
 
         void update(Shapes2D scene, double[] ray) {

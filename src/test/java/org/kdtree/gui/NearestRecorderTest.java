@@ -14,7 +14,7 @@ class NearestRecorderTest {
     @Test void recordedSearchesEndWithTheBruteForceNeighbours() {
         Random r = new Random(7);
         int searches = 0;
-        for (String b : CompareView.BUILDERS) {
+        for (String b : CompareView.DEFAULT_BUILDERS) {
             for (List<Shape2D> shapes : List.of(BuiltinScenes.clustered(300, 5), BuiltinScenes.uniform(250, 8),
                     BuiltinScenes.talkFigures(), mixed(200, r))) {
                 Shapes2D scene = new Shapes2D(shapes);

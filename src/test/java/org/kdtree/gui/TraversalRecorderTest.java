@@ -16,7 +16,7 @@ class TraversalRecorderTest {
     @Test void recordedTracesEndWithTheBruteForceHit() {
         Shapes2D scene = new Shapes2D(BuiltinScenes.clustered(300, 5));
         Random r = new Random(2);
-        for (String b : CompareView.BUILDERS) {
+        for (String b : CompareView.DEFAULT_BUILDERS) {
             KdTree tree = BuilderSettings.DEFAULT.withBuilder(b).create().build(scene);
             BruteForce brute = new BruteForce(new Shape2DIntersector(scene));
             for (int i = 0; i < 200; i++) {

@@ -103,6 +103,9 @@ class WorkbenchGuiTest {
         window.tabbedPane("tabs").selectTab("Compare builders");
         assertThat(bench.compare().statsText("sah")).contains("ray:").contains("tests");
         assertThat(bench.compare().statsText("median-plane")).contains("ray:");
+        // any registered builder can be compared: the course example is found by ServiceLoader only
+        window.comboBox("compare.builder.0").selectItem("centre-midpoint");
+        assertThat(bench.compare().statsText("centre-midpoint")).contains("SAH cost").contains("ray:");
     }
 
     @Test void placeAKnnQueryAndStepToTheBruteForceAnswer() {
