@@ -1,6 +1,7 @@
 package org.kdtree.collide;
 
 import org.kdtree.geom.Box;
+import org.kdtree.traverse.Mailbox;
 import org.kdtree.tree.KdTree;
 
 /**
@@ -10,7 +11,7 @@ import org.kdtree.tree.KdTree;
  * <p>The traversal descends into every child whose voxel, inflated by r, contains the centre: at
  * a split plane {@code x_axis = xi} the left child when {@code c_axis - r <= xi}, the right one
  * when {@code c_axis + r >= xi}, both when the sphere straddles the plane (the right one saved
- * on a stack). Each primitive of the leaves reached is tested once ({@link TestedOnce}) with the
+ * on a stack). Each primitive of the leaves reached is tested once ({@link Mailbox}) with the
  * exact {@link Collider#closestPoint}. The inflated voxel contains the sphere's Minkowski sum with
  * the voxel, so nothing that touches the sphere is pruned.
  *
@@ -23,7 +24,7 @@ public final class OverlapQuery {
     private final int k;
     private final double[] lo, hi;
     private final double sceneScale;
-    private final TestedOnce tested;
+    private final Mailbox tested;
     private final int[] stack;
     private int tests;
 
@@ -42,7 +43,7 @@ public final class OverlapQuery {
         hi = new double[k];
         for (int a = 0; a < k; a++) { lo[a] = b.min(a); hi[a] = b.max(a); }
         sceneScale = SphereQueries.scale(b);
-        tested = new TestedOnce(prims.size());
+        tested = new Mailbox(prims.size());
         stack = new int[tree.stats().maxDepth() + 2];
     }
 

@@ -1,6 +1,7 @@
 package org.kdtree.collide;
 
 import org.kdtree.geom.Box;
+import org.kdtree.traverse.Mailbox;
 import org.kdtree.tree.KdTree;
 
 /**
@@ -28,7 +29,7 @@ public final class SweepQuery {
     private final int k;
     private final double[] lo, hi;
     private final double sceneScale;
-    private final TestedOnce tested;
+    private final Mailbox tested;
     private final int[] stackNode;
     private final double[] stackMin, stackMax;
     private int tests;
@@ -50,7 +51,7 @@ public final class SweepQuery {
         hi = new double[k];
         for (int a = 0; a < k; a++) { lo[a] = b.min(a); hi[a] = b.max(a); }
         sceneScale = SphereQueries.scale(b);
-        tested = new TestedOnce(prims.size());
+        tested = new Mailbox(prims.size());
         int depth = tree.stats().maxDepth() + 2;
         stackNode = new int[depth];
         stackMin = new double[depth];
