@@ -12,10 +12,12 @@ package org.kdtree.points;
 public final class BoxQuery {
     private final PointTree points;
     private final int k;
-    private final int[] word, leafStart, refs;
+    private final org.kdtree.tree.KdTree tree;
+    /** The tree's nodes, two ints each ({@link org.kdtree.tree.KdTree#nodeArray()}). */
+    private final int[] nodes, refs;
     /** The words' leaf mark and axis-field width ({@link org.kdtree.tree.KdTree#leafMark()}). */
     private final int mark, shift;
-    private final double[] split, coords;
+    private final double[] coords;
     private final int[] stack;
     private int[] found = new int[64];
     private int count, leavesVisited;
@@ -24,12 +26,11 @@ public final class BoxQuery {
     public BoxQuery(PointTree points) {
         this.points = points;
         k = points.dimension();
-        word = points.tree().wordArray();
+        tree = points.tree();
+        nodes = tree.nodeArray();
         mark = points.tree().leafMark();
         shift = points.tree().axisBits();
-        leafStart = points.tree().leafStartArray();
         refs = points.tree().refArray();
-        split = points.tree().splitArray();
         coords = points.leafCoordArray();
         stack = new int[points.maxDepth() + 2];
     }
@@ -61,25 +62,26 @@ public final class BoxQuery {
     private void search(double[] min, double[] max) {
         int sp = 0, node = 0;
         while (true) {
-            int w = word[node];
+            int w = nodes[2 * node + 1];
             while ((w & mark) != mark) {
                 int axis = w & mark;
-                boolean left = min[axis] <= split[node], right = max[axis] >= split[node];
+                double xi = tree.split(node);
+                boolean left = min[axis] <= xi, right = max[axis] >= xi;
                 if (left && right) stack[sp++] = w >>> shift;
                 if (left) node = node + 1;
                 else if (right) node = w >>> shift;
                 else break; // an empty box (min > max) reaches neither side
-                w = word[node];
+                w = nodes[2 * node + 1];
             }
-            if ((w & mark) == mark) scanLeaf(w >>> shift, min, max);
+            if ((w & mark) == mark) scanLeaf(nodes[2 * node], w >>> shift, min, max);
             if (sp == 0) return;
             node = stack[--sp];
         }
     }
 
-    private void scanLeaf(int leaf, double[] min, double[] max) {
+    private void scanLeaf(int first, int count, double[] min, double[] max) {
         leavesVisited++;
-        for (int j = leafStart[leaf]; j < leafStart[leaf + 1]; j++) {
+        for (int j = first; j < first + count; j++) {
             if (inside(j * k, min, max)) add(refs[j]);
         }
     }

@@ -178,10 +178,10 @@ public final class NearestQuery extends VoxelDescent {
             double rd = branches.nearestDistance();
             if (rd > reach()) break; // the nearest branch is out of reach, and so are the others
             int node = branches.popNearest(off);
-            int w = word[node];
+            int w = word(node);
             while (!isLeaf(w)) {
                 int axis = axis(w);
-                double diff = q[axis] - split[node];
+                double diff = q[axis] - tree.split(node);
                 int near = node + 1, far = rightChild(w);
                 if (diff > 0) { near = far; far = node + 1; }
                 double old = off[axis];
@@ -192,9 +192,9 @@ public final class NearestQuery extends VoxelDescent {
                     off[axis] = old;
                 }
                 node = near;
-                w = word[node];
+                w = word(node);
             }
-            scan(w);
+            scan(node, w);
         }
     }
 }

@@ -22,10 +22,12 @@ abstract class VoxelDescent {
 
     final PointTree points;
     final int k;
-    final int[] word, leafStart;
+    final KdTree tree;
+    /** The tree's nodes, two ints each ({@link KdTree#nodeArray()}). */
+    final int[] nodes;
     /** The words' leaf mark and axis-field width, as {@link KdTree} lays them out for this dimension. */
     final int mark, shift;
-    final double[] split, coords;
+    final double[] coords;
     final int[] refs;
     private final double[] rootMin, rootMax;
     /** Per axis, how far the query lies outside the current voxel. */
@@ -37,13 +39,11 @@ abstract class VoxelDescent {
 
     VoxelDescent(PointTree points) {
         this.points = points;
-        KdTree tree = points.tree();
+        tree = points.tree();
         k = points.dimension();
-        word = tree.wordArray();
+        nodes = tree.nodeArray();
         mark = tree.leafMark();
         shift = tree.axisBits();
-        leafStart = tree.leafStartArray();
-        split = tree.splitArray();
         refs = tree.refArray();
         coords = points.leafCoordArray();
         rootMin = new double[k];
@@ -83,13 +83,13 @@ abstract class VoxelDescent {
 
     /** The exact depth-first search below {@code node}, whose voxel lies at accumulated distance {@code rd}. */
     final void descend(int node, double rd) {
-        int w = word[node];
+        int w = nodes[2 * node + 1];
         if ((w & mark) == mark) {
-            scan(w);
+            scan(node, w);
             return;
         }
         int axis = w & mark;
-        double diff = q[axis] - split[node];
+        double diff = q[axis] - tree.split(node);
         int near = node + 1, far = w >>> shift;
         if (diff > 0) { near = far; far = node + 1; }
         descend(near, rd);
@@ -102,21 +102,21 @@ abstract class VoxelDescent {
         }
     }
 
-    /** Scans the leaf whose word is {@code w}. */
-    final void scan(int w) {
-        int leaf = leafOf(w);
+    /** Scans leaf {@code node}, whose word is {@code w}. */
+    final void scan(int node, int w) {
         leavesVisited++;
-        scanLeaf(leafStart[leaf], leafStart[leaf + 1]);
+        int first = nodes[2 * node];
+        scanLeaf(first, first + (w >>> shift));
     }
+
+    /** The word of a node. */
+    final int word(int node) { return nodes[2 * node + 1]; }
 
     /** Whether the word is a leaf's. */
     final boolean isLeaf(int w) { return (w & mark) == mark; }
 
     /** The axis of an interior node's word. */
     final int axis(int w) { return w & mark; }
-
-    /** The leaf number of a leaf's word. */
-    final int leafOf(int w) { return w >>> shift; }
 
     /** The right child of an interior node's word. */
     final int rightChild(int w) { return w >>> shift; }

@@ -49,7 +49,7 @@ public final class DimensionSweep {
         NeighbourStudy study = new NeighbourStudy(tree, kind.queries(queryCount, dimension, seed), k, runs);
         NeighbourResult exact = study.exact();
         return new DimensionResult(dimension, exact.queriesPerSecond(), study.bruteQueriesPerSecond(),
-                exact.leavesPerQuery(), tree.tree().leafCount());
+                exact.leavesPerQuery(), tree.tree().stats().leaves());
     }
 
     /**

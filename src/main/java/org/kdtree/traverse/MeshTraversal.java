@@ -3,6 +3,7 @@ package org.kdtree.traverse;
 import org.kdtree.geom.Box;
 import org.kdtree.geom.Ray;
 import org.kdtree.tree.KdTree;
+import org.kdtree.tree.SplitGrid;
 
 /**
  * The specialised 3-D path of {@link Traverser} for triangle meshes: the same algorithm and the
@@ -13,7 +14,9 @@ import org.kdtree.tree.KdTree;
 final class MeshTraversal {
     private static final double SLACK = Traverser.SLACK;
 
-    private final long[] nodes;
+    /** The tree's nodes, two ints each ({@link KdTree#nodeArray()}; 3-D: a 2-bit axis field, leaf mark 3). */
+    private final int[] nodes;
+    private final SplitGrid grid;
     private final int[] refs;
     private final double[] corners;
     private final double lx, ly, lz, hx, hy, hz;
@@ -24,9 +27,10 @@ final class MeshTraversal {
     private final Hit scratch = new Hit();
 
     MeshTraversal(KdTree tree, TriangleIntersector tris, Mailbox mailbox, int stackSize) {
-        PackedTree packed = PackedTree.of(tree);
-        nodes = packed.nodes;
-        refs = packed.refs;
+        if (tree.axisBits() != 2) throw new IllegalArgumentException("a 3-D tree has a 2-bit axis field");
+        nodes = tree.nodeArray();
+        grid = tree.grid();
+        refs = tree.refArray();
         corners = tris.cornerArray();
         Box b = tree.bounds();
         lx = b.min(0); ly = b.min(1); lz = b.min(2);
@@ -85,7 +89,8 @@ final class MeshTraversal {
 
         int stamp = mailbox.next();
         int[] box = mailbox.stamp;
-        long[] nodes = this.nodes;
+        int[] nodes = this.nodes;
+        SplitGrid grid = this.grid;
         int[] refs = this.refs;
         double[] c = corners;
         int sp = 0, node = 0;
@@ -94,13 +99,13 @@ final class MeshTraversal {
         double lo = curMin - Math.abs(curMin) * SLACK, hi = curMax + Math.abs(curMax) * SLACK;
         boolean found = false;
         while (true) {
-            long w = nodes[2 * node + 1];
-            while ((w & 31) != 31) {
-                int axis = (int) w & 31;
+            int w = nodes[2 * node + 1];
+            while ((w & 3) != 3) {
+                int axis = w & 3;
                 double ia = iv[axis];
-                double tSplit = (Double.longBitsToDouble(nodes[2 * node]) - o[axis]) * ia;
-                int near = node + 1, far = (int) (w >>> 5);
-                if (!(ia > 0)) { far = near; near = (int) (w >>> 5); }
+                double tSplit = (grid.position(axis, Float.intBitsToFloat(nodes[2 * node])) - o[axis]) * ia;
+                int near = node + 1, far = w >>> 2;
+                if (!(ia > 0)) { far = near; near = w >>> 2; }
                 if (tSplit > hi) {
                     node = near;
                 } else if (tSplit < lo) {
@@ -120,7 +125,7 @@ final class MeshTraversal {
                 }
                 w = nodes[2 * node + 1];
             }
-            for (int r = (int) nodes[2 * node], end = r + (int) (w >>> 5); r < end; r++) {
+            for (int r = nodes[2 * node], end = r + (w >>> 2); r < end; r++) {
                 int p = refs[r];
                 if (box[p] == stamp) continue;
                 box[p] = stamp;

@@ -41,11 +41,11 @@ public final class Traverser implements RayQuery {
 
     private final KdTree tree;
     private final Intersector prims;
-    private final int[] word;
+    /** The tree's nodes, two ints each ({@link KdTree#nodeArray()}). */
+    private final int[] nodes;
     /** The word's leaf mark and axis-field width ({@link KdTree#leafMark()}, {@link KdTree#axisBits()}). */
     private final int mark, shift;
-    private final double[] split;
-    private final int[] leafStart, refs;
+    private final int[] refs;
     private final double[] lo, hi;
     private final Mailbox mailbox;
     private final int[] stackNode;
@@ -67,11 +67,9 @@ public final class Traverser implements RayQuery {
             throw new IllegalArgumentException("tree is " + tree.dimension() + "-D, primitives " + prims.dimension() + "-D");
         this.tree = tree;
         this.prims = prims;
-        word = tree.wordArray();
+        nodes = tree.nodeArray();
         mark = tree.leafMark();
         shift = tree.axisBits();
-        split = tree.splitArray();
-        leafStart = tree.leafStartArray();
         refs = tree.refArray();
         Box b = tree.bounds();
         int k = tree.dimension();
@@ -176,24 +174,24 @@ public final class Traverser implements RayQuery {
         int sp = 0, node = 0;
         double curMin = enter, curMax = exit;
         while (true) {
-            int w = word[node];
+            int w = nodes[2 * node + 1];
             while ((w & mark) != mark) {
                 int axis = w & mark, far = w >>> shift, near = node + 1;
-                double inv = ray.inverseDirection(axis);
-                double tSplit = (split[node] - ray.origin(axis)) * inv;
+                double inv = ray.inverseDirection(axis), xi = tree.split(node);
+                double tSplit = (xi - ray.origin(axis)) * inv;
                 if (!(inv > 0)) { far = near; near = w >>> shift; }
                 TraversalListener.Visit visit = decide(tSplit, curMin, curMax);
-                l.interior(node, axis, split[node], curMin, curMax, tSplit, near, far, visit);
+                l.interior(node, axis, xi, curMin, curMax, tSplit, near, far, visit);
                 switch (visit) {
                     case NEAR -> node = near;
                     case FAR -> node = far;
                     case BOTH_IN_PLANE -> { push(sp++, far, curMin, curMax, l); node = near; }
                     case BOTH -> { push(sp++, far, tSplit, curMax, l); node = near; curMax = tSplit; }
                 }
-                w = word[node];
+                w = nodes[2 * node + 1];
             }
-            l.leaf(node, curMin, curMax, leafStart[(w >>> shift) + 1] - leafStart[w >>> shift]);
-            int result = visitLeaf(w >>> shift, stamp, mode, ray, tMin, tMax, hit, all, l);
+            l.leaf(node, curMin, curMax, w >>> shift);
+            int result = visitLeaf(nodes[2 * node], w >>> shift, stamp, mode, ray, tMin, tMax, hit, all, l);
             if (result == ANY) return true;
             found |= result == CLOSEST;
             // Take the next saved far child that can still hold something closer.
@@ -241,11 +239,11 @@ public final class Traverser implements RayQuery {
      * Tests a leaf's primitives (each once per ray) against the caller's whole range. Returns
      * {@code ANY} when an any-hit query can stop, {@code CLOSEST} when something was hit, else -1.
      */
-    private int visitLeaf(int leaf, int stamp, int mode, Ray ray, double tMin, double tMax, Hit hit, List<Hit> all,
-                          TraversalListener l) {
+    private int visitLeaf(int first, int count, int stamp, int mode, Ray ray, double tMin, double tMax, Hit hit,
+                          List<Hit> all, TraversalListener l) {
         int[] box = mailbox.stamp;
         int result = -1;
-        for (int r = leafStart[leaf]; r < leafStart[leaf + 1]; r++) {
+        for (int r = first; r < first + count; r++) {
             int p = refs[r];
             if (box[p] == stamp) { l.mailboxed(p); continue; }
             box[p] = stamp;

@@ -5,43 +5,41 @@ import org.kdtree.geom.Box;
 /**
  * A built kd-tree: immutable flat arrays, in the spirit of pbrt's compact nodes.
  *
- * <p>Nodes are stored depth first; the left child of interior node {@code n} is
- * {@code n + 1}. Each node costs 12 bytes: an {@code int} word and a {@code double} split
- * position (double because the geometry is double: a float split would have to move the
- * plane off the primitive bounds the builder chose). The word's low {@link #axisBits()} bits
- * hold the split axis, or all ones ({@link #leafMark()}) for a leaf; the bits above hold the
- * right child's index, or the leaf's index. The axis field is as narrow as the dimension
- * allows (2 bits in 2-D and 3-D, 7 bits in 64-D), so a 3-D tree may hold 2^29 nodes and a
- * 64-D one 2^24. The primitives of leaf {@code l} are {@code refs[leafStart[l] .. leafStart[l+1])},
- * one shared array for all leaves.
+ * <p>Nodes are stored depth first; the near-side (lower) child of interior node {@code n} is
+ * {@code n + 1}. Each node costs 8 bytes, two {@code int}s of one array, so that one load brings
+ * in a whole node: {@code nodes[2n]} holds an interior node's split position, as the
+ * {@code float} code of its {@link SplitGrid} ({@link #split} decodes it), or a leaf's first
+ * index into the shared reference array; {@code nodes[2n + 1]}, the node's word, holds in its low
+ * {@link #axisBits()} bits the split axis, or all ones ({@link #leafMark()}) for a leaf, and in
+ * the bits above the upper child's index, or the leaf's number of references. The axis field is as
+ * narrow as the dimension allows (2 bits in 2-D and 3-D, 7 bits in 64-D), so a 3-D tree may hold
+ * 2^29 nodes and a 64-D one 2^24. The primitives of leaf {@code n} are
+ * {@code refs[nodes[2n] .. nodes[2n] + (nodes[2n+1] >>> axisBits()))}.
  *
  * <p>The arrays are exposed read-only by convention to the hot paths (traversal, point
- * queries), which decode a word as {@code w & leafMark()} and {@code w >>> axisBits()}.
+ * queries), which read them as described here; everything else uses the methods.
  */
 public final class KdTree {
     /** The most dimensions a tree may have ({@link org.kdtree.limits.Limits#DIMENSION}). */
     public static final int MAX_DIMENSION = (int) org.kdtree.limits.Limits.DIMENSION.max();
 
     private final Box bounds;
+    private final SplitGrid grid;
     private final CostModel cost;
     private final String builderName;
-    private final int[] word;
-    private final double[] split;
-    private final int[] leafStart;
+    private final int[] nodes;
     private final int[] refs;
     private final int budgetLeaves;
     private final int axisBits, leafMark;
     private TreeStats stats;
 
-    KdTree(Box bounds, CostModel cost, String builderName, int[] word, double[] split, int[] leafStart, int[] refs,
-           int budgetLeaves) {
+    KdTree(Box bounds, SplitGrid grid, CostModel cost, String builderName, int[] nodes, int[] refs, int budgetLeaves) {
         this.budgetLeaves = budgetLeaves;
         this.bounds = bounds;
+        this.grid = grid;
         this.cost = cost;
         this.builderName = builderName;
-        this.word = word;
-        this.split = split;
-        this.leafStart = leafStart;
+        this.nodes = nodes;
         this.refs = refs;
         this.axisBits = axisBits(bounds.dimension());
         this.leafMark = (1 << axisBits) - 1;
@@ -91,7 +89,7 @@ public final class KdTree {
     public String builderName() { return builderName; }
 
     /** {@return the number of nodes, interior and leaf} */
-    public int nodeCount() { return word.length; }
+    public int nodeCount() { return nodes.length / 2; }
 
     /**
      * Leaves the build made early because the reference budget ran out
@@ -99,26 +97,29 @@ public final class KdTree {
      * @return the number of such early leaves
      */
     public int budgetLeaves() { return budgetLeaves; }
-    /** {@return the number of leaves} */
-    public int leafCount() { return leafStart.length - 1; }
 
-    // ---- node access, for traversal (hot path: no allocation) ----
+    /** {@return the positions this tree's split planes are stored on} */
+    public SplitGrid grid() { return grid; }
+
+    // ---- node access (small enough to be inlined into hot loops) ----
 
     /**
      * {@return whether {@code node} is a leaf}
      * @param node a node index
      */
-    public boolean isLeaf(int node) { return (word[node] & leafMark) == leafMark; }
+    public boolean isLeaf(int node) { return (nodes[2 * node + 1] & leafMark) == leafMark; }
     /**
      * {@return the split axis of interior node {@code node}}
      * @param node an interior node's index
      */
-    public int axis(int node) { return word[node] & leafMark; }
+    public int axis(int node) { return nodes[2 * node + 1] & leafMark; }
     /**
      * {@return the split plane's position on the axis of interior node {@code node}}
      * @param node an interior node's index
      */
-    public double split(int node) { return split[node]; }
+    public double split(int node) {
+        return grid.position(nodes[2 * node + 1] & leafMark, Float.intBitsToFloat(nodes[2 * node]));
+    }
     /**
      * {@return the left (lower) child of interior node {@code node}: always {@code node + 1}}
      * @param node an interior node's index
@@ -128,27 +129,22 @@ public final class KdTree {
      * {@return the upper child of interior node {@code node}}
      * @param node an interior node's index
      */
-    public int rightChild(int node) { return word[node] >>> axisBits; }
-    /**
-     * {@return the index among the leaves of leaf node {@code node}}
-     * @param node a leaf node's index
-     */
-    public int leafIndex(int node) { return word[node] >>> axisBits; }
+    public int rightChild(int node) { return nodes[2 * node + 1] >>> axisBits; }
     /**
      * {@return where the references of leaf {@code node} begin in {@link #refArray()}}
      * @param node a leaf node's index
      */
-    public int leafStart(int node) { return leafStart[leafIndex(node)]; }
+    public int leafStart(int node) { return nodes[2 * node]; }
     /**
      * {@return where the references of leaf {@code node} end (exclusive) in {@link #refArray()}}
      * @param node a leaf node's index
      */
-    public int leafEnd(int node) { return leafStart[leafIndex(node) + 1]; }
+    public int leafEnd(int node) { return nodes[2 * node] + leafSize(node); }
     /**
      * {@return the number of primitive references in leaf {@code node}}
      * @param node a leaf node's index
      */
-    public int leafSize(int node) { return leafEnd(node) - leafStart(node); }
+    public int leafSize(int node) { return nodes[2 * node + 1] >>> axisBits; }
     /**
      * {@return the i-th entry of the shared leaf reference array}
      * @param i an index into {@link #refArray()}
@@ -156,14 +152,10 @@ public final class KdTree {
     public int ref(int i) { return refs[i]; }
 
     /**
-     * {@return the node words (axis or leaf mark, child or leaf index)}: the raw array for flat hot loops; never modify it.
+     * {@return the nodes, two ints each (see the class comment)}: the raw array for flat hot loops; never modify it.
      */
-    public int[] wordArray() { return word; }
-    /** {@return the split positions per node}: the raw array; never modify it. */
-    public double[] splitArray() { return split; }
-    /** {@return the start of each leaf's references, plus one final end}: the raw array; never modify it. */
-    public int[] leafStartArray() { return leafStart; }
-    /** {@return the shared leaf reference array (primitive indices)}: the raw array; never modify it. */
+    public int[] nodeArray() { return nodes; }
+    /** {@return the shared leaf reference array (primitive indices), in leaf order}: the raw array; never modify it. */
     public int[] refArray() { return refs; }
 
     /**
@@ -189,7 +181,7 @@ public final class KdTree {
             return;
         }
         int axis = axis(node);
-        double xi = split[node];
+        double xi = split(node);
         v.interior(node, depth, voxel, axis, xi);
         double lo = voxel.min(axis), hi = voxel.max(axis);
         voxel.setMax(axis, xi);
@@ -205,8 +197,8 @@ public final class KdTree {
         return stats;
     }
 
-    /** {@return bytes held by the arrays (12 per node, 4 per leaf, 4 per reference, plus headers)} */
+    /** {@return bytes held by the arrays (8 per node, 4 per reference, plus the arrays' headers)} */
     public long memoryBytes() {
-        return 16L * 4 + 4L * word.length + 8L * split.length + 4L * leafStart.length + 4L * refs.length;
+        return 2 * 16L + 4L * nodes.length + 4L * refs.length;
     }
 }

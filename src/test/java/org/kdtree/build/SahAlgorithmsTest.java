@@ -63,9 +63,8 @@ class SahAlgorithmsTest {
     }
 
     static void assertSameTree(KdTree actual, KdTree expected, String what) {
-        assertThat(actual.wordArray()).as("node words %s", what).isEqualTo(expected.wordArray());
-        assertThat(actual.splitArray()).as("split positions %s", what).isEqualTo(expected.splitArray());
-        assertThat(actual.leafStartArray()).as("leaf offsets %s", what).isEqualTo(expected.leafStartArray());
+        assertThat(actual.nodeArray()).as("nodes %s", what).isEqualTo(expected.nodeArray());
+        assertThat(actual.bounds()).as("root voxel %s", what).isEqualTo(expected.bounds());
         assertThat(actual.refArray()).as("leaf references %s", what).isEqualTo(expected.refArray());
     }
 }

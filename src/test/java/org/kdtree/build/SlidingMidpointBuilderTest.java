@@ -22,7 +22,7 @@ class SlidingMidpointBuilderTest {
 
     @Test void copiesOfTenPointsMakeTenLeaves() {
         KdTree tree = new SlidingMidpointBuilder().build(tenPointsRepeated(100_000));
-        assertThat(tree.leafCount()).as("one leaf per distinct point").isEqualTo(10);
+        assertThat(tree.stats().leaves()).as("one leaf per distinct point").isEqualTo(10);
         assertThat(tree.nodeCount()).isEqualTo(19);
     }
 
@@ -61,7 +61,7 @@ class SlidingMidpointBuilderTest {
         for (int i = 0; i < c.length; i++) c[i] = r.nextDouble();
         KdTree tree = new SlidingMidpointBuilder().build(new PointsKd(3, c));
         assertThat((double) tree.memoryBytes() / n).as("tree bytes per point (leaf size %d, %d leaves)",
-                SlidingMidpointBuilder.DEFAULT_LEAF_SIZE, tree.leafCount()).isLessThanOrEqualTo(8.0);
+                SlidingMidpointBuilder.DEFAULT_LEAF_SIZE, tree.stats().leaves()).isLessThanOrEqualTo(8.0);
     }
 
     @Test void leafSizeIsChecked() {

@@ -21,7 +21,7 @@ class ApproximateSearchTest {
         PointsKd pts = PointSets.of(kind, 300, PointSets.DIMENSIONS[dim], seed);
         PointTree tree = PointTree.build(pts, Builders.create("sliding-midpoint"));
         // a budget of every leaf runs best-bin-first to its natural end
-        NearestQuery bbf = new NearestQuery(tree).maxLeaves(tree.tree().leafCount());
+        NearestQuery bbf = new NearestQuery(tree).maxLeaves(tree.tree().stats().leaves());
         int[] idx = new int[10];
         double[] dist = new double[10];
         for (double[] q : PointSets.queries(pts, 12, seed)) {
@@ -70,7 +70,7 @@ class ApproximateSearchTest {
             wanted += truth.size();
         }
         double recall = (double) found / wanted;
-        assertThat(recall).as("recall of 10-NN scanning 8 of ~%d leaves", tree.tree().leafCount()).isGreaterThanOrEqualTo(0.9);
+        assertThat(recall).as("recall of 10-NN scanning 8 of ~%d leaves", tree.tree().stats().leaves()).isGreaterThanOrEqualTo(0.9);
     }
 
     @Property(tries = 25)

@@ -12,9 +12,8 @@ public final class Trees {
     /** Asserts two trees are identical: same nodes, same splits, same leaves with the same references. */
     public static void assertSameTree(KdTree a, KdTree b) {
         assertThat(b.nodeCount()).as("node count").isEqualTo(a.nodeCount());
-        assertThat(b.wordArray()).as("node words (axes, children)").isEqualTo(a.wordArray());
-        assertThat(b.splitArray()).as("split positions").isEqualTo(a.splitArray());
-        assertThat(b.leafStartArray()).as("leaf sizes").isEqualTo(a.leafStartArray());
+        assertThat(b.nodeArray()).as("nodes (split codes or leaf offsets; axes, children or leaf sizes)").isEqualTo(a.nodeArray());
+        assertThat(b.bounds()).as("root voxel (the grid of split positions)").isEqualTo(a.bounds());
         assertThat(b.refArray()).as("leaf references").isEqualTo(a.refArray());
     }
 }
