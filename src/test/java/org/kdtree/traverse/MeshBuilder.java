@@ -57,4 +57,11 @@ final class MeshBuilder {
         for (int i = 0; i < v.length; i++) v[i] *= s;
         return new TriangleMesh(v, m.indices().clone());
     }
+
+    /** The same mesh moved by {@code offset} (its coordinates rounded as the sums round). */
+    static TriangleMesh moved(TriangleMesh m, double[] offset) {
+        double[] v = m.vertices().clone();
+        for (int i = 0; i < v.length; i++) v[i] += offset[i % 3];
+        return new TriangleMesh(v, m.indices().clone());
+    }
 }
