@@ -21,7 +21,6 @@ import org.kdtree.tree.KdTreeWriter;
 final class BinnedEngine extends ForkingEngine<BinnedEngine> {
     private final Primitives prims;
     private final int k, bins, exactBelow, depthCap, forkThreshold;
-    private final org.kdtree.tree.SplitGrid grid;
     private final boolean perfectSplits;
     private final double leafCostPerPrimitive;
     private final SahBuilder settings;
@@ -38,7 +37,7 @@ final class BinnedEngine extends ForkingEngine<BinnedEngine> {
     }
 
     private BinnedEngine(SahBuilder settings, BuildContext context, Deque<BinnedEngine> spares) {
-        super(spares);
+        super(spares, context.primitives().dimension());
         this.settings = settings;
         this.context = context;
         this.prims = context.primitives();
@@ -46,7 +45,6 @@ final class BinnedEngine extends ForkingEngine<BinnedEngine> {
         this.bins = settings.bins();
         this.exactBelow = settings.exactBelow();
         this.depthCap = context.depthCap();
-        this.grid = context.splitGrid();
         this.forkThreshold = context.forkThreshold();
         this.perfectSplits = settings.perfectSplits();
         this.leafCostPerPrimitive = settings.costModel().ki();
@@ -75,7 +73,7 @@ final class BinnedEngine extends ForkingEngine<BinnedEngine> {
         levels.reserve(0, n);
         int[] refs = levels.refs(0);
         for (int i = 0; i < n; i++) refs[i] = i;
-        Partition.writeAllBounds(prims, grid, rootVoxel, levels.bounds(0));
+        Partition.writeAllBounds(prims, levels.bounds(0));
         int[] meta = levels.meta(0);
         meta[0] = 0;
         meta[1] = n;
@@ -106,12 +104,7 @@ final class BinnedEngine extends ForkingEngine<BinnedEngine> {
             return;
         }
         int axis = best.axis();
-        double[] v = levels.voxel(d);
-        double xi = grid.nearest(axis, best.position(), v[2 * k * c + axis], v[2 * k * c + k + axis]);
-        if (xi != xi) { // the voxel is narrower than the grid of stored planes
-            out.leaf(levels.refs(d), from, n);
-            return;
-        }
+        double xi = best.position();
         int done = split(d, c, from, n, axis, xi, best.planarLeft());
         if (done != SplitOutcome.SPLIT) {
             if (done == SplitOutcome.OVER_BUDGET) out.budgetLeaf();
@@ -175,7 +168,7 @@ final class BinnedEngine extends ForkingEngine<BinnedEngine> {
                 case LEFT -> { outRefs[il] = prim; System.arraycopy(bounds, 2 * k * j, outBounds, 2 * k * il++, 2 * k); }
                 case RIGHT -> { outRefs[ir] = prim; System.arraycopy(bounds, 2 * k * j, outBounds, 2 * k * ir++, 2 * k); }
                 case BOTH -> {
-                    int to = Partition.straddlerBounds(prims, grid, prim, bounds, j, voxel, axis, xi, perfectSplits, clipLeft, clipRight,
+                    int to = Partition.straddlerBounds(prims, prim, bounds, j, voxel, axis, xi, perfectSplits, clipLeft, clipRight,
                             outBounds, il, outBounds, ir);
                     if ((to & 1) != 0) outRefs[il++] = prim;
                     if ((to & 2) != 0) outRefs[ir++] = prim;

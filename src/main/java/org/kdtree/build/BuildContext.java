@@ -1,7 +1,6 @@
 package org.kdtree.build;
 
 import org.kdtree.shape.Primitives;
-import org.kdtree.tree.SplitGrid;
 
 /** What a builder's decisions may consult besides the node itself: the whole build's inputs. */
 public interface BuildContext {
@@ -15,10 +14,4 @@ public interface BuildContext {
      * {@return the smallest subtree (in references) handed to another thread}; {@code Integer.MAX_VALUE} in a one-thread build.
      */
     int forkThreshold();
-
-    /**
-     * {@return the positions the tree can store split planes at}: the build moves each plane that
-     * findPlane chose to the nearest of them before it partitions (engines of their own do the same).
-     */
-    SplitGrid splitGrid();
 }

@@ -27,7 +27,6 @@ final class EventEngine extends ForkingEngine<EventEngine> {
     final int k;
     final boolean perfectSplits;
     private final int depthCap, forkThreshold;
-    final org.kdtree.tree.SplitGrid grid;
     final EventLevels levels;
     private final SahCost sah;
     private final SahSplit best = new SahSplit();
@@ -42,14 +41,13 @@ final class EventEngine extends ForkingEngine<EventEngine> {
     }
 
     private EventEngine(SahBuilder settings, BuildContext context, java.util.Deque<EventEngine> spares) {
-        super(spares);
+        super(spares, context.primitives().dimension());
         this.settings = settings;
         this.context = context;
         this.prims = context.primitives();
         this.k = prims.dimension();
         this.perfectSplits = settings.perfectSplits();
         this.depthCap = context.depthCap();
-        this.grid = context.splitGrid();
         this.forkThreshold = context.forkThreshold();
         this.levels = new EventLevels(k);
         this.sah = new SahCost(settings.costModel(), settings.emptyWeight(), k);
@@ -111,12 +109,7 @@ final class EventEngine extends ForkingEngine<EventEngine> {
             return;
         }
         int axis = best.axis();
-        double[] v = levels.voxel(d);
-        double xi = grid.nearest(axis, best.position(), v[2 * k * c + axis], v[2 * k * c + k + axis]);
-        if (xi != xi) { // the voxel is narrower than the grid of stored planes
-            leaf(d, c, n, out);
-            return;
-        }
+        double xi = best.position();
         int done = split.split(d, c, n, axis, xi, best.planarLeft());
         if (done != SplitOutcome.SPLIT) {
             if (done == SplitOutcome.OVER_BUDGET) out.budgetLeaf();

@@ -16,7 +16,7 @@ final class EventRoot {
     static void write(EventEngine engine, Box rootVoxel) {
         int k = engine.k, n = engine.prims.size();
         double[] bounds = new double[2 * k * n], voxel = new double[2 * k];
-        Partition.writeAllBounds(engine.prims, engine.grid, rootVoxel, bounds);
+        Partition.writeAllBounds(engine.prims, bounds);
         for (int a = 0; a < k; a++) {
             voxel[a] = rootVoxel.min(a);
             voxel[k + a] = rootVoxel.max(a);

@@ -108,7 +108,7 @@ final class EventSplit {
         if (!engine.perfectSplits) parentBounds(d, c, nb);
         int left = 0, right = 0;
         for (int i = 0; i < nb; i++) {
-            int to = Partition.straddlerBounds(engine.prims, engine.grid, straddlers[i], bounds, 2 * nb + i, voxel, axis, xi,
+            int to = Partition.straddlerBounds(engine.prims, straddlers[i], bounds, 2 * nb + i, voxel, axis, xi,
                     engine.perfectSplits, clipLeft, clipRight, bounds, i, bounds, nb + i);
             goesTo[i] = to;
             left += to & 1;

@@ -15,11 +15,12 @@ import org.kdtree.tree.KdTreeWriter;
  */
 abstract class ForkingEngine<E extends ForkingEngine<E>> {
     private final Deque<E> spares;
-    /** The writer of the subtree this engine builds when forked (made on its first fork). */
-    private KdTreeWriter forkOut;
+    /** The writer of the subtree this engine builds when forked. */
+    private final KdTreeWriter forkOut;
 
-    ForkingEngine(Deque<E> spares) {
+    ForkingEngine(Deque<E> spares, int dimension) {
         this.spares = spares;
+        this.forkOut = new KdTreeWriter(dimension);
     }
 
     /**
@@ -47,9 +48,7 @@ abstract class ForkingEngine<E extends ForkingEngine<E>> {
         E spare = spares.poll();
         E other = spare != null ? spare : newSpare(spares);
         int n = copyRightChild(d, other);
-        ForkingEngine<E> o = other;
-        if (o.forkOut == null) o.forkOut = out.forSubtree();
-        KdTreeWriter rightOut = o.forkOut;
+        KdTreeWriter rightOut = ((ForkingEngine<E>) other).forkOut;
         ForkJoinTask<?> right = ForkJoinTask.adapt(() -> {
             rightOut.clear();
             reserve(rightOut, n);

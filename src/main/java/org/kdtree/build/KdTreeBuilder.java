@@ -10,7 +10,6 @@ import org.kdtree.shape.Primitives;
 import org.kdtree.tree.CostModel;
 import org.kdtree.tree.KdTree;
 import org.kdtree.tree.KdTreeWriter;
-import org.kdtree.tree.SplitGrid;
 
 /**
  * The talk's Algorithm 1, written once:
@@ -63,9 +62,8 @@ public abstract class KdTreeBuilder {
     public final KdTree build(Primitives primitives) {
         Box rootVoxel = rootVoxel(primitives);
         int depthCap = depthCap(primitives.size());
-        KdTreeWriter out = new KdTreeWriter(rootVoxel);
-        Build build = new Build(primitives, depthCap, threads == 1 ? Integer.MAX_VALUE : forkThreshold(primitives.size(), threads),
-                out.grid());
+        KdTreeWriter out = new KdTreeWriter(primitives.dimension());
+        Build build = new Build(primitives, depthCap, threads == 1 ? Integer.MAX_VALUE : forkThreshold(primitives.size(), threads));
         if (threads == 1) {
             construct(build, rootVoxel, out);
         } else {
@@ -76,7 +74,7 @@ public abstract class KdTreeBuilder {
                 pool.shutdown();
             }
         }
-        return out.finish(costModel, name());
+        return out.finish(rootVoxel, costModel, name());
     }
 
     /**
@@ -153,7 +151,7 @@ public abstract class KdTreeBuilder {
         int[] refs = new int[n];
         double[] clipped = new double[2 * k * n];
         for (int i = 0; i < n; i++) refs[i] = i;
-        Partition.writeAllBounds(primitives, context.splitGrid(), rootVoxel, clipped);
+        Partition.writeAllBounds(primitives, clipped);
         return new BuildNode(rootVoxel, refs, clipped, 0);
     }
 
@@ -162,11 +160,7 @@ public abstract class KdTreeBuilder {
             out.leaf(node.refArray(), node.base(), node.size());
             return;
         }
-        SplitPlane plane = onGrid(build.grid, checked(findPlane(build, node), node), node.voxel());
-        if (plane == null) { // the voxel is narrower than the grid of stored planes
-            out.leaf(node.refArray(), node.base(), node.size());
-            return;
-        }
+        SplitPlane plane = checked(findPlane(build, node), node);
         Children children = split(build, node, plane);
         int nl = children.left().size(), nr = children.right().size();
         int outcome = SplitOutcome.of(node.size(), nl, nr, node.budget());
@@ -184,7 +178,7 @@ public abstract class KdTreeBuilder {
             // the same recursion, so the same tree, in the same depth-first order.
             BuildNode rightChild = children.right();
             ForkJoinTask<KdTreeWriter> right = ForkJoinTask.adapt(() -> {
-                KdTreeWriter w = out.forSubtree();
+                KdTreeWriter w = new KdTreeWriter(node.dimension());
                 recConst(build, rightChild, w);
                 return w;
             }).fork();
@@ -208,17 +202,6 @@ public abstract class KdTreeBuilder {
             throw new IllegalStateException(name() + ": findPlane chose x" + p.axis() + " = " + p.position()
                     + ", outside the voxel " + v);
         return p;
-    }
-
-    /**
-     * The plane moved to the nearest position the tree can store ({@link SplitGrid}) inside the
-     * voxel, before the partition, so that the primitives go to the children by the stored plane;
-     * null if the grid has no position in the voxel on that axis.
-     */
-    private static SplitPlane onGrid(SplitGrid grid, SplitPlane p, Box voxel) {
-        double x = grid.nearest(p.axis(), p.position(), voxel.min(p.axis()), voxel.max(p.axis()));
-        if (x != x) return null;
-        return x == p.position() ? p : new SplitPlane(p.axis(), x, p.planarLeft());
     }
 
     private static Box rootVoxel(Primitives primitives) {
@@ -359,7 +342,6 @@ public abstract class KdTreeBuilder {
     }
 
     /** The per-build context that {@link BuildContext} exposes to subclasses. */
-    private record Build(Primitives primitives, int depthCap, int forkThreshold, SplitGrid grid) implements BuildContext {
-        @Override public SplitGrid splitGrid() { return grid; }
+    private record Build(Primitives primitives, int depthCap, int forkThreshold) implements BuildContext {
     }
 }

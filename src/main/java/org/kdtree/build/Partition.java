@@ -4,7 +4,6 @@ import org.kdtree.geom.Tolerance;
 import org.kdtree.geom.Box;
 import org.kdtree.geom.SplitPlane;
 import org.kdtree.shape.Primitives;
-import org.kdtree.tree.SplitGrid;
 
 /** The default partition step of Algorithm 1: send each primitive to the children it overlaps. */
 final class Partition {
@@ -27,7 +26,6 @@ final class Partition {
 
     static Children split(BuildContext context, BuildNode node, SplitPlane p, boolean perfect) {
         Primitives prims = context.primitives();
-        SplitGrid grid = context.splitGrid();
         int k = node.dimension(), n = node.size(), axis = p.axis();
         Side[] side = new Side[n];
         int nl = 0, nr = 0;
@@ -49,8 +47,7 @@ final class Partition {
                 case LEFT -> { lr[il] = prim; System.arraycopy(src, 2 * k * j, lc, 2 * k * il++, 2 * k); }
                 case RIGHT -> { rr[ir] = prim; System.arraycopy(src, 2 * k * j, rc, 2 * k * ir++, 2 * k); }
                 case BOTH -> {
-                    int to = straddlerBounds(prims, grid, prim, src, j, node.voxel(), axis, p.position(), perfect, tmpL, tmpR,
-                            lc, il, rc, ir);
+                    int to = straddlerBounds(prims, prim, src, j, node.voxel(), axis, p.position(), perfect, tmpL, tmpR, lc, il, rc, ir);
                     if ((to & 1) != 0) lr[il++] = prim;
                     if ((to & 2) != 0) rr[ir++] = prim;
                 }
@@ -75,12 +72,10 @@ final class Partition {
      * padded by a few ulps, so a primitive that merely reaches the plane can look like a
      * straddler; its exact clip to the far child is then empty. It is clipped again to the child
      * grown by a hair: if it touches that, it keeps the (tight) sliver at the face; if not, it is
-     * not in this child. The clipped bounds are rounded out to the grid ({@link #onGrid}). Without
-     * perfect splits: the parent's bounds cut by each child voxel (on the grid already).
+     * not in this child. Without perfect splits: the parent's bounds cut by each child voxel.
      */
-    static int straddlerBounds(Primitives prims, SplitGrid grid, int prim, double[] parent, int j, Box voxel, int axis,
-                               double xi, boolean perfect, Box tmpL, Box tmpR, double[] left, int atL, double[] right,
-                               int atR) {
+    static int straddlerBounds(Primitives prims, int prim, double[] parent, int j, Box voxel, int axis, double xi,
+                               boolean perfect, Box tmpL, Box tmpR, double[] left, int atL, double[] right, int atR) {
         int k = voxel.dimension();
         if (!perfect) {
             for (int a = 0; a < k; a++) {
@@ -94,16 +89,8 @@ final class Partition {
         }
         prims.clipSplit(prim, voxel, axis, xi, tmpL, tmpR);
         int to = 0;
-        if (!tmpL.isEmpty() || touches(prims, prim, voxel.lowerPart(axis, xi), tmpL)) {
-            write(tmpL, left, atL);
-            onGrid(grid, left, atL, voxel, axis, voxel.min(axis), xi);
-            to |= 1;
-        }
-        if (!tmpR.isEmpty() || touches(prims, prim, voxel.upperPart(axis, xi), tmpR)) {
-            write(tmpR, right, atR);
-            onGrid(grid, right, atR, voxel, axis, xi, voxel.max(axis));
-            to |= 2;
-        }
+        if (!tmpL.isEmpty() || touches(prims, prim, voxel.lowerPart(axis, xi), tmpL)) { write(tmpL, left, atL); to |= 1; }
+        if (!tmpR.isEmpty() || touches(prims, prim, voxel.upperPart(axis, xi), tmpR)) { write(tmpR, right, atR); to |= 2; }
         return to;
     }
 
@@ -125,34 +112,12 @@ final class Partition {
         return true;
     }
 
-    /**
-     * Every primitive's own bounds, rounded out to the grid, as the root's clipped bounds: slot i
-     * of {@code dest} ({@code 2k} values a slot) for primitive i.
-     */
-    static void writeAllBounds(Primitives prims, SplitGrid grid, Box root, double[] dest) {
+    /** Every primitive's own bounds, the root's clipped bounds: slot i of {@code dest} ({@code 2k} values a slot) for primitive i. */
+    static void writeAllBounds(Primitives prims, double[] dest) {
         Box b = new Box(prims.dimension());
         for (int i = 0; i < prims.size(); i++) {
             prims.bounds(i, b);
             write(b, dest, i);
-            onGrid(grid, dest, i, root, 0, root.min(0), root.max(0));
-        }
-    }
-
-    /**
-     * Rounds the bounds at slot {@code at} out to the grid of stored planes, within the voxel
-     * (whose extent on {@code axis} is {@code [lo, hi]}): every plane the SAH then considers is one
-     * the tree can store, so its costs are those of the tree it writes, and a primitive still
-     * reaches every voxel it overlaps. A bound that lies between two grid positions makes the
-     * primitive a little wider (a grid step is at most 2^-24 of the scene's extent).
-     */
-    static void onGrid(SplitGrid grid, double[] b, int at, Box voxel, int axis, double lo, double hi) {
-        int k = voxel.dimension();
-        for (int a = 0; a < k; a++) {
-            double vMin = a == axis ? lo : voxel.min(a), vMax = a == axis ? hi : voxel.max(a);
-            int i = 2 * k * at + a;
-            double below = grid.atOrBelow(a, b[i]), above = grid.atOrAbove(a, b[i + k]);
-            b[i] = below >= vMin ? below : vMin;
-            b[i + k] = above <= vMax ? above : vMax;
         }
     }
 

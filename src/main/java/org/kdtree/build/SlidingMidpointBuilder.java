@@ -2,7 +2,6 @@ package org.kdtree.build;
 
 import org.kdtree.geom.Box;
 import org.kdtree.geom.SplitPlane;
-import org.kdtree.tree.SplitGrid;
 
 /**
  * The sliding midpoint rule of Maneewongvatana and Mount ("It's okay to be skinny, if your
@@ -48,7 +47,7 @@ public class SlidingMidpointBuilder extends KdTreeBuilder {
 
     @Override protected boolean terminate(BuildContext context, BuildNode node) {
         if (node.size() <= leafSize || node.depth() >= context.depthCap()) return true;
-        SplitPlane plane = slidingMidpoint(node, context.splitGrid());
+        SplitPlane plane = slidingMidpoint(node);
         if (plane == null) return true; // every centre coincides: no plane separates them
         node.plan(plane, Double.NaN);
         return false;
@@ -56,14 +55,11 @@ public class SlidingMidpointBuilder extends KdTreeBuilder {
 
     @Override protected SplitPlane findPlane(BuildContext context, BuildNode node) {
         SplitPlane planned = node.plannedPlane();
-        return planned != null ? planned : slidingMidpoint(node, context.splitGrid());
+        return planned != null ? planned : slidingMidpoint(node);
     }
 
-    /**
-     * The sliding midpoint plane of the node, on the grid of stored planes, or null when all
-     * centres coincide (or lie closer together than the grid's spacing).
-     */
-    static SplitPlane slidingMidpoint(BuildNode node, SplitGrid grid) {
+    /** The sliding midpoint plane of the node, or null when all centres coincide. */
+    static SplitPlane slidingMidpoint(BuildNode node) {
         int k = node.dimension();
         double[] lo = new double[k], hi = new double[k];
         centreRange(node, lo, hi);
@@ -71,19 +67,11 @@ public class SlidingMidpointBuilder extends KdTreeBuilder {
         if (axis < 0) return null;
         Box v = node.voxel();
         double mid = 0.5 * (v.min(axis) + v.max(axis));
-        // Slide to the nearest centre, or just past it on the grid; the centres lying in the plane
-        // go to the side that would otherwise be empty, so both children get at least one.
-        double first = lo[axis], last = hi[axis];
-        if (mid <= first) {
-            double x = grid.atOrAbove(axis, first);
-            return x < last ? new SplitPlane(axis, x, true) : null;
-        }
-        if (mid >= last) {
-            double x = grid.atOrBelow(axis, last);
-            return x > first ? new SplitPlane(axis, x, false) : null;
-        }
-        double x = grid.nearest(axis, mid, first, last);
-        return x != x ? null : new SplitPlane(axis, x, x < last);
+        // Slide to the nearest centre; the centres lying in the plane go to the side that would
+        // otherwise be empty, so both children get at least one.
+        if (mid <= lo[axis]) return new SplitPlane(axis, lo[axis], true);
+        if (mid >= hi[axis]) return new SplitPlane(axis, hi[axis], false);
+        return new SplitPlane(axis, mid, true);
     }
 
     /** The range of the primitives' centres (the points themselves, for points) on every axis. */

@@ -13,7 +13,7 @@ public final class BoxQuery {
     private final PointTree points;
     private final int k;
     private final org.kdtree.tree.KdTree tree;
-    /** The tree's nodes, two ints each ({@link org.kdtree.tree.KdTree#nodeArray()}). */
+    /** The tree's nodes, three ints each ({@link org.kdtree.tree.KdTree#nodeArray()}). */
     private final int[] nodes, refs;
     /** The words' leaf mark and axis-field width ({@link org.kdtree.tree.KdTree#leafMark()}). */
     private final int mark, shift;
@@ -62,18 +62,18 @@ public final class BoxQuery {
     private void search(double[] min, double[] max) {
         int sp = 0, node = 0;
         while (true) {
-            int w = nodes[2 * node + 1];
+            int w = nodes[3 * node];
             while ((w & mark) != mark) {
                 int axis = w & mark;
-                double xi = tree.split(node);
+                double xi = org.kdtree.tree.KdTree.splitOf(nodes, node);
                 boolean left = min[axis] <= xi, right = max[axis] >= xi;
                 if (left && right) stack[sp++] = w >>> shift;
                 if (left) node = node + 1;
                 else if (right) node = w >>> shift;
                 else break; // an empty box (min > max) reaches neither side
-                w = nodes[2 * node + 1];
+                w = nodes[3 * node];
             }
-            if ((w & mark) == mark) scanLeaf(nodes[2 * node], w >>> shift, min, max);
+            if ((w & mark) == mark) scanLeaf(nodes[3 * node + 1], w >>> shift, min, max);
             if (sp == 0) return;
             node = stack[--sp];
         }

@@ -23,7 +23,7 @@ abstract class VoxelDescent {
     final PointTree points;
     final int k;
     final KdTree tree;
-    /** The tree's nodes, two ints each ({@link KdTree#nodeArray()}). */
+    /** The tree's nodes, three ints each ({@link KdTree#nodeArray()}). */
     final int[] nodes;
     /** The words' leaf mark and axis-field width, as {@link KdTree} lays them out for this dimension. */
     final int mark, shift;
@@ -83,13 +83,13 @@ abstract class VoxelDescent {
 
     /** The exact depth-first search below {@code node}, whose voxel lies at accumulated distance {@code rd}. */
     final void descend(int node, double rd) {
-        int w = nodes[2 * node + 1];
+        int w = nodes[3 * node];
         if ((w & mark) == mark) {
             scan(node, w);
             return;
         }
         int axis = w & mark;
-        double diff = q[axis] - tree.split(node);
+        double diff = q[axis] - KdTree.splitOf(nodes, node);
         int near = node + 1, far = w >>> shift;
         if (diff > 0) { near = far; far = node + 1; }
         descend(near, rd);
@@ -105,12 +105,12 @@ abstract class VoxelDescent {
     /** Scans leaf {@code node}, whose word is {@code w}. */
     final void scan(int node, int w) {
         leavesVisited++;
-        int first = nodes[2 * node];
+        int first = nodes[3 * node + 1];
         scanLeaf(first, first + (w >>> shift));
     }
 
     /** The word of a node. */
-    final int word(int node) { return nodes[2 * node + 1]; }
+    final int word(int node) { return nodes[3 * node]; }
 
     /** Whether the word is a leaf's. */
     final boolean isLeaf(int w) { return (w & mark) == mark; }

@@ -3,7 +3,6 @@ package org.kdtree.traverse;
 import org.kdtree.geom.Box;
 import org.kdtree.geom.Ray;
 import org.kdtree.tree.KdTree;
-import org.kdtree.tree.SplitGrid;
 
 /**
  * The specialised 3-D path of {@link Traverser} for triangle meshes: the same algorithm and the
@@ -14,9 +13,8 @@ import org.kdtree.tree.SplitGrid;
 final class MeshTraversal {
     private static final double SLACK = Traverser.SLACK;
 
-    /** The tree's nodes, two ints each ({@link KdTree#nodeArray()}; 3-D: a 2-bit axis field, leaf mark 3). */
+    /** The tree's nodes, three ints each ({@link KdTree#nodeArray()}; 3-D: a 2-bit axis field, leaf mark 3). */
     private final int[] nodes;
-    private final SplitGrid grid;
     private final int[] refs;
     private final double[] corners;
     private final double lx, ly, lz, hx, hy, hz;
@@ -29,7 +27,6 @@ final class MeshTraversal {
     MeshTraversal(KdTree tree, TriangleIntersector tris, Mailbox mailbox, int stackSize) {
         if (tree.axisBits() != 2) throw new IllegalArgumentException("a 3-D tree has a 2-bit axis field");
         nodes = tree.nodeArray();
-        grid = tree.grid();
         refs = tree.refArray();
         corners = tris.cornerArray();
         Box b = tree.bounds();
@@ -90,7 +87,6 @@ final class MeshTraversal {
         int stamp = mailbox.next();
         int[] box = mailbox.stamp;
         int[] nodes = this.nodes;
-        SplitGrid grid = this.grid;
         int[] refs = this.refs;
         double[] c = corners;
         int sp = 0, node = 0;
@@ -99,11 +95,11 @@ final class MeshTraversal {
         double lo = curMin - Math.abs(curMin) * SLACK, hi = curMax + Math.abs(curMax) * SLACK;
         boolean found = false;
         while (true) {
-            int w = nodes[2 * node + 1];
+            int w = nodes[3 * node];
             while ((w & 3) != 3) {
                 int axis = w & 3;
                 double ia = iv[axis];
-                double tSplit = (grid.position(axis, Float.intBitsToFloat(nodes[2 * node])) - o[axis]) * ia;
+                double tSplit = (KdTree.splitOf(nodes, node) - o[axis]) * ia;
                 int near = node + 1, far = w >>> 2;
                 if (!(ia > 0)) { far = near; near = w >>> 2; }
                 if (tSplit > hi) {
@@ -123,9 +119,9 @@ final class MeshTraversal {
                     }
                     sp++;
                 }
-                w = nodes[2 * node + 1];
+                w = nodes[3 * node];
             }
-            for (int r = nodes[2 * node], end = r + (w >>> 2); r < end; r++) {
+            for (int r = nodes[3 * node + 1], end = r + (w >>> 2); r < end; r++) {
                 int p = refs[r];
                 if (box[p] == stamp) continue;
                 box[p] = stamp;

@@ -41,7 +41,7 @@ public final class Traverser implements RayQuery {
 
     private final KdTree tree;
     private final Intersector prims;
-    /** The tree's nodes, two ints each ({@link KdTree#nodeArray()}). */
+    /** The tree's nodes, three ints each ({@link KdTree#nodeArray()}). */
     private final int[] nodes;
     /** The word's leaf mark and axis-field width ({@link KdTree#leafMark()}, {@link KdTree#axisBits()}). */
     private final int mark, shift;
@@ -174,10 +174,10 @@ public final class Traverser implements RayQuery {
         int sp = 0, node = 0;
         double curMin = enter, curMax = exit;
         while (true) {
-            int w = nodes[2 * node + 1];
+            int w = nodes[3 * node];
             while ((w & mark) != mark) {
                 int axis = w & mark, far = w >>> shift, near = node + 1;
-                double inv = ray.inverseDirection(axis), xi = tree.split(node);
+                double inv = ray.inverseDirection(axis), xi = KdTree.splitOf(nodes, node);
                 double tSplit = (xi - ray.origin(axis)) * inv;
                 if (!(inv > 0)) { far = near; near = w >>> shift; }
                 TraversalListener.Visit visit = decide(tSplit, curMin, curMax);
@@ -188,10 +188,10 @@ public final class Traverser implements RayQuery {
                     case BOTH_IN_PLANE -> { push(sp++, far, curMin, curMax, l); node = near; }
                     case BOTH -> { push(sp++, far, tSplit, curMax, l); node = near; curMax = tSplit; }
                 }
-                w = nodes[2 * node + 1];
+                w = nodes[3 * node];
             }
             l.leaf(node, curMin, curMax, w >>> shift);
-            int result = visitLeaf(nodes[2 * node], w >>> shift, stamp, mode, ray, tMin, tMax, hit, all, l);
+            int result = visitLeaf(nodes[3 * node + 1], w >>> shift, stamp, mode, ray, tMin, tMax, hit, all, l);
             if (result == ANY) return true;
             found |= result == CLOSEST;
             // Take the next saved far child that can still hold something closer.

@@ -6,25 +6,27 @@ import org.kdtree.geom.Box;
  * A built kd-tree: immutable flat arrays, in the spirit of pbrt's compact nodes.
  *
  * <p>Nodes are stored depth first; the near-side (lower) child of interior node {@code n} is
- * {@code n + 1}. Each node costs 8 bytes, two {@code int}s of one array, so that one load brings
- * in a whole node: {@code nodes[2n]} holds an interior node's split position, as the
- * {@code float} code of its {@link SplitGrid} ({@link #split} decodes it), or a leaf's first
- * index into the shared reference array; {@code nodes[2n + 1]}, the node's word, holds in its low
- * {@link #axisBits()} bits the split axis, or all ones ({@link #leafMark()}) for a leaf, and in
- * the bits above the upper child's index, or the leaf's number of references. The axis field is as
- * narrow as the dimension allows (2 bits in 2-D and 3-D, 7 bits in 64-D), so a 3-D tree may hold
- * 2^29 nodes and a 64-D one 2^24. The primitives of leaf {@code n} are
- * {@code refs[nodes[2n] .. nodes[2n] + (nodes[2n+1] >>> axisBits()))}.
+ * {@code n + 1}. Each node costs 12 bytes, three {@code int}s of one array, so that a node is one
+ * load away (there is no second copy for the traversal): {@code nodes[3n]}, the node's word, holds
+ * in its low {@link #axisBits()} bits the split axis, or all ones ({@link #leafMark()}) for a leaf,
+ * and in the bits above the upper child's index, or the leaf's number of references;
+ * {@code nodes[3n + 1]} and {@code nodes[3n + 2]} hold the low and high halves of an interior
+ * node's {@code double} split position (exactly the plane the build partitioned with: a float
+ * would move it off the primitive bounds the builder chose, see docs/traversal.md), or a leaf's
+ * first index into the shared reference array and 0. The axis field is as narrow as the dimension
+ * allows (2 bits in 2-D and 3-D, 7 bits in 64-D), so a 3-D tree may hold 2^29 nodes and a 64-D one
+ * 2^24. The primitives of leaf {@code n} are
+ * {@code refs[nodes[3n+1] .. nodes[3n+1] + (nodes[3n] >>> axisBits()))}.
  *
  * <p>The arrays are exposed read-only by convention to the hot paths (traversal, point
- * queries), which read them as described here; everything else uses the methods.
+ * queries), which read them as described here ({@link #splitOf} decodes a split); everything
+ * else uses the methods.
  */
 public final class KdTree {
     /** The most dimensions a tree may have ({@link org.kdtree.limits.Limits#DIMENSION}). */
     public static final int MAX_DIMENSION = (int) org.kdtree.limits.Limits.DIMENSION.max();
 
     private final Box bounds;
-    private final SplitGrid grid;
     private final CostModel cost;
     private final String builderName;
     private final int[] nodes;
@@ -33,16 +35,27 @@ public final class KdTree {
     private final int axisBits, leafMark;
     private TreeStats stats;
 
-    KdTree(Box bounds, SplitGrid grid, CostModel cost, String builderName, int[] nodes, int[] refs, int budgetLeaves) {
+    KdTree(Box bounds, CostModel cost, String builderName, int[] nodes, int[] refs, int budgetLeaves) {
         this.budgetLeaves = budgetLeaves;
         this.bounds = bounds;
-        this.grid = grid;
         this.cost = cost;
         this.builderName = builderName;
         this.nodes = nodes;
         this.refs = refs;
         this.axisBits = axisBits(bounds.dimension());
         this.leafMark = (1 << axisBits) - 1;
+    }
+
+    /**
+     * The split position of interior node {@code node} of a node array laid out as this class
+     * says: the one decoding, for hot loops that hold the array.
+     *
+     * @param nodes a tree's {@link #nodeArray()}
+     * @param node an interior node's index
+     * @return its split position
+     */
+    public static double splitOf(int[] nodes, int node) {
+        return Double.longBitsToDouble((long) nodes[3 * node + 2] << 32 | (nodes[3 * node + 1] & 0xffffffffL));
     }
 
     /**
@@ -89,7 +102,7 @@ public final class KdTree {
     public String builderName() { return builderName; }
 
     /** {@return the number of nodes, interior and leaf} */
-    public int nodeCount() { return nodes.length / 2; }
+    public int nodeCount() { return nodes.length / 3; }
 
     /**
      * Leaves the build made early because the reference budget ran out
@@ -98,28 +111,23 @@ public final class KdTree {
      */
     public int budgetLeaves() { return budgetLeaves; }
 
-    /** {@return the positions this tree's split planes are stored on} */
-    public SplitGrid grid() { return grid; }
-
     // ---- node access (small enough to be inlined into hot loops) ----
 
     /**
      * {@return whether {@code node} is a leaf}
      * @param node a node index
      */
-    public boolean isLeaf(int node) { return (nodes[2 * node + 1] & leafMark) == leafMark; }
+    public boolean isLeaf(int node) { return (nodes[3 * node] & leafMark) == leafMark; }
     /**
      * {@return the split axis of interior node {@code node}}
      * @param node an interior node's index
      */
-    public int axis(int node) { return nodes[2 * node + 1] & leafMark; }
+    public int axis(int node) { return nodes[3 * node] & leafMark; }
     /**
      * {@return the split plane's position on the axis of interior node {@code node}}
      * @param node an interior node's index
      */
-    public double split(int node) {
-        return grid.position(nodes[2 * node + 1] & leafMark, Float.intBitsToFloat(nodes[2 * node]));
-    }
+    public double split(int node) { return splitOf(nodes, node); }
     /**
      * {@return the left (lower) child of interior node {@code node}: always {@code node + 1}}
      * @param node an interior node's index
@@ -129,22 +137,22 @@ public final class KdTree {
      * {@return the upper child of interior node {@code node}}
      * @param node an interior node's index
      */
-    public int rightChild(int node) { return nodes[2 * node + 1] >>> axisBits; }
+    public int rightChild(int node) { return nodes[3 * node] >>> axisBits; }
     /**
      * {@return where the references of leaf {@code node} begin in {@link #refArray()}}
      * @param node a leaf node's index
      */
-    public int leafStart(int node) { return nodes[2 * node]; }
+    public int leafStart(int node) { return nodes[3 * node + 1]; }
     /**
      * {@return where the references of leaf {@code node} end (exclusive) in {@link #refArray()}}
      * @param node a leaf node's index
      */
-    public int leafEnd(int node) { return nodes[2 * node] + leafSize(node); }
+    public int leafEnd(int node) { return leafStart(node) + leafSize(node); }
     /**
      * {@return the number of primitive references in leaf {@code node}}
      * @param node a leaf node's index
      */
-    public int leafSize(int node) { return nodes[2 * node + 1] >>> axisBits; }
+    public int leafSize(int node) { return nodes[3 * node] >>> axisBits; }
     /**
      * {@return the i-th entry of the shared leaf reference array}
      * @param i an index into {@link #refArray()}
@@ -152,7 +160,7 @@ public final class KdTree {
     public int ref(int i) { return refs[i]; }
 
     /**
-     * {@return the nodes, two ints each (see the class comment)}: the raw array for flat hot loops; never modify it.
+     * {@return the nodes, three ints each (see the class comment)}: the raw array for flat hot loops; never modify it.
      */
     public int[] nodeArray() { return nodes; }
     /** {@return the shared leaf reference array (primitive indices), in leaf order}: the raw array; never modify it. */
@@ -197,7 +205,7 @@ public final class KdTree {
         return stats;
     }
 
-    /** {@return bytes held by the arrays (8 per node, 4 per reference, plus the arrays' headers)} */
+    /** {@return bytes held by the arrays (12 per node, 4 per reference, plus the arrays' headers)} */
     public long memoryBytes() {
         return 2 * 16L + 4L * nodes.length + 4L * refs.length;
     }

@@ -7,62 +7,45 @@ import org.kdtree.geom.Box;
  * Writes a kd-tree into flat arrays in depth-first order, as a builder's recursion emits it:
  * an interior node is followed by its whole left subtree, then its right child (whose index
  * is patched in with {@link #setRightChild}). Subtrees written by other writers (a parallel
- * build) are spliced in with {@link #append}. Split positions must lie on the tree's
- * {@link SplitGrid} (the build moves its planes there before it partitions).
+ * build) are spliced in with {@link #append}.
  */
 public final class KdTreeWriter {
-    /** Two ints per node, as {@link KdTree} stores them. */
-    private int[] nodes = new int[128];
+    /** Three ints per node, as {@link KdTree} stores them. */
+    private int[] nodes = new int[192];
     private int nodeCount;
     private int[] refs = new int[64];
     private int refCount;
     private int budgetLeaves;
-    private final Box root;
-    private final SplitGrid grid;
     private final int dimension, axisBits, leafMark, maxNode, maxLeafSize;
 
     /**
-     * A writer for a tree whose root voxel is {@code root}: it fixes the word's layout and the grid of split positions.
+     * A writer for a tree of {@code dimension} dimensions (1 .. {@link KdTree#MAX_DIMENSION}): it fixes the word's layout.
      *
-     * @param root the scene box, the root's voxel (1 .. {@link KdTree#MAX_DIMENSION} dimensions)
+     * @param dimension k, the tree's dimension
      */
-    public KdTreeWriter(Box root) {
-        this(root.copy(), new SplitGrid(root));
-    }
-
-    private KdTreeWriter(Box root, SplitGrid grid) {
-        this.root = root;
-        this.grid = grid;
-        this.dimension = root.dimension();
+    public KdTreeWriter(int dimension) {
+        this.dimension = dimension;
         axisBits = KdTree.axisBits(dimension);
         leafMark = (1 << axisBits) - 1;
         maxNode = KdTree.maxNode(dimension);
         maxLeafSize = -1 >>> axisBits;
     }
 
-    /** {@return a writer for a subtree of the same tree (same root voxel and grid), for another thread} */
-    public KdTreeWriter forSubtree() {
-        return new KdTreeWriter(root, grid);
-    }
-
-    /** {@return the grid split positions must lie on} */
-    public SplitGrid grid() { return grid; }
-
     /**
      * Writes an interior node and returns its index; its left child is the next node written.
      *
      * @param axis the split axis, 0 .. k-1
-     * @param xi the split plane's position on {@code axis}, a position of {@link #grid()}
+     * @param xi the split plane's position on {@code axis}
      * @return the new node's index
-     * @throws IllegalArgumentException if the axis is out of range or {@code xi} is not on the grid
      */
     public int interior(int axis, double xi) {
         if (axis < 0 || axis >= dimension)
             throw new IllegalArgumentException("axis " + axis + " out of range 0.." + (dimension - 1));
-        float code = grid.code(axis, xi);
         int n = newNode();
-        nodes[2 * n] = Float.floatToRawIntBits(code);
-        nodes[2 * n + 1] = axis; // right child patched later
+        long bits = Double.doubleToRawLongBits(xi);
+        nodes[3 * n] = axis; // right child patched later
+        nodes[3 * n + 1] = (int) bits;
+        nodes[3 * n + 2] = (int) (bits >>> 32);
         return n;
     }
 
@@ -74,7 +57,7 @@ public final class KdTreeWriter {
     public void setRightChild(int node) {
         int child = nodeCount;
         if (child > maxNode) throw new IllegalStateException("tree exceeds " + maxNode + " nodes");
-        nodes[2 * node + 1] = (child << axisBits) | (nodes[2 * node + 1] & leafMark);
+        nodes[3 * node] = (child << axisBits) | (nodes[3 * node] & leafMark);
     }
 
     /**
@@ -106,8 +89,9 @@ public final class KdTreeWriter {
         if (refCount + count > refs.length) refs = Arrays.copyOf(refs, Math.max(refs.length * 2, refCount + count));
         int n = newNode();
         System.arraycopy(prims, from, refs, refCount, count);
-        nodes[2 * n] = refCount;
-        nodes[2 * n + 1] = (count << axisBits) | leafMark;
+        nodes[3 * n] = (count << axisBits) | leafMark;
+        nodes[3 * n + 1] = refCount;
+        nodes[3 * n + 2] = 0;
         refCount += count;
         return n;
     }
@@ -115,11 +99,11 @@ public final class KdTreeWriter {
     /**
      * Appends the whole tree written by {@code sub} as the next subtree; returns its root index.
      *
-     * @param sub a finished writer of the same tree ({@link #forSubtree})
+     * @param sub a finished writer of the same dimension
      * @return the node index of the appended subtree's root
      */
     public int append(KdTreeWriter sub) {
-        if (!sub.grid.equals(grid)) throw new IllegalArgumentException("a subtree of another tree");
+        if (sub.dimension != dimension) throw new IllegalArgumentException("a subtree of another dimension");
         if ((long) nodeCount + sub.nodeCount > maxNode) throw new IllegalStateException("tree exceeds " + maxNode + " nodes");
         int base = nodeCount, refBase = refCount;
         if (refCount + sub.refCount > refs.length) refs = Arrays.copyOf(refs, Math.max(refs.length * 2, refCount + sub.refCount));
@@ -127,10 +111,11 @@ public final class KdTreeWriter {
         refCount += sub.refCount;
         for (int i = 0; i < sub.nodeCount; i++) {
             int n = newNode();
-            int first = sub.nodes[2 * i], w = sub.nodes[2 * i + 1];
+            int w = sub.nodes[3 * i];
             boolean leaf = (w & leafMark) == leafMark;
-            nodes[2 * n] = leaf ? first + refBase : first;
-            nodes[2 * n + 1] = leaf ? w : (((w >>> axisBits) + base) << axisBits) | (w & leafMark);
+            nodes[3 * n] = leaf ? w : (((w >>> axisBits) + base) << axisBits) | (w & leafMark);
+            nodes[3 * n + 1] = leaf ? sub.nodes[3 * i + 1] + refBase : sub.nodes[3 * i + 1];
+            nodes[3 * n + 2] = sub.nodes[3 * i + 2];
         }
         budgetLeaves += sub.budgetLeaves;
         return base;
@@ -143,7 +128,7 @@ public final class KdTreeWriter {
      * @param refs the expected number of leaf references
      */
     public void reserve(int nodes, int refs) {
-        if (this.nodes.length < 2L * nodes) this.nodes = Arrays.copyOf(this.nodes, 2 * nodes);
+        if (this.nodes.length < 3L * nodes) this.nodes = Arrays.copyOf(this.nodes, 3 * nodes);
         if (this.refs.length < refs) this.refs = Arrays.copyOf(this.refs, refs);
     }
 
@@ -160,18 +145,21 @@ public final class KdTreeWriter {
     /**
      * Finishes the tree.
      *
+     * @param rootVoxel the scene box, the root's voxel
      * @param cost the Kt and Ki the tree reports its expected cost with
      * @param builderName the name of the builder, for reports
      * @return the tree
      */
-    public KdTree finish(CostModel cost, String builderName) {
+    public KdTree finish(Box rootVoxel, CostModel cost, String builderName) {
+        if (rootVoxel.dimension() != dimension)
+            throw new IllegalArgumentException("a " + rootVoxel.dimension() + "-D root for a writer of another dimension");
         if (nodeCount == 0) leaf(new int[0], 0);
-        return new KdTree(root.copy(), grid, cost, builderName,
-                Arrays.copyOf(nodes, 2 * nodeCount), Arrays.copyOf(refs, refCount), budgetLeaves);
+        return new KdTree(rootVoxel.copy(), cost, builderName, Arrays.copyOf(nodes, 3 * nodeCount),
+                Arrays.copyOf(refs, refCount), budgetLeaves);
     }
 
     private int newNode() {
-        if (2 * nodeCount == nodes.length) nodes = Arrays.copyOf(nodes, Math.max(4, nodes.length * 2));
+        if (3 * nodeCount == nodes.length) nodes = Arrays.copyOf(nodes, Math.max(6, nodes.length * 2));
         return nodeCount++;
     }
 }

@@ -20,12 +20,10 @@ class TalkFiguresTest {
         for (TreeInspector.Interior n : in.interiors()) {
             assertThat(n.axis()).as("axis at depth %d", n.depth()).isEqualTo(n.depth() % 2);
             Box v = n.voxel();
-            double middle = 0.5 * (v.min(n.axis()) + v.max(n.axis()));
-            assertThat(n.split()).as("the grid position nearest the middle")
-                    .isEqualTo(tree.grid().nearest(n.axis(), middle, v.min(n.axis()), v.max(n.axis())));
+            assertThat(n.split()).isEqualTo(0.5 * (v.min(n.axis()) + v.max(n.axis())));
         }
-        // the scene box is [1, 9.4] x [1, 9]: first cut x = 5.2 (as a float: the tree stores planes in 4 bytes), then y = 5
-        assertThat(tree.split(0)).isEqualTo((float) 5.2);
+        // the scene box is [1, 9.4] x [1, 9]: first cut x = 5.2, then y = 5 on both sides
+        assertThat(tree.split(0)).isEqualTo(5.2);
         assertThat(tree.split(1)).isEqualTo(5.0);
         assertThat(tree.split(tree.rightChild(0))).isEqualTo(5.0);
     }
@@ -51,12 +49,9 @@ class TalkFiguresTest {
             boolean onABound = false;
             for (int i = 0; i < scene.size(); i++) {
                 scene.clip(i, n.voxel(), clip);
-                int a = n.axis();
-                if (!clip.isEmpty() && (sah.grid().atOrBelow(a, clip.min(a)) == n.split()
-                        || sah.grid().atOrAbove(a, clip.max(a)) == n.split())) onABound = true;
+                if (!clip.isEmpty() && (clip.min(n.axis()) == n.split() || clip.max(n.axis()) == n.split())) onABound = true;
             }
-            assertThat(onABound).as("SAH plane %s=%s lies on an object's bound, rounded out to the grid", n.axis(), n.split())
-                    .isTrue();
+            assertThat(onABound).as("SAH plane %s=%s lies on an object's bound", n.axis(), n.split()).isTrue();
         }
         double cost = sah.stats().expectedCost();
         assertThat(cost).isLessThan(new MedianPlaneBuilder().minPrimitives(1).build(scene).stats().expectedCost());

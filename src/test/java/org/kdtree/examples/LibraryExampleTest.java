@@ -19,7 +19,7 @@ class LibraryExampleTest {
         } finally {
             System.setOut(old);
         }
-        assertThat(out.toString()).startsWith("hit triangle ").contains("nodes: 62453", "expected cost: 205.30");
+        assertThat(out.toString()).startsWith("hit triangle ").contains("nodes: 33629", "expected cost: 210.75");
     }
 
     @Test void theReadmeQuotesTheExampleAsItIs() throws Exception {

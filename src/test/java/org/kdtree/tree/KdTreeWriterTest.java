@@ -18,9 +18,9 @@ class KdTreeWriterTest {
     }
 
     @Test void depthFirstLayoutWithRightChildIndices() {
-        KdTreeWriter w = new KdTreeWriter(Box.of2(0, 0, 4, 4));
+        KdTreeWriter w = new KdTreeWriter(2);
         writeSample(w);
-        KdTree t = w.finish(CostModel.WALD_HAVRAN, "test");
+        KdTree t = w.finish(Box.of2(0, 0, 4, 4), CostModel.WALD_HAVRAN, "test");
         assertThat(t.nodeCount()).isEqualTo(5);
         assertThat(t.isLeaf(0)).isFalse();
         assertThat(t.axis(0)).isZero();
@@ -39,9 +39,9 @@ class KdTreeWriterTest {
     }
 
     @Test void expectedCostFollowsTheRecursiveFormula() {
-        KdTreeWriter w = new KdTreeWriter(Box.of2(0, 0, 4, 4));
+        KdTreeWriter w = new KdTreeWriter(2);
         writeSample(w);
-        KdTree t = w.finish(new CostModel(15, 20), "test");
+        KdTree t = w.finish(Box.of2(0, 0, 4, 4), new CostModel(15, 20), "test");
         // perimeters: root 16; left [0,1]x[0,4] 10; right [1,4]x[0,4] 14; its children [1,4]x[0,2] 10 and [1,4]x[2,4] 10
         double right = 15 + 10.0 / 14 * (2 * 20) + 10.0 / 14 * 0;
         double expected = 15 + 10.0 / 16 * (1 * 20) + 14.0 / 16 * right;
@@ -49,14 +49,14 @@ class KdTreeWriterTest {
     }
 
     @Test void appendSplicesASubtreeWrittenElsewhere() {
-        KdTreeWriter sub = new KdTreeWriter(Box.of2(0, 0, 4, 4));
+        KdTreeWriter sub = new KdTreeWriter(2);
         writeSample(sub);
-        KdTreeWriter w = new KdTreeWriter(Box.of2(0, 0, 4, 4));
+        KdTreeWriter w = new KdTreeWriter(2);
         int root = w.interior(0, 0.5);
         w.leaf(new int[] {7}, 1);
         w.setRightChild(root);
         w.append(sub);
-        KdTree t = w.finish(CostModel.WALD_HAVRAN, "test");
+        KdTree t = w.finish(Box.of2(0, 0, 4, 4), CostModel.WALD_HAVRAN, "test");
         int r = t.rightChild(0);
         assertThat(t.split(r)).isEqualTo(1);
         assertThat(t.leafPrimitives(t.leftChild(r))).containsExactly(0);
@@ -80,34 +80,34 @@ class KdTreeWriterTest {
     @Test void aSixtyFourDimensionalTreeKeepsItsLastAxisApartFromItsLeaves() {
         double[] lo = new double[64], hi = new double[64];
         java.util.Arrays.fill(hi, 1);
-        KdTreeWriter w = new KdTreeWriter(new Box(lo, hi));
+        KdTreeWriter w = new KdTreeWriter(64);
         int root = w.interior(63, 0.5);
         w.leaf(new int[] {0}, 1);
         w.setRightChild(root);
         w.leaf(new int[] {1}, 1);
-        KdTree t = w.finish(CostModel.WALD_HAVRAN, "test");
+        KdTree t = w.finish(new Box(lo, hi), CostModel.WALD_HAVRAN, "test");
         assertThat(t.isLeaf(0)).isFalse();
         assertThat(t.axis(0)).isEqualTo(63);
         assertThat(t.leafPrimitives(t.rightChild(0))).containsExactly(1);
-        org.assertj.core.api.Assertions.assertThatThrownBy(() -> new KdTreeWriter(new Box(lo, hi)).interior(64, 0))
+        org.assertj.core.api.Assertions.assertThatThrownBy(() -> new KdTreeWriter(64).interior(64, 0))
                 .hasMessageContaining("out of range");
     }
 
-    @Test void aNodeTakesEightBytesAndItsPlaneIsExactlyTheGridPositionWritten() {
-        Box root = Box.of2(0, 0, 3, 3);
-        KdTreeWriter w = new KdTreeWriter(root);
-        double x = w.grid().nearest(0, 0.1, 0, 3); // 0.1 is no float, so not on the grid: its float is
-        assertThat(x).isNotEqualTo(0.1).isEqualTo((float) 0.1);
-        int n = w.interior(0, x);
+    @Test void aNodeTakesTwelveBytesAndKeepsItsPlaneToTheBit() {
+        KdTreeWriter w = new KdTreeWriter(2);
+        int root = w.interior(0, 0.1);           // no float: a 4-byte plane could not hold it
         w.leaf(new int[] {0}, 1);
-        w.setRightChild(n);
+        w.setRightChild(root);
+        int inner = w.interior(1, -0.0);
         w.leaf(new int[] {1, 2}, 2);
-        KdTree t = w.finish(CostModel.WALD_HAVRAN, "test");
-        assertThat(t.split(0)).isEqualTo(x);
-        assertThat(t.memoryBytes()).isEqualTo(2 * 16 + 8L * 3 + 4L * 3);
-        org.assertj.core.api.Assertions.assertThatThrownBy(() -> new KdTreeWriter(root).interior(0, 0.1))
-                .hasMessageContaining("not a split position");
-        org.assertj.core.api.Assertions.assertThatThrownBy(() -> new KdTreeWriter(root).interior(0, Math.nextUp(x)))
-                .hasMessageContaining("not a split position");
+        w.setRightChild(inner);
+        w.leaf(new int[0], 0);
+        KdTree t = w.finish(Box.of2(-1, -1, 4, 4), CostModel.WALD_HAVRAN, "test");
+        assertThat(t.split(0)).isEqualTo(0.1);
+        assertThat(Double.doubleToRawLongBits(t.split(t.rightChild(0)))).isEqualTo(Double.doubleToRawLongBits(-0.0));
+        assertThat(KdTree.splitOf(t.nodeArray(), 0)).isEqualTo(0.1);
+        assertThat(t.memoryBytes()).isEqualTo(2 * 16 + 12L * 5 + 4L * 3);
+        assertThat(t.leafStart(t.leftChild(t.rightChild(0)))).isEqualTo(1);
+        assertThat(t.leafSize(t.leftChild(t.rightChild(0)))).isEqualTo(2);
     }
 }
