@@ -159,6 +159,8 @@ public class SahBuilder extends KdTreeBuilder {
         return this;
     }
 
+    @Override public SahBuilder costModel(CostModel model) { super.costModel(model); return this; }
+
     @Override public SahBuilder maxDepth(int depth) { super.maxDepth(depth); return this; }
 
     @Override public SahBuilder depthFactor(double c) { super.depthFactor(c); return this; }

@@ -9,6 +9,7 @@ import java.util.Arrays;
 import java.util.Locale;
 import java.util.concurrent.Callable;
 import org.kdtree.build.KdTreeBuilder;
+import org.kdtree.build.Setting;
 import org.kdtree.limits.Limits;
 import org.kdtree.shape.ProceduralScenes;
 import org.kdtree.shape.TriangleMesh;
@@ -76,7 +77,7 @@ public final class RaycastCommand implements Callable<Integer> {
         Limits.THREADS.check("--threads", threads);
         Limits.GRID.check("--grid", grid);
         TriangleMesh scene = ProceduralScenes.grid(CommandFiles.readMesh(mesh, "raycast"), grid);
-        KdTreeBuilder builder = options.create().threads(threads);
+        KdTreeBuilder builder = options.spec().with(Setting.THREADS, threads).create();
         if (raysFile != null) return traceFile(scene, builder);
         return benchmark(scene, builder);
     }

@@ -5,6 +5,7 @@ import java.util.Arrays;
 import java.util.Locale;
 import java.util.concurrent.Callable;
 import org.kdtree.build.KdTreeBuilder;
+import org.kdtree.build.Setting;
 import org.kdtree.io.SceneLoader;
 import org.kdtree.limits.Limits;
 import org.kdtree.render.RenderJob;
@@ -53,7 +54,7 @@ public final class StatsCommand implements Callable<Integer> {
             if (!(prims instanceof TriangleMesh mesh)) throw new IllegalArgumentException("--grid applies to OBJ meshes only");
             prims = ProceduralScenes.grid(mesh, grid);
         }
-        KdTreeBuilder builder = options.create().threads(threads);
+        KdTreeBuilder builder = options.spec().with(Setting.THREADS, threads).create();
         double[] ms = new double[runs];
         KdTree tree = null;
         try (ProgressBar bar = progress.bar(warmup + runs, "builds")) {

@@ -4,6 +4,7 @@ import java.util.ArrayList;
 import java.util.Arrays;
 import java.util.List;
 import org.kdtree.build.KdTreeBuilder;
+import org.kdtree.build.Setting;
 import org.kdtree.shape.TriangleMesh;
 import org.kdtree.traverse.TraversalStats;
 import org.kdtree.traverse.TriangleIntersector;
@@ -44,7 +45,7 @@ public final class Tradeoff {
      * @return its build time, tree quality and trace speed
      */
     public TradeoffResult run(Variant v) {
-        KdTreeBuilder builder = v.create().threads(threads);
+        KdTreeBuilder builder = v.spec().with(Setting.THREADS, threads).create();
         KdTree tree = builder.build(mesh);
         double[] buildMs = new double[runs];
         for (int i = 0; i < runs; i++) {
