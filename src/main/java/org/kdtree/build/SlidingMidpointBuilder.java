@@ -50,13 +50,13 @@ public class SlidingMidpointBuilder extends KdTreeBuilder {
         if (node.size() <= leafSize || node.depth() >= context.depthCap()) return true;
         SplitPlane plane = slidingMidpoint(node);
         if (plane == null) return true; // every centre coincides: no plane separates them
-        node.plan(plane, Double.NaN);
+        node.choose(plane);
         return false;
     }
 
     @Override protected SplitPlane findPlane(BuildContext context, BuildNode node) {
-        SplitPlane planned = node.plannedPlane();
-        return planned != null ? planned : slidingMidpoint(node);
+        SplitPlane chosen = node.chosen();
+        return chosen != null ? chosen : slidingMidpoint(node);
     }
 
     /** The sliding midpoint plane of the node, or null when all centres coincide. */
