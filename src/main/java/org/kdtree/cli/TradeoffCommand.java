@@ -76,10 +76,9 @@ public final class TradeoffCommand implements Callable<Integer> {
         Limits.RAYS_PER_TRIANGLE.check("--chart-rpt", chartRaysPerTriangle);
         TriangleMesh m = CommandFiles.readMesh(mesh, "tradeoff");
         if (grid > 1) m = ProceduralScenes.grid(m, grid);
-        var bounds = m.bounds();
         RaySet set = switch (rays.toUpperCase(Locale.ROOT)) {
-            case "P" -> RaySet.primary(bounds, Math.max(1, (int) Math.round(Math.sqrt(rayCount))));
-            case "R" -> RaySet.random(bounds, rayCount);
+            case "P" -> RaySet.primary(m, Math.max(1, (int) Math.round(Math.sqrt(rayCount))));
+            case "R" -> RaySet.random(m, rayCount);
             default -> throw new IllegalArgumentException("--rays must be P or R, got " + rays);
         };
         List<Variant> variants = quick ? Variant.quick() : Variant.all();

@@ -34,9 +34,14 @@ class TradeoffTest {
         TriangleMesh m = ProceduralScenes.surface(400, 5);
         TriangleIntersector tri = new TriangleIntersector(m);
         var tree = new org.kdtree.build.SahBuilder().build(m);
-        for (RaySet set : new RaySet[] {RaySet.primary(tree.bounds(), 30), RaySet.random(tree.bounds(), 500)}) {
-            Tracing.Checksum kd = Tracing.trace(new Traverser(tree, tri), set);
-            Tracing.Checksum brute = Tracing.trace(new BruteForce(tri), set);
+        for (RaySet set : new RaySet[] {RaySet.primary(m, 30), RaySet.random(m, 500)}) {
+            RayBatch.Checksum kd, brute;
+            try (RayBatch batch = new RayBatch(2, () -> new Traverser(tree, tri))) {
+                kd = batch.trace(set);
+            }
+            try (RayBatch batch = new RayBatch(1, () -> new BruteForce(tri))) {
+                brute = batch.trace(set);
+            }
             assertThat(kd.hits()).as(set.name()).isEqualTo(brute.hits()).isPositive();
             assertThat(kd.tSum()).isCloseTo(brute.tSum(), org.assertj.core.data.Offset.offset(1e-9 * brute.tSum()));
         }
