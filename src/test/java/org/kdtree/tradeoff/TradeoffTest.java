@@ -60,6 +60,17 @@ class TradeoffTest {
         assertThat(Files.size(png)).isGreaterThan(1000);
     }
 
+    /** The course example is declared in META-INF/services only: the study lists it, as it would a student's builder. */
+    @Test void aBuilderOnTheClassPathIsAVariant() throws IOException {
+        assertThat(Variant.all()).anyMatch(v -> v.name().equals("centre-midpoint") && v.spec().builder().equals("centre-midpoint"));
+        Path obj = writeObj(ProceduralScenes.surface(200, 7));
+        Path csv = dir.resolve("cm.csv"), png = dir.resolve("cm.png");
+        int code = Main.run("tradeoff", obj.toString(), "--variants", "centre-midpoint", "--ray-count", "1000", "--runs", "1",
+                "--counted-rays", "100", "--csv", csv.toString(), "--chart", png.toString(), "--quiet");
+        assertThat(code).isZero();
+        assertThat(Files.readAllLines(csv)).hasSize(2).anyMatch(l -> l.startsWith("centre-midpoint,"));
+    }
+
     @Test void unknownVariantIsAClearError() throws IOException {
         Path obj = writeObj(ProceduralScenes.surface(50, 7));
         assertThat(Main.run("tradeoff", obj.toString(), "--variants", "nonsense")).isEqualTo(2);
