@@ -1,11 +1,14 @@
 package org.kdtree.bench;
 
 import java.util.concurrent.TimeUnit;
+import java.util.LinkedHashMap;
+import java.util.Map;
+import org.kdtree.build.BuilderSpec;
+import org.kdtree.build.Builders;
 import org.kdtree.build.KdTreeBuilder;
-import org.kdtree.build.MedianPlaneBuilder;
-import org.kdtree.build.ObjectMedianBuilder;
 import org.kdtree.build.Quality;
 import org.kdtree.build.SahBuilder;
+import org.kdtree.build.Setting;
 import org.kdtree.shape.TriangleMesh;
 import org.kdtree.tree.KdTree;
 import org.openjdk.jmh.annotations.Benchmark;
@@ -51,7 +54,7 @@ public class BuildBenchmark {
     @Setup(Level.Trial)
     public void setUp() {
         mesh = BenchScenes.make(scene, n);
-        kd = builder(builder).threads(threads);
+        kd = spec(builder).with(Setting.THREADS, threads).create();
     }
 
     @Benchmark
@@ -59,17 +62,31 @@ public class BuildBenchmark {
         return kd.build(mesh);
     }
 
+    /** The builders the benchmarks measure, by their parameter name: each a {@link BuilderSpec}. */
+    static final Map<String, BuilderSpec> SPECS = specs();
+
+    private static Map<String, BuilderSpec> specs() {
+        BuilderSpec sah = BuilderSpec.of("sah");
+        Map<String, BuilderSpec> m = new LinkedHashMap<>();
+        m.put("sah-naive", sah.with(Setting.ALGORITHM, SahBuilder.Algorithm.NAIVE));
+        m.put("sah-sorted", sah.with(Setting.ALGORITHM, SahBuilder.Algorithm.SORTED));
+        m.put("sah-event", sah.with(Setting.ALGORITHM, SahBuilder.Algorithm.EVENT));
+        m.put("sah-binned", sah.with(Setting.ALGORITHM, SahBuilder.Algorithm.BINNED));
+        m.put("sah-balanced", sah.with(Setting.QUALITY, Quality.BALANCED));
+        m.put("sah-fast", sah.with(Setting.QUALITY, Quality.FAST));
+        for (String name : Builders.names()) m.putIfAbsent(name, BuilderSpec.of(name));
+        return m;
+    }
+
+    /** The spec of the benchmark parameter {@code name}: one of {@link #SPECS}, or any registered builder's name. */
+    static BuilderSpec spec(String name) {
+        BuilderSpec spec = SPECS.get(name);
+        if (spec == null) throw new IllegalArgumentException("unknown builder " + name + "; known: " + SPECS.keySet());
+        return spec;
+    }
+
+    /** A new builder of the benchmark parameter {@code name} ({@link #spec}). */
     static KdTreeBuilder builder(String name) {
-        return switch (name) {
-            case "sah-naive" -> new SahBuilder().algorithm(SahBuilder.Algorithm.NAIVE);
-            case "sah-sorted" -> new SahBuilder().algorithm(SahBuilder.Algorithm.SORTED);
-            case "sah-event" -> new SahBuilder().algorithm(SahBuilder.Algorithm.EVENT);
-            case "sah-binned" -> new SahBuilder().algorithm(SahBuilder.Algorithm.BINNED);
-            case "sah-balanced" -> new SahBuilder().quality(Quality.BALANCED);
-            case "sah-fast" -> new SahBuilder().quality(Quality.FAST);
-            case "median-plane" -> new MedianPlaneBuilder();
-            case "object-median" -> new ObjectMedianBuilder();
-            default -> throw new IllegalArgumentException("unknown builder " + name);
-        };
+        return spec(name).create();
     }
 }

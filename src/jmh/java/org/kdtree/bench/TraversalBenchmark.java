@@ -3,7 +3,7 @@ package org.kdtree.bench;
 import java.util.concurrent.TimeUnit;
 import org.kdtree.shape.TriangleMesh;
 import org.kdtree.tradeoff.RaySet;
-import org.kdtree.tradeoff.Tracing;
+import org.kdtree.tradeoff.RayBatch;
 import org.kdtree.traverse.TriangleIntersector;
 import org.kdtree.traverse.Traverser;
 import org.openjdk.jmh.annotations.Benchmark;
@@ -17,6 +17,7 @@ import org.openjdk.jmh.annotations.Param;
 import org.openjdk.jmh.annotations.Scope;
 import org.openjdk.jmh.annotations.Setup;
 import org.openjdk.jmh.annotations.State;
+import org.openjdk.jmh.annotations.TearDown;
 import org.openjdk.jmh.annotations.Warmup;
 
 /**
@@ -44,19 +45,25 @@ public class TraversalBenchmark {
     @Param({"sah-event", "sah-binned", "median-plane", "object-median"})
     public String builder;
 
-    private Traverser traverser;
+    private RayBatch batch;
     private RaySet set;
 
     @Setup(Level.Trial)
     public void setUp() {
         TriangleMesh m = BenchScenes.make(mesh, n);
         var tree = BuildBenchmark.builder(builder).build(m);
-        traverser = new Traverser(tree, new TriangleIntersector(m));
-        set = rays.equals("P") ? RaySet.primary(tree.bounds(), 1024) : RaySet.random(tree.bounds(), 1_000_000);
+        Traverser traverser = new Traverser(tree, new TriangleIntersector(m));
+        batch = new RayBatch(1, () -> traverser);
+        set = rays.equals("P") ? RaySet.primary(m, RaySet.SPEC_IMAGE) : RaySet.random(m, RaySet.SPEC_RANDOM_RAYS);
+    }
+
+    @TearDown(Level.Trial)
+    public void tearDown() {
+        batch.close();
     }
 
     @Benchmark
-    public Tracing.Checksum trace() {
-        return Tracing.trace(traverser, set);
+    public RayBatch.Checksum trace() {
+        return batch.trace(set);
     }
 }

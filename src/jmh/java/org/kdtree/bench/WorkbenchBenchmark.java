@@ -3,7 +3,7 @@ package org.kdtree.bench;
 import java.awt.Graphics2D;
 import java.awt.image.BufferedImage;
 import java.util.concurrent.TimeUnit;
-import org.kdtree.gui.BuilderSettings;
+import org.kdtree.build.BuilderSpec;
 import org.kdtree.gui.BuiltinScenes;
 import org.kdtree.gui.TreePainter;
 import org.kdtree.gui.ViewTransform;
@@ -48,11 +48,11 @@ public class WorkbenchBenchmark {
     }
 
     @Benchmark public KdTree rebuild() {
-        return BuilderSettings.DEFAULT.create().build(shapes);
+        return BuilderSpec.of("sah").create().build(shapes);
     }
 
     @Benchmark public BufferedImage rebuildAndRepaint() {
-        KdTree tree = BuilderSettings.DEFAULT.create().build(shapes);
+        KdTree tree = BuilderSpec.of("sah").create().build(shapes);
         Graphics2D g = image.createGraphics();
         ViewTransform v = new ViewTransform().fit(tree.bounds(), image.getWidth(), image.getHeight());
         TreePainter.paint(g, image.getWidth(), image.getHeight(), shapes, tree, v, TreePainter.Options.PLAIN);

@@ -20,8 +20,8 @@ public class BuildNode {
     private final int k;
 
     private long budget = Long.MAX_VALUE;
-    private SplitPlane plannedPlane;
-    private double plannedCost = Double.NaN;
+    /** The plane a builder of this package chose while deciding terminate, for its findPlane; null until then. */
+    private SplitPlane chosen;
 
     /**
      * @param voxel   this node's voxel (not copied)
@@ -114,21 +114,16 @@ public class BuildNode {
     int base() { return base; }
 
     /**
-     * Remembers the plane a builder chose while deciding {@code terminate}, so that
-     * {@code findPlane} need not search again (the SAH finds its best plane once).
-     * @param plane the chosen split plane
-     * @param cost its SAH cost
+     * Remembers the plane this package's builder chose while deciding {@code terminate}, so that
+     * its {@code findPlane} need not search again (the SAH finds its best plane once). Not part of
+     * the contract a builder outside the package implements: it stays out of the public API.
      */
-    public void plan(SplitPlane plane, double cost) {
-        this.plannedPlane = plane;
-        this.plannedCost = cost;
+    void choose(SplitPlane plane) {
+        this.chosen = plane;
     }
 
-    /** {@return the plane remembered by {@link #plan}, or null} */
-    public SplitPlane plannedPlane() { return plannedPlane; }
-
-    /** {@return the cost remembered by {@link #plan}, or NaN} */
-    public double plannedCost() { return plannedCost; }
+    /** The plane remembered by {@link #choose}, or null. */
+    SplitPlane chosen() { return chosen; }
 
     /** Lets go of the arrays once the children are made, so deep recursions hold less memory. */
     protected void release() {

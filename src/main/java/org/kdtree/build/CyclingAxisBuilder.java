@@ -1,6 +1,7 @@
 package org.kdtree.build;
 
 import org.kdtree.limits.Limits;
+import org.kdtree.tree.CostModel;
 
 /**
  * The talk's basic methods (section 3.2): the axis cycles with the depth,
@@ -38,10 +39,19 @@ public abstract class CyclingAxisBuilder extends KdTreeBuilder {
         return this;
     }
 
-    @Override public CyclingAxisBuilder maxDepth(int depth) {
-        super.maxDepth(depth);
-        return this;
-    }
+    // The base class's setters, returning this type, so that a chain may end in minPrimitives.
+
+    @Override public CyclingAxisBuilder maxDepth(int depth) { super.maxDepth(depth); return this; }
+
+    @Override public CyclingAxisBuilder depthFactor(double c) { super.depthFactor(c); return this; }
+
+    @Override public CyclingAxisBuilder referenceBudget(int perPrimitive) { super.referenceBudget(perPrimitive); return this; }
+
+    @Override public CyclingAxisBuilder costModel(CostModel model) { super.costModel(model); return this; }
+
+    @Override public CyclingAxisBuilder perfectSplits(boolean on) { super.perfectSplits(on); return this; }
+
+    @Override public CyclingAxisBuilder threads(int n) { super.threads(n); return this; }
 
     @Override public String describeSettings() {
         return "Kmintri=" + minPrimitives + " " + super.describeSettings();

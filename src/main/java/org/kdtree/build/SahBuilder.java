@@ -16,32 +16,67 @@ import org.kdtree.tree.KdTreeWriter;
  * {@code 8 + 1.3 log2 N}, perfect splits on, plane search {@link Algorithm#EVENT}.
  */
 public class SahBuilder extends KdTreeBuilder {
-    /** How the best plane of a node is found. Every algorithm builds the same tree. */
+    /**
+     * How the best plane of a node is found. Every exact algorithm builds the same tree. Each
+     * carries its own strategy: the plane search the recursion runs per node, and, for EVENT and
+     * BINNED, the primitive-array engine that builds the very tree of that recursion.
+     */
     public enum Algorithm {
         /** Count each candidate by scanning all primitives: O(N^2). */
-        NAIVE(new NaivePlaneSearch()),
+        NAIVE {
+            @Override PlaneSearch search(SahBuilder sah) { return NAIVE_SEARCH; }
+        },
         /** Sort each node's events, then sweep: O(N log^2 N). */
-        SORTED(new SortedPlaneSearch()),
+        SORTED {
+            @Override PlaneSearch search(SahBuilder sah) { return SORTED_SEARCH; }
+        },
         /**
          * Sort the events once at the root, keep them sorted through every split: O(N log N), in
          * the primitive-array {@link EventEngine}. A subclass of this builder (which may override
          * terminate or findPlane) gets the recursion with the sorted search: the same tree.
          */
-        EVENT(new SortedPlaneSearch()),
+        EVENT {
+            @Override PlaneSearch search(SahBuilder sah) { return SORTED_SEARCH; }
+
+            @Override boolean hasEngine() { return true; }
+
+            @Override void runEngine(SahBuilder sah, BuildContext context, Box rootVoxel, KdTreeWriter out) {
+                new EventEngine(sah, context).build(rootVoxel, out);
+            }
+        },
         /**
          * Not exact: only the boundaries of {@link #bins()} equal bins per axis are candidates,
          * counted from histograms; nodes smaller than {@link #exactBelow()} get the exact sweep.
-         * No sorting, at some cost in tree quality.
+         * No sorting, at some cost in tree quality; the primitive-array {@link BinnedEngine}.
          */
-        BINNED(null);
+        BINNED {
+            @Override PlaneSearch search(SahBuilder sah) { return new BinnedPlaneSearch(sah.bins(), sah.exactBelow()); }
 
-        private final PlaneSearch search;
+            @Override boolean hasEngine() { return true; }
 
-        Algorithm(PlaneSearch search) { this.search = search; }
+            @Override void runEngine(SahBuilder sah, BuildContext context, Box rootVoxel, KdTreeWriter out) {
+                new BinnedEngine(sah, context).build(rootVoxel, out);
+            }
+
+            @Override public boolean exact() { return false; }
+        };
+
+        /** The plane search the recursion runs at each node, under {@code sah}'s settings. */
+        abstract PlaneSearch search(SahBuilder sah);
+
+        /** Whether a primitive-array engine builds the whole tree (else the recursion does). */
+        boolean hasEngine() { return false; }
+
+        /** Builds the whole tree with the engine; only when {@link #hasEngine()}. */
+        void runEngine(SahBuilder sah, BuildContext context, Box rootVoxel, KdTreeWriter out) {
+            throw new IllegalStateException(this + " has no engine");
+        }
 
         /** {@return whether this algorithm finds the plane of least cost} (NAIVE, SORTED and EVENT do). */
-        public boolean exact() { return this != BINNED; }
+        public boolean exact() { return true; }
     }
+
+    private static final PlaneSearch NAIVE_SEARCH = new NaivePlaneSearch(), SORTED_SEARCH = new SortedPlaneSearch();
 
     /** The default number of bins per axis of {@link Algorithm#BINNED}. */
     public static final int DEFAULT_BINS = 32;
@@ -61,14 +96,10 @@ public class SahBuilder extends KdTreeBuilder {
         SahCost sah = new SahCost(costModel(), emptyWeight, node.voxel());
         if (!(sah.halfArea() > 0)) return true;
         SahSplit best = new SahSplit();
-        search(context).search(node, sah, best);
+        algorithm.search(this).search(node, sah, best);
         if (!best.found() || best.cost() >= sah.leafCost(node.size())) return true;
-        node.plan(best.plane(), best.cost());
+        node.choose(best.plane());
         return false;
-    }
-
-    private PlaneSearch search(BuildContext context) {
-        return algorithm == Algorithm.BINNED ? new BinnedPlaneSearch(bins, exactBelow) : algorithm.search;
     }
 
     /**
@@ -77,16 +108,15 @@ public class SahBuilder extends KdTreeBuilder {
      * override terminate or findPlane) always gets the recursion.
      */
     @Override protected void construct(BuildContext context, Box rootVoxel, KdTreeWriter out) {
-        boolean engine = getClass() == SahBuilder.class && EventEngine.applies(context);
-        if (engine && algorithm == Algorithm.EVENT) new EventEngine(this, context).build(rootVoxel, out);
-        else if (engine && algorithm == Algorithm.BINNED) new BinnedEngine(this, context).build(rootVoxel, out);
+        if (getClass() == SahBuilder.class && algorithm.hasEngine() && EventEngine.applies(context))
+            algorithm.runEngine(this, context, rootVoxel, out);
         else super.construct(context, rootVoxel, out);
     }
 
     @Override protected SplitPlane findPlane(BuildContext context, BuildNode node) {
-        if (node.plannedPlane() == null && terminate(context, node))
+        if (node.chosen() == null && terminate(context, node))
             throw new IllegalStateException("findPlane called on a node the SAH would make a leaf");
-        return node.plannedPlane();
+        return node.chosen();
     }
 
     /** {@return lambda, the weight of a plane that leaves one child empty} (default 0.8; 1 disables the bonus). */
@@ -159,6 +189,8 @@ public class SahBuilder extends KdTreeBuilder {
         return this;
     }
 
+    @Override public SahBuilder costModel(CostModel model) { super.costModel(model); return this; }
+
     @Override public SahBuilder maxDepth(int depth) { super.maxDepth(depth); return this; }
 
     @Override public SahBuilder depthFactor(double c) { super.depthFactor(c); return this; }
@@ -179,6 +211,6 @@ public class SahBuilder extends KdTreeBuilder {
 
     @Override public String describeSettings() {
         return "lambda=" + emptyWeight + " algorithm=" + algorithm.name().toLowerCase()
-                + (algorithm == Algorithm.BINNED ? " bins=" + bins + " exactBelow=" + exactBelow : "") + " " + super.describeSettings();
+                + (!algorithm.exact() ? " bins=" + bins + " exactBelow=" + exactBelow : "") + " " + super.describeSettings();
     }
 }

@@ -1,6 +1,8 @@
 package org.kdtree.build;
 
 import org.kdtree.geom.Box;
+import org.kdtree.limits.Limits;
+import org.kdtree.tree.CostModel;
 import org.kdtree.geom.SplitPlane;
 
 /**
@@ -40,8 +42,7 @@ public class SlidingMidpointBuilder extends KdTreeBuilder {
      * @return this builder
      */
     public SlidingMidpointBuilder leafSize(int n) {
-        if (n < 1 || n > 1 << 16) throw new IllegalArgumentException("leaf size must be in 1..65536, got " + n);
-        this.leafSize = n;
+        this.leafSize = Limits.LEAF_SIZE.check("leafSize", n);
         return this;
     }
 
@@ -49,13 +50,13 @@ public class SlidingMidpointBuilder extends KdTreeBuilder {
         if (node.size() <= leafSize || node.depth() >= context.depthCap()) return true;
         SplitPlane plane = slidingMidpoint(node);
         if (plane == null) return true; // every centre coincides: no plane separates them
-        node.plan(plane, Double.NaN);
+        node.choose(plane);
         return false;
     }
 
     @Override protected SplitPlane findPlane(BuildContext context, BuildNode node) {
-        SplitPlane planned = node.plannedPlane();
-        return planned != null ? planned : slidingMidpoint(node);
+        SplitPlane chosen = node.chosen();
+        return chosen != null ? chosen : slidingMidpoint(node);
     }
 
     /** The sliding midpoint plane of the node, or null when all centres coincide. */
@@ -102,6 +103,20 @@ public class SlidingMidpointBuilder extends KdTreeBuilder {
         }
         return best;
     }
+
+    // The base class's setters, returning this type, so that a chain may end in leafSize.
+
+    @Override public SlidingMidpointBuilder maxDepth(int depth) { super.maxDepth(depth); return this; }
+
+    @Override public SlidingMidpointBuilder depthFactor(double c) { super.depthFactor(c); return this; }
+
+    @Override public SlidingMidpointBuilder referenceBudget(int perPrimitive) { super.referenceBudget(perPrimitive); return this; }
+
+    @Override public SlidingMidpointBuilder costModel(CostModel model) { super.costModel(model); return this; }
+
+    @Override public SlidingMidpointBuilder perfectSplits(boolean on) { super.perfectSplits(on); return this; }
+
+    @Override public SlidingMidpointBuilder threads(int n) { super.threads(n); return this; }
 
     @Override public String describeSettings() {
         return "leafSize=" + leafSize + " " + super.describeSettings();

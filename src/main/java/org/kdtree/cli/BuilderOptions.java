@@ -1,18 +1,16 @@
 package org.kdtree.cli;
 
-import org.kdtree.build.Builders;
-import org.kdtree.build.CyclingAxisBuilder;
+import org.kdtree.build.BuilderSpec;
 import org.kdtree.build.KdTreeBuilder;
 import org.kdtree.build.Quality;
 import org.kdtree.build.SahBuilder;
-import org.kdtree.limits.Limits;
-import org.kdtree.tree.CostModel;
+import org.kdtree.build.Setting;
 import picocli.CommandLine.Option;
 
-/** The builder options every command shares (a picocli mixin). */
+/** The builder options every command shares (a picocli mixin): they fill a {@link BuilderSpec}. */
 public final class BuilderOptions {
     @Option(names = {"-b", "--builder"}, defaultValue = "sah",
-            description = "Builder: sah, median-plane, object-median, or a registered name (default: ${DEFAULT-VALUE}).")
+            description = "Builder: sah, median-plane, object-median, sliding-midpoint, or a registered name (default: ${DEFAULT-VALUE}).")
     String builder;
 
     @Option(names = "--lambda", description = "SAH empty-voxel weight, 0.01..1 (default 0.8).")
@@ -51,48 +49,35 @@ public final class BuilderOptions {
     @Option(names = "--no-perfect-splits", description = "Use bounding boxes instead of exact clipping.")
     boolean noPerfectSplits;
 
+    @Option(names = "--leaf-size", description = "Largest leaf of the sliding-midpoint builder, 1..65536 (default 16).")
+    Integer leafSize;
+
     /**
-     * A builder configured from the options; each value is checked against its {@link Limits} entry first.
-     *
-     * @return a new builder of the chosen kind, with every given option applied
+     * {@return the builder specification the options give} (each value checked against its limit, the error naming the option)
      */
-    public KdTreeBuilder create() {
-        checkLimits();
-        KdTreeBuilder b = Builders.create(builder);
-        if (maxDepth != null) b.maxDepth(maxDepth);
-        if (kt != null || ki != null) {
-            CostModel m = b.costModel();
-            b.costModel(new CostModel(kt != null ? kt : m.kt(), ki != null ? ki : m.ki()));
-        }
-        if (noPerfectSplits) b.perfectSplits(false);
-        if (referenceBudget != null) b.referenceBudget(referenceBudget);
-        if (b instanceof SahBuilder sah) {
-            if (quality != null) sah.quality(quality);
-            if (maxDepth != null) sah.maxDepth(maxDepth);
-            if (lambda != null) sah.emptyWeight(lambda);
-            if (algorithm != null) sah.algorithm(algorithm);
-            if (bins != null) sah.bins(bins);
-            if (exactBelow != null) sah.exactBelow(exactBelow);
-        } else if (lambda != null || algorithm != null || bins != null || exactBelow != null || quality != null) {
-            throw new IllegalArgumentException(
-                    "--lambda, --algorithm, --quality, --bins and --exact-below apply to the sah builder only");
-        }
-        if (minPrims != null) {
-            if (b instanceof CyclingAxisBuilder c) c.minPrimitives(minPrims);
-            else throw new IllegalArgumentException("--min-prims applies to the median builders only");
-        }
-        return b;
+    public BuilderSpec spec() {
+        return BuilderSpec.of(builder)
+                .with(Setting.QUALITY, quality)
+                .with(Setting.KT, kt)
+                .with(Setting.KI, ki)
+                .with(Setting.MAX_DEPTH, maxDepth)
+                .with(Setting.REFERENCE_BUDGET, referenceBudget)
+                .with(Setting.PERFECT_SPLITS, noPerfectSplits ? Boolean.FALSE : null)
+                .with(Setting.LAMBDA, lambda)
+                .with(Setting.ALGORITHM, algorithm)
+                .with(Setting.BINS, bins)
+                .with(Setting.EXACT_BELOW, exactBelow)
+                .with(Setting.MIN_PRIMITIVES, minPrims)
+                .with(Setting.LEAF_SIZE, leafSize);
     }
 
-    /** Each given option against its limit, so that the error names the option, not the setter. */
-    private void checkLimits() {
-        if (lambda != null) Limits.LAMBDA.check("--lambda", lambda);
-        if (kt != null) Limits.KT.check("--kt", kt);
-        if (ki != null) Limits.KI.check("--ki", ki);
-        if (maxDepth != null) Limits.MAX_DEPTH.check("--max-depth", maxDepth);
-        if (referenceBudget != null) Limits.REFERENCE_BUDGET.check("--reference-budget", referenceBudget);
-        if (minPrims != null) Limits.MIN_PRIMITIVES.check("--min-prims", minPrims);
-        if (bins != null) Limits.BINS.check("--bins", bins);
-        if (exactBelow != null) Limits.EXACT_BELOW.check("--exact-below", exactBelow);
+    /**
+     * A builder configured from the options.
+     *
+     * @return a new builder of the chosen kind, with every given option applied
+     * @throws IllegalArgumentException for a value out of range or an option that does not apply to the builder
+     */
+    public KdTreeBuilder create() {
+        return spec().create();
     }
 }

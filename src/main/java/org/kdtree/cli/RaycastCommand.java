@@ -5,10 +5,10 @@ import java.io.PrintWriter;
 import java.nio.charset.StandardCharsets;
 import java.nio.file.Files;
 import java.nio.file.Path;
-import java.util.Arrays;
 import java.util.Locale;
 import java.util.concurrent.Callable;
 import org.kdtree.build.KdTreeBuilder;
+import org.kdtree.build.Setting;
 import org.kdtree.limits.Limits;
 import org.kdtree.shape.ProceduralScenes;
 import org.kdtree.shape.TriangleMesh;
@@ -20,7 +20,9 @@ import picocli.CommandLine.Command;
 import picocli.CommandLine.Mixin;
 import picocli.CommandLine.Option;
 import picocli.CommandLine.Parameters;
+import org.kdtree.tradeoff.RayBatch;
 import org.kdtree.tradeoff.RaySet;
+import org.kdtree.tradeoff.Timing;
 
 /**
  * {@code raycast MESH.obj}: the ray-casting benchmark of docs/benchmark-spec.md, or, with
@@ -76,7 +78,7 @@ public final class RaycastCommand implements Callable<Integer> {
         Limits.THREADS.check("--threads", threads);
         Limits.GRID.check("--grid", grid);
         TriangleMesh scene = ProceduralScenes.grid(CommandFiles.readMesh(mesh, "raycast"), grid);
-        KdTreeBuilder builder = options.create().threads(threads);
+        KdTreeBuilder builder = options.spec().with(Setting.THREADS, threads).create();
         if (raysFile != null) return traceFile(scene, builder);
         return benchmark(scene, builder);
     }
@@ -99,34 +101,29 @@ public final class RaycastCommand implements Callable<Integer> {
     }
 
     private int benchmark(TriangleMesh scene, KdTreeBuilder builder) throws Exception {
-        double[] ms = new double[runs];
-        KdTree tree = null;
         int passes = warmup + runs;
-        RayBatch.Result pr, rr;
+        Timing.Timed<KdTree> build;
+        Timing.Timed<RayBatch.Checksum> pr, rr;
         RaySet p, r;
         TriangleIntersector tris = new TriangleIntersector(scene);
         try (ProgressBar bar = progress.bar(3 * passes, "steps")) {
-            for (int i = 0; i < passes; i++) {
-                bar.step(i, i < warmup ? "warm-up build" : "timed build");
-                long t0 = System.nanoTime();
-                tree = builder.build(scene);
-                if (i >= warmup) ms[i - warmup] = (System.nanoTime() - t0) / 1e6;
-            }
-            var box = ProceduralScenes.vertexBounds(scene);
-            p = RaySet.primary(box, RaySet.SPEC_IMAGE);
-            r = RaySet.random(box, RaySet.SPEC_RANDOM_RAYS);
-            KdTree built = tree;
+            build = Timing.median(warmup, runs, steps(bar, 0, "build"), () -> builder.build(scene));
+            p = RaySet.primary(scene, RaySet.SPEC_IMAGE);
+            r = RaySet.random(scene, RaySet.SPEC_RANDOM_RAYS);
+            KdTree built = build.value();
             try (RayBatch batch = new RayBatch(threads, () -> new Traverser(built, tris))) {
-                pr = median(batch, p, bar, passes, "P rays");
-                rr = median(batch, r, bar, 2 * passes, "R rays");
+                pr = Timing.median(warmup, runs, steps(bar, passes, "P rays"), () -> batch.trace(p));
+                rr = Timing.median(warmup, runs, steps(bar, 2 * passes, "R rays"), () -> batch.trace(r));
             }
         }
+        KdTree tree = build.value();
         TreeStats st = tree.stats();
         String meshName = mesh.getFileName().toString().replaceFirst("\\.[oO][bB][jJ]$", "")
                 + (grid > 1 ? "-grid" + grid : "");
         System.out.println(String.format(Locale.ROOT, "kdtree-%s %s %d %.1f %d %d %d %d %.6f %.3f %d %.6f %.3f",
-                builder.name(), meshName, scene.size(), median(ms), st.nodes(), st.leaves(), st.maxDepth(),
-                pr.hits(), pr.tSum(), p.size() / pr.seconds() / 1e6, rr.hits(), rr.tSum(), r.size() / rr.seconds() / 1e6));
+                builder.name(), meshName, scene.size(), build.millis(), st.nodes(), st.leaves(), st.maxDepth(),
+                pr.value().hits(), pr.value().tSum(), p.size() / pr.seconds() / 1e6,
+                rr.value().hits(), rr.value().tSum(), r.size() / rr.seconds() / 1e6));
         System.err.println(String.format(Locale.ROOT, "# %s, %d thread(s); references per non-empty leaf %.2f",
                 builder.describeSettings(), threads, st.averageRefsPerLeaf()));
         if (verifyStride > 0) {
@@ -137,21 +134,8 @@ public final class RaycastCommand implements Callable<Integer> {
         return 0;
     }
 
-    /** The run of median time among warm-up + timed runs (its checksum is that of every run). */
-    private RayBatch.Result median(RayBatch batch, RaySet rays, ProgressBar bar, int stepsBefore, String name) throws Exception {
-        RayBatch.Result[] res = new RayBatch.Result[runs];
-        for (int i = 0; i < warmup + runs; i++) {
-            bar.step(stepsBefore + i, name + (i < warmup ? " (warm-up)" : ""));
-            RayBatch.Result x = batch.trace(rays);
-            if (i >= warmup) res[i - warmup] = x;
-        }
-        Arrays.sort(res, (a, b) -> Double.compare(a.seconds(), b.seconds()));
-        return res[runs / 2];
-    }
-
-    private static double median(double[] v) {
-        double[] s = v.clone();
-        Arrays.sort(s);
-        return s[s.length / 2];
+    /** Moves {@code bar} before each run of a measurement whose first run is step {@code first}. */
+    private static Timing.Progress steps(ProgressBar bar, int first, String name) {
+        return (i, warmUp) -> bar.step(first + i, name + (warmUp ? " (warm-up)" : ""));
     }
 }

@@ -1,10 +1,11 @@
 package org.kdtree.cli;
 
 import java.nio.file.Path;
-import java.util.Arrays;
 import java.util.Locale;
 import java.util.concurrent.Callable;
 import org.kdtree.build.KdTreeBuilder;
+import org.kdtree.build.Setting;
+import org.kdtree.tradeoff.Timing;
 import org.kdtree.io.SceneLoader;
 import org.kdtree.limits.Limits;
 import org.kdtree.render.RenderJob;
@@ -53,22 +54,18 @@ public final class StatsCommand implements Callable<Integer> {
             if (!(prims instanceof TriangleMesh mesh)) throw new IllegalArgumentException("--grid applies to OBJ meshes only");
             prims = ProceduralScenes.grid(mesh, grid);
         }
-        KdTreeBuilder builder = options.create().threads(threads);
-        double[] ms = new double[runs];
-        KdTree tree = null;
+        KdTreeBuilder builder = options.spec().with(Setting.THREADS, threads).create();
+        Primitives scenePrims = prims;
+        Timing.Timed<KdTree> build;
         try (ProgressBar bar = progress.bar(warmup + runs, "builds")) {
-            for (int i = 0; i < warmup + runs; i++) {
-                bar.step(i, i < warmup ? "warm-up build" : "timed build");
-                long t0 = System.nanoTime();
-                tree = builder.build(prims);
-                if (i >= warmup) ms[i - warmup] = (System.nanoTime() - t0) / 1e6;
-            }
+            build = Timing.median(warmup, runs, (i, warmUp) -> bar.step(i, warmUp ? "warm-up build" : "timed build"),
+                    () -> builder.build(scenePrims));
         }
-        Arrays.sort(ms);
+        KdTree tree = build.value();
         System.out.printf(Locale.ROOT, "scene: %s (%s, %d-D)%n", scene, RenderJob.count(prims.size(), "primitive"), prims.dimension());
         System.out.printf(Locale.ROOT, "builder: %s (%s)%n", builder.name(), builder.describeSettings());
-        System.out.printf(Locale.ROOT, "build time: %.1f ms%s%n", ms[ms.length / 2],
-                ms.length > 1 ? " (median of " + ms.length + ", after " + warmup + " warm-up)" : "");
+        System.out.printf(Locale.ROOT, "build time: %.1f ms%s%n", build.millis(),
+                runs > 1 ? " (median of " + runs + ", after " + warmup + " warm-up)" : "");
         System.out.println(tree.stats().describe());
         if (tree.budgetLeaves() > 0)
             System.out.printf(Locale.ROOT, "note: the reference budget (%d per primitive, --reference-budget) made %d %s early%n",

@@ -23,7 +23,7 @@ import picocli.CommandLine.Parameters;
 @Command(name = "tradeoff", mixinStandardHelpOptions = true,
         description = "What accuracy costs in time: build MESH (.obj) with every builder variant (median plane, "
                 + "object median, SAH with lambda 1.0/0.8/0.5, exact vs binned B = 8/32/256, perfect splits on/off, "
-                + "depth caps), trace a ray workload, and report build time, expected SAH cost, nodes, memory, nodes "
+                + "depth caps, then every other registered builder), trace a ray workload, and report build time, expected SAH cost, nodes, memory, nodes "
                 + "visited and triangle tests per ray, rays per second and the total time for 1, 10 and 100 rays per "
                 + "triangle. Writes CSV and a PNG chart with the Pareto front of build time against trace time.")
 public final class TradeoffCommand implements Callable<Integer> {
@@ -76,10 +76,9 @@ public final class TradeoffCommand implements Callable<Integer> {
         Limits.RAYS_PER_TRIANGLE.check("--chart-rpt", chartRaysPerTriangle);
         TriangleMesh m = CommandFiles.readMesh(mesh, "tradeoff");
         if (grid > 1) m = ProceduralScenes.grid(m, grid);
-        var bounds = m.bounds();
         RaySet set = switch (rays.toUpperCase(Locale.ROOT)) {
-            case "P" -> RaySet.primary(bounds, Math.max(1, (int) Math.round(Math.sqrt(rayCount))));
-            case "R" -> RaySet.random(bounds, rayCount);
+            case "P" -> RaySet.primary(m, Math.max(1, (int) Math.round(Math.sqrt(rayCount))));
+            case "R" -> RaySet.random(m, rayCount);
             default -> throw new IllegalArgumentException("--rays must be P or R, got " + rays);
         };
         List<Variant> variants = quick ? Variant.quick() : Variant.all();

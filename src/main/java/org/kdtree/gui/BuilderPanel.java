@@ -4,22 +4,28 @@ import java.awt.GridBagConstraints;
 import java.awt.GridBagLayout;
 import java.awt.Insets;
 import javax.swing.BorderFactory;
+import javax.swing.JCheckBox;
 import javax.swing.JComboBox;
 import javax.swing.JComponent;
 import javax.swing.JLabel;
 import javax.swing.JPanel;
 import javax.swing.JSlider;
 import javax.swing.JSpinner;
+import org.kdtree.build.BuilderSpec;
 import org.kdtree.build.Builders;
 import org.kdtree.build.KdTreeBuilder;
 import org.kdtree.build.SahBuilder;
+import org.kdtree.build.Setting;
+import org.kdtree.build.SlidingMidpointBuilder;
 import org.kdtree.limits.Limits;
 
 /**
- * The builder controls: which builder, Kt, Ki, lambda (spinner and slider), Kmintri and
- * Kmaxdepth. Every change rebuilds the tree at once. Controls that do not apply to the
- * chosen builder are greyed out; each spinner takes the range of {@link Limits}, states it in its
- * tooltip and, for a typed value outside it, says so below instead of reverting silently.
+ * The builder controls, an editor of the model's {@link BuilderSpec}: which builder, Kt, Ki,
+ * lambda (spinner and slider), the SAH's plane search and bins, perfect splits, Kmintri, the
+ * leaf size and Kmaxdepth. Every change rebuilds the tree at once. Controls whose {@link Setting}
+ * does not apply to the chosen builder are greyed out and left out of the spec (which would refuse
+ * them); each spinner takes the range of {@link Limits}, states it in its tooltip and, for a typed
+ * value outside it, says so below instead of reverting silently.
  */
 public final class BuilderPanel extends JPanel {
     /** The model whose builder settings this panel edits. */
@@ -39,6 +45,12 @@ public final class BuilderPanel extends JPanel {
     /** The SAH's plane-search algorithm (NAIVE, O(N^2), is left out: too slow to be live). */
     private final JComboBox<SahBuilder.Algorithm> algorithm = new JComboBox<>(java.util.Arrays.stream(SahBuilder.Algorithm.values())
             .filter(a -> a != SahBuilder.Algorithm.NAIVE).toArray(SahBuilder.Algorithm[]::new)); // O(N^2): too slow to be live
+    /** Bins per axis of the binned SAH. */
+    private final JSpinner bins = LimitedSpinner.of(Limits.BINS, "bins", SahBuilder.DEFAULT_BINS, 1, this::reject);
+    /** Perfect splits (exact clipping) or bounding boxes only. */
+    private final JCheckBox perfectSplits = new JCheckBox("perfect splits", true);
+    /** The sliding-midpoint builder's largest leaf. */
+    private final JSpinner leafSize = LimitedSpinner.of(Limits.LEAF_SIZE, "leaf size", SlidingMidpointBuilder.DEFAULT_LEAF_SIZE, 1, this::reject);
     /** Kmintri, for the axis-cycling builders. */
     private final JSpinner minPrims = LimitedSpinner.of(Limits.MIN_PRIMITIVES, "Kmintri", 2, 1, this::reject);
     /** Kmaxdepth, or -1 for the automatic depth cap. */
@@ -64,6 +76,9 @@ public final class BuilderPanel extends JPanel {
                 + LimitedSpinner.allowed(Limits.LAMBDA));
         name(lambdaSlider, "lambdaSlider", "lambda as a slider, in hundredths");
         name(algorithm, "algorithm", "How the SAH searches for its planes: the exact searches build the same tree at different speeds (SAH only)");
+        name(bins, "bins", "Bins per axis of the binned SAH (SAH with the binned search only); " + LimitedSpinner.allowed(Limits.BINS));
+        name(perfectSplits, "perfectSplits", "Clip each straddling object to both children exactly (on) or keep bounding boxes (off)");
+        name(leafSize, "leafSize", "Largest leaf of the sliding-midpoint builder; " + LimitedSpinner.allowed(Limits.LEAF_SIZE));
         name(minPrims, "kmintri", "Kmintri: a voxel with at most this many objects becomes a leaf (median builders); "
                 + LimitedSpinner.allowed(Limits.MIN_PRIMITIVES));
         name(maxDepth, "kmaxdepth", "Kmaxdepth: maximum depth; " + LimitedSpinner.allowed(Limits.MAX_DEPTH));
@@ -76,12 +91,16 @@ public final class BuilderPanel extends JPanel {
         row(3, "lambda", lambda);
         row(4, "", lambdaSlider);
         row(5, "SAH search", algorithm);
-        row(6, "Kmintri", minPrims);
-        row(7, "Kmaxdepth", maxDepth);
-        row(8, "", autoDepth);
-        row(9, "", rejection);
+        row(6, "Bins", bins);
+        row(7, "", perfectSplits);
+        row(8, "Kmintri", minPrims);
+        row(9, "Leaf size", leafSize);
+        row(10, "Kmaxdepth", maxDepth);
+        row(11, "", autoDepth);
+        row(12, "", rejection);
         builder.addActionListener(e -> apply());
         algorithm.addActionListener(e -> apply());
+        perfectSplits.addActionListener(e -> apply());
         algorithm.setRenderer(new javax.swing.DefaultListCellRenderer() {
             @Override public java.awt.Component getListCellRendererComponent(javax.swing.JList<?> list, Object value, int index,
                                                                        boolean selected, boolean focus) {
@@ -89,7 +108,7 @@ public final class BuilderPanel extends JPanel {
                 return super.getListCellRendererComponent(list, text, index, selected, focus);
             }
         });
-        for (JSpinner s : new JSpinner[] {kt, ki, lambda, minPrims, maxDepth}) s.addChangeListener(e -> apply());
+        for (JSpinner s : new JSpinner[] {kt, ki, lambda, bins, minPrims, leafSize, maxDepth}) s.addChangeListener(e -> apply());
         lambdaSlider.addChangeListener(e -> {
             if (!updating) lambda.setValue(lambdaSlider.getValue() / 100.0);
         });
@@ -116,37 +135,63 @@ public final class BuilderPanel extends JPanel {
 
     private void apply() {
         if (updating) return;
-        BuilderSettings s = new BuilderSettings((String) builder.getSelectedItem(),
-                ((Number) kt.getValue()).doubleValue(), ((Number) ki.getValue()).doubleValue(),
-                ((Number) lambda.getValue()).doubleValue(), ((Number) minPrims.getValue()).intValue(),
-                ((Number) maxDepth.getValue()).intValue(), (SahBuilder.Algorithm) algorithm.getSelectedItem());
+        String name = (String) builder.getSelectedItem();
+        KdTreeBuilder probe = Builders.create(name);
+        SahBuilder.Algorithm a = (SahBuilder.Algorithm) algorithm.getSelectedItem();
+        BuilderSpec s = BuilderSpec.of(name);
+        s = give(s, probe, Setting.KT, ((Number) kt.getValue()).doubleValue());
+        s = give(s, probe, Setting.KI, ((Number) ki.getValue()).doubleValue());
+        s = give(s, probe, Setting.MAX_DEPTH, ((Number) maxDepth.getValue()).intValue());
+        s = give(s, probe, Setting.PERFECT_SPLITS, perfectSplits.isSelected());
+        s = give(s, probe, Setting.LAMBDA, ((Number) lambda.getValue()).doubleValue());
+        s = give(s, probe, Setting.ALGORITHM, a);
+        if (a == SahBuilder.Algorithm.BINNED) s = give(s, probe, Setting.BINS, ((Number) bins.getValue()).intValue());
+        s = give(s, probe, Setting.MIN_PRIMITIVES, ((Number) minPrims.getValue()).intValue());
+        s = give(s, probe, Setting.LEAF_SIZE, ((Number) leafSize.getValue()).intValue());
         show(s);
         model.setSettings(s);
     }
 
-    private void show(BuilderSettings s) {
+    /** {@code s} with {@code setting} given as {@code value} if the builder takes it (its control is greyed out otherwise). */
+    private static <T> BuilderSpec give(BuilderSpec s, KdTreeBuilder probe, Setting<T> setting, T value) {
+        return setting.appliesTo(probe) ? s.with(setting, value) : s;
+    }
+
+    private void show(BuilderSpec s) {
         updating = true;
         try {
+            KdTreeBuilder probe = Builders.create(s.builder());
             builder.setSelectedItem(s.builder());
-            kt.setValue(s.kt());
-            ki.setValue(s.ki());
-            lambda.setValue(s.lambda());
-            minPrims.setValue(s.minPrims());
-            maxDepth.setValue(s.maxDepth());
-            algorithm.setSelectedItem(s.algorithm());
-            lambdaSlider.setValue((int) Math.round(s.lambda() * 100));
-            boolean sah = BuilderSettings.usesLambda(s.builder());
-            boolean median = BuilderSettings.usesMinPrims(s.builder());
+            showValue(s, probe, Setting.KT, kt);
+            showValue(s, probe, Setting.KI, ki);
+            showValue(s, probe, Setting.LAMBDA, lambda);
+            showValue(s, probe, Setting.BINS, bins);
+            showValue(s, probe, Setting.MIN_PRIMITIVES, minPrims);
+            showValue(s, probe, Setting.LEAF_SIZE, leafSize);
+            showValue(s, probe, Setting.MAX_DEPTH, maxDepth);
+            if (Setting.PERFECT_SPLITS.appliesTo(probe)) perfectSplits.setSelected(s.value(Setting.PERFECT_SPLITS));
+            if (Setting.ALGORITHM.appliesTo(probe)) algorithm.setSelectedItem(s.value(Setting.ALGORITHM));
+            lambdaSlider.setValue((int) Math.round(((Number) lambda.getValue()).doubleValue() * 100));
+            boolean sah = Setting.LAMBDA.appliesTo(probe);
             lambda.setEnabled(sah);
             lambdaSlider.setEnabled(sah);
             algorithm.setEnabled(sah);
-            minPrims.setEnabled(median);
+            bins.setEnabled(sah && algorithm.getSelectedItem() == SahBuilder.Algorithm.BINNED);
+            perfectSplits.setEnabled(Setting.PERFECT_SPLITS.appliesTo(probe));
+            minPrims.setEnabled(Setting.MIN_PRIMITIVES.appliesTo(probe));
+            leafSize.setEnabled(Setting.LEAF_SIZE.appliesTo(probe));
             int n = model.scene().size();
-            autoDepth.setText(s.maxDepth() >= 0 ? "fixed depth cap " + s.maxDepth()
+            int depth = ((Number) maxDepth.getValue()).intValue();
+            autoDepth.setText(depth >= 0 ? "fixed depth cap " + depth
                     : "-1 = auto: 8 + 1.3 log2 " + n + " = " + KdTreeBuilder.defaultMaxDepth(n));
         } finally {
             updating = false;
         }
+    }
+
+    /** Shows the spec's value of {@code setting} (given, or the builder's default) in {@code control}, if the builder takes it. */
+    private static void showValue(BuilderSpec s, KdTreeBuilder probe, Setting<?> setting, JSpinner control) {
+        if (setting.appliesTo(probe)) control.setValue(s.value(setting));
     }
 
     private static void name(JComponent c, String name, String tip) {

@@ -13,6 +13,7 @@ import javax.swing.JComboBox;
 import javax.swing.JComponent;
 import javax.swing.JLabel;
 import javax.swing.JPanel;
+import org.kdtree.build.BuilderSpec;
 import org.kdtree.build.Builders;
 import org.kdtree.shape.Shapes2D;
 import org.kdtree.tree.KdTree;
@@ -122,7 +123,7 @@ public final class CompareView extends JPanel {
         }
 
         void update(Shapes2D scene, double[] ray) {
-            BuilderSettings s = model.settings().withBuilder(builder);
+            BuilderSpec s = model.settings().forBuilder(builder);
             long t0 = System.nanoTime();
             KdTree tree = s.create().build(scene);
             double ms = (System.nanoTime() - t0) / 1e6;

@@ -156,7 +156,7 @@ public final class View3D extends JPanel {
         String name = (String) scene.getSelectedItem();
         if (name == null || running != null) return;
         Path file = dir.resolve(name);
-        KdTreeBuilder b = model.settings().withBuilder((String) builder.getSelectedItem()).create();
+        KdTreeBuilder b = model.settings().forBuilder((String) builder.getSelectedItem()).create();
         int w = ((Number) width.getValue()).intValue();
         cancelled = false;
         build.setEnabled(false);

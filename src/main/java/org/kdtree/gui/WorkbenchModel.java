@@ -8,6 +8,7 @@ import java.util.concurrent.ExecutorService;
 import java.util.concurrent.Executors;
 import java.util.concurrent.Future;
 import javax.swing.SwingUtilities;
+import org.kdtree.build.BuilderSpec;
 import org.kdtree.shape.Shape2D;
 import org.kdtree.shape.Shapes2D;
 import org.kdtree.tree.KdTree;
@@ -56,7 +57,7 @@ public final class WorkbenchModel {
     private List<Shape2D> shapes = new ArrayList<>();
     private Shapes2D scene = new Shapes2D(List.of());
     private String sceneName = "";
-    private BuilderSettings settings = BuilderSettings.DEFAULT;
+    private BuilderSpec settings = BuilderSpec.of("sah");
     private KdTree tree;
     private double buildMillis;
     private boolean building;
@@ -161,14 +162,14 @@ public final class WorkbenchModel {
     // ---- builder ----
 
     /** {@return the builder settings} */
-    public BuilderSettings settings() { return settings; }
+    public BuilderSpec settings() { return settings; }
 
     /**
      * Changes the builder settings and rebuilds the tree (nothing happens if they are equal).
      *
      * @param s the new settings
      */
-    public void setSettings(BuilderSettings s) {
+    public void setSettings(BuilderSpec s) {
         if (s.equals(settings)) return;
         settings = s;
         rebuild();

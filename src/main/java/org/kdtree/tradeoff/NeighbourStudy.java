@@ -1,6 +1,5 @@
 package org.kdtree.tradeoff;
 
-import java.util.Arrays;
 import java.util.List;
 import org.kdtree.points.NearestQuery;
 import org.kdtree.points.PointTree;
@@ -126,14 +125,7 @@ public final class NeighbourStudy {
 
     /** The median time of {@code runs} passes, in seconds (at least a nanosecond). */
     private double medianSeconds(Runnable pass) {
-        double[] seconds = new double[runs];
-        for (int i = 0; i < runs; i++) {
-            long t0 = System.nanoTime();
-            pass.run();
-            seconds[i] = Math.max(1, System.nanoTime() - t0) / 1e9;
-        }
-        Arrays.sort(seconds);
-        return seconds[runs / 2];
+        return Timing.medianSeconds(0, runs, pass);
     }
 
     private static double[][] rows(PointsKd points) {

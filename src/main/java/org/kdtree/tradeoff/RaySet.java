@@ -1,12 +1,15 @@
 package org.kdtree.tradeoff;
 
 import org.kdtree.geom.Box;
+import org.kdtree.shape.ProceduralScenes;
+import org.kdtree.shape.TriangleMesh;
 
 /**
  * A set of 3-D rays held in one flat array (origin then direction, six doubles per ray), so that
  * generating them is not timed with tracing. The sets of the benchmark spec
  * (docs/benchmark-spec.md): P, the primary rays of a 1024 x 1024 camera, and R, random rays
- * from origins inside the scene's box.
+ * from origins inside the scene's box. The box is always the spec's: min and max over all the
+ * mesh's vertices, used by a triangle or not ({@link ProceduralScenes#vertexBounds}).
  */
 public final class RaySet {
     /** Width and height of the spec's set P image. */
@@ -32,9 +35,31 @@ public final class RaySet {
     public double[] rays() { return rays; }
 
     /**
-     * Set P: a {@code res x res} pinhole camera looking at the box from direction (1, 0.5, 2), 40 degrees.
+     * Set P: a {@code res x res} pinhole camera looking at the mesh's box from direction (1, 0.5, 2), 40 degrees.
      *
-     * @param bounds the scene's box, which the camera looks at
+     * @param mesh the scene, whose vertex box the camera looks at
+     * @param res  the image's width and height in pixels, one ray each
+     * @return the {@code res * res} rays, row by row from the top, unit directions
+     */
+    public static RaySet primary(TriangleMesh mesh, int res) {
+        return primary(ProceduralScenes.vertexBounds(mesh), res);
+    }
+
+    /**
+     * Set R: {@code n} rays with uniform origins in the mesh's box and uniform directions (splitmix64, seed 42).
+     *
+     * @param mesh the scene, in whose vertex box the origins lie
+     * @param n    how many rays
+     * @return the rays, unit directions
+     */
+    public static RaySet random(TriangleMesh mesh, int n) {
+        return random(ProceduralScenes.vertexBounds(mesh), n);
+    }
+
+    /**
+     * Set P around a given box (the spec's formulas; the commands use {@link #primary(TriangleMesh, int)}, the spec's box).
+     *
+     * @param bounds the box the camera looks at
      * @param res    the image's width and height in pixels, one ray each
      * @return the {@code res * res} rays, row by row from the top, unit directions
      */
@@ -68,9 +93,9 @@ public final class RaySet {
     }
 
     /**
-     * Set R: {@code n} rays with uniform origins in the box and uniform directions (splitmix64, seed 42).
+     * Set R in a given box (the spec's formulas; the commands use {@link #random(TriangleMesh, int)}, the spec's box).
      *
-     * @param bounds the scene's box, where the origins lie
+     * @param bounds the box where the origins lie
      * @param n      how many rays
      * @return the rays, unit directions
      */

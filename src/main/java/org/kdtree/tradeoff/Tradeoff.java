@@ -1,9 +1,9 @@
 package org.kdtree.tradeoff;
 
 import java.util.ArrayList;
-import java.util.Arrays;
 import java.util.List;
 import org.kdtree.build.KdTreeBuilder;
+import org.kdtree.build.Setting;
 import org.kdtree.shape.TriangleMesh;
 import org.kdtree.traverse.TraversalStats;
 import org.kdtree.traverse.TriangleIntersector;
@@ -44,28 +44,20 @@ public final class Tradeoff {
      * @return its build time, tree quality and trace speed
      */
     public TradeoffResult run(Variant v) {
-        KdTreeBuilder builder = v.create().threads(threads);
-        KdTree tree = builder.build(mesh);
-        double[] buildMs = new double[runs];
-        for (int i = 0; i < runs; i++) {
-            long t0 = System.nanoTime();
-            tree = builder.build(mesh);
-            buildMs[i] = (System.nanoTime() - t0) / 1e6;
-        }
+        KdTreeBuilder builder = v.spec().with(Setting.THREADS, threads).create();
+        Timing.Timed<KdTree> build = Timing.median(1, runs, Timing.QUIET, () -> builder.build(mesh));
+        KdTree tree = build.value();
         TreeStats s = tree.stats();
         Traverser traverser = new Traverser(tree, new TriangleIntersector(mesh));
-        Tracing.trace(traverser, rays);
-        double[] traceS = new double[runs];
-        for (int i = 0; i < runs; i++) {
-            long t0 = System.nanoTime();
-            Tracing.trace(traverser, rays);
-            traceS[i] = (System.nanoTime() - t0) / 1e9;
+        double traceSeconds;
+        try (RayBatch batch = new RayBatch(1, () -> traverser)) {
+            traceSeconds = Timing.median(1, runs, Timing.QUIET, () -> batch.trace(rays)).seconds();
         }
-        TraversalStats counts = Tracing.count(traverser, rays, countedRays);
+        TraversalStats counts = RayBatch.count(traverser, rays, countedRays);
         double perRay = Math.max(1, counts.rays);
-        return new TradeoffResult(v.name(), builder.describeSettings(), median(buildMs), s.expectedCost(), s.nodes(),
+        return new TradeoffResult(v.name(), builder.describeSettings(), build.millis(), s.expectedCost(), s.nodes(),
                 s.leaves(), s.memoryBytes(), counts.nodes / perRay, counts.primitiveTests / perRay,
-                rays.size() / median(traceS), mesh.size());
+                rays.size() / traceSeconds, mesh.size());
     }
 
     /**
@@ -97,11 +89,5 @@ public final class Tradeoff {
         StringBuilder sb = new StringBuilder(TradeoffResult.csvHeader()).append('\n');
         for (int i = 0; i < results.size(); i++) sb.append(results.get(i).csvRow(front[i])).append('\n');
         return sb.toString();
-    }
-
-    private static double median(double[] xs) {
-        double[] s = xs.clone();
-        Arrays.sort(s);
-        return s[s.length / 2];
     }
 }

@@ -40,6 +40,24 @@ class SahBuilderTest {
         }
     }
 
+    /** terminate and findPlane stay the contract; what the SAH remembers between them is its own, not BuildNode's public API. */
+    @Test void thePlaneRememberedBetweenTerminateAndFindPlaneIsNotPublic() {
+        assertThat(java.util.Arrays.stream(BuildNode.class.getMethods()).map(java.lang.reflect.Method::getName))
+                .doesNotContain("plan", "plannedPlane", "plannedCost", "choose", "chosen");
+    }
+
+    /** Each algorithm carries its own strategy: the exact ones and the binned one, with or without an engine, build the tree of their recursion. */
+    @Test void everyAlgorithmsEngineBuildsTheTreeOfItsRecursion() {
+        Primitives mesh = TestScenes.clusteredTriangles(3000, 5);
+        for (SahBuilder.Algorithm a : SahBuilder.Algorithm.values()) {
+            if (a == SahBuilder.Algorithm.NAIVE) continue; // O(N^2): SahAlgorithmsTest compares it on smaller scenes
+            KdTree engine = new SahBuilder().algorithm(a).build(mesh);
+            KdTree recursion = new SahBuilder() { }.algorithm(a).build(mesh); // a subclass always gets the recursion
+            Trees.assertSameTree(engine, recursion);
+            assertThat(a.hasEngine()).isEqualTo(a == SahBuilder.Algorithm.EVENT || a == SahBuilder.Algorithm.BINNED);
+        }
+    }
+
     @Test void aSinglePrimitiveIsALeaf() {
         KdTree tree = new SahBuilder().build(TestScenes.soup(new double[] {0, 0, 0, 1, 0, 0, 0, 1, 0}));
         assertThat(tree.nodeCount()).isEqualTo(1);

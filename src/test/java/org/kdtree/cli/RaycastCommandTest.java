@@ -128,8 +128,7 @@ class RaycastCommandTest {
         assertThat(f[1]).isEqualTo("cube");
         assertThat(f[2]).isEqualTo("12");
         TriangleMesh mesh = ObjMeshReader.read(obj);
-        Box box = ProceduralScenes.vertexBounds(mesh);
-        long[] counts = bruteForceHits(mesh, RaySet.primary(box, RaySet.SPEC_IMAGE), RaySet.random(box, RaySet.SPEC_RANDOM_RAYS));
+        long[] counts = bruteForceHits(mesh, RaySet.primary(mesh, RaySet.SPEC_IMAGE), RaySet.random(mesh, RaySet.SPEC_RANDOM_RAYS));
         assertThat(Long.parseLong(f[7])).isEqualTo(counts[0]);
         assertThat(Long.parseLong(f[10])).isEqualTo(counts[1]);
         assertThat(counts[1]).as("every ray from inside a closed cube hits").isEqualTo(RaySet.SPEC_RANDOM_RAYS);

@@ -1,5 +1,6 @@
 package org.kdtree.gui;
 
+import org.kdtree.build.BuilderSpec;
 import static org.assertj.core.api.Assertions.assertThat;
 
 import java.util.List;
@@ -18,7 +19,7 @@ class NearestRecorderTest {
             for (List<Shape2D> shapes : List.of(BuiltinScenes.clustered(300, 5), BuiltinScenes.uniform(250, 8),
                     BuiltinScenes.talkFigures(), mixed(200, r))) {
                 Shapes2D scene = new Shapes2D(shapes);
-                KdTree tree = BuilderSettings.DEFAULT.withBuilder(b).create().build(scene);
+                KdTree tree = BuilderSpec.of(b).create().build(scene);
                 for (int i = 0; i < 60; i++) {
                     double[] q = {r.nextDouble() * 14 - 2, r.nextDouble() * 14 - 2};
                     int k = 1 + r.nextInt(i % 3 == 0 ? 64 : 8);
@@ -72,7 +73,7 @@ class NearestRecorderTest {
 
     @Test void theSearchPrunesAndTestsFewerObjectsThanTheScene() {
         Shapes2D scene = new Shapes2D(BuiltinScenes.uniform(400, 3));
-        KdTree tree = BuilderSettings.DEFAULT.create().build(scene);
+        KdTree tree = BuilderSpec.of("sah").create().build(scene);
         NearestTrace t = NearestRecorder.record(tree, scene, new double[] {5, 5}, 3);
         assertThat(t.pruned()).isPositive();
         assertThat(t.tests()).isLessThan(scene.size() / 4);
@@ -85,7 +86,7 @@ class NearestRecorderTest {
         List<Shape2D> shapes = List.of(new Shape2D.Rect(0, 0, 2, 2), new Shape2D.Rect(3, 3, 3, 5),
                 new Shape2D.Segment(4, 0, 4, 4), new Shape2D.Point(6, 1));
         Shapes2D scene = new Shapes2D(shapes);
-        KdTree tree = BuilderSettings.DEFAULT.create().build(scene);
+        KdTree tree = BuilderSpec.of("sah").create().build(scene);
         NearestTrace t = NearestRecorder.record(tree, scene, new double[] {1, 1}, 4);
         assertThat(t.result()).extracting(NearestTrace.Neighbour::object).containsExactly(0, 2, 3);
         assertThat(t.result().get(0).distance()).isZero();

@@ -1,5 +1,6 @@
 package org.kdtree.gui;
 
+import org.kdtree.build.BuilderSpec;
 import static org.assertj.core.api.Assertions.assertThat;
 
 import java.awt.image.BufferedImage;
@@ -20,10 +21,10 @@ class RebuildRepaintTimingTest {
         BufferedImage image = new BufferedImage(1000, 800, BufferedImage.TYPE_INT_RGB);
         double[] build = new double[7], paint = new double[7];
         KdTree tree = null;
-        for (int i = 0; i < 3; i++) RebuildRepaint.paint(shapes, BuilderSettings.DEFAULT.create().build(shapes), image); // JIT warm-up
+        for (int i = 0; i < 3; i++) RebuildRepaint.paint(shapes, BuilderSpec.of("sah").create().build(shapes), image); // JIT warm-up
         for (int i = 0; i < build.length; i++) {
             long t0 = System.nanoTime();
-            tree = BuilderSettings.DEFAULT.create().build(shapes);
+            tree = BuilderSpec.of("sah").create().build(shapes);
             long t1 = System.nanoTime();
             RebuildRepaint.paint(shapes, tree, image);
             build[i] = (t1 - t0) / 1e6;

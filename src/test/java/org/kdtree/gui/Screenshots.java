@@ -45,11 +45,11 @@ public final class Screenshots {
         });
         shot(out, "clustered-sah.png");
 
-        on(() -> m.setSettings(m.settings().withBuilder("median-plane")));
+        on(() -> m.setSettings(m.settings().forBuilder("median-plane")));
         shot(out, "clustered-median.png");
 
         on(() -> {
-            m.setSettings(m.settings().withBuilder("sah"));
+            m.setSettings(m.settings().forBuilder("sah"));
             StepperPanel s = b.stepper();
             int target = 0;
             // a ray that hits something, shown at an object test with far children on the stack

@@ -1,5 +1,6 @@
 package org.kdtree.gui;
 
+import org.kdtree.build.BuilderSpec;
 import static org.assertj.core.api.Assertions.assertThat;
 
 import java.util.Random;
@@ -17,7 +18,7 @@ class TraversalRecorderTest {
         Shapes2D scene = new Shapes2D(BuiltinScenes.clustered(300, 5));
         Random r = new Random(2);
         for (String b : CompareView.DEFAULT_BUILDERS) {
-            KdTree tree = BuilderSettings.DEFAULT.withBuilder(b).create().build(scene);
+            KdTree tree = BuilderSpec.of(b).create().build(scene);
             BruteForce brute = new BruteForce(new Shape2DIntersector(scene));
             for (int i = 0; i < 200; i++) {
                 double[] ray = {r.nextDouble() * 12 - 1, r.nextDouble() * 12 - 1, r.nextGaussian(), r.nextGaussian()};
@@ -39,7 +40,7 @@ class TraversalRecorderTest {
 
     @Test void theStackGrowsOnPushAndShrinksOnPop() {
         Shapes2D scene = new Shapes2D(BuiltinScenes.uniform(200, 3));
-        KdTree tree = BuilderSettings.DEFAULT.create().build(scene);
+        KdTree tree = BuilderSpec.of("sah").create().build(scene);
         TraversalTrace t = TraversalRecorder.record(tree, scene, new double[] {-1, 0.3, 1, 0.02});
         int pushes = 0;
         for (int i = 1; i < t.size(); i++) {

@@ -1,5 +1,6 @@
 package org.kdtree.gui;
 
+import org.kdtree.build.BuilderSpec;
 import static org.assertj.core.api.Assertions.assertThat;
 
 import java.awt.Color;
@@ -23,7 +24,7 @@ class TreePainterTest {
         }
     }
 
-    private static Painted paint(Shapes2D scene, BuilderSettings settings, int selectedNode) {
+    private static Painted paint(Shapes2D scene, BuilderSpec settings, int selectedNode) {
         KdTree tree = settings.create().build(scene);
         ViewTransform v = new ViewTransform().fit(tree.bounds(), W, H);
         BufferedImage img = new BufferedImage(W, H, BufferedImage.TYPE_INT_RGB);
@@ -38,7 +39,7 @@ class TreePainterTest {
     }
 
     @Test void splitLinesAreDrawnWhereTheTreeHasThem() {
-        Painted p = paint(talk(), BuilderSettings.DEFAULT.withBuilder("median-plane"), -1);
+        Painted p = paint(talk(), BuilderSpec.of("median-plane"), -1);
         List<double[]> mids = new ArrayList<>();
         p.tree().walk(new TreeVisitor() {
             @Override public void interior(int node, int depth, Box v, int axis, double split) {
@@ -62,7 +63,7 @@ class TreePainterTest {
     }
 
     @Test void emptyVoxelsAreShadedAndFullOnesAreNot() {
-        Painted p = paint(talk(), BuilderSettings.DEFAULT, -1);
+        Painted p = paint(talk(), BuilderSpec.of("sah"), -1);
         int[] counts = new int[2];
         p.tree().walk(new TreeVisitor() {
             @Override public void interior(int node, int depth, Box v, int axis, double split) { }
@@ -84,7 +85,7 @@ class TreePainterTest {
     }
 
     @Test void aSingleLeafHasNoSplitLineInside() {
-        Painted p = paint(talk(), BuilderSettings.DEFAULT.withMaxDepth(0), -1);
+        Painted p = paint(talk(), BuilderSpec.of("sah").with(org.kdtree.build.Setting.MAX_DEPTH, 0), -1);
         assertThat(p.tree().nodeCount()).isEqualTo(1);
         Box b = p.tree().bounds();
         int x0 = (int) p.view().screenX(b.min(0)) + 4, x1 = (int) p.view().screenX(b.max(0)) - 4;
@@ -94,7 +95,7 @@ class TreePainterTest {
     }
 
     @Test void linesNearTheRootAreThicker() {
-        Painted p = paint(talk(), BuilderSettings.DEFAULT.withBuilder("median-plane"), -1);
+        Painted p = paint(talk(), BuilderSpec.of("median-plane"), -1);
         // the root splits x at the middle; measure its width in pixels on a row through the voxel
         double xi = p.tree().split(0);
         Box b = p.tree().bounds();
@@ -109,11 +110,11 @@ class TreePainterTest {
 
     @Test void theSelectedLeafAndItsObjectsAreHighlighted() {
         Shapes2D scene = talk();
-        KdTree tree = BuilderSettings.DEFAULT.create().build(scene);
+        KdTree tree = BuilderSpec.of("sah").create().build(scene);
         // the leaf holding the small rectangle at (1..2, 1..2)
         int leaf = TreePainter.leafAt(tree, 1.5, 1.5);
         assertThat(tree.isLeaf(leaf)).isTrue();
-        Painted p = paint(scene, BuilderSettings.DEFAULT, leaf);
+        Painted p = paint(scene, BuilderSpec.of("sah"), leaf);
         assertThat(p.at(1.5, 1.5)).isEqualTo(Palette.HIGHLIGHT_OBJECT.brighter());
         Box v = TreePainter.voxelOf(tree, leaf);
         // somewhere in that voxel but off the rectangle: the highlight shade

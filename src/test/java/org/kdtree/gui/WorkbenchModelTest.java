@@ -1,5 +1,6 @@
 package org.kdtree.gui;
 
+import org.kdtree.build.BuilderSpec;
 import static org.assertj.core.api.Assertions.assertThat;
 
 import java.util.ArrayList;
@@ -15,9 +16,9 @@ class WorkbenchModelTest {
         m.addListener(heard::add);
         m.setScene("t", BuiltinScenes.clustered(300, 3));
         int sahNodes = m.tree().nodeCount();
-        m.setSettings(m.settings().withLambda(1.0));
+        m.setSettings(m.settings().with(org.kdtree.build.Setting.LAMBDA, 1.0));
         assertThat(m.tree()).isNotNull();
-        m.setSettings(m.settings().withBuilder("median-plane").withMinPrims(1));
+        m.setSettings(m.settings().forBuilder("median-plane").with(org.kdtree.build.Setting.MIN_PRIMITIVES, 1));
         assertThat(m.tree().builderName()).isEqualTo("median-plane");
         m.addShape(new Shape2D.Point(5, 5));
         assertThat(m.scene().size()).isEqualTo(301);
@@ -27,7 +28,7 @@ class WorkbenchModelTest {
         assertThat(heard).containsOnly(WorkbenchModel.Change.TREE).hasSize(5);
         assertThat(sahNodes).isGreaterThan(1);
 
-        m.setSettings(BuilderSettings.DEFAULT.withAlgorithm(org.kdtree.build.SahBuilder.Algorithm.SORTED));
+        m.setSettings(BuilderSpec.of("sah").with(org.kdtree.build.Setting.ALGORITHM, org.kdtree.build.SahBuilder.Algorithm.SORTED));
         assertThat(m.tree().nodeCount()).as("every exact plane search builds the same tree").isEqualTo(sahNodes);
     }
 

@@ -34,9 +34,14 @@ class TradeoffTest {
         TriangleMesh m = ProceduralScenes.surface(400, 5);
         TriangleIntersector tri = new TriangleIntersector(m);
         var tree = new org.kdtree.build.SahBuilder().build(m);
-        for (RaySet set : new RaySet[] {RaySet.primary(tree.bounds(), 30), RaySet.random(tree.bounds(), 500)}) {
-            Tracing.Checksum kd = Tracing.trace(new Traverser(tree, tri), set);
-            Tracing.Checksum brute = Tracing.trace(new BruteForce(tri), set);
+        for (RaySet set : new RaySet[] {RaySet.primary(m, 30), RaySet.random(m, 500)}) {
+            RayBatch.Checksum kd, brute;
+            try (RayBatch batch = new RayBatch(2, () -> new Traverser(tree, tri))) {
+                kd = batch.trace(set);
+            }
+            try (RayBatch batch = new RayBatch(1, () -> new BruteForce(tri))) {
+                brute = batch.trace(set);
+            }
             assertThat(kd.hits()).as(set.name()).isEqualTo(brute.hits()).isPositive();
             assertThat(kd.tSum()).isCloseTo(brute.tSum(), org.assertj.core.data.Offset.offset(1e-9 * brute.tSum()));
         }
@@ -53,6 +58,17 @@ class TradeoffTest {
         assertThat(lines.get(0)).startsWith("variant,build_ms,expected_cost");
         assertThat(lines).anyMatch(l -> l.startsWith("sah-exact-l0.8,"));
         assertThat(Files.size(png)).isGreaterThan(1000);
+    }
+
+    /** The course example is declared in META-INF/services only: the study lists it, as it would a student's builder. */
+    @Test void aBuilderOnTheClassPathIsAVariant() throws IOException {
+        assertThat(Variant.all()).anyMatch(v -> v.name().equals("centre-midpoint") && v.spec().builder().equals("centre-midpoint"));
+        Path obj = writeObj(ProceduralScenes.surface(200, 7));
+        Path csv = dir.resolve("cm.csv"), png = dir.resolve("cm.png");
+        int code = Main.run("tradeoff", obj.toString(), "--variants", "centre-midpoint", "--ray-count", "1000", "--runs", "1",
+                "--counted-rays", "100", "--csv", csv.toString(), "--chart", png.toString(), "--quiet");
+        assertThat(code).isZero();
+        assertThat(Files.readAllLines(csv)).hasSize(2).anyMatch(l -> l.startsWith("centre-midpoint,"));
     }
 
     @Test void unknownVariantIsAClearError() throws IOException {

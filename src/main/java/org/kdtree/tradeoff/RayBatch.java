@@ -1,0 +1,148 @@
+package org.kdtree.tradeoff;
+
+import java.util.concurrent.ExecutionException;
+import java.util.concurrent.ExecutorService;
+import java.util.concurrent.Executors;
+import java.util.concurrent.Future;
+import java.util.concurrent.atomic.AtomicInteger;
+import java.util.function.Supplier;
+import org.kdtree.geom.Ray;
+import org.kdtree.limits.Limits;
+import org.kdtree.traverse.Hit;
+import org.kdtree.traverse.RayQuery;
+import org.kdtree.traverse.TraversalStats;
+import org.kdtree.traverse.Traverser;
+
+/**
+ * The one ray-batch tracer: traces a {@link RaySet} (closest hit of every ray) on one or more
+ * threads, each with its own query object made up front, and returns the benchmark's checksum.
+ * Used by {@code raycast} and the trade-off study alike, with one interval convention:
+ * t in (0, +infinity), as docs/benchmark-spec.md defines it ({@link #T_MIN}).
+ *
+ * <p>Rays are handed out in blocks of 4096; hit counts and t sums are kept per block and added in
+ * block order, so the checksum is the same for any thread count.
+ */
+public final class RayBatch implements AutoCloseable {
+    /**
+     * The lower end of every ray's interval: the smallest positive double, so that the interval is
+     * the spec's open (0, +infinity) and a hit at t = 0 (a ray starting on a triangle) is not counted.
+     */
+    public static final double T_MIN = Double.MIN_VALUE;
+
+    private static final int BLOCK = 4096;
+
+    /**
+     * The spec's checksum of one pass.
+     *
+     * @param hits how many rays hit
+     * @param tSum the sum of their hit distances, added in ray order by block
+     */
+    public record Checksum(long hits, double tSum) {
+    }
+
+    private final RayQuery[] queries;
+    private final ExecutorService pool;
+
+    /**
+     * A tracer with {@code threads} query objects from {@code factory} (one per thread).
+     *
+     * @param threads threads tracing each set ({@link Limits#THREADS})
+     * @param factory makes a query object (each thread needs its own)
+     */
+    public RayBatch(int threads, Supplier<? extends RayQuery> factory) {
+        Limits.THREADS.check("--threads", threads);
+        queries = new RayQuery[threads];
+        for (int i = 0; i < threads; i++) queries[i] = factory.get();
+        pool = threads > 1 ? Executors.newFixedThreadPool(threads, r -> {
+            Thread t = new Thread(r, "ray-batch");
+            t.setDaemon(true);
+            return t;
+        }) : null;
+    }
+
+    /**
+     * Traces every ray once.
+     *
+     * @param rays the rays
+     * @return how many hit, and the sum of their hit distances
+     */
+    public Checksum trace(RaySet rays) {
+        int n = rays.size(), blocks = (n + BLOCK - 1) / BLOCK;
+        long[] hits = new long[blocks];
+        double[] sums = new double[blocks];
+        AtomicInteger next = new AtomicInteger();
+        if (pool == null) work(queries[0], rays, next, hits, sums);
+        else parallel(rays, next, hits, sums);
+        long h = 0;
+        double s = 0;
+        for (int b = 0; b < blocks; b++) { h += hits[b]; s += sums[b]; }
+        return new Checksum(h, s);
+    }
+
+    private void parallel(RaySet rays, AtomicInteger next, long[] hits, double[] sums) {
+        Future<?>[] f = new Future<?>[queries.length];
+        for (int i = 0; i < queries.length; i++) {
+            RayQuery q = queries[i];
+            f[i] = pool.submit(() -> work(q, rays, next, hits, sums));
+        }
+        try {
+            for (Future<?> x : f) x.get();
+        } catch (ExecutionException e) {
+            throw e.getCause() instanceof RuntimeException r ? r : new IllegalStateException(e.getCause());
+        } catch (InterruptedException e) {
+            Thread.currentThread().interrupt();
+            throw new java.util.concurrent.CancellationException("tracing interrupted");
+        }
+    }
+
+    private static void work(RayQuery q, RaySet rays, AtomicInteger next, long[] hits, double[] sums) {
+        Ray ray = new Ray(3);
+        Hit hit = new Hit();
+        double[] r = rays.rays();
+        int n = rays.size();
+        for (int b; (b = next.getAndIncrement()) * BLOCK < n; ) {
+            long h = 0;
+            double s = 0;
+            for (int i = b * BLOCK, end = Math.min(n, i + BLOCK); i < end; i++) {
+                int o = 6 * i;
+                ray.set(r[o], r[o + 1], r[o + 2], r[o + 3], r[o + 4], r[o + 5]);
+                if (q.closestHit(ray, T_MIN, Double.POSITIVE_INFINITY, hit)) {
+                    h++;
+                    s += hit.t;
+                }
+            }
+            hits[b] = h;
+            sums[b] = s;
+        }
+    }
+
+    /**
+     * Traces about {@code limit} rays spread over the whole set with a listener that counts nodes
+     * visited and primitive tests (same interval as {@link #trace}).
+     *
+     * @param traverser finds each ray's closest hit
+     * @param set       the rays to sample, every {@code size / limit}-th one
+     * @param limit     about how many rays to trace
+     * @return the counts summed over the rays traced
+     */
+    public static TraversalStats count(Traverser traverser, RaySet set, int limit) {
+        double[] r = set.rays();
+        int n = set.size();
+        // Every stride-th ray, so the sample spans the whole set: the first rows of the primary
+        // set P are sky, and counting only them would report zero nodes per ray.
+        int stride = Math.max(1, n / Math.max(1, limit));
+        Ray ray = new Ray(3);
+        Hit hit = new Hit();
+        TraversalStats stats = new TraversalStats();
+        for (int i = 0; i < n; i += stride) {
+            int o = 6 * i;
+            ray.set(r[o], r[o + 1], r[o + 2], r[o + 3], r[o + 4], r[o + 5]);
+            traverser.closestHit(ray, T_MIN, Double.POSITIVE_INFINITY, hit, stats);
+        }
+        return stats;
+    }
+
+    @Override public void close() {
+        if (pool != null) pool.shutdownNow();
+    }
+}

@@ -1,0 +1,89 @@
+package org.kdtree.build;
+
+import static org.assertj.core.api.Assertions.assertThat;
+import static org.assertj.core.api.Assertions.assertThatThrownBy;
+
+import org.junit.jupiter.api.Test;
+import org.kdtree.shape.TriangleMesh;
+import org.kdtree.testing.TestScenes;
+import org.kdtree.testing.Trees;
+
+/** One builder specification: one validation, one rule for settings that do not apply, any registered builder. */
+class BuilderSpecTest {
+    private static final TriangleMesh MESH = TestScenes.clusteredTriangles(2000, 7);
+
+    @Test void theFluentApiChainsTheBaseSettersIntoEachBuildersOwn() {
+        MedianPlaneBuilder median = (MedianPlaneBuilder) new MedianPlaneBuilder().threads(4).minPrimitives(1);
+        assertThat(median.threads()).isEqualTo(4);
+        assertThat(median.minPrimitives()).isEqualTo(1);
+        SlidingMidpointBuilder sliding = new SlidingMidpointBuilder().threads(2).perfectSplits(false).leafSize(4);
+        assertThat(sliding.leafSize()).isEqualTo(4);
+        SahBuilder sah = new SahBuilder().costModel(new org.kdtree.tree.CostModel(10, 20)).emptyWeight(0.5);
+        assertThat(sah.emptyWeight()).isEqualTo(0.5);
+    }
+
+    @Test void aSpecBuildsTheTreeOfTheSameFluentSettings() {
+        BuilderSpec spec = BuilderSpec.of("sah").with(Setting.LAMBDA, 0.5).with(Setting.ALGORITHM, SahBuilder.Algorithm.BINNED)
+                .with(Setting.BINS, 8).with(Setting.KT, 10.0).with(Setting.PERFECT_SPLITS, false).with(Setting.MAX_DEPTH, 14);
+        KdTreeBuilder fluent = new SahBuilder().emptyWeight(0.5).algorithm(SahBuilder.Algorithm.BINNED).bins(8).costs(10, 20)
+                .perfectSplits(false).maxDepth(14);
+        KdTreeBuilder made = spec.create();
+        assertThat(made.describeSettings()).isEqualTo(fluent.describeSettings());
+        Trees.assertSameTree(made.build(MESH), fluent.build(MESH));
+        assertThat(spec).hasToString("sah --kt 10.0 --max-depth 14 --no-perfect-splits --lambda 0.5 --algorithm BINNED --bins 8");
+    }
+
+    @Test void aPresetComesFirstSoThatAnExplicitDepthOverridesIt() {
+        KdTreeBuilder b = BuilderSpec.of("sah").with(Setting.MAX_DEPTH, 5).with(Setting.QUALITY, Quality.FAST).create();
+        assertThat(b.maxDepth()).isEqualTo(5);
+        assertThat(b.depthFactor()).isEqualTo(Quality.FAST.depthFactor());
+    }
+
+    @Test void aValueOutOfRangeIsRefusedWhenGivenNamingTheOption() {
+        assertThatThrownBy(() -> BuilderSpec.of("sah").with(Setting.LAMBDA, 2.0))
+                .hasMessage("--lambda must be between 0.01 and 1, got 2");
+        assertThatThrownBy(() -> BuilderSpec.of("median-plane").with(Setting.MIN_PRIMITIVES, -1))
+                .hasMessageStartingWith("--min-prims must be between 0 and");
+    }
+
+    @Test void aSettingThatDoesNotApplyIsRefusedNotIgnored() {
+        assertThatThrownBy(() -> BuilderSpec.of("median-plane").with(Setting.LAMBDA, 0.5).with(Setting.BINS, 8).create())
+                .isInstanceOf(IllegalArgumentException.class)
+                .hasMessage("--lambda, --bins apply to the sah builder only, not to median-plane");
+        assertThatThrownBy(() -> BuilderSpec.of("sah").with(Setting.MIN_PRIMITIVES, 1).create())
+                .hasMessage("--min-prims applies to the median builders only, not to sah");
+        assertThatThrownBy(() -> BuilderSpec.of("sah").with(Setting.LEAF_SIZE, 4).create())
+                .hasMessage("--leaf-size applies to the sliding-midpoint builder only, not to sah");
+    }
+
+    @Test void carryingSettingsToAnotherBuilderKeepsThoseThatApply() {
+        BuilderSpec sah = BuilderSpec.of("sah").with(Setting.LAMBDA, 0.5).with(Setting.KT, 3.0);
+        BuilderSpec median = sah.forBuilder("median-plane");
+        assertThat(median.get(Setting.LAMBDA)).isNull();
+        assertThat(median.get(Setting.KT)).isEqualTo(3.0);
+        assertThat(median.create().costModel().kt()).isEqualTo(3.0);
+        assertThat(median.forBuilder("sah").get(Setting.LAMBDA)).as("dropped, not remembered").isNull();
+    }
+
+    @Test void valuesNotGivenAreTheBuildersDefaults() {
+        BuilderSpec sah = BuilderSpec.of("sah");
+        assertThat(sah.value(Setting.LAMBDA)).isEqualTo(0.8);
+        assertThat(sah.value(Setting.ALGORITHM)).isEqualTo(SahBuilder.Algorithm.EVENT);
+        assertThat(sah.value(Setting.MIN_PRIMITIVES)).as("sah takes no Kmintri").isNull();
+        assertThat(BuilderSpec.applies(Setting.MIN_PRIMITIVES, "object-median")).isTrue();
+        assertThat(BuilderSpec.applies(Setting.BINS, "median-plane")).isFalse();
+        assertThat(BuilderSpec.of("sah").with(Setting.KT, 15.0)).isNotEqualTo(sah)
+                .isEqualTo(BuilderSpec.of("sah").with(Setting.KT, 15.0));
+    }
+
+    /** The course example is declared in META-INF/services only: the spec finds it by name, with the settings every builder takes. */
+    @Test void aBuilderOnTheClassPathIsCreatedByNameWithTheCommonSettings() {
+        KdTreeBuilder b = BuilderSpec.of("centre-midpoint").with(Setting.THREADS, 2).with(Setting.MAX_DEPTH, 9).create();
+        assertThat(b.name()).isEqualTo("centre-midpoint");
+        assertThat(b.threads()).isEqualTo(2);
+        assertThat(b.maxDepth()).isEqualTo(9);
+        assertThatThrownBy(() -> BuilderSpec.of("centre-midpoint").with(Setting.LAMBDA, 0.5).create())
+                .hasMessage("--lambda applies to the sah builder only, not to centre-midpoint");
+        assertThatThrownBy(() -> BuilderSpec.of("bvh").create()).hasMessageStartingWith("unknown builder 'bvh'");
+    }
+}
