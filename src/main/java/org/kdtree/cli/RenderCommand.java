@@ -7,7 +7,7 @@ import org.kdtree.io.SceneFile;
 import org.kdtree.render.RenderJob;
 import org.kdtree.limits.Limits;
 import org.kdtree.render.Renderer;
-import org.kdtree.render.Scene;
+import org.kdtree.scene.Scene;
 import picocli.CommandLine.Command;
 import picocli.CommandLine.Mixin;
 import picocli.CommandLine.Option;

@@ -10,14 +10,14 @@ import java.util.LinkedHashMap;
 import java.util.List;
 import java.util.Map;
 import org.joml.Matrix4d;
-import org.kdtree.render.Camera;
-import org.kdtree.render.GeometryBuilder;
-import org.kdtree.render.Light;
-import org.kdtree.render.Material;
+import org.kdtree.scene.Camera;
+import org.kdtree.scene.GeometryBuilder;
+import org.kdtree.scene.Light;
+import org.kdtree.scene.Material;
 import org.kdtree.limits.Limits;
-import org.kdtree.render.Scene;
-import org.kdtree.render.Tessellation;
-import org.kdtree.render.Vec3;
+import org.kdtree.scene.Scene;
+import org.kdtree.scene.Tessellation;
+import org.kdtree.scene.Vec3;
 
 /**
  * Reads a JSON scene (docs/scene-format.md) into a {@link Scene}: all triangles of all objects

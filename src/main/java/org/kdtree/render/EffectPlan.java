@@ -1,5 +1,8 @@
 package org.kdtree.render;
 
+import org.kdtree.scene.Light;
+import org.kdtree.scene.Material;
+import org.kdtree.scene.Scene;
 import java.util.ArrayList;
 import java.util.EnumSet;
 import java.util.List;

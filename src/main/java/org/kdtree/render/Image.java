@@ -1,5 +1,6 @@
 package org.kdtree.render;
 
+import org.kdtree.scene.Vec3;
 import java.awt.image.BufferedImage;
 
 /** Linear RGB radiance per pixel, row by row from the top-left. */

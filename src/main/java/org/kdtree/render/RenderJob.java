@@ -1,5 +1,7 @@
 package org.kdtree.render;
 
+import org.kdtree.scene.Camera;
+import org.kdtree.scene.Scene;
 import java.util.Locale;
 import org.kdtree.build.KdTreeBuilder;
 import org.kdtree.traverse.Traverser;

@@ -1,5 +1,6 @@
 package org.kdtree.render;
 
+import org.kdtree.scene.Scene;
 import java.util.ArrayList;
 import java.util.List;
 import java.util.concurrent.ExecutionException;

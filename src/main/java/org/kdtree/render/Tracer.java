@@ -1,5 +1,11 @@
 package org.kdtree.render;
 
+import org.kdtree.scene.Camera;
+import org.kdtree.scene.Light;
+import org.kdtree.scene.Material;
+import org.kdtree.scene.Scene;
+import org.kdtree.scene.SceneGeometry;
+import org.kdtree.scene.Vec3;
 import org.kdtree.geom.Tolerance;
 import java.util.List;
 import org.kdtree.geom.Ray;

@@ -9,9 +9,9 @@ import java.nio.file.Path;
 import org.junit.jupiter.api.Test;
 import org.junit.jupiter.api.io.TempDir;
 import org.kdtree.render.EffectPlan;
-import org.kdtree.render.Light;
-import org.kdtree.render.Material;
-import org.kdtree.render.Scene;
+import org.kdtree.scene.Light;
+import org.kdtree.scene.Material;
+import org.kdtree.scene.Scene;
 
 /** JSON scenes, OBJ with usemtl and MTL libraries: content read, and errors that name file, line and field. */
 class SceneFileTest {

@@ -1,5 +1,9 @@
 package org.kdtree.render;
 
+import org.kdtree.scene.Camera;
+import org.kdtree.scene.Material;
+import org.kdtree.scene.Scene;
+import org.kdtree.scene.Vec3;
 import static org.assertj.core.api.Assertions.assertThat;
 
 import java.util.ArrayList;

@@ -1,4 +1,4 @@
-package org.kdtree.render;
+package org.kdtree.scene;
 
 import java.util.Arrays;
 import org.joml.Matrix3d;

@@ -1,4 +1,4 @@
-package org.kdtree.render;
+package org.kdtree.scene;
 
 /** A small immutable 3-vector for shading: points, directions and RGB colours alike. */
 public record Vec3(double x, double y, double z) {
