@@ -193,35 +193,44 @@ public final class SceneFile {
             throw o.error("would make " + triangles + " triangles; a scene holds at most " + MAX_TRIANGLES);
     }
 
+    /** Streams the OBJ's vertices and faces straight into the scene's arrays, then resolves its materials. */
     private void obj(JsonNode o) throws IOException {
         Path path = dir.resolve(o.get("file").string());
         if (!Files.isRegularFile(path)) throw o.get("file").error("no such file: " + path);
-        ObjMaterialMesh mesh = ObjMaterialMesh.read(path);
+        int base = geometry.vertexCount(), first = geometry.triangleCount();
+        ObjMeshReader.Materials used = ObjMeshReader.read(path, new ObjMeshReader.Sink() {
+            @Override public void vertex(double x, double y, double z) { geometry.vertex(x, y, z); }
+            @Override public void triangle(int a, int b, int c, int material) {
+                geometry.triangle(base + a, base + b, base + c, material, false);
+            }
+        });
+        int[] global = materials(path, used);
+        int fallback = -1;
+        for (int t = first; t < geometry.triangleCount(); t++) {
+            int m = geometry.materialOf(t);
+            if (m < 0 && fallback < 0) fallback = materialOf(o);
+            geometry.material(t, m < 0 ? fallback : global[m]);
+        }
+    }
+
+    /** The scene's index of each material the OBJ file names, from its MTL libraries. */
+    private int[] materials(Path path, ObjMeshReader.Materials used) throws IOException {
         Map<String, Material> library = new LinkedHashMap<>();
-        for (Path lib : mesh.libraries()) {
+        for (Path lib : used.libraries()) {
             if (!Files.isRegularFile(lib))
                 throw new SceneFormatException(path.toString(), 0, "mtllib " + lib.getFileName() + ": no such file (" + lib + ")");
             library.putAll(MtlMaterials.read(lib));
         }
-        int[] global = new int[mesh.materialNames().size()];
+        int[] global = new int[used.names().size()];
         for (int i = 0; i < global.length; i++) {
-            String m = mesh.materialNames().get(i);
+            String m = used.names().get(i);
             Material mat = library.get(m);
             if (mat == null)
-                throw new SceneFormatException(path.toString(), mesh.usemtlLines().get(i),
-                        "usemtl " + m + ": no such material in " + (mesh.libraries().isEmpty() ? "any mtllib (none given)" : mesh.libraries()));
+                throw new SceneFormatException(path.toString(), used.firstUse().get(i),
+                        "usemtl " + m + ": no such material in " + (used.libraries().isEmpty() ? "any mtllib (none given)" : used.libraries()));
             global[i] = addMaterial(path.getFileName() + ":" + m, mat);
         }
-        int fallback = -1;
-        double[] v = mesh.vertices();
-        int base = geometry.vertexCount();
-        for (int i = 0; i < v.length / 3; i++) geometry.vertex(new Vec3(v[3 * i], v[3 * i + 1], v[3 * i + 2]), Vec3.ZERO);
-        int[] ix = mesh.indices();
-        for (int t = 0; t < mesh.triangleCount(); t++) {
-            int m = mesh.materialOf()[t];
-            if (m < 0 && fallback < 0) fallback = materialOf(o);
-            geometry.triangle(base + ix[3 * t], base + ix[3 * t + 1], base + ix[3 * t + 2], m < 0 ? fallback : global[m], false);
-        }
+        return global;
     }
 
     private int addMaterial(String name, Material m) {
