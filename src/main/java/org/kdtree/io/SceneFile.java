@@ -10,6 +10,7 @@ import java.util.LinkedHashMap;
 import java.util.List;
 import java.util.Map;
 import org.joml.Matrix4d;
+import org.kdtree.geom.Tolerance;
 import org.kdtree.scene.Camera;
 import org.kdtree.scene.GeometryBuilder;
 import org.kdtree.scene.Light;
@@ -91,7 +92,7 @@ public final class SceneFile {
         Vec3 eye = vec(c.get("eye")), at = vec(c.get("lookAt"));
         Vec3 up = c.has("up") ? vec(c.get("up")) : new Vec3(0, 1, 0);
         if (at.minus(eye).length() == 0) throw c.get("lookAt").error("must differ from eye");
-        if (at.minus(eye).normalized().cross(up.normalized()).length() < 1e-9) throw c.get("up").error("must not be parallel to the view direction");
+        if (at.minus(eye).normalized().cross(up.normalized()).length() < Tolerance.PARALLEL_SINE) throw c.get("up").error("must not be parallel to the view direction");
         JsonNode fov = c.get("fov");
         double f = fov.number();
         if (f <= 0 || f >= 180) throw fov.error("field of view must be between 0 and 180 degrees, got " + f);
