@@ -163,16 +163,6 @@ public final class JsonNode {
     }
 
     /**
-     * {@return an optional field of this object, or null}
-     *
-     * @param name the field's name
-     * @throws SceneFormatException if this is not an object
-     */
-    public JsonNode opt(String name) throws SceneFormatException {
-        return fields().get(name);
-    }
-
-    /**
      * {@return whether this object has the field}
      *
      * @param name the field's name

@@ -107,13 +107,6 @@ public final class EffectPlan {
     /** {@return the effects this plan simulates} */
     public Set<Effect> effects() { return EnumSet.copyOf(effects); }
 
-    /**
-     * {@return whether this plan simulates effect {@code e}}
-     *
-     * @param e the effect
-     */
-    public boolean simulates(Effect e) { return effects.contains(e); }
-
     /** {@return one line per fact, for the render summary} */
     public String describe() {
         StringBuilder s = new StringBuilder("effects: ");
