@@ -35,7 +35,7 @@ import org.kdtree.tree.KdTree;
  * <p>The simulation steps on the timer, never while painting; painting draws a cached image of
  * the scene and tree, then the balls with one reused ellipse.
  */
-public final class CollisionsView extends JPanel {
+final class CollisionsView extends JPanel {
     /** Milliseconds between frames, and the simulated time a frame advances (seconds). */
     static final int FRAME_MILLIS = 30;
     private static final double FRAME_SECONDS = FRAME_MILLIS / 1000.0;
