@@ -40,6 +40,19 @@ class ArchitectureTest {
         assertThat(wrong).as("uses against the layers of " + Layers.DOCUMENT).isEmpty();
     }
 
+    /** Each package says what it holds and what it may use, with the layer the document gives it. */
+    @Test void everyPackageHasAPackageInfoNamingItsLayer() {
+        Map<String, Integer> layer = Layers.read();
+        List<String> wrong = new ArrayList<>();
+        for (String p : USES.keySet()) {
+            Path info = SourceFiles.MAIN.resolve("org/kdtree/" + p + "/package-info.java");
+            if (!java.nio.file.Files.exists(info)) wrong.add(info + ": missing");
+            else if (layer.containsKey(p) && !SourceFiles.read(info).contains("Layer " + (layer.get(p) + 1)))
+                wrong.add(info + ": does not say 'Layer " + (layer.get(p) + 1) + "'");
+        }
+        assertThat(wrong).isEmpty();
+    }
+
     @Test void theCycleCheckFindsACycle() {
         Map<String, Map<String, Integer>> graph = Map.of("io", Map.of("render", 1), "render", Map.of("scene", 1),
                 "scene", Map.of("io", 1), "cli", Map.of("io", 1));
