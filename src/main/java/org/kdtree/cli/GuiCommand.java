@@ -8,7 +8,7 @@ import picocli.CommandLine.Command;
 /** {@code gui}: opens the Swing workbench (also what the jar does when given no command). */
 @Command(name = "gui", mixinStandardHelpOptions = true,
         description = "Open the workbench: watch 2-D builds, step through a traversal, compare builders.")
-public final class GuiCommand implements Callable<Integer> {
+final class GuiCommand implements Callable<Integer> {
     @Override public Integer call() {
         if (GraphicsEnvironment.isHeadless()) {
             System.err.println("error: no display available for the workbench (set DISPLAY, or use a command such as 'stats')");

@@ -29,7 +29,7 @@ import picocli.CommandLine.Parameters;
                 "neighbours in POINTS, nearest first, comma-separated (ties by lower index;",
                 "an empty line if none).",
                 "Prints one summary line."})
-public final class KnnCommand implements Callable<Integer> {
+final class KnnCommand implements Callable<Integer> {
     @Parameters(paramLabel = "POINTS", description = "The points (CSV).")
     Path pointsFile;
 

@@ -39,7 +39,7 @@ import picocli.CommandLine.Parameters;
                 "With --dimensions: the exact search against brute force on generated data",
                 "at each dimension, where kd-trees stop helping.",
                 "One thread; prints a table, writes a CSV and a chart (PNG and SVG)."})
-public final class KnnStudyCommand implements Callable<Integer> {
+final class KnnStudyCommand implements Callable<Integer> {
     @Parameters(paramLabel = "POINTS", arity = "0..1", description = "The points (CSV); or use --generate.")
     Path pointsFile;
 

@@ -16,7 +16,7 @@ import org.kdtree.traverse.RayQuery;
  * the ray parameter. One output line per ray, in order: {@code t triangle} (t with 17
  * significant digits, enough to read the same double back) or {@code miss}.
  */
-public final class RayFile {
+final class RayFile {
     private RayFile() {
     }
 

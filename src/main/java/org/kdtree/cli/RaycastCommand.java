@@ -36,7 +36,7 @@ import org.kdtree.tradeoff.Timing;
                 "With --rays FILE --hits FILE: traces the rays of FILE, one per line as",
                 "'ox oy oz dx dy dz [tmin tmax]', and writes one 't triangle' or 'miss' line",
                 "per ray."})
-public final class RaycastCommand implements Callable<Integer> {
+final class RaycastCommand implements Callable<Integer> {
     @Parameters(paramLabel = "MESH", description = "A Wavefront OBJ mesh.")
     Path mesh;
 

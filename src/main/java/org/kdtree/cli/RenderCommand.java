@@ -7,7 +7,7 @@ import org.kdtree.io.SceneFile;
 import org.kdtree.render.RenderJob;
 import org.kdtree.limits.Limits;
 import org.kdtree.render.Renderer;
-import org.kdtree.render.Scene;
+import org.kdtree.scene.Scene;
 import picocli.CommandLine.Command;
 import picocli.CommandLine.Mixin;
 import picocli.CommandLine.Option;
@@ -17,7 +17,7 @@ import picocli.CommandLine.Parameters;
 @Command(name = "render", mixinStandardHelpOptions = true,
         description = "Ray trace a JSON scene (docs/scene-format.md) to a PNG, simulating only the effects it calls for, "
                 + "and print the effects, rays by kind, times and tree statistics.")
-public final class RenderCommand implements Callable<Integer> {
+final class RenderCommand implements Callable<Integer> {
     @Parameters(paramLabel = "SCENE", description = "A JSON scene file, e.g. scenes/cornell-box.json.")
     Path scene;
 

@@ -21,7 +21,7 @@ import picocli.CommandLine.Parameters;
 /** {@code stats SCENE}: build a tree and print its statistics and build time. */
 @Command(name = "stats", mixinStandardHelpOptions = true,
         description = "Build a kd-tree over a scene (.obj or .scene2d) and print its statistics and build time.")
-public final class StatsCommand implements Callable<Integer> {
+final class StatsCommand implements Callable<Integer> {
     @Parameters(paramLabel = "SCENE", description = "An OBJ mesh or a .scene2d file.")
     Path scene;
 

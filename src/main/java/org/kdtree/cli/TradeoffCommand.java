@@ -26,7 +26,7 @@ import picocli.CommandLine.Parameters;
                 + "depth caps, then every other registered builder), trace a ray workload, and report build time, expected SAH cost, nodes, memory, nodes "
                 + "visited and triangle tests per ray, rays per second and the total time for 1, 10 and 100 rays per "
                 + "triangle. Writes CSV and a PNG chart with the Pareto front of build time against trace time.")
-public final class TradeoffCommand implements Callable<Integer> {
+final class TradeoffCommand implements Callable<Integer> {
     @Parameters(paramLabel = "MESH", description = "An OBJ mesh.")
     Path mesh;
 

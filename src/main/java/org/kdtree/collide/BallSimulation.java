@@ -1,5 +1,6 @@
 package org.kdtree.collide;
 
+import org.kdtree.geom.Tolerance;
 import org.kdtree.shape.Shapes2D;
 import org.kdtree.tree.KdTree;
 
@@ -45,7 +46,7 @@ public final class BallSimulation {
         this.gy = gy;
         this.restitution = restitution;
         double extent = Math.max(1, SphereQueries.scale(tree.bounds()));
-        skin = extent * 1e-9;
+        skin = extent * Tolerance.CONTACT_SKIN;
         x = new double[capacity];
         y = new double[capacity];
         vx = new double[capacity];

@@ -190,16 +190,6 @@ public final class Box {
     }
 
     /**
-     * {@return true when the closed boxes share at least one point} Touching faces count.
-     * @param other a box of the same dimension
-     */
-    public boolean overlaps(Box other) {
-        for (int a = 0; a < min.length; a++)
-            if (other.max[a] < min[a] || other.min[a] > max[a]) return false;
-        return true;
-    }
-
-    /**
      * {@return true when the closed box contains the point} A point on a face counts.
      * @param p the point's coordinates, at least k of them
      */
@@ -232,13 +222,6 @@ public final class Box {
         double v = 1;
         for (int a = 0; a < min.length; a++) v *= Math.max(0, max[a] - min[a]);
         return v;
-    }
-
-    /** {@return the axis of largest extent} The first one on a tie. */
-    public int longestAxis() {
-        int best = 0;
-        for (int a = 1; a < min.length; a++) if (extent(a) > extent(best)) best = a;
-        return best;
     }
 
     /**

@@ -7,7 +7,11 @@ package org.kdtree.geom;
  *
  * <p>The SAH's plane choice needs none: it compares exact coordinates. Clipping pads its
  * results, the traversal and the point and sphere queries allow a relative slack so that
- * rounding never loses an answer, and tests compare with an instance of this record.
+ * rounding never loses an answer, and tests compare with an instance of this record. No other
+ * main class writes a tolerance as a literal (a test reads the sources to keep it so); the
+ * traversal's slack is here too, {@link #TRAVERSAL_SLACK}. Thresholds that are not about rounding
+ * stay with their users: the tracer's {@code EffectPlan.NEGLIGIBLE_WEIGHT} (an invisible path
+ * weight), the workbench's zoom limits.
  *
  * @param relative relative tolerance, e.g. {@code 1e-9}
  * @param absolute absolute floor, for values near zero
@@ -77,6 +81,20 @@ public record Tolerance(double relative, double absolute) {
      * cross product cannot tell a degenerate triangle from a thin one; exact arithmetic decides.
      */
     public static final double DEGENERATE_ULPS = 64;
+
+    /**
+     * The smallest sine of the angle between a camera's up hint and its view direction: below it
+     * their cross product (the image's right-hand axis) is mostly rounding, and the picture would
+     * spin with the last bits of the input, so the scene file refuses such a camera.
+     */
+    public static final double PARALLEL_SINE = 1e-9;
+
+    /**
+     * How far a ball stopped at a contact is set off the surface, relative to the scene's extent:
+     * far above the rounding of the contact point (about 1e-16 relative), so that its next sweep
+     * does not start inside the surface, and far below anything visible.
+     */
+    public static final double CONTACT_SKIN = 1e-9;
 
     /** Default for comparing double-precision ray distances. */
     public static final Tolerance DEFAULT = new Tolerance(1e-9, 1e-12);

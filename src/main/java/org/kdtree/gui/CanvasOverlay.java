@@ -3,7 +3,7 @@ package org.kdtree.gui;
 import java.awt.Graphics2D;
 
 /** Something drawn over the scene and tree, such as the ray and the traversal's current step. */
-public interface CanvasOverlay {
+interface CanvasOverlay {
     /**
      * Paints over the scene and tree, in screen coordinates.
      *

@@ -35,7 +35,7 @@ import org.kdtree.tree.KdTree;
  * <p>The simulation steps on the timer, never while painting; painting draws a cached image of
  * the scene and tree, then the balls with one reused ellipse.
  */
-public final class CollisionsView extends JPanel {
+final class CollisionsView extends JPanel {
     /** Milliseconds between frames, and the simulated time a frame advances (seconds). */
     static final int FRAME_MILLIS = 30;
     private static final double FRAME_SECONDS = FRAME_MILLIS / 1000.0;
@@ -160,7 +160,8 @@ public final class CollisionsView extends JPanel {
         simScene = model.scene();
         Box b = simTree.bounds();
         if (b.isEmpty() || !b.isFinite()) b = Box.of2(0, 0, 10, 10);
-        extent = Math.max(Math.max(b.extent(0), b.extent(1)), 1e-9);
+        extent = Math.max(b.extent(0), b.extent(1));
+        if (!(extent > 0)) extent = 10;   // a point-sized scene: the 10 x 10 window of an empty one
         simBox = b;
         int n = ((Number) count.getValue()).intValue();
         sim = new BallSimulation(simTree, simScene, n, 0, -GRAVITY * extent, RESTITUTION);

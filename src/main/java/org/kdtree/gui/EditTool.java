@@ -1,7 +1,7 @@
 package org.kdtree.gui;
 
 /** What a left-button drag on the canvas does. */
-public enum EditTool {
+enum EditTool {
     /** Selects, moves and resizes objects. */
     SELECT("Select / move", "Drag an object to move it, drag a corner to resize it; Delete removes it"),
     /** Casts the ray the traversal stepper follows. */

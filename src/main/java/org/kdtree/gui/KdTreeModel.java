@@ -9,7 +9,7 @@ import javax.swing.tree.TreePath;
 import org.kdtree.tree.KdTree;
 
 /** A Swing {@link TreeModel} read straight from a {@link KdTree}'s arrays: no copy, so big trees open at once. */
-public final class KdTreeModel implements TreeModel {
+final class KdTreeModel implements TreeModel {
     /** One node, shown as its split plane or its leaf contents. */
     public record NodeRef(KdTree tree, int node) {
         @Override public String toString() {

@@ -23,7 +23,7 @@ import org.kdtree.tree.KdTree;
  * farther than the point. Ties go to the lower object index, as a sort of all objects by
  * (distance, index) would order them.
  */
-public final class NearestRecorder {
+final class NearestRecorder {
     /** Relative slack on pruning, on squared distances ({@link Tolerance#PRUNE_SLACK}), as the point queries use. */
     static final double SLACK = Tolerance.PRUNE_SLACK;
 

@@ -26,7 +26,7 @@ import org.kdtree.tree.KdTree;
  * the k-th best distance), the nodes entered and pruned so far, the current node and its
  * distance bound, the object tested, the best list.
  */
-public final class NearestStepperPanel extends JPanel implements CanvasOverlay {
+final class NearestStepperPanel extends JPanel implements CanvasOverlay {
     private static final Color ENTERED = new Color(0xFF, 0xC8, 0x30, 80);
     private static final Color NEAR_TINT = new Color(0x40, 0xB0, 0x40, 70), FAR_TINT = new Color(0x40, 0x80, 0xE0, 70);
     private static final Color PRUNED_FILL = new Color(0x50, 0x50, 0x50, 45);

@@ -18,7 +18,7 @@ import java.util.List;
  * @param tests   object distance tests performed (each object at most once)
  * @param result  the k nearest objects (fewer if the scene has fewer), nearest first
  */
-public record NearestTrace(List<Step> steps, double[] query, int k, long nodes, long leaves, long pruned, long tests,
+record NearestTrace(List<Step> steps, double[] query, int k, long nodes, long leaves, long pruned, long tests,
                            List<Neighbour> result) {
     /** What happened at a step. */
     public enum Kind {

@@ -3,7 +3,7 @@ package org.kdtree.gui;
 import java.awt.Color;
 
 /** The colours of the 2-D canvas, shared by the painter and the tests that read its pixels back. */
-public final class Palette {
+final class Palette {
     private Palette() {
     }
 

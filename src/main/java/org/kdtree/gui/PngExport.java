@@ -6,7 +6,7 @@ import java.nio.file.Path;
 import javax.imageio.ImageIO;
 
 /** Writes a canvas snapshot as a PNG file. */
-public final class PngExport {
+final class PngExport {
     private PngExport() {
     }
 

@@ -15,7 +15,7 @@ import org.kdtree.limits.Limits;
 import org.kdtree.shape.Shape2D;
 
 /** Picks a built-in scene, or generates a random one with a given count. */
-public final class ScenePanel extends JPanel {
+final class ScenePanel extends JPanel {
     /** The built-in scenes by name. */
     private final Map<String, Supplier<List<Shape2D>>> builtins = BuiltinScenes.all();
     /** The random generators by name. */

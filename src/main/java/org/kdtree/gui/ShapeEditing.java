@@ -5,7 +5,7 @@ import java.util.List;
 import org.kdtree.shape.Shape2D;
 
 /** Mouse editing of 2-D shapes: picking, moving whole shapes, dragging one corner. */
-public final class ShapeEditing {
+final class ShapeEditing {
     private ShapeEditing() {
     }
 

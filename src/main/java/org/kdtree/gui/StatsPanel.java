@@ -12,7 +12,7 @@ import org.kdtree.tree.KdTree;
 import org.kdtree.tree.TreeStats;
 
 /** The statistics of the current tree: build time, nodes, leaves, empty leaves, depth, refs per leaf, SAH cost. */
-public final class StatsPanel extends JPanel {
+final class StatsPanel extends JPanel {
     /** The value label of each statistic, by name. */
     private final Map<String, JLabel> values = new LinkedHashMap<>();
     /** Shown while a background build runs. */

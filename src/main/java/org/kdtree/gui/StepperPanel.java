@@ -21,7 +21,7 @@ import org.kdtree.tree.KdTree;
  * labels and on the canvas (current voxel, [tMin, tMax] on the ray, tSplit, near and far
  * children, stacked voxels, objects tested, the hit).
  */
-public final class StepperPanel extends JPanel implements CanvasOverlay {
+final class StepperPanel extends JPanel implements CanvasOverlay {
     /** Records a ray's traversal of a tree: the library's traverser behind a listener. */
     public interface Tracer {
         /**

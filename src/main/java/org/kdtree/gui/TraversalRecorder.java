@@ -16,7 +16,7 @@ import org.kdtree.tree.KdTree;
  * into a {@link TraversalTrace}: the stepper replays what the library did, it does not
  * traverse on its own.
  */
-public final class TraversalRecorder implements TraversalListener {
+final class TraversalRecorder implements TraversalListener {
     private final List<TraversalTrace.Step> steps = new ArrayList<>();
     private final List<TraversalTrace.Entry> stack = new ArrayList<>();
     private final List<Integer> tested = new ArrayList<>();

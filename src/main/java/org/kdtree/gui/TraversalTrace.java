@@ -15,7 +15,7 @@ import java.util.List;
  * @param hitObject  the object finally hit, or -1
  * @param hitT       its ray parameter (NaN without a hit)
  */
-public record TraversalTrace(List<Step> steps, long nodes, long leaves, long tests, int hitObject, double hitT) {
+record TraversalTrace(List<Step> steps, long nodes, long leaves, long tests, int hitObject, double hitT) {
     /** What happened at a step. */
     public enum Kind {
         /** The ray enters the scene box. */

@@ -20,7 +20,7 @@ import org.kdtree.shape.Shape2D;
  * mouse highlighted, zoom with the wheel, pan with the right or middle button, and left-button
  * editing, ray casting or placing the k-NN query according to the current {@link EditTool}.
  */
-public final class TreeCanvas extends JComponent {
+final class TreeCanvas extends JComponent {
     /** The model whose scene and tree are drawn and edited. */
     private final WorkbenchModel model;
     /** Maps scene coordinates to pixels. */

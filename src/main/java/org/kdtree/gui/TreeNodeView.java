@@ -6,7 +6,7 @@ import javax.swing.tree.TreePath;
 import javax.swing.tree.TreeSelectionModel;
 
 /** The tree as a {@link JTree}, kept in step with the canvas: hovering a leaf selects it here, and picking a node here highlights its voxel. */
-public final class TreeNodeView extends JScrollPane {
+final class TreeNodeView extends JScrollPane {
     /** The Swing tree showing the kd-tree's nodes. */
     private final JTree jtree = new JTree();
     /** The model whose tree is shown and whose selected node follows this view's. */

@@ -35,7 +35,7 @@ import org.kdtree.io.SceneLoader;
 import org.kdtree.render.Image;
 import org.kdtree.render.RenderJob;
 import org.kdtree.render.Renderer;
-import org.kdtree.render.Scene;
+import org.kdtree.scene.Scene;
 import org.kdtree.render.Tracer;
 import org.kdtree.shape.Primitives;
 import org.kdtree.traverse.Traverser;

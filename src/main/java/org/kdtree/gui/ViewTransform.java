@@ -1,6 +1,5 @@
 package org.kdtree.gui;
 
-import java.awt.geom.Point2D;
 import org.kdtree.geom.Box;
 
 /**
@@ -62,14 +61,6 @@ public final class ViewTransform {
      * @param py a pixel row
      */
     public double worldY(double py) { return (offsetY - py) / scale; }
-
-    /**
-     * {@return the scene point at pixel (px, py)}
-     *
-     * @param px a pixel column
-     * @param py a pixel row
-     */
-    public Point2D.Double toWorld(double px, double py) { return new Point2D.Double(worldX(px), worldY(py)); }
 
     /**
      * Zooms by {@code factor} around the pixel (px, py).

@@ -25,7 +25,7 @@ import org.kdtree.tree.KdTree;
  * ready, and a change made meanwhile cancels the stale build (its thread is interrupted, which
  * every builder obeys).
  */
-public final class WorkbenchModel {
+final class WorkbenchModel {
     /** What changed, so that a view redoes only what it must. */
     public enum Change {
         /** A new scene or tree. */

@@ -21,7 +21,7 @@ import java.util.regex.Pattern;
  * {@code $.lights[1].samples}), so that every error about a scene file names the file, the
  * line and the field. Read with gson's streaming {@link JsonReader} (strict: no comments).
  */
-public final class JsonNode {
+final class JsonNode {
     private static final Pattern LINE = Pattern.compile("line (\\d+)");
 
     private final Object value;   // Map<String, JsonNode>, List<JsonNode>, String, Double (as text), Boolean, null
@@ -160,16 +160,6 @@ public final class JsonNode {
         JsonNode n = fields().get(name);
         if (n == null) throw error("missing field '" + name + "'");
         return n;
-    }
-
-    /**
-     * {@return an optional field of this object, or null}
-     *
-     * @param name the field's name
-     * @throws SceneFormatException if this is not an object
-     */
-    public JsonNode opt(String name) throws SceneFormatException {
-        return fields().get(name);
     }
 
     /**

@@ -11,8 +11,8 @@ import java.util.LinkedHashMap;
 import java.util.List;
 import java.util.Map;
 import java.util.Set;
-import org.kdtree.render.Material;
-import org.kdtree.render.Vec3;
+import org.kdtree.scene.Material;
+import org.kdtree.scene.Vec3;
 
 /**
  * Reads MTL material libraries into renderer {@link Material}s and maps the MTL illumination

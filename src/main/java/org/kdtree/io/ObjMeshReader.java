@@ -1,25 +1,61 @@
 package org.kdtree.io;
 
 import java.io.IOException;
-import java.io.InputStreamReader;
 import java.io.Reader;
-import java.nio.charset.StandardCharsets;
 import java.nio.file.Path;
+import java.util.ArrayList;
+import java.util.Arrays;
+import java.util.LinkedHashMap;
+import java.util.List;
+import java.util.Map;
 import org.kdtree.shape.InvalidGeometryException;
 import org.kdtree.shape.TriangleMesh;
 
 /**
- * Reads the geometry of a Wavefront OBJ file into a {@link TriangleMesh}, as the benchmark
- * spec defines it: {@code v x y z} lines parsed as doubles; {@code f} lines with 1-based or
- * negative (relative) indices in the forms {@code a}, {@code a/b}, {@code a//c}, {@code a/b/c};
- * polygons fan-triangulated (v0, vi, vi+1); triangles numbered in file order; every other
- * line ignored. Materials are the renderer's business (see the scene reader).
+ * The one reader of Wavefront OBJ files, as the benchmark spec defines them: {@code v x y z}
+ * lines parsed as doubles; {@code f} lines with 1-based or negative (relative) indices in the
+ * forms {@code a}, {@code a/b}, {@code a//c}, {@code a/b/c}; polygons fan-triangulated
+ * (v0, vi, vi+1); triangles numbered in file order. For scenes it also reports {@code usemtl}
+ * per face and the {@code mtllib} files named; every other line is ignored.
  *
- * <p>A streaming parser of our own rather than a general OBJ library: it reads a million
- * triangles straight into flat arrays, and every error names the file and line.
+ * <p>A streaming parser of our own rather than a general OBJ library: vertices and faces go
+ * straight from the line into the receiver's flat arrays (a {@link Sink}), a million triangles
+ * without an object per vertex, and every error names the file and line.
  */
 public final class ObjMeshReader {
     private ObjMeshReader() {
+    }
+
+    /** Receives an OBJ file's geometry as it is read, in file order. */
+    public interface Sink {
+        /**
+         * One {@code v} line.
+         *
+         * @param x the first coordinate
+         * @param y the second coordinate
+         * @param z the third coordinate
+         */
+        void vertex(double x, double y, double z);
+
+        /**
+         * One triangle of an {@code f} line.
+         *
+         * @param a the first corner: 0-based index among this file's vertices
+         * @param b the second corner
+         * @param c the third corner
+         * @param material index into {@link Materials#names()} of the {@code usemtl} in force, or -1 before any
+         */
+        void triangle(int a, int b, int c, int material);
+    }
+
+    /**
+     * The materials an OBJ file names: what the renderer needs beyond the geometry.
+     *
+     * @param names       names given to {@code usemtl}, in order of first use
+     * @param firstUse    the line of the first {@code usemtl} of each name (for error messages)
+     * @param libraries   the {@code mtllib} files, resolved against the OBJ's folder
+     */
+    public record Materials(List<String> names, List<Integer> firstUse, List<Path> libraries) {
     }
 
     /**
@@ -30,7 +66,7 @@ public final class ObjMeshReader {
      */
     public static TriangleMesh read(Path file) throws IOException {
         try (TextLines lines = TextLines.open(file)) {
-            return read(lines);
+            return mesh(lines);
         }
     }
 
@@ -42,50 +78,77 @@ public final class ObjMeshReader {
      * @throws IOException if the text cannot be read or is malformed
      */
     public static TriangleMesh read(Reader reader, String name) throws IOException {
-        return read(TextLines.of(reader, name));
+        return mesh(TextLines.of(reader, name));
     }
 
-    private static TriangleMesh read(TextLines in) throws IOException {
+    /**
+     * Streams an OBJ file's vertices and triangles into {@code sink}.
+     *
+     * @param file the OBJ file
+     * @param sink receives the geometry
+     * @return the materials the file names
+     * @throws IOException if the file cannot be read or is malformed
+     */
+    public static Materials read(Path file, Sink sink) throws IOException {
+        try (TextLines lines = TextLines.open(file)) {
+            return stream(lines, file.toAbsolutePath().getParent(), sink);
+        }
+    }
+
+    private static TriangleMesh mesh(TextLines in) throws IOException {
+        MeshArrays arrays = new MeshArrays();
+        stream(in, Path.of(""), arrays);
+        try {
+            return arrays.mesh();
+        } catch (InvalidGeometryException e) {
+            throw new SceneFormatException(in.name(), 0, e.getMessage());
+        }
+    }
+
+    /** The one loop over the lines. */
+    private static Materials stream(TextLines in, Path dir, Sink sink) throws IOException {
         String name = in.name();
-        DoubleList v = new DoubleList();
-        IntList tris = new IntList();
+        Map<String, Integer> materialIndex = new LinkedHashMap<>();
+        List<Integer> firstUse = new ArrayList<>();
+        List<Path> libraries = new ArrayList<>();
+        int vertexCount = 0, current = -1;
         int[] face = new int[16];
         for (String line = in.next(); line != null; line = in.next()) {
             int lineNo = in.line();
             String s = line.strip();
-            if (s.startsWith("v ") || s.startsWith("v\t")) {
-                String[] t = s.split("\\s+");
-                if (t.length < 4) throw new SceneFormatException(name, lineNo, "a vertex needs x y z, got '" + s + "'");
-                for (int a = 1; a <= 3; a++) v.add(number(t[a], name, lineNo));
-            } else if (s.startsWith("f ") || s.startsWith("f\t")) {
-                String[] t = s.split("\\s+");
-                int n = t.length - 1;
-                if (n < 3) throw new SceneFormatException(name, lineNo, "a face needs at least 3 vertices, got " + n);
-                if (face.length < n) face = new int[n];
-                int vertexCount = v.size() / 3;
-                for (int c = 0; c < n; c++) face[c] = index(t[c + 1], vertexCount, name, lineNo);
-                for (int c = 1; c + 1 < n; c++) tris.add(face[0], face[c], face[c + 1]);
+            String[] t = s.split("\\s+");
+            switch (t[0]) {
+                case "v" -> {
+                    if (t.length < 4) throw new SceneFormatException(name, lineNo, "a vertex needs x y z, got '" + s + "'");
+                    sink.vertex(number(t[1], name, lineNo), number(t[2], name, lineNo), number(t[3], name, lineNo));
+                    vertexCount++;
+                }
+                case "f" -> {
+                    int n = t.length - 1;
+                    if (n < 3) throw new SceneFormatException(name, lineNo, "a face needs at least 3 vertices, got " + n);
+                    if (face.length < n) face = new int[n];
+                    for (int c = 0; c < n; c++) face[c] = index(t[c + 1], vertexCount, name, lineNo);
+                    for (int c = 1; c + 1 < n; c++) sink.triangle(face[0], face[c], face[c + 1], current);
+                }
+                case "usemtl" -> {
+                    if (t.length < 2) throw new SceneFormatException(name, lineNo, "usemtl needs a material name");
+                    String m = s.substring(6).strip();
+                    Integer i = materialIndex.get(m);
+                    if (i == null) {
+                        i = materialIndex.size();
+                        materialIndex.put(m, i);
+                        firstUse.add(lineNo);
+                    }
+                    current = i;
+                }
+                case "mtllib" -> {
+                    if (t.length < 2) throw new SceneFormatException(name, lineNo, "mtllib needs a file name");
+                    for (int i = 1; i < t.length; i++) libraries.add(dir.resolve(t[i]));
+                }
+                default -> { }
             }
         }
-        try {
-            return new TriangleMesh(v.toArray(), tris.toArray());
-        } catch (InvalidGeometryException e) {
-            throw new SceneFormatException(name, 0, e.getMessage());
-        }
-    }
-
-    /**
-     * {@return the mesh of an OBJ file on the class path} (bundled scenes).
-     *
-     * @param resource the resource's name
-     * @throws IOException if there is no such resource or it is malformed
-     */
-    public static TriangleMesh readResource(String resource) throws IOException {
-        var stream = ObjMeshReader.class.getResourceAsStream(resource);
-        if (stream == null) throw new SceneFormatException(resource, 0, "no such resource");
-        try (Reader r = new InputStreamReader(stream, StandardCharsets.UTF_8)) {
-            return read(r, resource);
-        }
+        return new Materials(List.copyOf(materialIndex.keySet()), List.copyOf(firstUse), List.copyOf(libraries));
     }
 
     /** A finite coordinate, or an error naming the file and line. */
@@ -117,30 +180,28 @@ public final class ObjMeshReader {
         return zeroBased;
     }
 
-    private static final class DoubleList {
-        private double[] a = new double[1024];
-        private int n;
+    /** The mesh's flat arrays, grown by doubling and trimmed once at the end. */
+    private static final class MeshArrays implements Sink {
+        private double[] vertices = new double[3 * 1024];
+        private int[] indices = new int[3 * 1024];
+        private int nv, ni;
 
-        void add(double x) {
-            if (n == a.length) a = java.util.Arrays.copyOf(a, n * 2);
-            a[n++] = x;
+        @Override public void vertex(double x, double y, double z) {
+            if (nv + 3 > vertices.length) vertices = Arrays.copyOf(vertices, 2 * vertices.length);
+            vertices[nv++] = x;
+            vertices[nv++] = y;
+            vertices[nv++] = z;
         }
 
-        int size() { return n; }
-        double[] toArray() { return java.util.Arrays.copyOf(a, n); }
-    }
-
-    private static final class IntList {
-        private int[] a = new int[1024];
-        private int n;
-
-        void add(int x, int y, int z) {
-            if (n + 3 > a.length) a = java.util.Arrays.copyOf(a, a.length * 2);
-            a[n++] = x;
-            a[n++] = y;
-            a[n++] = z;
+        @Override public void triangle(int a, int b, int c, int material) {
+            if (ni + 3 > indices.length) indices = Arrays.copyOf(indices, 2 * indices.length);
+            indices[ni++] = a;
+            indices[ni++] = b;
+            indices[ni++] = c;
         }
 
-        int[] toArray() { return java.util.Arrays.copyOf(a, n); }
+        TriangleMesh mesh() {
+            return new TriangleMesh(Arrays.copyOf(vertices, nv), Arrays.copyOf(indices, ni));
+        }
     }
 }

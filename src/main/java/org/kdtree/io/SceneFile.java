@@ -10,14 +10,15 @@ import java.util.LinkedHashMap;
 import java.util.List;
 import java.util.Map;
 import org.joml.Matrix4d;
-import org.kdtree.render.Camera;
-import org.kdtree.render.GeometryBuilder;
-import org.kdtree.render.Light;
-import org.kdtree.render.Material;
+import org.kdtree.geom.Tolerance;
+import org.kdtree.scene.Camera;
+import org.kdtree.scene.GeometryBuilder;
+import org.kdtree.scene.Light;
+import org.kdtree.scene.Material;
 import org.kdtree.limits.Limits;
-import org.kdtree.render.Scene;
-import org.kdtree.render.Tessellation;
-import org.kdtree.render.Vec3;
+import org.kdtree.scene.Scene;
+import org.kdtree.scene.Tessellation;
+import org.kdtree.scene.Vec3;
 
 /**
  * Reads a JSON scene (docs/scene-format.md) into a {@link Scene}: all triangles of all objects
@@ -91,7 +92,7 @@ public final class SceneFile {
         Vec3 eye = vec(c.get("eye")), at = vec(c.get("lookAt"));
         Vec3 up = c.has("up") ? vec(c.get("up")) : new Vec3(0, 1, 0);
         if (at.minus(eye).length() == 0) throw c.get("lookAt").error("must differ from eye");
-        if (at.minus(eye).normalized().cross(up.normalized()).length() < 1e-9) throw c.get("up").error("must not be parallel to the view direction");
+        if (at.minus(eye).normalized().cross(up.normalized()).length() < Tolerance.PARALLEL_SINE) throw c.get("up").error("must not be parallel to the view direction");
         JsonNode fov = c.get("fov");
         double f = fov.number();
         if (f <= 0 || f >= 180) throw fov.error("field of view must be between 0 and 180 degrees, got " + f);
@@ -193,35 +194,44 @@ public final class SceneFile {
             throw o.error("would make " + triangles + " triangles; a scene holds at most " + MAX_TRIANGLES);
     }
 
+    /** Streams the OBJ's vertices and faces straight into the scene's arrays, then resolves its materials. */
     private void obj(JsonNode o) throws IOException {
         Path path = dir.resolve(o.get("file").string());
         if (!Files.isRegularFile(path)) throw o.get("file").error("no such file: " + path);
-        ObjMaterialMesh mesh = ObjMaterialMesh.read(path);
+        int base = geometry.vertexCount(), first = geometry.triangleCount();
+        ObjMeshReader.Materials used = ObjMeshReader.read(path, new ObjMeshReader.Sink() {
+            @Override public void vertex(double x, double y, double z) { geometry.vertex(x, y, z); }
+            @Override public void triangle(int a, int b, int c, int material) {
+                geometry.triangle(base + a, base + b, base + c, material, false);
+            }
+        });
+        int[] global = materials(path, used);
+        int fallback = -1;
+        for (int t = first; t < geometry.triangleCount(); t++) {
+            int m = geometry.materialOf(t);
+            if (m < 0 && fallback < 0) fallback = materialOf(o);
+            geometry.material(t, m < 0 ? fallback : global[m]);
+        }
+    }
+
+    /** The scene's index of each material the OBJ file names, from its MTL libraries. */
+    private int[] materials(Path path, ObjMeshReader.Materials used) throws IOException {
         Map<String, Material> library = new LinkedHashMap<>();
-        for (Path lib : mesh.libraries()) {
+        for (Path lib : used.libraries()) {
             if (!Files.isRegularFile(lib))
                 throw new SceneFormatException(path.toString(), 0, "mtllib " + lib.getFileName() + ": no such file (" + lib + ")");
             library.putAll(MtlMaterials.read(lib));
         }
-        int[] global = new int[mesh.materialNames().size()];
+        int[] global = new int[used.names().size()];
         for (int i = 0; i < global.length; i++) {
-            String m = mesh.materialNames().get(i);
+            String m = used.names().get(i);
             Material mat = library.get(m);
             if (mat == null)
-                throw new SceneFormatException(path.toString(), mesh.usemtlLines().get(i),
-                        "usemtl " + m + ": no such material in " + (mesh.libraries().isEmpty() ? "any mtllib (none given)" : mesh.libraries()));
+                throw new SceneFormatException(path.toString(), used.firstUse().get(i),
+                        "usemtl " + m + ": no such material in " + (used.libraries().isEmpty() ? "any mtllib (none given)" : used.libraries()));
             global[i] = addMaterial(path.getFileName() + ":" + m, mat);
         }
-        int fallback = -1;
-        double[] v = mesh.vertices();
-        int base = geometry.vertexCount();
-        for (int i = 0; i < v.length / 3; i++) geometry.vertex(new Vec3(v[3 * i], v[3 * i + 1], v[3 * i + 2]), Vec3.ZERO);
-        int[] ix = mesh.indices();
-        for (int t = 0; t < mesh.triangleCount(); t++) {
-            int m = mesh.materialOf()[t];
-            if (m < 0 && fallback < 0) fallback = materialOf(o);
-            geometry.triangle(base + ix[3 * t], base + ix[3 * t + 1], base + ix[3 * t + 2], m < 0 ? fallback : global[m], false);
-        }
+        return global;
     }
 
     private int addMaterial(String name, Material m) {

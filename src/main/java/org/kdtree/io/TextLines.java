@@ -21,7 +21,7 @@ import java.nio.file.Path;
  * line that holds one is refused when it is reached: the decoder reads ahead, so only the line
  * itself knows where it is.
  */
-public final class TextLines implements Closeable {
+final class TextLines implements Closeable {
     private static final char BYTE_ORDER_MARK = '\uFEFF', REPLACEMENT = '\uFFFD';
 
     private final BufferedReader in;

@@ -1,5 +1,8 @@
 package org.kdtree.render;
 
+import org.kdtree.scene.Light;
+import org.kdtree.scene.Material;
+import org.kdtree.scene.Scene;
 import java.util.ArrayList;
 import java.util.EnumSet;
 import java.util.List;
@@ -103,13 +106,6 @@ public final class EffectPlan {
 
     /** {@return the effects this plan simulates} */
     public Set<Effect> effects() { return EnumSet.copyOf(effects); }
-
-    /**
-     * {@return whether this plan simulates effect {@code e}}
-     *
-     * @param e the effect
-     */
-    public boolean simulates(Effect e) { return effects.contains(e); }
 
     /** {@return one line per fact, for the render summary} */
     public String describe() {

@@ -25,17 +25,19 @@ public final class Image {
     public int height() { return height; }
 
     /**
-     * Sets pixel (x, y) to the radiance {@code c}.
+     * Sets pixel (x, y) to a radiance.
      *
      * @param x the column, from the left
      * @param y the row, from the top
-     * @param c the linear RGB radiance
+     * @param r the linear red radiance
+     * @param g the linear green radiance
+     * @param b the linear blue radiance
      */
-    public void set(int x, int y, Vec3 c) {
+    public void set(int x, int y, double r, double g, double b) {
         int i = 3 * (y * width + x);
-        rgb[i] = (float) c.x();
-        rgb[i + 1] = (float) c.y();
-        rgb[i + 2] = (float) c.z();
+        rgb[i] = (float) r;
+        rgb[i + 1] = (float) g;
+        rgb[i + 2] = (float) b;
     }
 
     /**

@@ -6,7 +6,7 @@ import java.util.SplittableRandom;
  * Random numbers seeded per pixel, so that a pixel's samples do not depend on which thread
  * renders it or in which order: images are reproducible and identical across thread counts.
  */
-public final class PixelSampler {
+final class PixelSampler {
     private final long seed;
     private SplittableRandom random;
 

@@ -1,5 +1,7 @@
 package org.kdtree.render;
 
+import org.kdtree.scene.Camera;
+import org.kdtree.scene.Scene;
 import java.util.Locale;
 import org.kdtree.build.KdTreeBuilder;
 import org.kdtree.traverse.Traverser;
@@ -76,7 +78,7 @@ public record RenderJob(Scene scene, KdTree tree, long buildNanos, RenderResult 
         StringBuilder s = new StringBuilder("rays:").append(System.lineSeparator());
         for (RayKind k : RayKind.values()) s.append(String.format(Locale.ROOT, "  %-10s %,14d%n", k.label(), rays.get(k)));
         s.append(String.format(Locale.ROOT, "  %-10s %,14d  (%,.0f rays/s over the render time)%n", "total", rays.total(),
-                rays.total() / Math.max(1e-9, renderNanos / 1e9)));
+                rays.total() / (Math.max(1, renderNanos) / 1e9)));
         return s.toString();
     }
 }

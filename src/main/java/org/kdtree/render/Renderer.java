@@ -1,5 +1,6 @@
 package org.kdtree.render;
 
+import org.kdtree.scene.Scene;
 import java.util.ArrayList;
 import java.util.List;
 import java.util.concurrent.ExecutionException;
@@ -121,10 +122,12 @@ public final class Renderer {
     private static void renderTile(Tracer tracer, Image image, int[][] pixelRays, int x0, int y0, int x1, int y1) {
         RayCounts c = tracer.counts();
         long[] before = new long[RayKind.values().length];
+        double[] rgb = new double[3];
         for (int y = y0; y < y1; y++) {
             for (int x = x0; x < x1; x++) {
                 if (pixelRays != null) for (RayKind k : RayKind.values()) before[k.ordinal()] = c.get(k);
-                image.set(x, y, tracer.pixel(x, y));
+                tracer.pixel(x, y, rgb);
+                image.set(x, y, rgb[0], rgb[1], rgb[2]);
                 if (pixelRays != null)
                     for (RayKind k : RayKind.values())
                         pixelRays[k.ordinal()][y * image.width() + x] = (int) (c.get(k) - before[k.ordinal()]);

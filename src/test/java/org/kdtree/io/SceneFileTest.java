@@ -9,9 +9,10 @@ import java.nio.file.Path;
 import org.junit.jupiter.api.Test;
 import org.junit.jupiter.api.io.TempDir;
 import org.kdtree.render.EffectPlan;
-import org.kdtree.render.Light;
-import org.kdtree.render.Material;
-import org.kdtree.render.Scene;
+import org.kdtree.scene.Light;
+import org.kdtree.scene.Material;
+import org.kdtree.scene.Scene;
+import org.kdtree.shape.TriangleMesh;
 
 /** JSON scenes, OBJ with usemtl and MTL libraries: content read, and errors that name file, line and field. */
 class SceneFileTest {
@@ -141,5 +142,12 @@ class SceneFileTest {
         assertThatThrownBy(() -> MtlMaterials.read(write("x.mtl", "newmtl a\nillum 12\n"))).hasMessageContaining("x.mtl:2: illum must be");
         assertThatThrownBy(() -> MtlMaterials.read(write("y.mtl", "newmtl a\nKd 1 1 1\nillum 2.0\n")))
                 .hasMessageEndingWith("y.mtl:3: illum must be a whole number from 0 to 10 (digits only), got 2.0");
+    }
+
+    @Test void aSceneReadsAnObjFileAsTheCommandsDoTriangleForTriangle() throws Exception {
+        TriangleMesh mesh = ObjMeshReader.read(Path.of("scenes/meshes/mtl-demo.obj"));
+        TriangleMesh scene = SceneFile.read(Path.of("scenes/obj-materials.json")).mesh();
+        assertThat(scene.indices()).isEqualTo(mesh.indices());
+        assertThat(scene.vertices()).isEqualTo(mesh.vertices());
     }
 }

@@ -9,7 +9,7 @@ import java.util.List;
 import org.junit.jupiter.api.Test;
 import org.kdtree.build.SahBuilder;
 import org.kdtree.io.SceneFile;
-import org.kdtree.render.Tessellation;
+import org.kdtree.scene.Tessellation;
 import org.kdtree.tree.CostModel;
 
 class LimitsTest {

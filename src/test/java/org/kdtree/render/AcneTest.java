@@ -1,5 +1,9 @@
 package org.kdtree.render;
 
+import org.kdtree.scene.Camera;
+import org.kdtree.scene.Light;
+import org.kdtree.scene.Scene;
+import org.kdtree.scene.Vec3;
 import static org.assertj.core.api.Assertions.assertThat;
 
 import java.util.List;
@@ -53,8 +57,9 @@ class AcneTest {
         int ballPixels = 0;
         for (int y = 0; y < H; y++) {
             for (int x = 0; x < W; x++) {
-                Vec3 d = cam.direction(x + 0.5, y + 0.5);
-                ray.set(cam.eye().x(), cam.eye().y(), cam.eye().z(), d.x(), d.y(), d.z());
+                double[] d = new double[3];
+                cam.direction(x + 0.5, y + 0.5, d);
+                ray.set(cam.eye().x(), cam.eye().y(), cam.eye().z(), d[0], d[1], d[2]);
                 if (!oracle.closestHit(ray, 0, Double.POSITIVE_INFINITY, hit) || withShadows.geometry().materialOf(hit.primitive) != 0)
                     continue;
                 ballPixels++;

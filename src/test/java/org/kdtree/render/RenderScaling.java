@@ -1,5 +1,6 @@
 package org.kdtree.render;
 
+import org.kdtree.scene.Scene;
 import java.nio.file.Path;
 import java.util.Arrays;
 import java.util.Locale;

@@ -1,5 +1,6 @@
 package org.kdtree.render;
 
+import org.kdtree.scene.Scene;
 import static org.assertj.core.api.Assertions.assertThat;
 
 import java.util.concurrent.atomic.AtomicInteger;

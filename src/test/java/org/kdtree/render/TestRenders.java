@@ -1,5 +1,6 @@
 package org.kdtree.render;
 
+import org.kdtree.scene.Scene;
 import java.io.IOException;
 import java.io.StringReader;
 import java.nio.file.Path;

@@ -1,4 +1,4 @@
-package org.kdtree.render;
+package org.kdtree.scene;
 
 import org.kdtree.limits.Limits;
 
@@ -51,15 +51,19 @@ public final class Camera {
     }
 
     /**
-     * {@return the unit direction of the ray through image point (px, py)}, in pixels from the top-left.
+     * Writes the unit direction of the ray through image point (px, py), in pixels from the top-left, to {@code out}.
      *
      * @param px x in pixels
      * @param py y in pixels
+     * @param out receives x, y, z
      */
-    public Vec3 direction(double px, double py) {
+    public void direction(double px, double py, double[] out) {
         double aspect = (double) width / height;
         double sx = (2 * px / width - 1) * tanHalfFov * aspect;
         double sy = (1 - 2 * py / height) * tanHalfFov;
-        return forward.plus(right.times(sx)).plus(up.times(sy)).normalized();
+        out[0] = forward.x() + right.x() * sx + up.x() * sy;
+        out[1] = forward.y() + right.y() * sx + up.y() * sy;
+        out[2] = forward.z() + right.z() * sx + up.z() * sy;
+        Vectors.normalize(out);
     }
 }

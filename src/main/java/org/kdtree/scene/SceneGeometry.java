@@ -1,4 +1,4 @@
-package org.kdtree.render;
+package org.kdtree.scene;
 
 import org.kdtree.shape.TriangleMesh;
 
@@ -44,49 +44,54 @@ public final class SceneGeometry {
     public int materialOf(int t) { return materialOf[t]; }
 
     /**
-     * {@return the unnormalised geometric normal (v1 - v0) x (v2 - v0) of triangle {@code t}}
+     * Writes the unnormalised geometric normal (v1 - v0) x (v2 - v0) of triangle {@code t} to {@code out}.
      *
      * @param t the triangle's index
+     * @param out receives x, y, z
      */
-    public Vec3 geometricNormal(int t) {
+    public void geometricNormal(int t, double[] out) {
         double[] v = mesh.vertices();
         int[] ix = mesh.indices();
         int a = 3 * ix[3 * t], b = 3 * ix[3 * t + 1], c = 3 * ix[3 * t + 2];
-        Vec3 e1 = new Vec3(v[b] - v[a], v[b + 1] - v[a + 1], v[b + 2] - v[a + 2]);
-        Vec3 e2 = new Vec3(v[c] - v[a], v[c + 1] - v[a + 1], v[c + 2] - v[a + 2]);
-        return e1.cross(e2);
+        double e1x = v[b] - v[a], e1y = v[b + 1] - v[a + 1], e1z = v[b + 2] - v[a + 2];
+        double e2x = v[c] - v[a], e2y = v[c + 1] - v[a + 1], e2z = v[c + 2] - v[a + 2];
+        out[0] = e1y * e2z - e1z * e2y;
+        out[1] = e1z * e2x - e1x * e2z;
+        out[2] = e1x * e2y - e1y * e2x;
     }
 
     /**
-     * {@return the point with barycentrics (u, v) on triangle {@code t}}: exact to rounding of the vertices' size.
+     * Writes the point with barycentrics (u, v) on triangle {@code t} to {@code out}: exact to rounding of the vertices' size.
      *
      * @param t the triangle's index
      * @param u the first barycentric coordinate
      * @param v the second barycentric coordinate
+     * @param out receives x, y, z
      */
-    public Vec3 point(int t, double u, double v) {
-        return interpolate(mesh.vertices(), t, u, v);
+    public void point(int t, double u, double v, double[] out) {
+        interpolate(mesh.vertices(), t, u, v, out);
     }
 
     /**
-     * {@return the unit shading normal at (u, v)}: interpolated if the triangle is smooth, else geometric.
+     * Writes the unit shading normal at (u, v) to {@code out}: interpolated if the triangle is smooth, else geometric.
      *
      * @param t the triangle's index
      * @param u the first barycentric coordinate
      * @param v the second barycentric coordinate
+     * @param out receives x, y, z
      */
-    public Vec3 shadingNormal(int t, double u, double v) {
-        if (!smooth[t]) return geometricNormal(t).normalized();
-        Vec3 n = interpolate(normals, t, u, v);
-        return n.isZero() ? geometricNormal(t).normalized() : n.normalized();
+    public void shadingNormal(int t, double u, double v, double[] out) {
+        if (smooth[t]) interpolate(normals, t, u, v, out);
+        if (!smooth[t] || (out[0] == 0 && out[1] == 0 && out[2] == 0)) geometricNormal(t, out);
+        Vectors.normalize(out);
     }
 
-    private Vec3 interpolate(double[] a, int t, double u, double v) {
+    private void interpolate(double[] a, int t, double u, double v, double[] out) {
         int[] ix = mesh.indices();
         int i0 = 3 * ix[3 * t], i1 = 3 * ix[3 * t + 1], i2 = 3 * ix[3 * t + 2];
         double w = 1 - u - v;
-        return new Vec3(w * a[i0] + u * a[i1] + v * a[i2],
-                w * a[i0 + 1] + u * a[i1 + 1] + v * a[i2 + 1],
-                w * a[i0 + 2] + u * a[i1 + 2] + v * a[i2 + 2]);
+        out[0] = w * a[i0] + u * a[i1] + v * a[i2];
+        out[1] = w * a[i0 + 1] + u * a[i1 + 1] + v * a[i2 + 1];
+        out[2] = w * a[i0 + 2] + u * a[i1 + 2] + v * a[i2 + 2];
     }
 }

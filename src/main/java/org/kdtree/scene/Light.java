@@ -1,4 +1,4 @@
-package org.kdtree.render;
+package org.kdtree.scene;
 
 import org.kdtree.limits.Limits;
 
@@ -39,7 +39,10 @@ public sealed interface Light {
             Limits.LIGHT_SAMPLES.check("samples", samples);
         }
 
-        /** {@return a unit vector in the light's plane} */
+        /**
+         * {@return a unit vector in the light's plane}: the square's points are
+         * center + (s - 0.5) size edgeU + (t - 0.5) size edgeV for s, t in [0, 1).
+         */
         public Vec3 edgeU() {
             Vec3 a = Math.abs(normal.x()) < 0.9 ? new Vec3(1, 0, 0) : new Vec3(0, 1, 0);
             return normal.cross(a).normalized();
@@ -47,15 +50,5 @@ public sealed interface Light {
 
         /** {@return the second unit vector in the light's plane} */
         public Vec3 edgeV() { return normal.cross(edgeU()); }
-
-        /**
-         * {@return the point at (s, t) in [0,1)^2 on the square}
-         *
-         * @param s the coordinate along {@link #edgeU()}
-         * @param t the coordinate along {@link #edgeV()}
-         */
-        public Vec3 pointAt(double s, double t) {
-            return center.plus(edgeU().times((s - 0.5) * size)).plus(edgeV().times((t - 0.5) * size));
-        }
     }
 }

@@ -1,6 +1,9 @@
-package org.kdtree.render;
+package org.kdtree.scene;
 
-/** A small immutable 3-vector for shading: points, directions and RGB colours alike. */
+/**
+ * A small immutable 3-vector for describing scenes: points, directions and RGB colours alike.
+ * The tracer does not use it per ray (it allocates); it works on arrays with {@link Vectors}.
+ */
 public record Vec3(double x, double y, double z) {
     /** The zero vector (black). */
     public static final Vec3 ZERO = new Vec3(0, 0, 0);
@@ -52,16 +55,6 @@ public record Vec3(double x, double y, double z) {
     }
     /** {@return -this} */
     public Vec3 negate() { return new Vec3(-x, -y, -z); }
-    /** {@return the largest absolute component}: the magnitude that rounding errors scale with. */
-    public double maxAbs() { return Math.max(Math.abs(x), Math.max(Math.abs(y), Math.abs(z))); }
-    /** {@return the largest component} (path weights). */
-    public double max() { return Math.max(x, Math.max(y, z)); }
     /** {@return whether all components are zero} */
     public boolean isZero() { return x == 0 && y == 0 && z == 0; }
-    /**
-     * {@return component {@code axis}: x for 0, y for 1, z for 2}
-     *
-     * @param axis the axis
-     */
-    public double get(int axis) { return axis == 0 ? x : axis == 1 ? y : z; }
 }

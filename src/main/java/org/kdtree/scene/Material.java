@@ -1,4 +1,4 @@
-package org.kdtree.render;
+package org.kdtree.scene;
 
 /**
  * A surface: Lambertian colour, optional Phong highlight, optional mirror reflection and

@@ -1,4 +1,4 @@
-package org.kdtree.render;
+package org.kdtree.scene;
 
 import java.util.Arrays;
 import org.joml.Matrix3d;
@@ -48,16 +48,30 @@ public final class GeometryBuilder {
      * @return the vertex's index
      */
     public int vertex(Vec3 p, Vec3 n) {
+        int i = 3 * vertex(p.x(), p.y(), p.z());
+        normalTransform.transform(tmp.set(n.x(), n.y(), n.z()));
+        if (tmp.lengthSquared() > 0) tmp.normalize();
+        normals[i] = tmp.x; normals[i + 1] = tmp.y; normals[i + 2] = tmp.z;
+        return i / 3;
+    }
+
+    /**
+     * Adds a vertex (transformed) without a normal, as a file's meshes give them; returns its index.
+     *
+     * @param x the first coordinate, before the transform
+     * @param y the second coordinate, before the transform
+     * @param z the third coordinate, before the transform
+     * @return the vertex's index
+     */
+    public int vertex(double x, double y, double z) {
         if (3 * vertexCount + 3 > vertices.length) {
             vertices = Arrays.copyOf(vertices, vertices.length * 2);
             normals = Arrays.copyOf(normals, normals.length * 2);
         }
-        transform.transformPosition(tmp.set(p.x(), p.y(), p.z()));
+        transform.transformPosition(tmp.set(x, y, z));
         int i = 3 * vertexCount;
         vertices[i] = tmp.x; vertices[i + 1] = tmp.y; vertices[i + 2] = tmp.z;
-        normalTransform.transform(tmp.set(n.x(), n.y(), n.z()));
-        if (tmp.lengthSquared() > 0) tmp.normalize();
-        normals[i] = tmp.x; normals[i + 1] = tmp.y; normals[i + 2] = tmp.z;
+        normals[i] = 0; normals[i + 1] = 0; normals[i + 2] = 0;
         return vertexCount++;
     }
 
@@ -83,6 +97,21 @@ public final class GeometryBuilder {
         smooth[triangleCount] = smoothShaded;
         triangleCount++;
     }
+
+    /**
+     * {@return the material index of triangle {@code t}, added so far}
+     *
+     * @param t the triangle's index
+     */
+    public int materialOf(int t) { return materials[t]; }
+
+    /**
+     * Sets the material of triangle {@code t} (a file's triangles are resolved after its materials are read).
+     *
+     * @param t the triangle's index
+     * @param material the material index
+     */
+    public void material(int t, int material) { materials[t] = material; }
 
     /**
      * Adds a flat quad a-b-c-d (counter-clockwise seen from the front).

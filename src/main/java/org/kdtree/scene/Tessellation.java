@@ -1,4 +1,4 @@
-package org.kdtree.render;
+package org.kdtree.scene;
 
 import org.kdtree.limits.Limits;
 

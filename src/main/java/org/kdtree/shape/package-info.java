@@ -1,0 +1,8 @@
+/**
+ * The primitives a builder sees ({@link org.kdtree.shape.Primitives}: bounds and clipped
+ * bounds, nothing of rays): 3-D triangle meshes in flat arrays, 2-D shapes, k-D points, and
+ * procedurally generated scenes.
+ *
+ * <p>Layer 2: it may use {@code limits} and {@code geom}.
+ */
+package org.kdtree.shape;

@@ -1,0 +1,7 @@
+/**
+ * The measured trade-offs: every builder variant on one scene and ray workload (build time,
+ * expected cost, trace speed, Pareto front), the nearest-neighbour study, and their charts.
+ *
+ * <p>Layer 5: it may use the packages of layers 1 to 4.
+ */
+package org.kdtree.tradeoff;

@@ -1,0 +1,120 @@
+package org.kdtree.architecture;
+
+import static org.assertj.core.api.Assertions.assertThat;
+
+import java.nio.file.Path;
+import java.util.ArrayList;
+import java.util.HashMap;
+import java.util.List;
+import java.util.Map;
+import java.util.SortedMap;
+import java.util.regex.Matcher;
+import java.util.regex.Pattern;
+import org.junit.jupiter.api.Test;
+
+/**
+ * The package structure of docs/architecture.md, checked against the imports of src/main: no
+ * cycle between packages, every package in a layer, every use pointing to a lower layer; and the
+ * precision rule of {@code geom.Tolerance}: no tolerance written as a literal anywhere else.
+ */
+class ArchitectureTest {
+    private static final SortedMap<String, SortedMap<String, Integer>> USES = PackageImports.read();
+
+    @Test void thePackagesFormNoCycle() {
+        assertThat(Cycles.of(USES)).as("package cycles").isEmpty();
+    }
+
+    @Test void everyPackageHasALayerAndEveryLayerAPackage() {
+        Map<String, Integer> layers = Layers.read();
+        assertThat(layers.keySet()).as("packages in the layers of " + Layers.DOCUMENT)
+                .containsExactlyInAnyOrderElementsOf(USES.keySet());
+    }
+
+    @Test void everyUseGoesDownTheLayers() {
+        Map<String, Integer> layer = Layers.read();
+        List<String> wrong = new ArrayList<>();
+        USES.forEach((from, targets) -> targets.keySet().forEach(to -> {
+            if (layer.containsKey(from) && layer.containsKey(to) && layer.get(to) >= layer.get(from))
+                wrong.add(from + " (layer " + (layer.get(from) + 1) + ") uses " + to + " (layer " + (layer.get(to) + 1) + ")");
+        }));
+        assertThat(wrong).as("uses against the layers of " + Layers.DOCUMENT).isEmpty();
+    }
+
+    /** Each package says what it holds and what it may use, with the layer the document gives it. */
+    @Test void everyPackageHasAPackageInfoNamingItsLayer() {
+        Map<String, Integer> layer = Layers.read();
+        List<String> wrong = new ArrayList<>();
+        for (String p : USES.keySet()) {
+            Path info = SourceFiles.MAIN.resolve("org/kdtree/" + p + "/package-info.java");
+            if (!java.nio.file.Files.exists(info)) wrong.add(info + ": missing");
+            else if (layer.containsKey(p) && !SourceFiles.read(info).contains("Layer " + (layer.get(p) + 1)))
+                wrong.add(info + ": does not say 'Layer " + (layer.get(p) + 1) + "'");
+        }
+        assertThat(wrong).isEmpty();
+    }
+
+    @Test void theCycleCheckFindsACycle() {
+        Map<String, Map<String, Integer>> graph = Map.of("io", Map.of("render", 1), "render", Map.of("scene", 1),
+                "scene", Map.of("io", 1), "cli", Map.of("io", 1));
+        assertThat(Cycles.of(graph)).singleElement().satisfies(c -> assertThat(c).containsExactlyInAnyOrder("io", "render", "scene"));
+    }
+
+    /** Small literals that are not tolerances. */
+    private static final java.util.Set<String> NOT_TOLERANCES = java.util.Set.of(
+            "SplitMix64.java: 0x1.0p-53");   // 53 random bits to a fraction in [0, 1)
+
+    /** Scientific literals of 1e-5 and below, hexadecimal floating-point literals: precision, which has one home. */
+    @Test void toleranceLiteralsLiveOnlyInTolerance() {
+        Pattern literal = Pattern.compile("\\b(\\d+(\\.\\d*)?[eE]-0*([5-9]|\\d{2,})\\b|0[xX][0-9a-fA-F.]+[pP][-+]?\\d+)");
+        List<String> found = new ArrayList<>();
+        for (Path file : SourceFiles.all()) {
+            if (file.endsWith(Path.of("geom/Tolerance.java"))) continue;
+            String code = SourceFiles.code(SourceFiles.read(file));
+            Matcher m = literal.matcher(code);
+            while (m.find()) if (!NOT_TOLERANCES.contains(file.getFileName() + ": " + m.group())) found.add(file + ": " + m.group());
+        }
+        assertThat(found).as("tolerance literals outside geom.Tolerance").isEmpty();
+    }
+
+    /** Cycles in a graph: its strongly connected components of more than one node (Tarjan). */
+    static final class Cycles {
+        private final Map<String, ? extends Map<String, Integer>> graph;
+        private final Map<String, Integer> index = new HashMap<>(), low = new HashMap<>();
+        private final List<String> stack = new ArrayList<>();
+        private final List<List<String>> cycles = new ArrayList<>();
+
+        private Cycles(Map<String, ? extends Map<String, Integer>> graph) {
+            this.graph = graph;
+        }
+
+        static List<List<String>> of(Map<String, ? extends Map<String, Integer>> graph) {
+            Cycles c = new Cycles(graph);
+            for (String node : graph.keySet()) if (!c.index.containsKey(node)) c.visit(node);
+            return c.cycles;
+        }
+
+        private void visit(String node) {
+            index.put(node, index.size());
+            low.put(node, index.get(node));
+            stack.add(node);
+            Map<String, Integer> targets = graph.get(node);
+            for (String next : targets == null ? java.util.Set.<String>of() : targets.keySet()) {
+                if (!index.containsKey(next)) {
+                    visit(next);
+                    low.put(node, Math.min(low.get(node), low.get(next)));
+                } else if (stack.contains(next)) {
+                    low.put(node, Math.min(low.get(node), index.get(next)));
+                }
+            }
+            if (low.get(node).equals(index.get(node))) {
+                List<String> component = new ArrayList<>();
+                String top;
+                do {
+                    top = stack.remove(stack.size() - 1);
+                    component.add(top);
+                } while (!top.equals(node));
+                if (component.size() > 1) cycles.add(component);
+            }
+        }
+    }
+}
