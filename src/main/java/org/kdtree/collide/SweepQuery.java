@@ -41,15 +41,13 @@ public final class SweepQuery {
      * @param prims the primitives' exact tests, of the tree's dimension
      */
     public SweepQuery(KdTree tree, Collider prims) {
-        if (tree.dimension() != prims.dimension())
-            throw new IllegalArgumentException("tree is " + tree.dimension() + "-D, primitives " + prims.dimension() + "-D");
+        tree.requireDimension(prims.dimension(), "primitives");
         this.tree = tree;
         this.prims = prims;
         k = tree.dimension();
         Box b = tree.bounds();
-        lo = new double[k];
-        hi = new double[k];
-        for (int a = 0; a < k; a++) { lo[a] = b.min(a); hi[a] = b.max(a); }
+        lo = b.minCorner();
+        hi = b.maxCorner();
         sceneScale = SphereQueries.scale(b);
         tested = new Mailbox(prims.size());
         int depth = tree.stats().maxDepth() + 2;

@@ -132,6 +132,12 @@ public final class Box {
     /** {@return a new box with the same corners} */
     public Box copy() { return new Box(min, max); }
 
+    /** {@return the lower corner, as a new array} (for hot loops that keep the box in locals) */
+    public double[] minCorner() { return min.clone(); }
+
+    /** {@return the upper corner, as a new array} */
+    public double[] maxCorner() { return max.clone(); }
+
     /**
      * Grows the box to contain the point {@code p} (read from {@code p[offset..offset+k)}).
      *

@@ -28,8 +28,7 @@ public final class PointTree {
      *               one leaf, as every builder of the project lists points)
      */
     public PointTree(PointsKd points, KdTree tree) {
-        if (tree.dimension() != points.dimension())
-            throw new IllegalArgumentException("tree is " + tree.dimension() + "-D, points " + points.dimension() + "-D");
+        tree.requireDimension(points.dimension(), "points");
         this.points = points;
         this.tree = tree;
         this.leafCoords = inLeafOrder(points, tree.refArray());

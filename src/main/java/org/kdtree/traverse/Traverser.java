@@ -63,8 +63,7 @@ public final class Traverser implements RayQuery {
      * @throws IllegalArgumentException if their dimensions differ
      */
     public Traverser(KdTree tree, Intersector prims) {
-        if (tree.dimension() != prims.dimension())
-            throw new IllegalArgumentException("tree is " + tree.dimension() + "-D, primitives " + prims.dimension() + "-D");
+        tree.requireDimension(prims.dimension(), "primitives");
         this.tree = tree;
         this.prims = prims;
         nodes = tree.nodeArray();
@@ -72,10 +71,8 @@ public final class Traverser implements RayQuery {
         shift = tree.axisBits();
         refs = tree.refArray();
         Box b = tree.bounds();
-        int k = tree.dimension();
-        lo = new double[k];
-        hi = new double[k];
-        for (int a = 0; a < k; a++) { lo[a] = b.min(a); hi[a] = b.max(a); }
+        lo = b.minCorner();
+        hi = b.maxCorner();
         mailbox = new Mailbox(prims.size());
         int depth = tree.stats().maxDepth() + 2;
         stackNode = new int[depth];

@@ -92,6 +92,18 @@ public final class KdTree {
     /** {@return k, the dimension} */
     public int dimension() { return bounds.dimension(); }
 
+    /**
+     * Checks that a query's objects have this tree's dimension.
+     *
+     * @param dimension their dimension
+     * @param what what they are, for the message ("primitives", "points")
+     * @throws IllegalArgumentException naming both dimensions if they differ
+     */
+    public void requireDimension(int dimension, String what) {
+        if (dimension != dimension())
+            throw new IllegalArgumentException("tree is " + dimension() + "-D, " + what + " " + dimension + "-D");
+    }
+
     /** {@return the root voxel (a copy)} */
     public Box bounds() { return bounds.copy(); }
 
