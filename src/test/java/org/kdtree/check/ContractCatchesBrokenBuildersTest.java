@@ -98,7 +98,7 @@ class ContractCatchesBrokenBuildersTest {
         assertThatThrownBy(() -> stops.run(NeverStops::new))
                 .isInstanceOf(ContractViolation.class)
                 .hasMessageContaining("never-stops never stops")
-                .hasMessageContaining("empty leaves lie at the depth cap");
+                .hasMessageContaining("nodes holding no primitive, down to the depth cap");
         stops.run(MedianPlaneBuilder::new);
     }
 

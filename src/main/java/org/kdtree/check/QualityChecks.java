@@ -1,0 +1,112 @@
+package org.kdtree.check;
+
+import java.util.ArrayList;
+import java.util.List;
+import java.util.Locale;
+import java.util.function.Supplier;
+import org.kdtree.build.KdTreeBuilder;
+import org.kdtree.build.MedianPlaneBuilder;
+import org.kdtree.geom.Box;
+import org.kdtree.tree.KdTree;
+
+/**
+ * The contract's quality tier, opt-in (for grading): a builder may honour every invariant and
+ * still build a useless tree. Three checks, each on every {@link CourseScenes course scene}:
+ * no split plane separates nothing (lies on its voxel's face with every primitive on one side);
+ * not (nearly) every leaf stops only because it reached the depth cap; the tree's expected SAH cost is no higher
+ * than the median-plane builder's on the same scene.
+ */
+public final class QualityChecks {
+    /** The cost a builder may exceed the median plane's by before it fails: rounding, not a margin of taste. */
+    static final double COST_SLACK = 1e-9;
+
+    /** The share of leaves at the depth cap beyond which a builder is taken not to stop on its own. */
+    static final double MOST_AT_CAP = 0.9;
+
+    private QualityChecks() {
+    }
+
+    /** {@return the three quality checks, as cases run on all course scenes} */
+    public static List<ContractCase> cases() {
+        return List.of(
+                new ContractCase("planes separate something", b -> forEachScene(b, QualityChecks::planesSeparateSomething)),
+                new ContractCase("leaves stop before the depth cap", b -> forEachScene(b, QualityChecks::leavesStopBeforeTheCap)),
+                new ContractCase("expected cost at most the median plane's", b -> forEachScene(b, QualityChecks::costAtMostMedianPlanes)));
+    }
+
+    /** One scene's check: throws {@link ContractViolation} when the tree fails it. */
+    @FunctionalInterface
+    private interface SceneCheck {
+        void check(KdTreeBuilder builder, CourseScenes.Named scene, KdTree tree);
+    }
+
+    /** Runs {@code check} on every course scene; the violation names every scene that failed. */
+    private static void forEachScene(Supplier<? extends KdTreeBuilder> builders, SceneCheck check) {
+        Contract.requireStops(builders.get());
+        List<String> failed = new ArrayList<>();
+        for (CourseScenes.Named s : CourseScenes.all()) {
+            KdTreeBuilder b = builders.get();
+            try {
+                check.check(b, s, Contract.build(b, s.primitives(), s.name()));
+            } catch (ContractViolation v) {
+                failed.add(v.getMessage());
+            }
+        }
+        if (!failed.isEmpty()) throw new ContractViolation(String.join(System.lineSeparator(), failed));
+    }
+
+    /**
+     * A plane on the face of its voxel cuts off a flat, empty slice: one child is the voxel
+     * itself with every primitive, and the recursion repeats until the depth cap.
+     */
+    static void planesSeparateSomething(KdTreeBuilder b, CourseScenes.Named scene, KdTree tree) {
+        int[] useless = {0, -1};
+        subtreeRefs(tree, 0, tree.bounds(), useless);
+        ContractViolation.require(useless[0] == 0, String.format(Locale.ROOT,
+                "%s: on %s, %d split planes separate nothing (the first at node %d): each lies on its voxel's face, so one"
+                        + " child is the whole voxel with every primitive and the other an empty slice;"
+                        + " findPlane() must choose a plane strictly inside the voxel that puts primitives on both sides.",
+                b.name(), scene.name(), useless[0], useless[1]));
+    }
+
+    /** The references below {@code node}; counts in {@code useless} the planes that separate nothing. */
+    private static long subtreeRefs(KdTree tree, int node, Box voxel, int[] useless) {
+        if (tree.isLeaf(node)) return tree.leafSize(node);
+        int axis = tree.axis(node);
+        double x = tree.split(node);
+        long left = subtreeRefs(tree, tree.leftChild(node), voxel.lowerPart(axis, x), useless);
+        long right = subtreeRefs(tree, tree.rightChild(node), voxel.upperPart(axis, x), useless);
+        boolean onFace = x <= voxel.min(axis) || x >= voxel.max(axis);
+        // an empty child leaves every primitive to the other: with a plane on the face, that is the whole voxel again
+        if (onFace && (left == 0 || right == 0) && voxel.extent(axis) > 0 && useless[0]++ == 0) useless[1] = node;
+        return left + right;
+    }
+
+    /**
+     * A leaf at the cap was cut short by the base class's safety net, not by terminate(). Good
+     * builders leave some there (the SAH a third of them on tight clusters, the median plane half),
+     * a builder that stops only at the cap nearly all.
+     */
+    static void leavesStopBeforeTheCap(KdTreeBuilder b, CourseScenes.Named scene, KdTree tree) {
+        int cap = b.depthCap(scene.primitives().size());
+        int atCap = 0, leaves = 0;
+        for (TreeInspector.Leaf l : new TreeInspector(tree).leaves()) {
+            leaves++;
+            if (l.depth() >= cap) atCap++;
+        }
+        ContractViolation.require(atCap <= MOST_AT_CAP * leaves, String.format(Locale.ROOT,
+                "%s: on %s, %d of %d leaves lie at the depth cap (%d): the cap, not terminate(), stopped them;"
+                        + " terminate() should stop where splitting no longer pays.",
+                b.name(), scene.name(), atCap, leaves, cap));
+    }
+
+    /** The point of a builder: a cheaper tree than the simplest one. */
+    static void costAtMostMedianPlanes(KdTreeBuilder b, CourseScenes.Named scene, KdTree tree) {
+        double own = tree.stats().expectedCost();
+        double median = Contract.build(new MedianPlaneBuilder(), scene.primitives(), scene.name()).stats().expectedCost();
+        ContractViolation.require(own <= median * (1 + COST_SLACK), String.format(Locale.ROOT,
+                "%s: on %s, the tree's expected SAH cost is %.2f, %.2f times the median-plane builder's %.2f;"
+                        + " a builder should do at least as well as the median plane.",
+                b.name(), scene.name(), own, own / median, median));
+    }
+}
