@@ -1,9 +1,13 @@
 package org.kdtree.check;
 
+import java.io.IOException;
+import java.io.UncheckedIOException;
 import java.util.ArrayList;
 import java.util.Arrays;
 import java.util.List;
 import java.util.Random;
+import org.kdtree.io.BundledScenes;
+import org.kdtree.io.Scene2DFormat;
 import org.kdtree.shape.Shape2D;
 import org.kdtree.shape.Shapes2D;
 import org.kdtree.shape.TriangleMesh;
@@ -18,15 +22,13 @@ public class ContractScenes {
     protected ContractScenes() {
     }
 
-    /** {@return the handful of 2-D objects of scenes/talk-figures.scene2d, like the talk's figures 2-5} */
+    /** {@return the handful of 2-D objects of the bundled scenes/talk-figures.scene2d, like the talk's figures 2-5} */
     public static Shapes2D talkFigures() {
-        return new Shapes2D(List.of(
-                new Shape2D.Rect(1, 1, 2, 2),
-                new Shape2D.Triangle(2.5, 6, 4, 6, 3, 8),
-                new Shape2D.Segment(6, 1, 6.5, 9),
-                new Shape2D.Rect(8, 7, 8.6, 7.5),
-                new Shape2D.Rect(8.8, 7.2, 9.4, 7.9),
-                new Shape2D.Point(9, 2)));
+        try {
+            return Scene2DFormat.read(BundledScenes.path("talk-figures.scene2d"));
+        } catch (IOException e) {
+            throw new UncheckedIOException(e);
+        }
     }
 
     /**

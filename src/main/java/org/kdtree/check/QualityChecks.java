@@ -26,18 +26,48 @@ public final class QualityChecks {
     private QualityChecks() {
     }
 
-    /** {@return the three quality checks, as cases run on all course scenes} */
-    public static List<ContractCase> cases() {
-        return List.of(
-                new ContractCase("planes separate something", b -> forEachScene(b, QualityChecks::planesSeparateSomething)),
-                new ContractCase("leaves stop before the depth cap", b -> forEachScene(b, QualityChecks::leavesStopBeforeTheCap)),
-                new ContractCase("expected cost at most the median plane's", b -> forEachScene(b, QualityChecks::costAtMostMedianPlanes)));
-    }
+    /** The checks' names, in the order of {@link #cases()} and {@link #check}. */
+    public static final List<String> NAMES = List.of("planes separate something", "leaves stop before the depth cap",
+            "expected cost at most the median plane's");
 
-    /** One scene's check: throws {@link ContractViolation} when the tree fails it. */
+    /** One check of one scene's tree: throws {@link ContractViolation} when the tree fails it. */
     @FunctionalInterface
     private interface SceneCheck {
-        void check(KdTreeBuilder builder, CourseScenes.Named scene, KdTree tree);
+        void check(KdTreeBuilder builder, CourseScenes.Named scene, KdTree tree, double medianPlaneCost);
+    }
+
+    private static final List<SceneCheck> CHECKS = List.of(QualityChecks::planesSeparateSomething,
+            QualityChecks::leavesStopBeforeTheCap, QualityChecks::costAtMostMedianPlanes);
+
+    /** {@return the three quality checks, as cases run on all course scenes} */
+    public static List<ContractCase> cases() {
+        List<ContractCase> out = new java.util.ArrayList<>();
+        for (int i = 0; i < NAMES.size(); i++) {
+            SceneCheck c = CHECKS.get(i);
+            out.add(new ContractCase(NAMES.get(i), b -> forEachScene(b, c)));
+        }
+        return out;
+    }
+
+    /**
+     * Runs the three checks on one scene's tree (for grading, which builds the trees anyway).
+     * @param builder the builder that built {@code tree}
+     * @param scene the scene
+     * @param tree its tree
+     * @param medianPlaneCost the median-plane builder's expected cost on the scene
+     * @return per check, in the order of {@link #NAMES}, null if it passed or what failed
+     */
+    public static List<String> check(KdTreeBuilder builder, CourseScenes.Named scene, KdTree tree, double medianPlaneCost) {
+        List<String> out = new java.util.ArrayList<>();
+        for (SceneCheck c : CHECKS) {
+            try {
+                c.check(builder, scene, tree, medianPlaneCost);
+                out.add(null);
+            } catch (ContractViolation v) {
+                out.add(v.getMessage());
+            }
+        }
+        return out;
     }
 
     /** Runs {@code check} on every course scene; the violation names every scene that failed. */
@@ -47,7 +77,9 @@ public final class QualityChecks {
         for (CourseScenes.Named s : CourseScenes.all()) {
             KdTreeBuilder b = builders.get();
             try {
-                check.check(b, s, Contract.build(b, s.primitives(), s.name()));
+                KdTree tree = Contract.build(b, s.primitives(), s.name());
+                double median = Contract.build(new MedianPlaneBuilder(), s.primitives(), s.name()).stats().expectedCost();
+                check.check(b, s, tree, median);
             } catch (ContractViolation v) {
                 failed.add(v.getMessage());
             }
@@ -59,7 +91,7 @@ public final class QualityChecks {
      * A plane on the face of its voxel cuts off a flat, empty slice: one child is the voxel
      * itself with every primitive, and the recursion repeats until the depth cap.
      */
-    static void planesSeparateSomething(KdTreeBuilder b, CourseScenes.Named scene, KdTree tree) {
+    static void planesSeparateSomething(KdTreeBuilder b, CourseScenes.Named scene, KdTree tree, double unused) {
         int[] useless = {0, -1};
         subtreeRefs(tree, 0, tree.bounds(), useless);
         ContractViolation.require(useless[0] == 0, String.format(Locale.ROOT,
@@ -87,7 +119,7 @@ public final class QualityChecks {
      * builders leave some there (the SAH a third of them on tight clusters, the median plane half),
      * a builder that stops only at the cap nearly all.
      */
-    static void leavesStopBeforeTheCap(KdTreeBuilder b, CourseScenes.Named scene, KdTree tree) {
+    static void leavesStopBeforeTheCap(KdTreeBuilder b, CourseScenes.Named scene, KdTree tree, double unused) {
         int cap = b.depthCap(scene.primitives().size());
         int atCap = 0, leaves = 0;
         for (TreeInspector.Leaf l : new TreeInspector(tree).leaves()) {
@@ -101,9 +133,8 @@ public final class QualityChecks {
     }
 
     /** The point of a builder: a cheaper tree than the simplest one. */
-    static void costAtMostMedianPlanes(KdTreeBuilder b, CourseScenes.Named scene, KdTree tree) {
+    static void costAtMostMedianPlanes(KdTreeBuilder b, CourseScenes.Named scene, KdTree tree, double median) {
         double own = tree.stats().expectedCost();
-        double median = Contract.build(new MedianPlaneBuilder(), scene.primitives(), scene.name()).stats().expectedCost();
         ContractViolation.require(own <= median * (1 + COST_SLACK), String.format(Locale.ROOT,
                 "%s: on %s, the tree's expected SAH cost is %.2f, %.2f times the median-plane builder's %.2f;"
                         + " a builder should do at least as well as the median plane.",
