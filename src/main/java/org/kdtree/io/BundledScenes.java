@@ -28,7 +28,8 @@ public final class BundledScenes {
     public static final String PREFIX = "scenes:";
 
     /** The bundled scene files (the folder's top level; {@code meshes/} holds what they name). */
-    public static final List<String> FILES = List.of("talk-figures.scene2d", "cornell-box.json", "sphereflake.json",
+    public static final List<String> FILES = List.of("talk-figures.scene2d", "uniform-200.scene2d", "clustered-200.scene2d",
+            "long-thin.scene2d", "overlapping-60.scene2d", "cornell-box.json", "sphereflake.json",
             "diffuse-only.json", "shadows-only.json", "obj-materials.json", "clustered-spheres.obj");
 
     private BundledScenes() {

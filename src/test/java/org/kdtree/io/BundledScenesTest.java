@@ -27,8 +27,8 @@ class BundledScenesTest {
         assertThat(BundledScenes.resolve("pom.xml")).isEqualTo(Path.of("pom.xml"));
         assertThat(BundledScenes.resolve("no-such-file.obj")).isEqualTo(Path.of("no-such-file.obj"));
         assertThatThrownBy(() -> BundledScenes.resolve("scenes:nope"))
-                .hasMessage("scenes:nope: no bundled scene of that name (bundled: talk-figures, cornell-box, sphereflake,"
-                        + " diffuse-only, shadows-only, obj-materials, clustered-spheres)");
+                .hasMessage("scenes:nope: no bundled scene of that name (bundled: talk-figures, uniform-200, clustered-200,"
+                        + " long-thin, overlapping-60, cornell-box, sphereflake, diffuse-only, shadows-only, obj-materials, clustered-spheres)");
     }
 
     @Test void aJsonSceneNamingAnObjBesideItLoads() throws Exception {
