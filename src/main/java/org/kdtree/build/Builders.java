@@ -96,6 +96,15 @@ public final class Builders {
         return added;
     }
 
+    /**
+     * Forgets a registered builder (a test's plug-in, once the test is done).
+     *
+     * @param name the builder's name; nothing happens if none has it
+     */
+    public static synchronized void remove(String name) {
+        BY_NAME.remove(name);
+    }
+
     /** {@return the registered names, in registration order} */
     public static synchronized Set<String> names() {
         return java.util.Collections.unmodifiableSet(new java.util.LinkedHashSet<>(BY_NAME.keySet()));

@@ -4,14 +4,21 @@ import static org.assertj.core.api.Assertions.assertThat;
 
 import java.nio.file.Files;
 import java.nio.file.Path;
+import org.junit.jupiter.api.AfterEach;
 import org.junit.jupiter.api.Test;
 import org.junit.jupiter.api.io.TempDir;
+import org.kdtree.build.Builders;
 import org.kdtree.testing.PluginJars;
 import org.kdtree.testing.PlaneOutsideBuilder;
 
 /** {@code grade}: the course example honours the contract but not the quality tier; a broken plug-in fails it. */
 class GradeCommandTest {
     @TempDir Path dir;
+
+    /** Other tests build with every registered builder: the broken plug-in must not stay. */
+    @AfterEach void forgetThePlugIn() {
+        Builders.remove("plane-outside");
+    }
 
     @Test void theCourseExampleIsCorrectButFailsTheQualityTier() throws Exception {
         Path md = dir.resolve("half.md");

@@ -39,6 +39,7 @@ class PluginGuiTest {
 
     @AfterEach void close() {
         if (window != null) window.cleanUp();
+        Builders.remove("plugin-midpoint");
     }
 
     @Test void aPluggedInBuilderIsInTheBuilderBoxAndTheCompareView() {
