@@ -12,7 +12,8 @@ import org.kdtree.tree.KdTree;
 /**
  * The contract's quality tier, opt-in (for grading): a builder may honour every invariant and
  * still build a useless tree. Three checks, each on every {@link CourseScenes course scene}:
- * no split plane separates nothing (lies on its voxel's face with every primitive on one side);
+ * no split plane separates nothing (lies on its voxel's face and cuts off an empty slice, leaving the
+ * whole voxel to the other child);
  * not (nearly) every leaf stops only because it reached the depth cap; the tree's expected SAH cost is no higher
  * than the median-plane builder's on the same scene.
  */
@@ -108,9 +109,10 @@ public final class QualityChecks {
         double x = tree.split(node);
         long left = subtreeRefs(tree, tree.leftChild(node), voxel.lowerPart(axis, x), useless);
         long right = subtreeRefs(tree, tree.rightChild(node), voxel.upperPart(axis, x), useless);
-        boolean onFace = x <= voxel.min(axis) || x >= voxel.max(axis);
-        // an empty child leaves every primitive to the other: with a plane on the face, that is the whole voxel again
-        if (onFace && (left == 0 || right == 0) && voxel.extent(axis) > 0 && useless[0]++ == 0) useless[1] = node;
+        // a plane on the face cuts off a flat slice; if the slice is empty, the other child is the whole
+        // voxel with every primitive again (a flat slice holding the primitives that lie in it is the SAH's flat cell)
+        boolean emptySlice = x <= voxel.min(axis) && left == 0 || x >= voxel.max(axis) && right == 0;
+        if (emptySlice && voxel.extent(axis) > 0 && useless[0]++ == 0) useless[1] = node;
         return left + right;
     }
 

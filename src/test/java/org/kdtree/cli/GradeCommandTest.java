@@ -26,9 +26,11 @@ class GradeCommandTest {
         assertThat(r.code()).as(r.err()).isZero();
         assertThat(r.out()).contains("talk figures                                 pass")
                 .contains("any random 2-D scene (30 tries)              pass")
-                .contains("planes separate something                    FAIL  centre-midpoint: on cornell-box")
+                .contains("planes separate something                    pass")
                 .contains("leaves stop before the depth cap             pass")
-                .contains("verdict: CORRECT: honours the contract (18 of 18 checks); fails quality: planes separate something,"
+                .contains("expected cost at most the median plane's     FAIL  centre-midpoint: on clustered triangles,"
+                        + " the tree's expected SAH cost is 601.86, 5.02 times the median-plane builder's 119.84")
+                .contains("verdict: CORRECT: honours the contract (18 of 18 checks); fails quality:"
                         + " expected cost at most the median plane's; cheaper than median-plane on 2 of 5 scenes");
         assertThat(r.out()).containsPattern("cornell-box +centre-midpoint +1242\\.68 +115037 +24 ");
         assertThat(Files.readString(md)).startsWith("# Grade: centre-midpoint").contains("| cornell-box | sah | 427.99 |");
@@ -45,6 +47,11 @@ class GradeCommandTest {
                 .doesNotContain("quality (course scenes)");
         assertThat(Files.readAllLines(csv).get(0)).isEqualTo("section,item,builder,result,expected_cost,nodes,depth,build_ms");
         assertThat(Files.readString(csv)).contains("verdict,,\"plane-outside\",\"FAIL: breaks the contract");
+    }
+
+    @Test void theObjectMediansPlanesOnTheFaceAreFlagged() {
+        CliRun r = CliRun.of("grade", "-b", "object-median");
+        assertThat(r.out()).contains("planes separate something                    FAIL  object-median: on cornell-box, 56 split planes");
     }
 
     @Test void theSahIsGood() {
