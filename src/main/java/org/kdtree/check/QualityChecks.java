@@ -7,6 +7,7 @@ import java.util.function.Supplier;
 import org.kdtree.build.KdTreeBuilder;
 import org.kdtree.build.MedianPlaneBuilder;
 import org.kdtree.geom.Box;
+import org.kdtree.geom.Tolerance;
 import org.kdtree.tree.KdTree;
 
 /**
@@ -18,9 +19,6 @@ import org.kdtree.tree.KdTree;
  * than the median-plane builder's on the same scene.
  */
 public final class QualityChecks {
-    /** The cost a builder may exceed the median plane's by before it fails: rounding, not a margin of taste. */
-    static final double COST_SLACK = 1e-9;
-
     /** The share of leaves at the depth cap beyond which a builder is taken not to stop on its own. */
     static final double MOST_AT_CAP = 0.9;
 
@@ -137,7 +135,7 @@ public final class QualityChecks {
     /** The point of a builder: a cheaper tree than the simplest one. */
     static void costAtMostMedianPlanes(KdTreeBuilder b, CourseScenes.Named scene, KdTree tree, double median) {
         double own = tree.stats().expectedCost();
-        ContractViolation.require(own <= median * (1 + COST_SLACK), String.format(Locale.ROOT,
+        ContractViolation.require(own <= median * (1 + Tolerance.COST_SLACK), String.format(Locale.ROOT,
                 "%s: on %s, the tree's expected SAH cost is %.2f, %.2f times the median-plane builder's %.2f;"
                         + " a builder should do at least as well as the median plane.",
                 b.name(), scene.name(), own, own / median, median));
