@@ -1,6 +1,15 @@
 package org.kdtree.build;
 
+import java.io.IOException;
+import java.io.UncheckedIOException;
+import java.net.MalformedURLException;
+import java.net.URL;
+import java.net.URLClassLoader;
+import java.nio.file.Files;
+import java.nio.file.Path;
+import java.util.ArrayList;
 import java.util.LinkedHashMap;
+import java.util.List;
 import java.util.Map;
 import java.util.ServiceLoader;
 import java.util.Set;
@@ -12,7 +21,8 @@ import java.util.function.Supplier;
  * {@code META-INF/services/org.kdtree.build.KdTreeBuilder} (found with {@link ServiceLoader};
  * each needs a public no-argument constructor and is known by its {@link KdTreeBuilder#name()}).
  * So a student's builder joins them by being on the class path, with no code of the library
- * naming it; {@link #register} adds one from code.
+ * naming it; {@link #loadPlugins} adds those of a jar (or a folder of jars) named at run time,
+ * {@link #register} one from code.
  */
 public final class Builders {
     private static final Map<String, Supplier<? extends KdTreeBuilder>> BY_NAME = new LinkedHashMap<>();
@@ -46,6 +56,53 @@ public final class Builders {
      */
     public static synchronized void register(String name, Supplier<? extends KdTreeBuilder> factory) {
         BY_NAME.put(name, factory);
+    }
+
+    /**
+     * Registers the builders a plug-in jar lists in {@code META-INF/services/org.kdtree.build.KdTreeBuilder},
+     * or those of every jar in a plug-in folder: the command line's {@code --plugin}.
+     *
+     * @param jarOrFolder a jar, or a folder whose {@code .jar} files are loaded
+     * @return the names registered
+     * @throws IllegalArgumentException if the path is neither, or lists no builder
+     */
+    public static synchronized List<String> loadPlugins(Path jarOrFolder) {
+        List<URL> jars = new ArrayList<>();
+        try {
+            if (Files.isDirectory(jarOrFolder)) {
+                try (var files = Files.list(jarOrFolder)) {
+                    for (Path f : files.sorted().toList()) if (f.toString().endsWith(".jar")) jars.add(f.toUri().toURL());
+                }
+            } else if (Files.isRegularFile(jarOrFolder) && jarOrFolder.toString().endsWith(".jar")) {
+                jars.add(jarOrFolder.toUri().toURL());
+            } else {
+                throw new IllegalArgumentException("--plugin " + jarOrFolder + ": no such jar or folder");
+            }
+        } catch (MalformedURLException e) {
+            throw new IllegalArgumentException("--plugin " + jarOrFolder + ": " + e.getMessage(), e);
+        } catch (IOException e) {
+            throw new UncheckedIOException(e);
+        }
+        URLClassLoader loader = new URLClassLoader(jars.toArray(URL[]::new), Builders.class.getClassLoader());
+        List<String> added = new ArrayList<>();
+        for (ServiceLoader.Provider<KdTreeBuilder> p : ServiceLoader.load(KdTreeBuilder.class, loader).stream().toList()) {
+            if (p.type().getClassLoader() != loader && BY_NAME.containsKey(p.get().name())) continue; // already known
+            register(p.get().name(), () -> newInstance(p.type()));
+            added.add(p.get().name());
+        }
+        if (added.isEmpty())
+            throw new IllegalArgumentException("--plugin " + jarOrFolder + ": no builder listed in META-INF/services/"
+                    + KdTreeBuilder.class.getName() + (jars.isEmpty() ? " (the folder holds no .jar)" : ""));
+        return added;
+    }
+
+    /**
+     * Forgets a registered builder (a test's plug-in, once the test is done).
+     *
+     * @param name the builder's name; nothing happens if none has it
+     */
+    public static synchronized void remove(String name) {
+        BY_NAME.remove(name);
     }
 
     /** {@return the registered names, in registration order} */

@@ -29,9 +29,13 @@ final class ReferenceBudget {
         return (long) left + right <= budget;
     }
 
-    /** A child's share of its parent's budget: {@code floor(budget size / (left + right))}, exact in 64 bits. */
+    /**
+     * A child's share of its parent's budget: {@code floor(budget size / (left + right))}, exact in 64 bits;
+     * nothing for the children of an empty node (a builder may split one).
+     */
     static long share(long budget, int size, int left, int right) {
         long sum = (long) left + right;
+        if (sum == 0) return 0;
         return budget / sum * size + budget % sum * size / sum;
     }
 }

@@ -1,14 +1,25 @@
 package org.kdtree.cli;
 
+import java.nio.file.Path;
+import java.util.ArrayList;
+import java.util.List;
+import org.kdtree.build.Builders;
 import picocli.CommandLine;
 import picocli.CommandLine.Command;
+import picocli.CommandLine.Option;
 
 /** The command line: {@code java -jar kdtree.jar COMMAND ...}. */
 @Command(name = "kdtree", mixinStandardHelpOptions = true, version = "kdtree 0.1",
         description = "k-d trees for ray tracing: build, inspect, trace, render; nearest neighbours of points.",
         subcommands = {GuiCommand.class, StatsCommand.class, RaycastCommand.class, RenderCommand.class, TradeoffCommand.class,
-                KnnCommand.class, KnnStudyCommand.class})
+                KnnCommand.class, KnnStudyCommand.class, GradeCommand.class})
 public final class Main implements Runnable {
+    /** Read before picocli parses (see {@link #loadPlugins}); declared here for the usage text. */
+    @Option(names = "--plugin", paramLabel = "JAR|FOLDER",
+            description = "Load the builders a jar (or every jar in a folder) lists in META-INF/services; "
+                    + "any command, anywhere on the line, repeatable.")
+    List<Path> plugins;
+
     /**
      * Runs the command line and exits with its code, unless it opened the workbench and succeeded
      * (then the window keeps the JVM running).
@@ -28,6 +39,11 @@ public final class Main implements Runnable {
      */
     public static int run(String... args) {
         CommandLine cl = new CommandLine(new Main());
+        try {
+            args = loadPlugins(args);
+        } catch (RuntimeException e) {
+            return Failure.report(e, cl.getErr());
+        }
         cl.setCaseInsensitiveEnumValuesAllowed(true);
         if (args.length > 0 && !args[0].startsWith("-") && !cl.getSubcommands().containsKey(args[0])) {
             // picocli would print the top-level help for "nearest --help" and exit 0
@@ -46,6 +62,26 @@ public final class Main implements Runnable {
         } catch (RuntimeException | Error e) {   // what picocli lets through: errors, failures outside a command
             return Failure.report(e, cl.getErr());
         }
+    }
+
+    /**
+     * Loads every {@code --plugin JAR|FOLDER} (or {@code --plugin=...}) wherever it stands, so
+     * that the builders it adds are known to every command's options and to the workbench, and
+     * returns the other arguments.
+     */
+    private static String[] loadPlugins(String[] args) {
+        List<String> rest = new ArrayList<>();
+        for (int i = 0; i < args.length; i++) {
+            if (args[i].equals("--plugin")) {
+                if (i + 1 == args.length) throw new IllegalArgumentException("--plugin needs a jar or a folder of jars");
+                Builders.loadPlugins(Path.of(args[++i]));
+            } else if (args[i].startsWith("--plugin=")) {
+                Builders.loadPlugins(Path.of(args[i].substring("--plugin=".length())));
+            } else {
+                rest.add(args[i]);
+            }
+        }
+        return rest.toArray(String[]::new);
     }
 
     /** No command: open the workbench, or print the usage where there is no display. */

@@ -3,6 +3,7 @@ package org.kdtree.cli;
 import java.nio.file.Path;
 import java.util.concurrent.Callable;
 import org.kdtree.build.KdTreeBuilder;
+import org.kdtree.io.BundledScenes;
 import org.kdtree.io.SceneFile;
 import org.kdtree.render.RenderJob;
 import org.kdtree.limits.Limits;
@@ -18,8 +19,9 @@ import picocli.CommandLine.Parameters;
         description = "Ray trace a JSON scene (docs/scene-format.md) to a PNG, simulating only the effects it calls for, "
                 + "and print the effects, rays by kind, times and tree statistics.")
 final class RenderCommand implements Callable<Integer> {
-    @Parameters(paramLabel = "SCENE", description = "A JSON scene file, e.g. scenes/cornell-box.json.")
-    Path scene;
+    @Parameters(paramLabel = "SCENE", description = "A JSON scene file, e.g. scenes/cornell-box.json, or a bundled "
+            + "scene from any folder: scenes:cornell-box.")
+    String scene;
 
     @Option(names = {"-o", "--output"}, defaultValue = "render.png", description = "PNG file to write (default: ${DEFAULT-VALUE}).")
     Path output;
@@ -48,7 +50,7 @@ final class RenderCommand implements Callable<Integer> {
 
     @Override public Integer call() throws Exception {
         checkOutput();
-        Scene s = SceneFile.read(scene);
+        Scene s = SceneFile.read(BundledScenes.resolve(scene));
         if (spp != null) s = s.withSamplesPerPixel(Limits.SAMPLES_PER_PIXEL.check("--spp", spp));
         if (rayDepth != null) s = s.withMaxDepth(Limits.RAY_DEPTH.check("--ray-depth", rayDepth));
         if (width != null || height != null) {

@@ -1,10 +1,12 @@
 package org.kdtree.cli;
 
 import java.nio.file.Path;
+import java.util.Arrays;
 import java.util.Locale;
 import java.util.concurrent.Callable;
 import org.kdtree.build.KdTreeBuilder;
 import org.kdtree.build.Setting;
+import org.kdtree.io.BundledScenes;
 import org.kdtree.tradeoff.Timing;
 import org.kdtree.io.SceneLoader;
 import org.kdtree.limits.Limits;
@@ -20,10 +22,11 @@ import picocli.CommandLine.Parameters;
 
 /** {@code stats SCENE}: build a tree and print its statistics and build time. */
 @Command(name = "stats", mixinStandardHelpOptions = true,
-        description = "Build a kd-tree over a scene (.obj or .scene2d) and print its statistics and build time.")
+        description = "Build a kd-tree over a scene (.obj, .scene2d or .json) and print its statistics and build time.")
 final class StatsCommand implements Callable<Integer> {
-    @Parameters(paramLabel = "SCENE", description = "An OBJ mesh or a .scene2d file.")
-    Path scene;
+    @Parameters(paramLabel = "SCENE", description = "An OBJ mesh, a .scene2d or a JSON scene file, or a bundled scene: "
+            + "scenes:cornell-box (or plain cornell-box where no such file exists).")
+    String scene;
 
     @Mixin
     BuilderOptions options;
@@ -49,7 +52,7 @@ final class StatsCommand implements Callable<Integer> {
         Limits.WARMUP.check("--warmup", warmup);
         Limits.THREADS.check("--threads", threads);
         Limits.GRID.check("--grid", grid);
-        Primitives prims = SceneLoader.load(scene);
+        Primitives prims = SceneLoader.load(BundledScenes.resolve(scene));
         if (grid != 1) {
             if (!(prims instanceof TriangleMesh mesh)) throw new IllegalArgumentException("--grid applies to OBJ meshes only");
             prims = ProceduralScenes.grid(mesh, grid);

@@ -59,6 +59,12 @@ public record Tolerance(double relative, double absolute) {
     public static final double CLIP_PAD = 1e-15;
 
     /**
+     * How far, relatively, a student's expected SAH cost may exceed the median plane's and still
+     * count as "at most" in the contract's quality tier: rounding in the two sums, not a margin.
+     */
+    public static final double COST_SLACK = 1e-9;
+
+    /**
      * Relative growth of a box before a primitive is tested against it (twice {@link #CLIP_PAD},
      * about 8 ulps), so that bounds computed by two roundings still meet.
      */

@@ -1,17 +1,23 @@
 package org.kdtree.gui;
 
+import java.io.IOException;
+import java.io.UncheckedIOException;
 import java.util.ArrayList;
 import java.util.LinkedHashMap;
 import java.util.List;
 import java.util.Map;
 import java.util.Random;
 import java.util.function.Supplier;
+import org.kdtree.io.BundledScenes;
+import org.kdtree.io.Scene2DFormat;
 import org.kdtree.shape.Shape2D;
 
 /**
  * The 2-D scenes the workbench offers without a file, and random generators with a count.
- * Every scene lives in the square [0, 10] x [0, 10]; random scenes are seeded, so the same
- * count gives the same scene.
+ * The named scenes are the bundled {@code .scene2d} files ({@link BundledScenes}), so that a
+ * name means the same shapes, and the same cost, in the workbench, the command line and the
+ * contract; the generators made them. Every scene lives in the square [0, 10] x [0, 10];
+ * random scenes are seeded, so the same count gives the same scene.
  */
 public final class BuiltinScenes {
     private BuiltinScenes() {
@@ -21,11 +27,19 @@ public final class BuiltinScenes {
     public static Map<String, Supplier<List<Shape2D>>> all() {
         Map<String, Supplier<List<Shape2D>>> m = new LinkedHashMap<>();
         m.put("Talk figures", BuiltinScenes::talkFigures);
-        m.put("Uniform (200)", () -> uniform(200, 1));
-        m.put("Clustered (200)", () -> clustered(200, 1));
-        m.put("Long thin object", BuiltinScenes::longThin);
-        m.put("Many overlapping (60)", () -> overlapping(60, 1));
+        m.put("Uniform (200)", () -> bundled("uniform-200.scene2d"));
+        m.put("Clustered (200)", () -> bundled("clustered-200.scene2d"));
+        m.put("Long thin object", () -> bundled("long-thin.scene2d"));
+        m.put("Many overlapping (60)", () -> bundled("overlapping-60.scene2d"));
         return m;
+    }
+
+    private static List<Shape2D> bundled(String file) {
+        try {
+            return Scene2DFormat.read(BundledScenes.path(file)).shapes();
+        } catch (IOException e) {
+            throw new UncheckedIOException(e);
+        }
     }
 
     /** {@return the random generators by name, each taking a count} */
@@ -39,17 +53,10 @@ public final class BuiltinScenes {
     }
 
     /**
-     * {@return a scene like the talk's figures 2-5}: two small objects at the left, a long thin one, a cluster at the right.
+     * {@return the talk's figures 2-5, the bundled scenes/talk-figures.scene2d}: two small objects at the left, a long thin one, a cluster at the right.
      */
     public static List<Shape2D> talkFigures() {
-        return List.of(
-                new Shape2D.Rect(1, 1, 2, 2),
-                new Shape2D.Triangle(2.5, 6, 4, 6, 3, 8),
-                new Shape2D.Segment(6, 1, 6.5, 9),
-                new Shape2D.Rect(8, 7, 8.6, 7.5),
-                new Shape2D.Rect(8.8, 7.2, 9.4, 7.9),
-                new Shape2D.Triangle(8.2, 8.2, 9, 8.3, 8.5, 9),
-                new Shape2D.Point(9, 2));
+        return bundled("talk-figures.scene2d");
     }
 
     /**

@@ -30,6 +30,7 @@ import javax.swing.Timer;
 import org.kdtree.build.Builders;
 import org.kdtree.limits.Limits;
 import org.kdtree.build.KdTreeBuilder;
+import org.kdtree.io.BundledScenes;
 import org.kdtree.io.SceneFile;
 import org.kdtree.io.SceneLoader;
 import org.kdtree.render.Image;
@@ -42,7 +43,8 @@ import org.kdtree.traverse.Traverser;
 import org.kdtree.tree.KdTree;
 
 /**
- * The 3-D view: pick a scene from scenes/ and a builder. A JSON scene is rendered with the
+ * The 3-D view: pick a scene (the bundled ones, those of a scenes folder, or a file opened with
+ * File &gt; Open) and a builder. A JSON scene is rendered with the
  * library's ray tracer ({@link Tracer} over a {@link Traverser} per thread), tile by tile, the
  * image shown as it fills in, then the render's statistics (rays by kind, times, the tree). An
  * OBJ mesh, which has no camera, gets its tree built and its statistics shown.
@@ -66,8 +68,8 @@ public final class View3D extends JPanel {
     private final javax.swing.JCheckBox fit = new javax.swing.JCheckBox("Fit", true);
     /** Shows the image rendered so far. */
     private final Picture picture = new Picture();
-    /** The scenes folder. */
-    private final Path dir;
+    /** The scenes the box offers, by the name it shows. */
+    private final java.util.Map<String, Path> files = new java.util.LinkedHashMap<>();
     /** The model whose builder settings the build uses. */
     private final WorkbenchModel model;
     /** Set by {@link #stop} to cancel the build or render under way. */
@@ -76,17 +78,17 @@ public final class View3D extends JPanel {
     private Thread running;
 
     /**
-     * A view rendering the 3-D scenes of {@code scenesDir}.
+     * A view rendering the bundled 3-D scenes and those of {@code scenesDir}, if it exists.
      *
      * @param model the workbench's model
-     * @param scenesDir the folder of JSON scenes and OBJ meshes
+     * @param scenesDir a folder of JSON scenes and OBJ meshes, if any
      */
     public View3D(WorkbenchModel model, Path scenesDir) {
         super(new BorderLayout());
         this.model = model;
-        this.dir = scenesDir;
         scene.setName("view3d.scene");
-        scene.setToolTipText("A 3-D scene from " + scenesDir + ": JSON scenes are rendered, OBJ meshes get their tree's statistics");
+        scene.setToolTipText("A 3-D scene (bundled, from " + scenesDir + ", or opened with File > Open):"
+                + " JSON scenes are rendered, OBJ meshes get their tree's statistics");
         builder.setName("view3d.builder");
         builder.setToolTipText("The builder (with the Kt, Ki, lambda, Kmintri, Kmaxdepth of the 2-D view)");
         width.setName("view3d.width");
@@ -127,8 +129,8 @@ public final class View3D extends JPanel {
         JSplitPane split = new JSplitPane(JSplitPane.HORIZONTAL_SPLIT, pic, text);
         split.setResizeWeight(0.7);   // the image gets most of the room; the statistics are a narrow column
         add(split, BorderLayout.CENTER);
-        for (String s : sceneFiles(scenesDir)) scene.addItem(s);
-        if (scene.getItemCount() == 0) status.setText("no 3-D scene in " + scenesDir.toAbsolutePath());
+        for (String f : BundledScenes.FILES) if (is3D(f)) offer(f, BundledScenes.path(f));
+        for (String s : sceneFiles(scenesDir)) offer(s, scenesDir.resolve(s));
         scene.addActionListener(e -> build.setText(isJson((String) scene.getSelectedItem()) ? "Render" : "Build"));
         build.addActionListener(e -> build());
         stop.addActionListener(e -> cancelled = true);
@@ -147,6 +149,32 @@ public final class View3D extends JPanel {
         }
     }
 
+    /** Adds a scene to the box unless one of that name is there already (a bundled scene wins over its copy in scenes/). */
+    private void offer(String name, Path file) {
+        if (files.putIfAbsent(name, file) == null) scene.addItem(name);
+    }
+
+    /**
+     * Adds a JSON scene or OBJ mesh to the box (File &gt; Open) and chooses it.
+     *
+     * @param file the scene file
+     * @throws IllegalArgumentException if it is neither JSON nor OBJ
+     */
+    public void open(Path file) {
+        String name = file.getFileName().toString();
+        if (!is3D(name)) throw new IllegalArgumentException(file + ": the 3-D view opens JSON scenes and OBJ meshes");
+        if (files.containsKey(name) && !files.get(name).equals(file)) name = file.toAbsolutePath().toString();
+        files.put(name, file);
+        if (((javax.swing.DefaultComboBoxModel<String>) scene.getModel()).getIndexOf(name) < 0) scene.addItem(name);
+        scene.setSelectedItem(name);
+    }
+
+    /** {@return whether {@code name} is a JSON scene or an OBJ mesh} */
+    static boolean is3D(String name) {
+        String n = name.toLowerCase(Locale.ROOT);
+        return n.endsWith(".json") || n.endsWith(".obj");
+    }
+
     private static boolean isJson(String name) {
         return name != null && name.toLowerCase(Locale.ROOT).endsWith(".json");
     }
@@ -155,7 +183,7 @@ public final class View3D extends JPanel {
     public void build() {
         String name = (String) scene.getSelectedItem();
         if (name == null || running != null) return;
-        Path file = dir.resolve(name);
+        Path file = files.get(name);
         KdTreeBuilder b = model.settings().forBuilder((String) builder.getSelectedItem()).create();
         int w = ((Number) width.getValue()).intValue();
         cancelled = false;
@@ -187,9 +215,9 @@ public final class View3D extends JPanel {
     }
 
     /**
-     * Chooses the scene (a file name in the scenes folder) and the image width.
+     * Chooses the scene (a name the box offers, e.g. "cornell-box.json") and the image width.
      *
-     * @param sceneName a file name in the scenes folder
+     * @param sceneName a name the box offers
      * @param imageWidth the image width in pixels
      */
     public void choose(String sceneName, int imageWidth) {

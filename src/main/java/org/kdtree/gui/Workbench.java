@@ -62,6 +62,8 @@ public final class Workbench extends JFrame {
     private final JTabbedPane steppers = new JTabbedPane();
     /** The builders side by side. */
     private final CompareView compare;
+    /** The 3-D tab, where File > Open puts JSON scenes and OBJ meshes. */
+    private final View3D view3D;
     /** The ball collisions view. */
     private final CollisionsView collisions;
 
@@ -94,9 +96,10 @@ public final class Workbench extends JFrame {
         tabs.addTab("Compare builders", compare);
         tabs.setMnemonicAt(1, KeyEvent.VK_C);
         tabs.setToolTipTextAt(1, "The three builders side by side on the same scene, with the ray's cost in each (Alt+C)");
-        tabs.addTab("3-D", new View3D(model, Path.of("scenes")));
+        view3D = new View3D(model, Path.of("scenes"));
+        tabs.addTab("3-D", view3D);
         tabs.setMnemonicAt(2, KeyEvent.VK_3);
-        tabs.setToolTipTextAt(2, "Build a 3-D scene from scenes/ and see its tree (Alt+3)");
+        tabs.setToolTipTextAt(2, "Render a 3-D scene (the bundled ones, or any opened) and see its tree (Alt+3)");
         collisions = new CollisionsView(model);
         tabs.addTab("Collisions", collisions);
         tabs.setMnemonicAt(3, KeyEvent.VK_L);
@@ -127,6 +130,9 @@ public final class Workbench extends JFrame {
     public NearestStepperPanel nearest() { return nearest; }
     /** {@return the builders side by side} */
     public CompareView compare() { return compare; }
+
+    /** {@return the 3-D tab} */
+    public View3D view3D() { return view3D; }
     /** {@return the ball collisions view} */
     public CollisionsView collisions() { return collisions; }
     /** {@return the scene panel} */
@@ -184,7 +190,7 @@ public final class Workbench extends JFrame {
         JMenuBar bar = new JMenuBar();
         JMenu file = new JMenu("File");
         file.setMnemonic('F');
-        file.add(action("Open scene...", ctrl(KeyEvent.VK_O), "Open a .scene2d file", this::openScene));
+        file.add(action("Open scene...", ctrl(KeyEvent.VK_O), "Open a 2-D scene (.scene2d), or a JSON scene or OBJ mesh for the 3-D tab", this::openScene));
         file.add(action("Save scene...", ctrl(KeyEvent.VK_S), "Save the scene as a .scene2d file", this::saveScene));
         file.add(action("Export canvas as PNG...", ctrl(KeyEvent.VK_E), "Save the canvas as a PNG image", this::exportPng));
         file.addSeparator();
@@ -287,12 +293,30 @@ public final class Workbench extends JFrame {
 
     private void openScene() {
         JFileChooser c = chooser("scene2d", "2-D scenes (.scene2d)");
+        c.addChoosableFileFilter(new FileNameExtensionFilter("3-D scenes (.json, .obj)", "json", "obj"));
+        c.addChoosableFileFilter(new FileNameExtensionFilter("All scenes (.scene2d, .json, .obj)", "scene2d", "json", "obj"));
         if (c.showOpenDialog(this) != JFileChooser.APPROVE_OPTION) return;
         try {
-            model.load(c.getSelectedFile().toPath());
-            canvas.fit();
+            open(c.getSelectedFile().toPath());
         } catch (IOException | RuntimeException e) {
             error("Cannot open the scene", e);
+        }
+    }
+
+    /**
+     * Opens a scene as File &gt; Open does: a .scene2d file in the 2-D views, a JSON scene or OBJ
+     * mesh in the 3-D tab (chosen there, ready to render).
+     *
+     * @param file the scene file
+     * @throws IOException if a 2-D scene cannot be read
+     */
+    public void open(Path file) throws IOException {
+        if (View3D.is3D(file.getFileName().toString())) {
+            view3D.open(file);
+            tabs.setSelectedComponent(view3D);
+        } else {
+            model.load(file);
+            canvas.fit();
         }
     }
 

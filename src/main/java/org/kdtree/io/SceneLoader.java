@@ -5,13 +5,16 @@ import java.nio.file.Path;
 import java.util.Locale;
 import org.kdtree.shape.Primitives;
 
-/** Loads the primitives of a file by its extension: {@code .obj} meshes and {@code .scene2d} 2-D scenes. */
+/**
+ * Loads the primitives of a file by its extension: {@code .obj} meshes, {@code .scene2d} 2-D
+ * scenes and {@code .json} render scenes (their triangles).
+ */
 public final class SceneLoader {
     private SceneLoader() {
     }
 
     /**
-     * {@return the primitives of an {@code .obj} or {@code .scene2d} file}
+     * {@return the primitives of an {@code .obj}, {@code .scene2d} or {@code .json} scene file}
      *
      * @param file the file
      * @throws IOException if the file cannot be read, is malformed or has another extension
@@ -20,6 +23,7 @@ public final class SceneLoader {
         String name = file.getFileName().toString().toLowerCase(Locale.ROOT);
         if (name.endsWith(".obj")) return ObjMeshReader.read(file);
         if (name.endsWith(".scene2d")) return Scene2DFormat.read(file);
-        throw new SceneFormatException(file.toString(), 0, "unknown file type (expected .obj or .scene2d)");
+        if (name.endsWith(".json")) return SceneFile.read(file).mesh();
+        throw new SceneFormatException(file.toString(), 0, "unknown file type (expected .obj, .scene2d or .json)");
     }
 }

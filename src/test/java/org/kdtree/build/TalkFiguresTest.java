@@ -3,7 +3,7 @@ package org.kdtree.build;
 import static org.assertj.core.api.Assertions.assertThat;
 
 import org.junit.jupiter.api.Test;
-import org.kdtree.contract.TreeInspector;
+import org.kdtree.check.TreeInspector;
 import org.kdtree.geom.Box;
 import org.kdtree.shape.Shapes2D;
 import org.kdtree.testing.TestScenes;

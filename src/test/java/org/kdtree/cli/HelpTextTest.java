@@ -8,7 +8,7 @@ import org.kdtree.render.RenderJob;
 
 /** What a newcomer reads first: every command's help, whole and unbroken, and counts in good English. */
 class HelpTextTest {
-    private static final List<String> COMMANDS = List.of("gui", "stats", "raycast", "render", "tradeoff", "knn", "knn-study");
+    private static final List<String> COMMANDS = List.of("gui", "stats", "raycast", "render", "tradeoff", "knn", "knn-study", "grade");
 
     @Test void everyCommandsHelpFitsAnEightyColumnTerminalAndEndsWell() {
         for (String c : COMMANDS) {

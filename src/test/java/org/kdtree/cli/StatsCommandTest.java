@@ -25,6 +25,13 @@ class StatsCommandTest {
         assertThat(r.out()).contains("lambda=0.5").contains("maxDepth=12");
     }
 
+    @Test void readsJsonScenesAndBundledScenesByName() {
+        CliRun r = CliRun.of("stats", "scenes:cornell-box", "-b", "median-plane");
+        assertThat(r.code()).as(r.err()).isZero();
+        assertThat(r.out()).contains("scene: scenes:cornell-box (4,440 primitives, 3-D)").contains("builder: median-plane");
+        assertThat(CliRun.of("stats", "scenes:nope").err()).startsWith("error: scenes:nope: no bundled scene of that name");
+    }
+
     @Test void aMalformedFileGivesOneClearLineAndNoStackTrace() throws Exception {
         Path bad = dir.resolve("bad.obj");
         Files.writeString(bad, "v 0 0 0\nv 1 0 0\nf 1 2 x\n");

@@ -2,9 +2,13 @@ package org.kdtree.gui;
 
 import static org.assertj.core.api.Assertions.assertThat;
 
+import static org.assertj.core.api.Assertions.assertThatThrownBy;
+
+import java.nio.file.Files;
 import java.nio.file.Path;
 import javax.swing.SwingUtilities;
 import org.junit.jupiter.api.Test;
+import org.junit.jupiter.api.io.TempDir;
 
 /** The 3-D view renders a bundled JSON scene with the ray tracer and builds an OBJ mesh's tree (headless). */
 class View3DTest {
@@ -33,6 +37,25 @@ class View3DTest {
         for (int y = 0; y < v.image().getHeight(); y++)
             for (int x = 0; x < 48; x++) if ((v.image().getRGB(x, y) & 0xFFFFFF) != 0) lit++;
         assertThat(lit).as("the Cornell box is not black").isGreaterThan(48 * v.image().getHeight() / 4);
+    }
+
+    @Test void fromAnEmptyFolderTheBundledCornellBoxRenders(@TempDir Path empty) throws Exception {
+        View3D v = new View3D(new WorkbenchModel(), empty.resolve("scenes"));
+        SwingUtilities.invokeAndWait(() -> v.choose("cornell-box.json", 32));
+        String text = run(v);
+        assertThat(text).contains("image: 32 x").contains("rays:").contains("nodes:");
+        int lit = 0;
+        for (int y = 0; y < v.image().getHeight(); y++)
+            for (int x = 0; x < 32; x++) if ((v.image().getRGB(x, y) & 0xFFFFFF) != 0) lit++;
+        assertThat(lit).as("the bundled Cornell box is not black").isGreaterThan(32 * v.image().getHeight() / 4);
+    }
+
+    @Test void anOpenedObjMeshIsOfferedAndBuilt(@TempDir Path dir) throws Exception {
+        Path mesh = Files.copy(Path.of("scenes/meshes/mtl-demo.obj"), dir.resolve("mine.obj"));
+        View3D v = new View3D(new WorkbenchModel(), dir.resolve("no-such-folder"));
+        SwingUtilities.invokeAndWait(() -> v.open(mesh));
+        assertThat(run(v)).contains("statistics only").contains("nodes:");
+        assertThatThrownBy(() -> v.open(dir.resolve("shapes.scene2d"))).hasMessageContaining("opens JSON scenes and OBJ meshes");
     }
 
     @Test void anObjMeshGetsItsTreeStatistics() throws Exception {

@@ -1,6 +1,4 @@
-package org.kdtree.contract;
-
-import static org.junit.jupiter.api.Assertions.fail;
+package org.kdtree.check;
 
 import java.util.Arrays;
 import java.util.List;
@@ -18,7 +16,13 @@ public final class TreeChecks {
     private TreeChecks() {
     }
 
-    /** Checks every invariant of {@code tree}, built by {@code builder} over {@code prims}. */
+    /**
+     * Checks every invariant of {@code tree}, built by {@code builder} over {@code prims}.
+     * @param builder the builder (for its name and depth cap)
+     * @param prims the scene
+     * @param tree the tree built over it
+     * @throws ContractViolation naming the first invariant that broke
+     */
     public static void checkAll(KdTreeBuilder builder, Primitives prims, KdTree tree) {
         TreeInspector in = new TreeInspector(tree);
         double eps = margin(tree.bounds());
@@ -130,6 +134,10 @@ public final class TreeChecks {
             if (!(p[a] > v.min(a) + eps && p[a] < v.max(a) - eps)) return false;
         }
         return true;
+    }
+
+    private static void fail(String message) {
+        throw new ContractViolation(message);
     }
 
     private static boolean contains(int[] refs, int i) {

@@ -1,4 +1,4 @@
-package org.kdtree.contract;
+package org.kdtree.check;
 
 import static org.assertj.core.api.Assertions.assertThatThrownBy;
 
@@ -11,7 +11,6 @@ import org.kdtree.build.MedianPlaneBuilder;
 import org.kdtree.geom.SplitPlane;
 import org.kdtree.shape.Primitives;
 import org.kdtree.testing.TestScenes;
-import org.opentest4j.AssertionFailedError;
 
 /** The contract's checks fail, with a useful message, on the mistakes students make. */
 class ContractCatchesBrokenBuildersTest {
@@ -66,14 +65,14 @@ class ContractCatchesBrokenBuildersTest {
     @Test void aPrimitiveMissingFromALeafItCrossesIsReported() {
         KdTreeBuilder b = new ForgetsStraddlers();
         assertThatThrownBy(() -> TreeChecks.checkAll(b, scene, b.build(scene)))
-                .isInstanceOf(AssertionFailedError.class)
+                .isInstanceOf(ContractViolation.class)
                 .hasMessageContaining("does not list it");
     }
 
     @Test void aPrimitiveListedInALeafItDoesNotTouchIsReported() {
         KdTreeBuilder b = new SendsEverythingEverywhere();
         assertThatThrownBy(() -> TreeChecks.checkAll(b, scene, b.build(scene)))
-                .isInstanceOf(AssertionFailedError.class)
+                .isInstanceOf(ContractViolation.class)
                 .hasMessageContaining("does not touch that voxel");
     }
 
@@ -82,6 +81,32 @@ class ContractCatchesBrokenBuildersTest {
         // the tree is valid: the recursion itself stops at the cap
         TreeChecks.checkAll(b, TestScenes.identicalTriangles(50), b.build(TestScenes.identicalTriangles(50)));
         TreeChecks.checkAll(b, scene, b.build(scene));
+    }
+
+    /** Leaves stopping to the depth cap. */
+    static final class NeverStops extends KdTreeBuilder {
+        @Override public String name() { return "never-stops"; }
+        @Override protected boolean terminate(BuildContext c, BuildNode n) { return false; }
+        @Override protected SplitPlane findPlane(BuildContext c, BuildNode n) {
+            int axis = n.depth() % n.dimension();
+            return new SplitPlane(axis, n.voxel().min(axis) + 0.5 * n.voxel().extent(axis));
+        }
+    }
+
+    @Test void aBuilderThatNeverStopsIsReportedByTheContract() {
+        ContractCase stops = Contract.cases().stream().filter(c -> c.name().startsWith("stops")).findFirst().orElseThrow();
+        assertThatThrownBy(() -> stops.run(NeverStops::new))
+                .isInstanceOf(ContractViolation.class)
+                .hasMessageContaining("never-stops never stops")
+                .hasMessageContaining("nodes holding no primitive, down to the depth cap");
+        stops.run(MedianPlaneBuilder::new);
+    }
+
+    @Test void aPlaneOutsideTheVoxelIsAViolationOfTheContract() {
+        assertThatThrownBy(() -> Contract.check(new PlaneOutside(), scene, "200 shapes"))
+                .isInstanceOf(ContractViolation.class)
+                .hasMessageContaining("outside the voxel")
+                .hasMessageContaining("findPlane() must return a plane");
     }
 
     @Test void aPlaneOutsideTheVoxelIsReportedByTheBuild() {

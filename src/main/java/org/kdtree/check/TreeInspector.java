@@ -1,4 +1,4 @@
-package org.kdtree.contract;
+package org.kdtree.check;
 
 import java.util.ArrayList;
 import java.util.List;
@@ -6,13 +6,26 @@ import org.kdtree.geom.Box;
 import org.kdtree.tree.KdTree;
 import org.kdtree.tree.TreeVisitor;
 
-/** The nodes of a tree as plain objects, for checking invariants in tests. */
+/** The nodes of a tree as plain objects, for checking its invariants (the contract, the grading). */
 public final class TreeInspector {
-    /** A leaf: its node index, depth, voxel (a copy) and primitives. */
+    /**
+     * A leaf.
+     * @param node its node index
+     * @param depth its depth (the root's is 0)
+     * @param voxel its voxel (a copy)
+     * @param refs the primitives it lists
+     */
     public record Leaf(int node, int depth, Box voxel, int[] refs) {
     }
 
-    /** An interior node: its voxel (a copy) and split plane. */
+    /**
+     * An interior node.
+     * @param node its node index
+     * @param depth its depth (the root's is 0)
+     * @param voxel its voxel (a copy)
+     * @param axis the split plane's axis
+     * @param split the split plane's position
+     */
     public record Interior(int node, int depth, Box voxel, int axis, double split) {
     }
 
@@ -21,6 +34,10 @@ public final class TreeInspector {
     private final List<Interior> interiors = new ArrayList<>();
     private final java.util.Map<Integer, Leaf> leafByNode = new java.util.HashMap<>();
 
+    /**
+     * Walks the tree once.
+     * @param tree the tree to inspect
+     */
     public TreeInspector(KdTree tree) {
         this.tree = tree;
         tree.walk(new TreeVisitor() {
@@ -36,10 +53,18 @@ public final class TreeInspector {
         });
     }
 
+    /** {@return the leaves, depth first} */
     public List<Leaf> leaves() { return leaves; }
+
+    /** {@return the interior nodes, depth first} */
     public List<Interior> interiors() { return interiors; }
 
-    /** The leaves whose closed voxel, grown by {@code eps}, contains point p. */
+    /**
+     * The leaves whose closed voxel, grown by {@code eps}, contains point p.
+     * @param p the point
+     * @param eps the margin
+     * @return those leaves
+     */
     public List<Leaf> leavesContaining(double[] p, double eps) {
         List<Leaf> out = new ArrayList<>();
         collect(0, tree.bounds(), p, eps, out);

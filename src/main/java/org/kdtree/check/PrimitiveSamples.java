@@ -1,4 +1,4 @@
-package org.kdtree.contract;
+package org.kdtree.check;
 
 import java.util.ArrayList;
 import java.util.List;

@@ -1,0 +1,22 @@
+package builder;
+
+import org.kdtree.build.BuildContext;
+import org.kdtree.build.BuildNode;
+import org.kdtree.build.KdTreeBuilder;
+import org.kdtree.geom.SplitPlane;
+
+/** CI's runaway answer: terminate() never says yes, only the depth cap stops it (the contract must say "never stops"). */
+public class NeverStops extends KdTreeBuilder {
+    @Override public String name() {
+        return "never-stops";
+    }
+
+    @Override protected boolean terminate(BuildContext context, BuildNode node) {
+        return false;
+    }
+
+    @Override protected SplitPlane findPlane(BuildContext context, BuildNode node) {
+        int axis = node.depth() % node.dimension();
+        return new SplitPlane(axis, node.voxel().min(axis) + 0.5 * node.voxel().extent(axis));
+    }
+}

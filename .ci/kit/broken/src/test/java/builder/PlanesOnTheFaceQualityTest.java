@@ -1,0 +1,10 @@
+package builder;
+
+import org.kdtree.build.KdTreeBuilder;
+import org.kdtree.contract.KdTreeBuilderQualityContract;
+
+class PlanesOnTheFaceQualityTest extends KdTreeBuilderQualityContract {
+    @Override protected KdTreeBuilder newBuilder() {
+        return new PlanesOnTheFace();
+    }
+}

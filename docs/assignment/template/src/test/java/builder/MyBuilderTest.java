@@ -1,0 +1,11 @@
+package builder;
+
+import org.kdtree.build.KdTreeBuilder;
+import org.kdtree.contract.KdTreeBuilderContract;
+
+/** The builder contract, run on your builder: every check of it is a test. */
+class MyBuilderTest extends KdTreeBuilderContract {
+    @Override protected KdTreeBuilder newBuilder() {
+        return new MyBuilder();
+    }
+}

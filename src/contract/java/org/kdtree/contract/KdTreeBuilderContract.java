@@ -1,0 +1,81 @@
+package org.kdtree.contract;
+
+import java.util.ServiceLoader;
+import java.util.concurrent.atomic.AtomicInteger;
+import java.util.stream.Stream;
+import net.jqwik.api.ForAll;
+import net.jqwik.api.Property;
+import net.jqwik.api.constraints.IntRange;
+import net.jqwik.api.lifecycle.AfterContainer;
+import org.junit.jupiter.api.DynamicTest;
+import org.junit.jupiter.api.Test;
+import org.junit.jupiter.api.TestFactory;
+import org.junit.platform.engine.TestEngine;
+import org.kdtree.build.KdTreeBuilder;
+import org.kdtree.check.Contract;
+import org.kdtree.check.ContractViolation;
+
+/**
+ * The contract every {@link KdTreeBuilder} must honour: extend this class, implement
+ * {@link #newBuilder()}, and JUnit runs every case of {@link Contract} on 2-D and 3-D scenes,
+ * the hard inputs included, and jqwik two properties on random scenes. A failure says, in
+ * words, which invariant broke and where.
+ *
+ * <pre>
+ * class MyBuilderTest extends KdTreeBuilderContract {
+ *     &#64;Override protected KdTreeBuilder newBuilder() { return new MyBuilder(); }
+ * }
+ * </pre>
+ *
+ * A run without jqwik's engine would skip the two properties without a word; the test
+ * {@code propertyEngineIsPresent} fails it instead.
+ */
+public abstract class KdTreeBuilderContract {
+    private static final AtomicInteger TRIES = new AtomicInteger();
+
+    /** {@return a new builder with the settings under test} */
+    protected abstract KdTreeBuilder newBuilder();
+
+    /** {@return one test per case of the contract} */
+    @TestFactory
+    Stream<DynamicTest> contract() {
+        return Contract.cases().stream().map(c -> DynamicTest.dynamicTest(c.name(), () -> c.run(this::newBuilder)));
+    }
+
+    /** The two properties below run only if jqwik's engine is on the test class path: fail, not skip, if it is not. */
+    @Test
+    void propertyEngineIsPresent() {
+        boolean jqwik = ServiceLoader.load(TestEngine.class).stream().anyMatch(p -> p.type().getName().startsWith("net.jqwik."));
+        ContractViolation.require(jqwik, "jqwik's test engine is not on the test class path, so the contract's two property"
+                + " tests would be skipped without a word; depend on org.kdtree:kdtree-contract (it brings jqwik along),"
+                + " or add net.jqwik:jqwik with <scope>test</scope>.");
+    }
+
+    /**
+     * Any random 2-D scene of up to 60 shapes.
+     * @param n the number of shapes
+     * @param seed the scene's seed
+     */
+    @Property(tries = Contract.RANDOM_2D_TRIES)
+    void anyRandom2DScene(@ForAll @IntRange(min = 0, max = 60) int n, @ForAll long seed) {
+        TRIES.incrementAndGet();
+        Contract.anyRandom2DScene(newBuilder(), n, seed);
+    }
+
+    /**
+     * Any soup of up to 80 random triangles.
+     * @param n the number of triangles
+     * @param seed the scene's seed
+     */
+    @Property(tries = Contract.RANDOM_TRIANGLE_TRIES)
+    void anyRandomTriangleSoup(@ForAll @IntRange(min = 0, max = 80) int n, @ForAll long seed) {
+        TRIES.incrementAndGet();
+        Contract.anyRandomTriangleSoup(newBuilder(), n, seed);
+    }
+
+    /** Says how many property tries ran, so that a run whose properties were skipped shows it. */
+    @AfterContainer
+    static void reportTries() {
+        System.out.println("kdtree contract: " + TRIES.getAndSet(0) + " property tries executed");
+    }
+}

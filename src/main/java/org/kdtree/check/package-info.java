@@ -1,0 +1,10 @@
+/**
+ * The builder contract without a test framework: its named cases ({@link org.kdtree.check.Contract}),
+ * the invariants of every tree ({@link org.kdtree.check.TreeChecks}), the opt-in quality tier
+ * ({@link org.kdtree.check.QualityChecks}) and the scenes they build ({@link org.kdtree.check.ContractScenes},
+ * {@link org.kdtree.check.CourseScenes}). The JUnit base classes students extend
+ * ({@code org.kdtree.contract}, the artifact {@code kdtree-contract}) and the {@code grade} command
+ * run the same cases. Uses {@code build}, {@code tree}, {@code shape}, {@code geom} and {@code io}
+ * (the bundled scenes); used by {@code cli}.
+ */
+package org.kdtree.check;

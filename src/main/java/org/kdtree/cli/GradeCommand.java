@@ -1,0 +1,133 @@
+package org.kdtree.cli;
+
+import java.io.IOException;
+import java.nio.file.Files;
+import java.nio.file.Path;
+import java.util.ArrayList;
+import java.util.List;
+import java.util.Locale;
+import java.util.concurrent.Callable;
+import org.kdtree.build.Builders;
+import org.kdtree.build.KdTreeBuilder;
+import org.kdtree.check.Contract;
+import org.kdtree.check.ContractCase;
+import org.kdtree.check.CourseScenes;
+import org.kdtree.check.QualityChecks;
+import org.kdtree.tree.KdTree;
+import picocli.CommandLine.Command;
+import picocli.CommandLine.Option;
+
+/**
+ * {@code grade --builder NAME}: a teacher's one command. Runs the builder contract, then builds
+ * the course scenes with the student's builder and the three built-ins, runs the quality tier on
+ * the student's trees, and prints a table and a verdict (Markdown or CSV with {@code -o}).
+ */
+@Command(name = "grade", mixinStandardHelpOptions = true,
+        description = {"Grade a builder: the contract's checks, the quality tier, and its trees of the course scenes "
+                + "against the median plane, object median and SAH (expected cost, nodes, depth, build time).",
+                "Exit code 0 if it honours the contract, 1 if not."})
+public final class GradeCommand implements Callable<Integer> {
+    /** The built-ins a student's builder is measured against. */
+    static final List<String> BUILT_INS = List.of("median-plane", "object-median", "sah");
+
+    @Option(names = {"-b", "--builder"}, required = true, paramLabel = "NAME",
+            description = "The builder to grade: a registered name (a jar on the class path, or --plugin my.jar).")
+    String builder;
+
+    @Option(names = {"-o", "--output"}, paramLabel = "FILE", description = "Also write the report: .md (Markdown) or .csv.")
+    Path output;
+
+    /** One checked item: a contract case or a quality check, and what failed (null if it passed). */
+    record Check(String name, String failure) {
+    }
+
+    /** One tree of one course scene. */
+    record Row(String scene, String builder, double cost, int nodes, int depth, double ms) {
+    }
+
+    @Override public Integer call() throws IOException {
+        Builders.create(builder); // an unknown name fails here, naming the known ones
+        if (output != null) {
+            String n = output.getFileName().toString().toLowerCase(Locale.ROOT);
+            if (!n.endsWith(".md") && !n.endsWith(".csv"))
+                throw new IllegalArgumentException("-o " + output + ": write a .md (Markdown) or .csv report");
+            CommandFiles.requireFolder("-o", output);
+        }
+        List<Check> contract = new ArrayList<>();
+        List<ContractCase> cases = new ArrayList<>(Contract.cases());
+        cases.addAll(Contract.randomCases());
+        for (ContractCase c : cases) contract.add(run(c));
+        boolean correct = contract.stream().allMatch(c -> c.failure() == null);
+        List<Check> quality = new ArrayList<>();
+        List<Row> rows = new ArrayList<>();
+        if (correct) compare(quality, rows);
+        String verdict = verdict(contract, quality, rows);
+        Report report = new Report(builder, contract, quality, rows, verdict);
+        System.out.print(report.text());
+        if (output != null) {
+            Files.writeString(output, output.toString().toLowerCase(Locale.ROOT).endsWith(".csv") ? report.csv() : report.markdown());
+            System.out.println("report: " + output);
+        }
+        return correct ? 0 : 1;
+    }
+
+    private Check run(ContractCase c) {
+        try {
+            c.run(() -> Builders.create(builder));
+            return new Check(c.name(), null);
+        } catch (AssertionError | RuntimeException e) {
+            return new Check(c.name(), e.getMessage() == null ? e.getClass().getSimpleName() : e.getMessage());
+        }
+    }
+
+    /** Builds every course scene with the student's builder and the built-ins; the quality tier on the student's trees. */
+    private void compare(List<Check> quality, List<Row> rows) {
+        String[] failures = new String[QualityChecks.NAMES.size()];
+        for (CourseScenes.Named scene : CourseScenes.all()) {
+            KdTreeBuilder own = Builders.create(builder);
+            KdTree ownTree = timed(own, scene, rows);
+            KdTree median = null;
+            for (String b : BUILT_INS) {
+                KdTree t = timed(Builders.create(b), scene, rows);
+                if (b.equals("median-plane")) median = t;
+            }
+            List<String> found = QualityChecks.check(own, scene, ownTree, median.stats().expectedCost());
+            for (int i = 0; i < failures.length; i++) if (failures[i] == null) failures[i] = found.get(i);
+        }
+        for (int i = 0; i < failures.length; i++) quality.add(new Check(QualityChecks.NAMES.get(i), failures[i]));
+    }
+
+    private static KdTree timed(KdTreeBuilder b, CourseScenes.Named scene, List<Row> rows) {
+        long t0 = System.nanoTime();
+        KdTree t = Contract.build(b, scene.primitives(), scene.name());
+        double ms = (System.nanoTime() - t0) / 1e6;
+        rows.add(new Row(scene.name(), b.name(), t.stats().expectedCost(), t.nodeCount(), t.stats().maxDepth(), ms));
+        return t;
+    }
+
+    /** FAIL if it breaks the contract; CORRECT if it honours it but fails a quality check; GOOD if neither. */
+    static String verdict(List<Check> contract, List<Check> quality, List<Row> rows) {
+        List<String> broken = contract.stream().filter(c -> c.failure() != null).map(Check::name).toList();
+        if (!broken.isEmpty())
+            return "FAIL: breaks the contract (" + broken.size() + " of " + contract.size() + " checks: "
+                    + String.join(", ", broken) + ")";
+        List<String> weak = quality.stream().filter(c -> c.failure() != null).map(Check::name).toList();
+        StringBuilder v = new StringBuilder(weak.isEmpty() ? "GOOD" : "CORRECT");
+        v.append(": honours the contract (").append(contract.size()).append(" of ").append(contract.size()).append(" checks); ");
+        v.append(weak.isEmpty() ? "passes every quality check" : "fails quality: " + String.join(", ", weak));
+        for (String b : BUILT_INS) v.append("; cheaper than ").append(b).append(" on ").append(cheaper(rows, b));
+        return v.toString();
+    }
+
+    /** "k of n scenes": where the student's tree has a lower expected cost than built-in {@code b}'s. */
+    private static String cheaper(List<Row> rows, String b) {
+        int n = 0, k = 0;
+        for (int i = 0; i < rows.size(); i += BUILT_INS.size() + 1) {
+            Row own = rows.get(i);
+            Row other = rows.get(i + 1 + BUILT_INS.indexOf(b));
+            n++;
+            if (own.cost() < other.cost()) k++;
+        }
+        return k + " of " + n + " scenes";
+    }
+}
