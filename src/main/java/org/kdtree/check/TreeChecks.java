@@ -9,7 +9,7 @@ import org.kdtree.tree.KdTree;
 
 /**
  * The invariants every kd-tree must satisfy, checked with messages a student can act on.
- * Coordinates are compared with a margin of 1e-9 of the scene's size, so that rounding in
+ * Coordinates are compared with a margin of {@link org.kdtree.geom.Tolerance#CHECK_MARGIN} of the scene's size, so that rounding in
  * the sample points never raises a false alarm.
  */
 public final class TreeChecks {
@@ -38,7 +38,7 @@ public final class TreeChecks {
         double size = 0;
         for (int a = 0; a < root.dimension(); a++)
             size = Math.max(size, Math.max(Math.abs(root.min(a)), Math.abs(root.max(a))));
-        return Math.max(1e-9 * size, Double.MIN_NORMAL);
+        return Math.max(org.kdtree.geom.Tolerance.CHECK_MARGIN * size, Double.MIN_NORMAL);
     }
 
     static void checkShape(KdTreeBuilder b, KdTree tree, TreeInspector in) {
@@ -72,7 +72,7 @@ public final class TreeChecks {
         double root = tree.bounds().volume();
         double sum = 0;
         for (TreeInspector.Leaf l : in.leaves()) sum += l.voxel().volume();
-        if (Math.abs(sum - root) > 1e-9 * Math.max(root, Double.MIN_NORMAL) && root > 0)
+        if (Math.abs(sum - root) > org.kdtree.geom.Tolerance.CHECK_MARGIN * Math.max(root, Double.MIN_NORMAL) && root > 0)
             fail(b.name() + ": the leaves' voxels should tile the root voxel (measure " + root
                     + ") but their measures add up to " + sum + ".");
     }

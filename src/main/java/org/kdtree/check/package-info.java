@@ -6,5 +6,7 @@
  * ({@code org.kdtree.contract}, the artifact {@code kdtree-contract}) and the {@code grade} command
  * run the same cases. Uses {@code build}, {@code tree}, {@code shape}, {@code geom} and {@code io}
  * (the bundled scenes); used by {@code cli}.
+ *
+ * <p>Layer 6: it may use the library below it; only {@code cli} uses it.
  */
 package org.kdtree.check;

@@ -65,6 +65,13 @@ public record Tolerance(double relative, double absolute) {
     public static final double COST_SLACK = 1e-9;
 
     /**
+     * The builder contract's margin, relative to the scene's size (or the root's measure), when it
+     * compares sample points with voxels and sums the leaves' measures: rounding in those sums and
+     * in the sample points must never raise a false alarm; a real fault is far larger.
+     */
+    public static final double CHECK_MARGIN = 1e-9;
+
+    /**
      * Relative growth of a box before a primitive is tested against it (twice {@link #CLIP_PAD},
      * about 8 ulps), so that bounds computed by two roundings still meet.
      */
