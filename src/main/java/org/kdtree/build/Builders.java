@@ -84,16 +84,38 @@ public final class Builders {
             throw new UncheckedIOException(e);
         }
         URLClassLoader loader = new URLClassLoader(jars.toArray(URL[]::new), Builders.class.getClassLoader());
-        List<String> added = new ArrayList<>();
+        Set<String> ownClasses = listedClasses(loader);
+        List<String> listed = new ArrayList<>();
         for (ServiceLoader.Provider<KdTreeBuilder> p : ServiceLoader.load(KdTreeBuilder.class, loader).stream().toList()) {
-            if (p.type().getClassLoader() != loader && BY_NAME.containsKey(p.get().name())) continue; // already known
-            register(p.get().name(), () -> newInstance(p.type()));
-            added.add(p.get().name());
+            if (!ownClasses.contains(p.type().getName())) continue; // the library's own, seen through the parent
+            String name = p.get().name();
+            listed.add(name);
+            if (p.type().getClassLoader() != loader && BY_NAME.containsKey(name)) continue; // known already: same class
+            register(name, () -> newInstance(p.type()));
         }
-        if (added.isEmpty())
+        if (listed.isEmpty())
             throw new IllegalArgumentException("--plugin " + jarOrFolder + ": no builder listed in META-INF/services/"
                     + KdTreeBuilder.class.getName() + (jars.isEmpty() ? " (the folder holds no .jar)" : ""));
-        return added;
+        return listed;
+    }
+
+    /** The builder classes the plug-in jars themselves list (not their parent class loader's). */
+    private static Set<String> listedClasses(URLClassLoader loader) {
+        Set<String> names = new java.util.HashSet<>();
+        try {
+            var files = loader.findResources("META-INF/services/" + KdTreeBuilder.class.getName());
+            while (files.hasMoreElements()) {
+                try (var in = files.nextElement().openStream()) {
+                    for (String line : new String(in.readAllBytes(), java.nio.charset.StandardCharsets.UTF_8).split("\\R")) {
+                        String name = line.replaceFirst("#.*", "").strip();
+                        if (!name.isEmpty()) names.add(name);
+                    }
+                }
+            }
+        } catch (IOException e) {
+            throw new UncheckedIOException(e);
+        }
+        return names;
     }
 
     /**
