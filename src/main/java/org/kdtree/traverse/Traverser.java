@@ -19,7 +19,7 @@ import org.kdtree.tree.KdTree;
  * each over the whole interval: a primitive touching the plane from either side can be hit
  * there;</li>
  * <li>intervals are closed, and ties (tSplit == tMin or tMax, within a relative slack of about
- * 1e-14 that covers rounding) visit both children, so a hit exactly on a plane or at a voxel
+ * 1.4e-14, 2^-46, {@link Tolerance#TRAVERSAL_SLACK}, that covers rounding) visit both children, so a hit exactly on a plane or at a voxel
  * edge is never lost;</li>
  * <li>primitives are tested against the caller's whole range, not the leaf's: a hit beyond the
  * current leaf is kept as a candidate and the search continues; a saved far child is skipped only
