@@ -1,6 +1,5 @@
 package org.kdtree.collide;
 
-import org.kdtree.geom.Box;
 import org.kdtree.traverse.Mailbox;
 import org.kdtree.tree.KdTree;
 
@@ -18,13 +17,7 @@ import org.kdtree.tree.KdTree;
  * <p>An instance holds the stack and mailbox and allocates nothing per query: use one per thread
  * (the tree and the collider are shared).
  */
-public final class OverlapQuery {
-    private final KdTree tree;
-    private final Collider prims;
-    private final int k;
-    private final double[] lo, hi;
-    private final double sceneScale;
-    private final Mailbox tested;
+public final class OverlapQuery extends SphereQuery {
     private final int[] stack;
     private int tests;
 
@@ -33,15 +26,7 @@ public final class OverlapQuery {
      * @param prims the primitives' exact tests, of the tree's dimension
      */
     public OverlapQuery(KdTree tree, Collider prims) {
-        tree.requireDimension(prims.dimension(), "primitives");
-        this.tree = tree;
-        this.prims = prims;
-        k = tree.dimension();
-        Box b = tree.bounds();
-        lo = b.minCorner();
-        hi = b.maxCorner();
-        sceneScale = SphereQueries.scale(b);
-        tested = new Mailbox(prims.size());
+        super(tree, prims);
         stack = new int[tree.stats().maxDepth() + 2];
     }
 

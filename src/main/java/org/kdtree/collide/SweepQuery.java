@@ -1,7 +1,5 @@
 package org.kdtree.collide;
 
-import org.kdtree.geom.Box;
-import org.kdtree.traverse.Mailbox;
 import org.kdtree.tree.KdTree;
 
 /**
@@ -23,13 +21,7 @@ import org.kdtree.tree.KdTree;
  *
  * <p>An instance holds the stack and mailbox and allocates nothing per query: use one per thread.
  */
-public final class SweepQuery {
-    private final KdTree tree;
-    private final Collider prims;
-    private final int k;
-    private final double[] lo, hi;
-    private final double sceneScale;
-    private final Mailbox tested;
+public final class SweepQuery extends SphereQuery {
     private final int[] stackNode;
     private final double[] stackMin, stackMax;
     private int tests;
@@ -41,15 +33,7 @@ public final class SweepQuery {
      * @param prims the primitives' exact tests, of the tree's dimension
      */
     public SweepQuery(KdTree tree, Collider prims) {
-        tree.requireDimension(prims.dimension(), "primitives");
-        this.tree = tree;
-        this.prims = prims;
-        k = tree.dimension();
-        Box b = tree.bounds();
-        lo = b.minCorner();
-        hi = b.maxCorner();
-        sceneScale = SphereQueries.scale(b);
-        tested = new Mailbox(prims.size());
+        super(tree, prims);
         int depth = tree.stats().maxDepth() + 2;
         stackNode = new int[depth];
         stackMin = new double[depth];
