@@ -3,6 +3,7 @@ package org.kdtree.tradeoff;
 import de.erichseifert.vectorgraphics2d.Processors;
 import de.erichseifert.vectorgraphics2d.VectorGraphics2D;
 import de.erichseifert.vectorgraphics2d.util.PageSize;
+import java.awt.BasicStroke;
 import java.awt.Color;
 import java.awt.Font;
 import java.awt.Graphics2D;
@@ -17,6 +18,7 @@ import java.util.List;
 import java.util.Locale;
 import javax.imageio.ImageIO;
 import org.knowm.xchart.XYChart;
+import org.knowm.xchart.XYChartBuilder;
 import org.knowm.xchart.XYSeries;
 import org.knowm.xchart.style.markers.Marker;
 import org.knowm.xchart.style.markers.SeriesMarkers;
@@ -38,7 +40,23 @@ public final class ChartFile {
     /** How the axes write numbers, the same for XChart's decades and the ticks drawn here. */
     private static final String NUMBER_PATTERN = "#,##0.####";
 
+    /** The dashed line of a reference series (break-even, the exact search, brute force). */
+    static final BasicStroke DASHED = new BasicStroke(1.5f, BasicStroke.CAP_BUTT, BasicStroke.JOIN_MITER, 10,
+            new float[] {6, 4}, 0);
+
     private ChartFile() {
+    }
+
+    /**
+     * A new chart of the size every chart of the docs has (900 x 600, the caption added below it by {@link #write}).
+     *
+     * @param title  the chart's title
+     * @param xTitle the x axis's title
+     * @param yTitle the y axis's title
+     * @return the chart, without series
+     */
+    public static XYChart newChart(String title, String xTitle, String yTitle) {
+        return new XYChartBuilder().width(900).height(600).title(title).xAxisTitle(xTitle).yAxisTitle(yTitle).build();
     }
 
     /**

@@ -1,12 +1,10 @@
 package org.kdtree.tradeoff;
 
-import java.awt.BasicStroke;
 import java.io.IOException;
 import java.nio.file.Path;
 import java.util.ArrayList;
 import java.util.List;
 import org.knowm.xchart.XYChart;
-import org.knowm.xchart.XYChartBuilder;
 import org.knowm.xchart.XYSeries;
 import org.knowm.xchart.style.Styler;
 
@@ -34,8 +32,7 @@ public final class DimensionChart {
 
     /** The chart itself (tests read its series and axes). */
     static XYChart chart(List<DimensionResult> results, String title) {
-        XYChart chart = new XYChartBuilder().width(900).height(600).title(title)
-                .xAxisTitle("dimension").yAxisTitle("speed-up of the exact kd-tree search over brute force").build();
+        XYChart chart = ChartFile.newChart(title, "dimension", "speed-up of the exact kd-tree search over brute force");
         chart.getStyler().setMarkerSize(9).setLegendPosition(Styler.LegendPosition.OutsideE);
         ChartFile.logYAxis(chart);
         double[] dims = results.stream().mapToDouble(DimensionResult::dimension).toArray();
@@ -47,7 +44,7 @@ public final class DimensionChart {
         XYSeries even = chart.addSeries("break-even (1)", new double[] {lo, hi}, new double[] {1, 1});
         series.add(even);
         ChartFile.distinctMarkers(series);
-        even.setLineStyle(new BasicStroke(1.5f, BasicStroke.CAP_BUTT, BasicStroke.JOIN_MITER, 10, new float[] {6, 4}, 0));
+        even.setLineStyle(ChartFile.DASHED);
         return chart;
     }
 }

@@ -8,7 +8,6 @@ import java.util.List;
 import java.util.Map;
 import java.util.TreeMap;
 import org.knowm.xchart.XYChart;
-import org.knowm.xchart.XYChartBuilder;
 import org.knowm.xchart.XYSeries;
 import org.knowm.xchart.style.markers.SeriesMarkers;
 
@@ -80,9 +79,8 @@ public final class GrowthChart {
 
     /** The chart itself (tests read its series and axes). */
     static XYChart chart(Map<String, TreeMap<Integer, Double>> series, String scene) {
-        XYChart chart = new XYChartBuilder().width(900).height(600)
-                .title("Build time against N (" + scene + " scene, one thread, JMH average)")
-                .xAxisTitle("N (triangles)").yAxisTitle("ms per build").build();
+        XYChart chart = ChartFile.newChart("Build time against N (" + scene + " scene, one thread, JMH average)",
+                "N (triangles)", "ms per build");
         ChartFile.logAxes(chart);
         chart.getStyler().setLegendPosition(org.knowm.xchart.style.Styler.LegendPosition.InsideNW);
         List<org.knowm.xchart.XYSeries> measured = new ArrayList<>();

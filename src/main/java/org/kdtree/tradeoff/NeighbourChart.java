@@ -1,12 +1,10 @@
 package org.kdtree.tradeoff;
 
-import java.awt.BasicStroke;
 import java.io.IOException;
 import java.nio.file.Path;
 import java.util.ArrayList;
 import java.util.List;
 import org.knowm.xchart.XYChart;
-import org.knowm.xchart.XYChartBuilder;
 import org.knowm.xchart.XYSeries;
 import org.knowm.xchart.style.Styler;
 
@@ -34,8 +32,7 @@ public final class NeighbourChart {
 
     /** The chart itself (tests read its series and axes). */
     static XYChart chart(List<NeighbourResult> results, String title) {
-        XYChart chart = new XYChartBuilder().width(900).height(600).title(title)
-                .xAxisTitle("recall at k (fraction of the true k nearest found)").yAxisTitle("queries per second").build();
+        XYChart chart = ChartFile.newChart(title, "recall at k (fraction of the true k nearest found)", "queries per second");
         chart.getStyler().setMarkerSize(9).setLegendPosition(Styler.LegendPosition.OutsideE);
         ChartFile.logYAxis(chart);
         double left = leftEdge(results);
@@ -57,7 +54,7 @@ public final class NeighbourChart {
     private static XYSeries reference(XYChart chart, String name, double left, double qps) {
         XYSeries line = chart.addSeries(name, new double[] {left, 1}, new double[] {qps, qps});
         line.setXYSeriesRenderStyle(XYSeries.XYSeriesRenderStyle.Line);
-        line.setLineStyle(new BasicStroke(1.5f, BasicStroke.CAP_BUTT, BasicStroke.JOIN_MITER, 10, new float[] {6, 4}, 0));
+        line.setLineStyle(ChartFile.DASHED);
         return line;
     }
 

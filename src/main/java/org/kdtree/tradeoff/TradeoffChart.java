@@ -6,7 +6,6 @@ import java.util.ArrayList;
 import java.util.Comparator;
 import java.util.List;
 import org.knowm.xchart.XYChart;
-import org.knowm.xchart.XYChartBuilder;
 import org.knowm.xchart.XYSeries;
 import org.knowm.xchart.style.markers.SeriesMarkers;
 
@@ -33,8 +32,8 @@ public final class TradeoffChart {
 
     /** The chart itself (tests read its series and axes). */
     static XYChart chart(List<TradeoffResult> results, String title, double raysPerTriangle) {
-        XYChart chart = new XYChartBuilder().width(900).height(600).title(title)
-                .xAxisTitle("build time (ms)").yAxisTitle("trace time for " + fmt(raysPerTriangle) + " rays per triangle (ms)").build();
+        XYChart chart = ChartFile.newChart(title, "build time (ms)",
+                "trace time for " + fmt(raysPerTriangle) + " rays per triangle (ms)");
         chart.getStyler().setDefaultSeriesRenderStyle(XYSeries.XYSeriesRenderStyle.Scatter);
         chart.getStyler().setMarkerSize(10);
         ChartFile.logAxes(chart);
