@@ -12,7 +12,6 @@ package org.kdtree.points;
 public final class BoxQuery {
     private final PointTree points;
     private final int k;
-    private final org.kdtree.tree.KdTree tree;
     /** The tree's nodes, three ints each ({@link org.kdtree.tree.KdTree#nodeArray()}). */
     private final int[] nodes, refs;
     /** The words' leaf mark and axis-field width ({@link org.kdtree.tree.KdTree#leafMark()}). */
@@ -26,8 +25,7 @@ public final class BoxQuery {
     public BoxQuery(PointTree points) {
         this.points = points;
         k = points.dimension();
-        tree = points.tree();
-        nodes = tree.nodeArray();
+        nodes = points.tree().nodeArray();
         mark = points.tree().leafMark();
         shift = points.tree().axisBits();
         refs = points.tree().refArray();

@@ -181,7 +181,7 @@ public final class NearestQuery extends VoxelDescent {
             int w = word(node);
             while (!isLeaf(w)) {
                 int axis = axis(w);
-                double diff = q[axis] - org.kdtree.tree.KdTree.splitOf(nodes, node);
+                double diff = q[axis] - split(node);
                 int near = node + 1, far = rightChild(w);
                 if (diff > 0) { near = far; far = node + 1; }
                 double old = off[axis];

@@ -22,7 +22,6 @@ abstract class VoxelDescent {
 
     final PointTree points;
     final int k;
-    final KdTree tree;
     /** The tree's nodes, three ints each ({@link KdTree#nodeArray()}). */
     final int[] nodes;
     /** The words' leaf mark and axis-field width, as {@link KdTree} lays them out for this dimension. */
@@ -39,7 +38,7 @@ abstract class VoxelDescent {
 
     VoxelDescent(PointTree points) {
         this.points = points;
-        tree = points.tree();
+        KdTree tree = points.tree();
         k = points.dimension();
         nodes = tree.nodeArray();
         mark = tree.leafMark();
@@ -89,7 +88,7 @@ abstract class VoxelDescent {
             return;
         }
         int axis = w & mark;
-        double diff = q[axis] - KdTree.splitOf(nodes, node);
+        double diff = q[axis] - split(node);
         int near = node + 1, far = w >>> shift;
         if (diff > 0) { near = far; far = node + 1; }
         descend(near, rd);
@@ -111,6 +110,9 @@ abstract class VoxelDescent {
 
     /** The word of a node. */
     final int word(int node) { return nodes[3 * node]; }
+
+    /** The split position of interior node {@code node}. */
+    final double split(int node) { return KdTree.splitOf(nodes, node); }
 
     /** Whether the word is a leaf's. */
     final boolean isLeaf(int w) { return (w & mark) == mark; }

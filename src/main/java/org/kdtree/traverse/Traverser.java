@@ -18,9 +18,9 @@ import org.kdtree.tree.KdTree;
  * <li>a ray lying exactly in the split plane (tSplit = 0 * infinity = NaN) visits both children,
  * each over the whole interval: a primitive touching the plane from either side can be hit
  * there;</li>
- * <li>intervals are closed, and ties (tSplit == tMin or tMax, within a relative slack of about
- * 1.4e-14, 2^-46, {@link Tolerance#TRAVERSAL_SLACK}, that covers rounding) visit both children, so a hit exactly on a plane or at a voxel
- * edge is never lost;</li>
+ * <li>intervals are closed, and ties (tSplit == tMin or tMax, within a relative slack of 2^-46,
+ * about 1.4e-14, {@link Tolerance#TRAVERSAL_SLACK}, that covers rounding) visit both children, so
+ * a hit exactly on a plane or at a voxel edge is never lost;</li>
  * <li>primitives are tested against the caller's whole range, not the leaf's: a hit beyond the
  * current leaf is kept as a candidate and the search continues; a saved far child is skipped only
  * when it starts beyond the closest hit so far. With mailboxing (each primitive tested once per

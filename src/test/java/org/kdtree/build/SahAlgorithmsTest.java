@@ -63,8 +63,6 @@ class SahAlgorithmsTest {
     }
 
     static void assertSameTree(KdTree actual, KdTree expected, String what) {
-        assertThat(actual.nodeArray()).as("nodes %s", what).isEqualTo(expected.nodeArray());
-        assertThat(actual.bounds()).as("root voxel %s", what).isEqualTo(expected.bounds());
-        assertThat(actual.refArray()).as("leaf references %s", what).isEqualTo(expected.refArray());
+        org.kdtree.testing.Trees.assertSameTree(expected, actual, what);
     }
 }

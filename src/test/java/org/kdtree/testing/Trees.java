@@ -11,9 +11,21 @@ public final class Trees {
 
     /** Asserts two trees are identical: same nodes, same splits, same leaves with the same references. */
     public static void assertSameTree(KdTree a, KdTree b) {
-        assertThat(b.nodeCount()).as("node count").isEqualTo(a.nodeCount());
-        assertThat(b.nodeArray()).as("nodes (split codes or leaf offsets; axes, children or leaf sizes)").isEqualTo(a.nodeArray());
-        assertThat(b.bounds()).as("root voxel (the grid of split positions)").isEqualTo(a.bounds());
-        assertThat(b.refArray()).as("leaf references").isEqualTo(a.refArray());
+        assertSameTree(a, b, "");
+    }
+
+    /**
+     * {@link #assertSameTree(KdTree, KdTree)}, naming the case in every message.
+     *
+     * @param a the expected tree
+     * @param b the tree checked against it
+     * @param what the case, for the messages
+     */
+    public static void assertSameTree(KdTree a, KdTree b, String what) {
+        assertThat(b.nodeCount()).as("node count %s", what).isEqualTo(a.nodeCount());
+        assertThat(b.nodeArray()).as("nodes (axes and children or leaf sizes; splits or leaf offsets) %s", what)
+                .isEqualTo(a.nodeArray());
+        assertThat(b.bounds()).as("root voxel %s", what).isEqualTo(a.bounds());
+        assertThat(b.refArray()).as("leaf references %s", what).isEqualTo(a.refArray());
     }
 }
