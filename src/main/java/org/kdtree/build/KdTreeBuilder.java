@@ -60,10 +60,16 @@ public abstract class KdTreeBuilder {
      * @return the tree
      */
     public final KdTree build(Primitives primitives) {
+        return build(primitives, BuildWatch.unwatched());
+    }
+
+    /** {@link #build(Primitives)} under {@code watch}: a supervisor's view of the build, and its way to stop it. */
+    final KdTree build(Primitives primitives, BuildWatch watch) {
         Box rootVoxel = rootVoxel(primitives);
         int depthCap = depthCap(primitives.size());
         KdTreeWriter out = new KdTreeWriter(primitives.dimension());
-        Build build = new Build(primitives, depthCap, threads == 1 ? Integer.MAX_VALUE : forkThreshold(primitives.size(), threads));
+        Build build = new Build(primitives, depthCap, threads == 1 ? Integer.MAX_VALUE : forkThreshold(primitives.size(), threads),
+                watch);
         if (threads == 1) {
             construct(build, rootVoxel, out);
         } else {
@@ -156,11 +162,12 @@ public abstract class KdTreeBuilder {
     }
 
     private void recConst(Build build, BuildNode node, KdTreeWriter out) {
-        if (node.depth() >= build.depthCap || terminate(build, node)) {
+        build.watch.node(node.depth(), node.size());
+        if (node.depth() >= build.depthCap || callTerminate(build, node)) {
             out.leaf(node.refArray(), node.base(), node.size());
             return;
         }
-        SplitPlane plane = checked(findPlane(build, node), node);
+        SplitPlane plane = checked(callFindPlane(build, node), node);
         Children children = split(build, node, plane);
         int nl = children.left().size(), nr = children.right().size();
         int outcome = SplitOutcome.of(node.size(), nl, nr, node.budget());
@@ -193,14 +200,40 @@ public abstract class KdTreeBuilder {
         recConst(build, children.right(), out);
     }
 
+    /** terminate, with whatever it throws named as this builder's fault. */
+    private boolean callTerminate(Build build, BuildNode node) {
+        build.watch.enter(BuildWatch.TERMINATE, node.depth(), node.size());
+        try {
+            return terminate(build, node);
+        } catch (RuntimeException | Error e) {
+            throw BuilderFaults.threw(this, BuilderFault.TERMINATE, node, e);
+        } finally {
+            build.watch.leave();
+        }
+    }
+
+    /** findPlane, with whatever it throws named as this builder's fault. */
+    private SplitPlane callFindPlane(Build build, BuildNode node) {
+        build.watch.enter(BuildWatch.FIND_PLANE, node.depth(), node.size());
+        try {
+            return findPlane(build, node);
+        } catch (RuntimeException | Error e) {
+            throw BuilderFaults.threw(this, BuilderFault.FIND_PLANE, node, e);
+        } finally {
+            build.watch.leave();
+        }
+    }
+
+    /** The plane findPlane returned, if the recursion can use it; else this builder's fault. */
     private SplitPlane checked(SplitPlane p, BuildNode node) {
-        if (p == null) throw new IllegalStateException(name() + ": findPlane returned null at depth " + node.depth());
-        if (p.axis() >= node.dimension())
-            throw new IllegalStateException(name() + ": findPlane chose axis " + p.axis() + " in " + node.dimension() + "-D");
+        if (p == null) throw BuilderFaults.badPlane(this, node, "returned null",
+                "return a plane for every node that terminate does not make a leaf");
+        if (p.axis() >= node.dimension()) throw BuilderFaults.badPlane(this, node, "chose axis " + p.axis() + " in "
+                + node.dimension() + "-D", "the axis must be 0 .. " + (node.dimension() - 1));
         Box v = node.voxel();
         if (p.position() < v.min(p.axis()) || p.position() > v.max(p.axis()))
-            throw new IllegalStateException(name() + ": findPlane chose x" + p.axis() + " = " + p.position()
-                    + ", outside the voxel " + v);
+            throw BuilderFaults.badPlane(this, node, "chose x" + p.axis() + " = " + p.position() + ", outside the voxel " + v,
+                    "findPlane must return a plane on one of the node's axes, inside its voxel");
         return p;
     }
 
@@ -342,6 +375,6 @@ public abstract class KdTreeBuilder {
     }
 
     /** The per-build context that {@link BuildContext} exposes to subclasses. */
-    private record Build(Primitives primitives, int depthCap, int forkThreshold) implements BuildContext {
+    private record Build(Primitives primitives, int depthCap, int forkThreshold, BuildWatch watch) implements BuildContext {
     }
 }

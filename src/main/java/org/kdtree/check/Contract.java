@@ -147,9 +147,8 @@ public final class Contract {
             throw new CancellationException("contract run interrupted");
         } catch (ExecutionException e) {
             Throwable cause = e.getCause();
-            if (cause instanceof IllegalStateException refused)
-                throw new ContractViolation(refused.getMessage() + " (building " + scene + ")"
-                        + "; findPlane() must return a plane on one of the node's axes, inside its voxel.");
+            if (cause instanceof org.kdtree.build.BuilderFault fault)
+                throw new ContractViolation(fault.getMessage() + " (building " + scene + ")");
             if (cause instanceof RuntimeException r) throw r;
             if (cause instanceof Error err) throw err;
             throw new IllegalStateException(cause);

@@ -106,12 +106,12 @@ class ContractCatchesBrokenBuildersTest {
         assertThatThrownBy(() -> Contract.check(new PlaneOutside(), scene, "200 shapes"))
                 .isInstanceOf(ContractViolation.class)
                 .hasMessageContaining("outside the voxel")
-                .hasMessageContaining("findPlane() must return a plane");
+                .hasMessageContaining("findPlane must return a plane");
     }
 
     @Test void aPlaneOutsideTheVoxelIsReportedByTheBuild() {
         assertThatThrownBy(() -> new PlaneOutside().build(scene))
-                .isInstanceOf(IllegalStateException.class)
+                .isInstanceOf(org.kdtree.build.BuilderFault.class)
                 .hasMessageContaining("outside the voxel");
     }
 }

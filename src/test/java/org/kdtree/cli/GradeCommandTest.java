@@ -41,7 +41,7 @@ class GradeCommandTest {
         Path csv = dir.resolve("grade.csv");
         CliRun r = CliRun.of("--plugin", jar.toString(), "grade", "--builder", "plane-outside", "-o", csv.toString());
         assertThat(r.code()).as(r.err()).isEqualTo(1);
-        assertThat(r.out()).contains("talk figures                                 FAIL  plane-outside: findPlane chose x0 = ")
+        assertThat(r.out()).contains("talk figures                                 FAIL  builder plane-outside: findPlane chose x0 = ")
                 .contains("outside the voxel")
                 .contains("verdict: FAIL: breaks the contract (")
                 .doesNotContain("quality (course scenes)");

@@ -1,0 +1,101 @@
+package org.kdtree.build;
+
+import java.lang.invoke.MethodHandles;
+import java.lang.invoke.VarHandle;
+import java.util.concurrent.CancellationException;
+
+/**
+ * What the recursion tells whoever watches a build, and how it is told to stop. The recursion
+ * reports every node ({@link #node}) and every call into the builder ({@link #enter},
+ * {@link #leave}); at every node it stops when the build is cancelled or its thread interrupted.
+ * A watcher on another thread (a supervisor) reads {@link #calls()}, {@link #nodes()} and where
+ * the last call went, to tell a hung call from a slow build.
+ *
+ * <p>Cheap enough for every build: an unwatched build only checks the cancel flag and its
+ * thread's interrupt; a watched one adds a few plain stores and one release store per call.
+ */
+final class BuildWatch {
+    /** The methods of the builder that the recursion calls. */
+    static final int TERMINATE = 1, FIND_PLANE = 2;
+
+    private static final VarHandle CALLS;
+
+    static {
+        try {
+            CALLS = MethodHandles.lookup().findVarHandle(BuildWatch.class, "calls", long.class);
+        } catch (ReflectiveOperationException e) {
+            throw new ExceptionInInitializerError(e);
+        }
+    }
+
+    private final boolean watched;
+    private volatile boolean cancelled;
+    private volatile RuntimeException stopWith;
+    /** Odd while a call is under way: incremented on entering and on leaving (release stores). */
+    @SuppressWarnings("unused") private long calls;
+    private long nodes;
+    private int method, depth, size;
+
+    private BuildWatch(boolean watched) {
+        this.watched = watched;
+    }
+
+    /** {@return a watch that nobody reads: it only stops the build when cancelled or interrupted} */
+    static BuildWatch unwatched() {
+        return new BuildWatch(false);
+    }
+
+    /** {@return a watch that a supervisor reads} */
+    static BuildWatch watched() {
+        return new BuildWatch(true);
+    }
+
+    /** At every node: counts it, and stops the build if it was cancelled or its thread interrupted. */
+    void node(int nodeDepth, int nodeSize) {
+        if (cancelled) throw stopWith != null ? stopWith : new CancellationException("build cancelled");
+        if (Thread.currentThread().isInterrupted()) throw new CancellationException("build cancelled");
+        if (watched) nodes++;
+    }
+
+    /** Before the recursion calls the builder's {@code method} on a node. */
+    void enter(int which, int nodeDepth, int nodeSize) {
+        if (!watched) return;
+        method = which;
+        depth = nodeDepth;
+        size = nodeSize;
+        CALLS.setRelease(this, (long) CALLS.getOpaque(this) + 1);
+    }
+
+    /** After the call returned or threw. */
+    void leave() {
+        if (!watched) return;
+        CALLS.setRelease(this, (long) CALLS.getOpaque(this) + 1);
+    }
+
+    /**
+     * Stops the build at its next node: it ends with {@code reason} (a {@link BuilderFault}
+     * found by the watcher), or with a {@link CancellationException} if null.
+     */
+    void cancel(RuntimeException reason) {
+        stopWith = reason;
+        cancelled = true;
+    }
+
+    /** {@return whether the build was told to stop} */
+    boolean cancelled() { return cancelled; }
+
+    /** {@return the count of entries into and exits from the builder's methods; odd while a call is under way} */
+    long calls() { return (long) CALLS.getAcquire(this); }
+
+    /** {@return the nodes visited so far} (read racily by the watcher: a progress figure, not an exact count) */
+    long nodes() { return nodes; }
+
+    /** {@return {@link BuilderFault#TERMINATE} or {@link BuilderFault#FIND_PLANE}: the method of the last call} */
+    String method() { return method == FIND_PLANE ? BuilderFault.FIND_PLANE : BuilderFault.TERMINATE; }
+
+    /** {@return the depth of the node of the last call} */
+    int depth() { return depth; }
+
+    /** {@return the size of the node of the last call} */
+    int size() { return size; }
+}
