@@ -17,11 +17,10 @@ package org.kdtree.build;
  * itself classifies exactly.
  */
 final class BinnedPlaneSearch implements PlaneSearch {
-    private static final SortedPlaneSearch EXACT = new SortedPlaneSearch();
     private final int bins;
     private final int exactBelow;
 
-    /** B bins per axis; nodes with fewer than {@code exactBelow} references get the exact sweep. */
+    /** B bins per axis; nodes with fewer than {@code exactBelow} references get the exact sweep ({@link EventSweep}). */
     BinnedPlaneSearch(int bins, int exactBelow) {
         if (bins < 2) throw new IllegalArgumentException("binned SAH needs at least 2 bins, got " + bins);
         this.bins = bins;
@@ -31,22 +30,26 @@ final class BinnedPlaneSearch implements PlaneSearch {
     @Override public void search(BuildNode node, SahCost sah, SahSplit best) {
         int n = node.size(), k = node.dimension();
         if (n < exactBelow) {
-            EXACT.search(node, sah, best);
+            EventSweep.INSTANCE.search(node, sah, best);
             return;
         }
-        int[] minBin = new int[bins], maxBin = new int[bins];
-        double[] c = node.clippedBounds();
+        NodeStore store = node.store();
+        int d = node.level(), c = node.child();
+        int[] minBin = store.minBins(bins), maxBin = store.maxBins();
+        boolean flat = store.formOf(d, c) == NodeStore.BOUNDS;
+        double[] bounds = flat ? store.bounds(d) : node.clippedBounds();
+        int at = flat ? store.boundsMeta(d)[2 * c] : 0;
+        double[] v = store.voxel(d);
         for (int axis = 0; axis < k; axis++)
-            searchAxis(sah, best, axis, node.voxel().min(axis), node.voxel().max(axis), bins, minBin, maxBin, c, 0, n, k);
+            searchAxis(sah, best, axis, v[2 * k * c + axis], v[2 * k * c + k + axis], bins, minBin, maxBin, bounds, at, n, k);
     }
 
     /**
      * One axis of the voxel {@code [lo, hi]}: histograms of the clipped minima and maxima of the
      * {@code n} references whose bounds are at slots {@code at ..} of {@code bounds} ({@code 2k}
-     * values a slot), then the {@code bins - 1} boundaries offered in order. Shared by this search
-     * and the {@link BinnedEngine}, so that both build the same tree.
+     * values a slot), then the {@code bins - 1} boundaries offered in order.
      */
-    static void searchAxis(SahCost sah, SahSplit best, int axis, double lo, double hi, int bins, int[] minBin, int[] maxBin,
+    private static void searchAxis(SahCost sah, SahSplit best, int axis, double lo, double hi, int bins, int[] minBin, int[] maxBin,
                            double[] bounds, int at, int n, int k) {
         double w = hi - lo;
         if (!(w > 0)) return;

@@ -1,133 +1,187 @@
 package org.kdtree.build;
 
+import java.util.Arrays;
 import org.kdtree.geom.Box;
 import org.kdtree.geom.SplitPlane;
 
 /**
- * A node under construction: its voxel, the primitives that overlap it, their bounds
- * clipped to the voxel, and its depth. Builders that need more (sorted event lists, say)
- * subclass it and override {@link KdTreeBuilder#split}.
+ * The node T, V that {@link KdTreeBuilder#terminate} and {@link KdTreeBuilder#findPlane} are
+ * asked about: its voxel, the primitives that overlap it, the bounds of their parts inside the
+ * voxel ("clipped bounds"), and its depth.
  *
- * <p>The clipped bounds are kept flat: for the j-th reference, {@code k} minima then
- * {@code k} maxima, at offset {@code 2 k j}.
+ * <p>A view over the build's node store, not an object of its own: the recursion points one
+ * view at one node after another, so a builder reads a node only while its method runs, and
+ * must not keep the view, its voxel or the arrays it hands out. What a builder wants to carry
+ * from its {@code terminate} to its {@code findPlane} on the same node it keeps with
+ * {@link #keepPlane} (the SAH finds its best plane once, to decide both).
+ *
+ * <p>The j-th reference ({@code 0 <= j < size()}) is primitive {@link #ref(int) ref(j)}; the
+ * references are listed in increasing order of primitive.
  */
-public class BuildNode {
+public final class BuildNode {
+    private final NodeStore store;
+    private final BuildContext context;
     private final Box voxel;
-    private int[] refs;
-    private double[] clipped;
-    private final int base, size;
-    private final int depth;
-    private final int k;
+    private int d, c, size;
+    private SplitPlane kept;
+    /** The references and clipped bounds of a node held as events, made when first asked for. */
+    private int[] eventRefs = new int[0];
+    private double[] eventBounds = new double[0];
+    private boolean eventBoundsMade;
+    private double[] scratch = new double[16];
 
-    private long budget = Long.MAX_VALUE;
-    /** The plane a builder of this package chose while deciding terminate, for its findPlane; null until then. */
-    private SplitPlane chosen;
-
-    /**
-     * @param voxel   this node's voxel (not copied)
-     * @param refs    indices of the primitives overlapping the voxel (not copied)
-     * @param clipped their clipped bounds, {@code 2 k} values per reference (not copied)
-     * @param depth   the root has depth 0
-     */
-    public BuildNode(Box voxel, int[] refs, double[] clipped, int depth) {
-        this(voxel, refs, clipped, 0, refs.length, depth);
-        if (clipped.length != 2 * k * refs.length)
-            throw new IllegalArgumentException("need " + 2 * k + " clipped bounds per reference");
+    BuildNode(NodeStore store, BuildContext context) {
+        this.store = store;
+        this.context = context;
+        this.voxel = new Box(store.k);
     }
 
-    /**
-     * A node whose references are the slice {@code refs[base .. base + size)} of a shared array,
-     * with their clipped bounds at the same indices of {@code clipped} (a builder's scratch
-     * memory; nothing is copied). A subclass that keeps its clipped bounds in another form passes
-     * null and overrides {@link #clippedMin}, {@link #clippedMax} and {@link #clippedBounds}.
-     * @param voxel the node's voxel V
-     * @param refs the array holding the node's primitive indices
-     * @param clipped the array holding their clipped bounds, {@code 2 k} per reference
-     * @param base where the node's references begin in {@code refs}
-     * @param size |T|, how many references the node has
-     * @param depth the node's depth; the root has depth 0
-     */
-    protected BuildNode(Box voxel, int[] refs, double[] clipped, int base, int size, int depth) {
-        this.voxel = voxel;
-        this.refs = refs;
-        this.clipped = clipped;
-        this.base = base;
-        this.size = size;
-        this.depth = depth;
-        this.k = voxel.dimension();
+    /** Points this view at child c of level d of its store; forgets the kept plane. */
+    BuildNode point(int depth, int child) {
+        d = depth;
+        c = child;
+        size = store.size(d, c);
+        kept = null;
+        eventBoundsMade = false;
+        double[] v = store.voxel(d);
+        int k = store.k;
+        for (int a = 0; a < k; a++) voxel.setMin(a, v[2 * k * c + a]).setMax(a, v[2 * k * c + k + a]);
+        return this;
     }
 
-    /** {@return the voxel V of this node}; do not modify it. */
+    /** {@return the voxel V of this node}; do not modify or keep it. */
     public Box voxel() { return voxel; }
 
     /** {@return D(V), the depth of this node}; the root has depth 0. */
-    public int depth() { return depth; }
+    public int depth() { return d; }
 
     /** {@return |T|, the number of primitives overlapping the voxel} */
     public int size() { return size; }
 
     /** {@return k, the dimension} */
-    public int dimension() { return k; }
+    public int dimension() { return store.k; }
+
+    /** {@return what the build knows besides the node: its primitives, its depth cap} */
+    public BuildContext context() { return context; }
 
     /** {@return how many references this node's subtree may hold ({@link ReferenceBudget})} */
-    public long budget() { return budget; }
-
-    void budget(long references) {
-        this.budget = references;
-    }
+    public long budget() { return store.budget(d)[c]; }
 
     /**
      * {@return the index of the j-th primitive of this node}
      * @param j 0 .. {@link #size()} - 1
      */
-    public int ref(int j) { return refs[base + j]; }
+    public int ref(int j) {
+        check(j);
+        if (store.formOf(d, c) == NodeStore.BOUNDS) return store.refs(d)[store.boundsMeta(d)[2 * c] + j];
+        return eventRefs()[j];
+    }
 
     /**
      * {@return the lower bound on {@code axis} of the part of the j-th primitive inside the voxel}
      * @param j 0 .. {@link #size()} - 1
-     * @param axis the axis
+     * @param axis the axis, 0 .. {@link #dimension()} - 1
      */
-    public double clippedMin(int j, int axis) { return clipped[2 * k * (base + j) + axis]; }
+    public double clippedMin(int j, int axis) {
+        return bound(j, axis);
+    }
 
     /**
      * {@return the upper bound on {@code axis} of the part of the j-th primitive inside the voxel}
      * @param j 0 .. {@link #size()} - 1
-     * @param axis the axis
+     * @param axis the axis, 0 .. {@link #dimension()} - 1
      */
-    public double clippedMax(int j, int axis) { return clipped[2 * k * (base + j) + k + axis]; }
+    public double clippedMax(int j, int axis) {
+        return bound(j, store.k + axis);
+    }
 
-    /** {@return the primitive indices, {@link #size()} of them} (the node's own array or a copy; do not modify). */
+    /** {@return the primitive indices, {@link #size()} of them, in a new array} */
     public int[] refs() {
-        return base == 0 && refs.length == size ? refs : java.util.Arrays.copyOfRange(refs, base, base + size);
+        int[] r = new int[size];
+        for (int j = 0; j < size; j++) r[j] = ref(j);
+        return r;
     }
 
-    /** {@return the flat clipped bounds, {@code 2 k} per reference} (the node's own array or a copy; do not modify). */
+    /** {@return the clipped bounds, {@code 2k} values per reference (k minima, then k maxima), in a new array} */
     public double[] clippedBounds() {
-        return base == 0 && clipped.length == 2 * k * size ? clipped
-                : java.util.Arrays.copyOfRange(clipped, 2 * k * base, 2 * k * (base + size));
+        int k2 = 2 * store.k;
+        if (size > 0) check(0);
+        if (store.formOf(d, c) == NodeStore.BOUNDS) {
+            int from = store.boundsMeta(d)[2 * c];
+            return Arrays.copyOfRange(store.bounds(d), k2 * from, k2 * (from + size));
+        }
+        makeEventBounds();
+        return Arrays.copyOf(eventBounds, k2 * size);
     }
-
-    /** The array holding the references, from index {@link #base()} on (no copy, for hot loops). */
-    int[] refArray() { return refs; }
-
-    /** Where this node's references start in {@link #refArray()}. */
-    int base() { return base; }
 
     /**
-     * Remembers the plane this package's builder chose while deciding {@code terminate}, so that
-     * its {@code findPlane} need not search again (the SAH finds its best plane once). Not part of
-     * the contract a builder outside the package implements: it stays out of the public API.
+     * Keeps {@code plane} for this node, so that {@code findPlane} can return what
+     * {@code terminate} found (the SAH searches once to decide both); the next node starts
+     * with nothing kept.
+     * @param plane the plane to keep, or null to forget it
      */
-    void choose(SplitPlane plane) {
-        this.chosen = plane;
+    public void keepPlane(SplitPlane plane) { kept = plane; }
+
+    /** {@return the plane kept for this node by {@link #keepPlane}, or null} */
+    public SplitPlane keptPlane() { return kept; }
+
+    /**
+     * {@return a scratch array of at least {@code length} doubles}, reused from node to node on
+     * this thread (so a builder need not allocate per node); its contents are undefined, and it
+     * is valid only until the builder's method returns.
+     * @param length the number of values needed
+     */
+    public double[] scratch(int length) {
+        if (scratch.length < length) scratch = new double[NodeStore.grown(scratch.length, length)];
+        return scratch;
     }
 
-    /** The plane remembered by {@link #choose}, or null. */
-    SplitPlane chosen() { return chosen; }
+    // ---- for the library's plane searches ----
 
-    /** Lets go of the arrays once the children are made, so deep recursions hold less memory. */
-    protected void release() {
-        refs = null;
-        clipped = null;
+    NodeStore store() { return store; }
+
+    int level() { return d; }
+
+    int child() { return c; }
+
+    private double bound(int j, int at) {
+        check(j);
+        if (at < 0 || at >= 2 * store.k) throw new IndexOutOfBoundsException("axis " + (at % store.k) + " outside 0 .. " + (store.k - 1));
+        if (store.formOf(d, c) == NodeStore.BOUNDS)
+            return store.bounds(d)[2 * store.k * (store.boundsMeta(d)[2 * c] + j) + at];
+        makeEventBounds();
+        return eventBounds[2 * store.k * j + at];
+    }
+
+    private void check(int j) {
+        if (j < 0 || j >= size)
+            throw new IndexOutOfBoundsException("reference " + j + " of a node of " + size + " (valid: 0 .. " + (size - 1) + ")");
+    }
+
+    private int[] eventRefs() {
+        makeEventBounds();
+        return eventRefs;
+    }
+
+    /** The references and clipped bounds of a node held as events: its primitives in order, their bounds from their events. */
+    private void makeEventBounds() {
+        if (eventBoundsMade) return;
+        int k = store.k, n = store.leafRefs(d, c);
+        if (eventRefs.length < n) eventRefs = new int[n];
+        if (eventBounds.length < 2 * k * n) eventBounds = new double[2 * k * n];
+        int[] slot = store.perPrimitive();
+        System.arraycopy(store.leafRefs(), 0, eventRefs, 0, n);
+        for (int j = 0; j < n; j++) slot[eventRefs[j]] = j;
+        double[] pos = store.positions(d);
+        int[] code = store.codes(d), meta = store.eventMeta(d);
+        int at = store.metaAt(c);
+        for (int a = 0; a < k; a++) {
+            for (int e = meta[at + 1 + 2 * a], to = meta[at + 2 + 2 * a]; e < to; e++) {
+                int o = 2 * k * slot[EventCode.primitive(code[e])], kind = EventCode.kind(code[e]);
+                if (kind != EventCode.END) eventBounds[o + a] = pos[e];
+                if (kind != EventCode.START) eventBounds[o + k + a] = pos[e];
+            }
+        }
+        eventBoundsMade = true;
     }
 }

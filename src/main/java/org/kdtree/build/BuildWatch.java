@@ -53,7 +53,10 @@ final class BuildWatch {
     /** At every node: counts it, and stops the build if it was cancelled or its thread interrupted. */
     void node(int nodeDepth, int nodeSize) {
         if (cancelled) throw stopWith != null ? stopWith : new CancellationException("build cancelled");
-        if (Thread.currentThread().isInterrupted()) throw new CancellationException("build cancelled");
+        if (Thread.currentThread().isInterrupted()) {
+            cancel(null); // and so every thread of the build stops
+            throw new CancellationException("build cancelled");
+        }
         if (watched) nodes++;
     }
 
@@ -74,9 +77,10 @@ final class BuildWatch {
 
     /**
      * Stops the build at its next node: it ends with {@code reason} (a {@link BuilderFault}
-     * found by the watcher), or with a {@link CancellationException} if null.
+     * found by the watcher), or with a {@link CancellationException} if null. The first reason given stays.
      */
     void cancel(RuntimeException reason) {
+        if (cancelled) return;
         stopWith = reason;
         cancelled = true;
     }

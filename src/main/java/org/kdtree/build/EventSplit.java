@@ -3,20 +3,20 @@ package org.kdtree.build;
 import org.kdtree.geom.Box;
 
 /**
- * The split step of the event engine (Wald and Havran 2006, section 4.3): classify each
+ * The split step of Algorithm 1 for a node held as sorted events ({@link NodeStore#EVENTS};
+ * Wald and Havran 2006, section 4.3): classify each
  * primitive as left only, right only or straddling from the events on the split axis; clip
  * only the straddlers ({@link Partition#straddlerBounds}, as the recursion does); copy the
  * one-sided primitives' events, still sorted, into the children; sort the straddlers' few new
  * events and merge them in. Linear in the node's events plus {@code s log s} for {@code s}
  * straddlers, with nothing allocated: sides live in one byte per primitive, everything else
- * in the engine's {@link EventLevels} and in scratch arrays kept from node to node.
+ * in the build's {@link NodeStore} and in scratch arrays kept from node to node.
  */
 final class EventSplit {
     /** The side of a primitive in the node being split; a straddler's events are copied to neither child. */
     private static final byte STRADDLES = 0, LEFT = 1, RIGHT = 2;
 
-    private final EventEngine engine;
-    private final EventLevels levels;
+    private final NodeStore store;
     private final int k;
     private final byte[] side;
     /** The straddlers' primitives, then per straddler bit 0 "goes left", bit 1 "goes right". */
@@ -26,15 +26,12 @@ final class EventSplit {
     /** One child's new events on one axis. */
     private double[] extraPos = new double[16], sortPos = new double[16];
     private int[] extraCode = new int[16], sortCode = new int[16];
-    /** Per primitive, its straddler slot (only without perfect splits, to recover parent bounds). */
-    private int[] slotOf;
     private final Box voxel, clipLeft, clipRight;
 
-    EventSplit(EventEngine engine) {
-        this.engine = engine;
-        this.levels = engine.levels;
-        this.k = engine.k;
-        this.side = new byte[engine.prims.size()];
+    EventSplit(NodeStore store) {
+        this.store = store;
+        this.k = store.k;
+        this.side = new byte[store.prims.size()];
         this.voxel = new Box(k);
         this.clipLeft = new Box(k);
         this.clipRight = new Box(k);
@@ -45,19 +42,19 @@ final class EventSplit {
      * children in level d + 1, with their shares of its reference budget; returns the
      * {@link SplitOutcome}, and writes nothing unless it is {@link SplitOutcome#SPLIT}.
      */
-    int split(int d, int c, int n, int axis, double xi, boolean planarLeft) {
-        int[] code = levels.codes(d), meta = levels.meta(d);
-        int at = levels.metaAt(c), from = meta[at + 1 + 2 * axis], to = meta[at + 2 + 2 * axis];
+    int split(int d, int c, int axis, double xi, boolean planarLeft, boolean perfectSplits) {
+        int[] code = store.codes(d), meta = store.eventMeta(d);
+        int at = store.metaAt(c), n = meta[at], from = meta[at + 1 + 2 * axis], to = meta[at + 2 + 2 * axis];
         if (straddlers.length < n) { straddlers = new int[n]; goesTo = new int[n]; }
-        long counts = classify(levels.positions(d), code, from, to, xi, planarLeft ? LEFT : RIGHT);
+        long counts = classify(store.positions(d), code, from, to, xi, planarLeft ? LEFT : RIGHT);
         int nl = (int) (counts >>> 32), nb = (int) counts, nr = n - nl - nb;
-        long added = clipStraddlers(d, c, axis, xi, nb);
+        long added = clipStraddlers(d, c, axis, xi, nb, perfectSplits);
         int sizeL = nl + (int) (added >>> 32), sizeR = nr + (int) added;
-        long budget = levels.budget(d)[c];
+        long budget = store.budget(d)[c];
         int outcome = SplitOutcome.of(n, sizeL, sizeR, budget);
         if (outcome != SplitOutcome.SPLIT) return outcome;
         writeChildren(d, c, axis, xi, nb, sizeL, sizeR);
-        long[] below = levels.budget(d + 1);
+        long[] below = store.budget(d + 1);
         below[0] = ReferenceBudget.share(budget, sizeL, sizeL, sizeR);
         below[1] = ReferenceBudget.share(budget, sizeR, sizeL, sizeR);
         return SplitOutcome.SPLIT;
@@ -100,16 +97,16 @@ final class EventSplit {
      * {@link #goesTo} which children each reaches (a clip can miss a child the bounds touched).
      * Returns how many go left and right, as {@code left << 32 | right}.
      */
-    private long clipStraddlers(int d, int c, int axis, double xi, int nb) {
+    private long clipStraddlers(int d, int c, int axis, double xi, int nb, boolean perfectSplits) {
         if (nb == 0) return 0;
-        double[] v = levels.voxel(d);
+        double[] v = store.voxel(d);
         for (int a = 0; a < k; a++) voxel.setMin(a, v[2 * k * c + a]).setMax(a, v[2 * k * c + k + a]);
-        if (bounds.length < 6 * k * nb) bounds = new double[EventLevels.grown(bounds.length, 6 * k * nb)];
-        if (!engine.perfectSplits) parentBounds(d, c, nb);
+        if (bounds.length < 6 * k * nb) bounds = new double[NodeStore.grown(bounds.length, 6 * k * nb)];
+        if (!perfectSplits) parentBounds(d, c, nb);
         int left = 0, right = 0;
         for (int i = 0; i < nb; i++) {
-            int to = Partition.straddlerBounds(engine.prims, straddlers[i], bounds, 2 * nb + i, voxel, axis, xi,
-                    engine.perfectSplits, clipLeft, clipRight, bounds, i, bounds, nb + i);
+            int to = Partition.straddlerBounds(store.prims, straddlers[i], bounds, 2 * nb + i, voxel, axis, xi,
+                    perfectSplits, clipLeft, clipRight, bounds, i, bounds, nb + i);
             goesTo[i] = to;
             left += to & 1;
             right += to >>> 1;
@@ -119,11 +116,11 @@ final class EventSplit {
 
     /** The straddlers' bounds in the node (slots [2nb, 3nb)), recovered from their events on every axis. */
     private void parentBounds(int d, int c, int nb) {
-        if (slotOf == null) slotOf = new int[side.length];
+        int[] slotOf = store.perPrimitive();
         for (int i = 0; i < nb; i++) slotOf[straddlers[i]] = 2 * nb + i;
-        double[] pos = levels.positions(d);
-        int[] code = levels.codes(d), meta = levels.meta(d);
-        int at = levels.metaAt(c);
+        double[] pos = store.positions(d);
+        int[] code = store.codes(d), meta = store.eventMeta(d);
+        int at = store.metaAt(c);
         for (int a = 0; a < k; a++) {
             for (int e = meta[at + 1 + 2 * a], to = meta[at + 2 + 2 * a]; e < to; e++) {
                 int p = EventCode.primitive(code[e]);
@@ -142,19 +139,19 @@ final class EventSplit {
      * its primitives has at most two; one slot more for the branch-free copy.
      */
     private void writeChildren(int d, int c, int axis, double xi, int nb, int sizeL, int sizeR) {
-        double[] pos = levels.positions(d);
-        int[] code = levels.codes(d), meta = levels.meta(d);
-        int at = levels.metaAt(c);
+        double[] pos = store.positions(d);
+        int[] code = store.codes(d), meta = store.eventMeta(d);
+        int at = store.metaAt(c);
         int total = 0;
         for (int a = 0; a < k; a++) {
             int m = meta[at + 2 + 2 * a] - meta[at + 1 + 2 * a];
             total += Math.min(m + 2 * nb, 2 * sizeL) + Math.min(m + 2 * nb, 2 * sizeR) + 2;
         }
-        levels.reserve(d + 1, total);
-        double[] outPos = levels.positions(d + 1);
-        int[] outCode = levels.codes(d + 1);
-        int[] below = levels.meta(d + 1);
-        int atL = levels.metaAt(0), atR = levels.metaAt(1);
+        store.reserveEvents(d + 1, total);
+        double[] outPos = store.positions(d + 1);
+        int[] outCode = store.codes(d + 1);
+        int[] below = store.eventMeta(d + 1);
+        int atL = store.metaAt(0), atR = store.metaAt(1);
         below[atL] = sizeL;
         below[atR] = sizeR;
         int startL = 0, startR = 0;
@@ -172,6 +169,9 @@ final class EventSplit {
             startR += Math.min(to - from + 2 * nb, 2 * sizeR) + 1;
         }
         childVoxels(d, c, axis, xi);
+        byte[] form = store.form(d + 1);
+        form[0] = NodeStore.EVENTS;
+        form[1] = NodeStore.EVENTS;
     }
 
     /**
@@ -203,7 +203,7 @@ final class EventSplit {
     private int mergeStraddlers(int child, int axis, int nb, double[] outPos, int[] outCode, int from, int end) {
         if (nb == 0) return end;
         if (extraPos.length < 2 * nb) {
-            extraPos = new double[EventLevels.grown(extraPos.length, 2 * nb)];
+            extraPos = new double[NodeStore.grown(extraPos.length, 2 * nb)];
             extraCode = new int[extraPos.length];
             sortPos = new double[extraPos.length];
             sortCode = new int[extraPos.length];
@@ -228,7 +228,7 @@ final class EventSplit {
 
     /** The children's voxels: the node's, cut at the plane. */
     private void childVoxels(int d, int c, int axis, double xi) {
-        double[] v = levels.voxel(d), below = levels.voxel(d + 1);
+        double[] v = store.voxel(d), below = store.voxel(d + 1);
         System.arraycopy(v, 2 * k * c, below, 0, 2 * k);
         System.arraycopy(v, 2 * k * c, below, 2 * k, 2 * k);
         below[k + axis] = xi;

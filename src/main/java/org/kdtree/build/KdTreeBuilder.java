@@ -1,5 +1,7 @@
 package org.kdtree.build;
 
+import java.util.Deque;
+import java.util.concurrent.ConcurrentLinkedDeque;
 import java.util.concurrent.ForkJoinPool;
 import java.util.concurrent.ForkJoinTask;
 import org.kdtree.limits.Limits;
@@ -12,7 +14,7 @@ import org.kdtree.tree.KdTree;
 import org.kdtree.tree.KdTreeWriter;
 
 /**
- * The talk's Algorithm 1, written once:
+ * The talk's Algorithm 1, written once, for every builder:
  * <pre>
  * recConst(T, V):
  *   if terminate(T, V): return Leaf(T)
@@ -21,15 +23,18 @@ import org.kdtree.tree.KdTreeWriter;
  *   T_L = { t in T | t overlaps V_L },  T_R = { t in T | t overlaps V_R }
  *   return Node(p, recConst(T_L, V_L), recConst(T_R, V_R))
  * </pre>
- * Subclasses decide {@link #terminate} and {@link #findPlane}; they may override
- * {@link #split}; a subclass with an engine of its own that builds the same tree may override
- * {@link #construct} (the SAH's event and binned engines do).
+ * Subclasses decide {@link #terminate} and {@link #findPlane}, and nothing else: the cut, the
+ * partition and the recursion are the library's, run over one node store of flat arrays
+ * reused through the build ({@link NodeStore}; a {@link BuildNode} is a view of one of its
+ * nodes). The SAH's fast searches are answers to those two questions like any other
+ * (docs/algorithms.md maps the talk's pseudo-code to this code line by line).
  *
- * <p>Three safety nets stand around the subclass's decisions, so that no input can make a
- * build run away: the recursion never goes deeper than {@link #maxDepth()} (default
+ * <p>Safety nets stand around the subclass's decisions, so that no input can make a build run
+ * away: the recursion never goes deeper than {@link #maxDepth()} (default
  * {@code 8 + 1.3 log2 N}); a split that sends every primitive to both children (it separates
  * nothing, as with thousands of coincident triangles) makes a leaf instead; and so does a split
- * whose children would exceed the node's share of the {@link #referenceBudget()}.
+ * whose children would exceed the node's share of the {@link #referenceBudget()}. What the
+ * subclass throws or answers wrong is reported as its fault ({@link BuilderFault}).
  *
  * <p>A builder is configured before use and may be reused; {@link #build} is safe to call
  * from several threads only if the subclass keeps no per-build state in fields.
@@ -55,7 +60,9 @@ public abstract class KdTreeBuilder {
      * Builds the tree of {@code primitives}, starting from their bounding box (constKdTree).
      *
      * @throws java.util.concurrent.CancellationException if the calling thread is interrupted
-     *         during the build (the build stops at its next split)
+     *         during the build (the build stops at its next node)
+     * @throws BuilderFault if this builder's terminate or findPlane throws or returns a plane
+     *         the recursion cannot use
      * @param primitives the scene's primitives
      * @return the tree
      */
@@ -66,16 +73,20 @@ public abstract class KdTreeBuilder {
     /** {@link #build(Primitives)} under {@code watch}: a supervisor's view of the build, and its way to stop it. */
     final KdTree build(Primitives primitives, BuildWatch watch) {
         Box rootVoxel = rootVoxel(primitives);
-        int depthCap = depthCap(primitives.size());
+        int n = primitives.size();
+        Build build = new Build(primitives, depthCap(n), threads == 1 ? Integer.MAX_VALUE : forkThreshold(n, threads), watch,
+                new ConcurrentLinkedDeque<>());
         KdTreeWriter out = new KdTreeWriter(primitives.dimension());
-        Build build = new Build(primitives, depthCap, threads == 1 ? Integer.MAX_VALUE : forkThreshold(primitives.size(), threads),
-                watch);
+        reserve(out, n);
         if (threads == 1) {
-            construct(build, rootVoxel, out);
+            recConstRoot(build, rootVoxel, out);
         } else {
             ForkJoinPool pool = new ForkJoinPool(threads);
             try {
-                pool.invoke(ForkJoinTask.adapt(() -> construct(build, rootVoxel, out)));
+                pool.invoke(ForkJoinTask.adapt(() -> recConstRoot(build, rootVoxel, out)));
+            } catch (RuntimeException | Error e) {
+                watch.cancel(null); // the subtrees still under way on other threads stop at their next node
+                throw e;
             } finally {
                 pool.shutdown();
             }
@@ -83,20 +94,73 @@ public abstract class KdTreeBuilder {
         return out.finish(rootVoxel, costModel, name());
     }
 
+    /** The root: every primitive with its own bounds, in the scene's box, with the whole reference budget. */
+    private void recConstRoot(Build build, Box rootVoxel, KdTreeWriter out) {
+        NodeStore store = new NodeStore(build.primitives, build);
+        store.writeRoot(rootVoxel, ReferenceBudget.root(referenceBudget, build.primitives.size()));
+        recConst(build, store, 0, 0, out);
+    }
+
     /**
-     * Writes the tree of {@code context}'s primitives in {@code rootVoxel} into {@code out}: by
-     * default Algorithm 1 below. A subclass with an engine of its own (the SAH's event engine)
-     * overrides this, and must write the very tree the recursion would. Runs inside the build's
-     * fork/join pool when {@link #threads()} is above 1.
-     * @param context the build's primitives, depth cap and fork threshold
-     * @param rootVoxel the scene box, the root's voxel
-     * @param out receives the nodes depth first
+     * recConst for child c of level d of {@code store} (the root is child 0 of level 0): the one
+     * place where Algorithm 1 is written. The node's children go to level d + 1.
      */
-    protected void construct(BuildContext context, Box rootVoxel, KdTreeWriter out) {
-        Build build = (Build) context;
-        BuildNode root = makeRoot(build, rootVoxel);
-        root.budget(ReferenceBudget.root(referenceBudget, root.size()));
-        recConst(build, root, out);
+    private void recConst(Build build, NodeStore store, int d, int c, KdTreeWriter out) {
+        BuildNode node = store.view.point(d, c);
+        build.watch.node(d, node.size());
+        if (d >= build.depthCap || callTerminate(build, node)) {
+            store.leaf(d, c, out);
+            return;
+        }
+        SplitPlane p = checked(callFindPlane(build, node), node);
+        int outcome = store.split(d, c, p.axis(), p.position(), p.planarLeft(), perfectSplits);
+        if (outcome != SplitOutcome.SPLIT) {
+            if (outcome == SplitOutcome.OVER_BUDGET) out.budgetLeaf();
+            store.leaf(d, c, out);
+            return;
+        }
+        int interior = out.interior(p.axis(), p.position());
+        if (store.size(d + 1, 1) >= build.forkThreshold && store.size(d + 1, 0) > 0) {
+            forkRight(build, store, d + 1, interior, out);
+            return;
+        }
+        recConst(build, store, d + 1, 0, out);
+        out.setRightChild(interior);
+        recConst(build, store, d + 1, 1, out);
+    }
+
+    /**
+     * Both children of level d, the right one built by another thread: copied into an idle
+     * store of the build (with its writer, reused from fork to fork), built there while this
+     * thread builds the left one, then spliced in after it. The same recursion, so the same tree,
+     * in the same depth-first order.
+     */
+    private void forkRight(Build build, NodeStore store, int d, int interior, KdTreeWriter out) {
+        Spare spare = build.spares.poll();
+        if (spare == null) spare = new Spare(new NodeStore(build.primitives, build), new KdTreeWriter(store.k));
+        Spare other = spare;
+        int n = store.copyChild(d, 1, other.store);
+        ForkJoinTask<?> right = ForkJoinTask.adapt(() -> {
+            other.out.clear();
+            reserve(other.out, n);
+            recConst(build, other.store, d, 1, other.out);
+        }).fork();
+        recConst(build, store, d, 0, out);
+        right.join();
+        out.setRightChild(interior);
+        out.append(other.out);
+        build.spares.push(other);
+    }
+
+    /** An idle store and writer for a subtree handed to another thread. */
+    private record Spare(NodeStore store, KdTreeWriter out) {
+    }
+
+    /**
+     * Sizes {@code out} up front for the tree of {@code primitives} primitives, where the
+     * builder can tell (the SAH can), rather than growing it by doubling.
+     */
+    void reserve(KdTreeWriter out, int primitives) {
     }
 
     /**
@@ -128,77 +192,6 @@ public abstract class KdTreeBuilder {
      * @return the plane to split it with
      */
     protected abstract SplitPlane findPlane(BuildContext context, BuildNode node);
-
-    /**
-     * Cuts the node's voxel with {@code plane} and sends each primitive to every child voxel it
-     * overlaps. A primitive whose part in the voxel ends at the plane goes to that side only; one
-     * lying in the plane goes to the side {@link SplitPlane#planarLeft()} names; one crossing the
-     * plane goes to both, with its bounds clipped to each child ("perfect splits", unless turned
-     * off, in which case the child keeps the box of the parent's bounds cut by the plane).
-     * @param context the build in progress
-     * @param node the node to split
-     * @param plane the split plane, strictly inside the node's voxel
-     * @return the two children with their references
-     */
-    protected Children split(BuildContext context, BuildNode node, SplitPlane plane) {
-        return Partition.split(context, node, plane, perfectSplits);
-    }
-
-    /**
-     * Makes the root node: every primitive with its own bounds, in the scene's box.
-     *
-     * @param context the build in progress
-     * @param rootVoxel the scene box
-     * @return the root node
-     */
-    protected BuildNode makeRoot(BuildContext context, Box rootVoxel) {
-        Primitives primitives = context.primitives();
-        int n = primitives.size(), k = primitives.dimension();
-        int[] refs = new int[n];
-        double[] clipped = new double[2 * k * n];
-        for (int i = 0; i < n; i++) refs[i] = i;
-        Partition.writeAllBounds(primitives, clipped);
-        return new BuildNode(rootVoxel, refs, clipped, 0);
-    }
-
-    private void recConst(Build build, BuildNode node, KdTreeWriter out) {
-        build.watch.node(node.depth(), node.size());
-        if (node.depth() >= build.depthCap || callTerminate(build, node)) {
-            out.leaf(node.refArray(), node.base(), node.size());
-            return;
-        }
-        SplitPlane plane = checked(callFindPlane(build, node), node);
-        Children children = split(build, node, plane);
-        int nl = children.left().size(), nr = children.right().size();
-        int outcome = SplitOutcome.of(node.size(), nl, nr, node.budget());
-        if (outcome != SplitOutcome.SPLIT) {
-            if (outcome == SplitOutcome.OVER_BUDGET) out.budgetLeaf();
-            out.leaf(node.refArray(), node.base(), node.size());
-            return;
-        }
-        children.left().budget(ReferenceBudget.share(node.budget(), nl, nl, nr));
-        children.right().budget(ReferenceBudget.share(node.budget(), nr, nl, nr));
-        node.release();
-        int interior = out.interior(plane.axis(), plane.position());
-        if (children.right().size() >= build.forkThreshold && children.left().size() > 0) {
-            // The right subtree is built by another thread into its own writer, then spliced in:
-            // the same recursion, so the same tree, in the same depth-first order.
-            BuildNode rightChild = children.right();
-            ForkJoinTask<KdTreeWriter> right = ForkJoinTask.adapt(() -> {
-                KdTreeWriter w = new KdTreeWriter(node.dimension());
-                recConst(build, rightChild, w);
-                return w;
-            }).fork();
-            recConst(build, children.left(), out);
-            KdTreeWriter rightTree = right.join();
-            out.setRightChild(interior);
-            out.append(rightTree);
-            return;
-        }
-        recConst(build, children.left(), out);
-        out.setRightChild(interior);
-        recConst(build, children.right(), out);
-    }
 
     /** terminate, with whatever it throws named as this builder's fault. */
     private boolean callTerminate(Build build, BuildNode node) {
@@ -375,6 +368,7 @@ public abstract class KdTreeBuilder {
     }
 
     /** The per-build context that {@link BuildContext} exposes to subclasses. */
-    private record Build(Primitives primitives, int depthCap, int forkThreshold, BuildWatch watch) implements BuildContext {
+    private record Build(Primitives primitives, int depthCap, int forkThreshold, BuildWatch watch, Deque<Spare> spares)
+            implements BuildContext {
     }
 }

@@ -15,9 +15,9 @@ public class ObjectMedianBuilder extends CyclingAxisBuilder {
     @Override protected SplitPlane findPlane(BuildContext context, BuildNode node) {
         int axis = axis(node);
         int n = node.size();
-        double[] centres = new double[n];
+        double[] centres = node.scratch(n);
         for (int j = 0; j < n; j++) centres[j] = 0.5 * (node.clippedMin(j, axis) + node.clippedMax(j, axis));
-        Arrays.sort(centres);
+        Arrays.sort(centres, 0, n);
         return new SplitPlane(axis, centres[(n - 1) / 2]);
     }
 }

@@ -2,10 +2,12 @@ package org.kdtree.build;
 
 import org.kdtree.geom.Tolerance;
 import org.kdtree.geom.Box;
-import org.kdtree.geom.SplitPlane;
 import org.kdtree.shape.Primitives;
 
-/** The default partition step of Algorithm 1: send each primitive to the children it overlaps. */
+/**
+ * The partition step of Algorithm 1, per primitive: which children it goes to, and its clipped
+ * bounds there. {@link BoundsSplit} and {@link EventSplit} apply it to a whole node.
+ */
 final class Partition {
     private Partition() {
     }
@@ -22,46 +24,6 @@ final class Partition {
         if (hi <= xi) return Side.LEFT;
         if (lo >= xi) return Side.RIGHT;
         return Side.BOTH;
-    }
-
-    static Children split(BuildContext context, BuildNode node, SplitPlane p, boolean perfect) {
-        Primitives prims = context.primitives();
-        int k = node.dimension(), n = node.size(), axis = p.axis();
-        Side[] side = new Side[n];
-        int nl = 0, nr = 0;
-        for (int j = 0; j < n; j++) {
-            side[j] = classify(node.clippedMin(j, axis), node.clippedMax(j, axis), p.position(), p.planarLeft());
-            if (side[j] != Side.RIGHT) nl++;
-            if (side[j] != Side.LEFT) nr++;
-        }
-        Box lv = node.voxel().lowerPart(axis, p.position());
-        Box rv = node.voxel().upperPart(axis, p.position());
-        int[] lr = new int[nl], rr = new int[nr];
-        double[] lc = new double[2 * k * nl], rc = new double[2 * k * nr];
-        double[] src = node.clippedBounds();
-        Box tmpL = new Box(k), tmpR = new Box(k);
-        int il = 0, ir = 0;
-        for (int j = 0; j < n; j++) {
-            int prim = node.ref(j);
-            switch (side[j]) {
-                case LEFT -> { lr[il] = prim; System.arraycopy(src, 2 * k * j, lc, 2 * k * il++, 2 * k); }
-                case RIGHT -> { rr[ir] = prim; System.arraycopy(src, 2 * k * j, rc, 2 * k * ir++, 2 * k); }
-                case BOTH -> {
-                    int to = straddlerBounds(prims, prim, src, j, node.voxel(), axis, p.position(), perfect, tmpL, tmpR, lc, il, rc, ir);
-                    if ((to & 1) != 0) lr[il++] = prim;
-                    if ((to & 2) != 0) rr[ir++] = prim;
-                }
-            }
-        }
-        return new Children(child(lv, lr, lc, il, node), child(rv, rr, rc, ir, node));
-    }
-
-    private static BuildNode child(Box voxel, int[] refs, double[] clipped, int count, BuildNode parent) {
-        if (count < refs.length) {
-            refs = java.util.Arrays.copyOf(refs, count);
-            clipped = java.util.Arrays.copyOf(clipped, 2 * voxel.dimension() * count);
-        }
-        return new BuildNode(voxel, refs, clipped, parent.depth() + 1);
     }
 
     /**

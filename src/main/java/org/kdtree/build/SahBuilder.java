@@ -1,7 +1,6 @@
 package org.kdtree.build;
 
 import org.kdtree.limits.Limits;
-import org.kdtree.geom.Box;
 import org.kdtree.geom.SplitPlane;
 import org.kdtree.tree.CostModel;
 import org.kdtree.tree.KdTreeWriter;
@@ -10,67 +9,36 @@ import org.kdtree.tree.KdTreeWriter;
  * Chooses planes by the surface area heuristic (talk, section 3.3): among the candidate
  * planes at the clipped bounds of every primitive on every axis, the one of least cost
  * {@code C_V(p)} (see {@link SahCost}); terminates automatically when no plane is cheaper than
- * a leaf ({@code min C_V(p) >= |T| Ki}), and at the depth cap.
+ * a leaf ({@code min C_V(p) >= |T| Ki}, section 3.3.3), and at the depth cap.
+ *
+ * <p>Deciding terminate needs the best plane, so {@link #terminate} searches for it and keeps it
+ * on the node ({@link BuildNode#keepPlane}), and {@link #findPlane} returns what was kept: one
+ * search per node, by whichever {@link Algorithm} is set. A subclass gets the same searches
+ * over the same node store as this class: there is no other path.
  *
  * <p>Defaults: Kt = 15, Ki = 20, empty-voxel weight lambda = 0.8, depth cap
  * {@code 8 + 1.3 log2 N}, perfect splits on, plane search {@link Algorithm#EVENT}.
  */
 public class SahBuilder extends KdTreeBuilder {
-    /**
-     * How the best plane of a node is found. Every exact algorithm builds the same tree. Each
-     * carries its own strategy: the plane search the recursion runs per node, and, for EVENT and
-     * BINNED, the primitive-array engine that builds the very tree of that recursion.
-     */
+    /** How the best plane of a node is found. Every exact algorithm builds the same tree. */
     public enum Algorithm {
-        /** Count each candidate by scanning all primitives: O(N^2). */
-        NAIVE {
-            @Override PlaneSearch search(SahBuilder sah) { return NAIVE_SEARCH; }
-        },
-        /** Sort each node's events, then sweep: O(N log^2 N). */
-        SORTED {
-            @Override PlaneSearch search(SahBuilder sah) { return SORTED_SEARCH; }
-        },
+        /** Count each candidate by scanning all primitives: O(N^2) per node. */
+        NAIVE,
+        /** Sort each node's events, then sweep: O(N log^2 N) for the build. */
+        SORTED,
         /**
-         * Sort the events once at the root, keep them sorted through every split: O(N log N), in
-         * the primitive-array {@link EventEngine}. A subclass of this builder (which may override
-         * terminate or findPlane) gets the recursion with the sorted search: the same tree.
+         * Sort the events once at the root, keep them sorted through every split, sweep them at
+         * each node: O(N log N) for the build ({@link EventSweep}, {@link EventSplit}).
          */
-        EVENT {
-            @Override PlaneSearch search(SahBuilder sah) { return SORTED_SEARCH; }
-
-            @Override boolean hasEngine() { return true; }
-
-            @Override void runEngine(SahBuilder sah, BuildContext context, Box rootVoxel, KdTreeWriter out) {
-                new EventEngine(sah, context).build(rootVoxel, out);
-            }
-        },
+        EVENT,
         /**
          * Not exact: only the boundaries of {@link #bins()} equal bins per axis are candidates,
-         * counted from histograms; nodes smaller than {@link #exactBelow()} get the exact sweep.
-         * No sorting, at some cost in tree quality; the primitive-array {@link BinnedEngine}.
+         * counted from histograms; nodes smaller than {@link #exactBelow()} get the exact event
+         * sweep. No sorting above that size, at some cost in tree quality.
          */
         BINNED {
-            @Override PlaneSearch search(SahBuilder sah) { return new BinnedPlaneSearch(sah.bins(), sah.exactBelow()); }
-
-            @Override boolean hasEngine() { return true; }
-
-            @Override void runEngine(SahBuilder sah, BuildContext context, Box rootVoxel, KdTreeWriter out) {
-                new BinnedEngine(sah, context).build(rootVoxel, out);
-            }
-
             @Override public boolean exact() { return false; }
         };
-
-        /** The plane search the recursion runs at each node, under {@code sah}'s settings. */
-        abstract PlaneSearch search(SahBuilder sah);
-
-        /** Whether a primitive-array engine builds the whole tree (else the recursion does). */
-        boolean hasEngine() { return false; }
-
-        /** Builds the whole tree with the engine; only when {@link #hasEngine()}. */
-        void runEngine(SahBuilder sah, BuildContext context, Box rootVoxel, KdTreeWriter out) {
-            throw new IllegalStateException(this + " has no engine");
-        }
 
         /** {@return whether this algorithm finds the plane of least cost} (NAIVE, SORTED and EVENT do). */
         public boolean exact() { return true; }
@@ -84,39 +52,58 @@ public class SahBuilder extends KdTreeBuilder {
     /** The default node size below which {@link Algorithm#BINNED} searches exactly. */
     public static final int DEFAULT_EXACT_BELOW = 64;
 
+    /**
+     * Nodes and leaf references an SAH tree has per primitive, a little above what the meshes
+     * measured gave (bunny 8.9 and 5.3, its 4 x 4 grid 9.5 and 5.6).
+     */
+    private static final int NODES_PER_PRIMITIVE = 10, REFS_PER_PRIMITIVE = 6;
+
     private double emptyWeight = 0.8;
     private Algorithm algorithm = Algorithm.EVENT;
     private int bins = DEFAULT_BINS;
     private int exactBelow = DEFAULT_EXACT_BELOW;
+    private PlaneSearch search = EventSweep.INSTANCE;
 
     @Override public String name() { return "sah"; }
 
+    /**
+     * A leaf if the node is empty, at the depth cap, or flat (no ray meets it with positive
+     * probability), or if no plane is cheaper than the leaf; else keeps the best plane found.
+     */
     @Override protected boolean terminate(BuildContext context, BuildNode node) {
         if (node.size() == 0 || node.depth() >= context.depthCap()) return true;
-        SahCost sah = new SahCost(costModel(), emptyWeight, node.voxel());
+        NodeStore store = node.store();
+        if (store.sahCost == null) store.sahCost = new SahCost(costModel(), emptyWeight, node.dimension());
+        SahCost sah = store.sahCost.set(store.voxel(node.level()), 2 * node.dimension() * node.child());
         if (!(sah.halfArea() > 0)) return true;
-        SahSplit best = new SahSplit();
-        algorithm.search(this).search(node, sah, best);
+        SahSplit best = store.best;
+        best.reset();
+        search.search(node, sah, best);
         if (!best.found() || best.cost() >= sah.leafCost(node.size())) return true;
-        node.choose(best.plane());
+        node.keepPlane(best.plane());
         return false;
     }
 
-    /**
-     * The event and binned algorithms run in engines of their own ({@link EventEngine},
-     * {@link BinnedEngine}), which build the tree the recursion would; a subclass (which may
-     * override terminate or findPlane) always gets the recursion.
-     */
-    @Override protected void construct(BuildContext context, Box rootVoxel, KdTreeWriter out) {
-        if (getClass() == SahBuilder.class && algorithm.hasEngine() && EventEngine.applies(context))
-            algorithm.runEngine(this, context, rootVoxel, out);
-        else super.construct(context, rootVoxel, out);
+    /** The plane {@link #terminate} found and kept. */
+    @Override protected SplitPlane findPlane(BuildContext context, BuildNode node) {
+        if (node.keptPlane() == null && terminate(context, node))
+            throw new IllegalStateException("findPlane called on a node the SAH would make a leaf");
+        return node.keptPlane();
     }
 
-    @Override protected SplitPlane findPlane(BuildContext context, BuildNode node) {
-        if (node.chosen() == null && terminate(context, node))
-            throw new IllegalStateException("findPlane called on a node the SAH would make a leaf");
-        return node.chosen();
+    @Override void reserve(KdTreeWriter out, int primitives) {
+        out.reserve((int) Math.min(1 << 26, (long) NODES_PER_PRIMITIVE * primitives),
+                (int) Math.min(1 << 28, (long) REFS_PER_PRIMITIVE * primitives));
+    }
+
+    /** The plane search of {@code a} under this builder's bins and exact threshold. */
+    private PlaneSearch searchOf(Algorithm a) {
+        return switch (a) {
+            case NAIVE -> NAIVE_SEARCH;
+            case SORTED -> SORTED_SEARCH;
+            case EVENT -> EventSweep.INSTANCE;
+            case BINNED -> new BinnedPlaneSearch(bins, exactBelow);
+        };
     }
 
     /** {@return lambda, the weight of a plane that leaves one child empty} (default 0.8; 1 disables the bonus). */
@@ -144,6 +131,7 @@ public class SahBuilder extends KdTreeBuilder {
      */
     public SahBuilder algorithm(Algorithm a) {
         this.algorithm = java.util.Objects.requireNonNull(a);
+        this.search = searchOf(a);
         return this;
     }
 
@@ -158,6 +146,7 @@ public class SahBuilder extends KdTreeBuilder {
      */
     public SahBuilder bins(int b) {
         this.bins = Limits.BINS.check("bins", b);
+        this.search = searchOf(algorithm);
         return this;
     }
 
@@ -174,6 +163,7 @@ public class SahBuilder extends KdTreeBuilder {
      */
     public SahBuilder exactBelow(int n) {
         this.exactBelow = Limits.EXACT_BELOW.check("exactBelow", n);
+        this.search = searchOf(algorithm);
         return this;
     }
 

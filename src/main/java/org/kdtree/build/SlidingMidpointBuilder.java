@@ -50,13 +50,13 @@ public class SlidingMidpointBuilder extends KdTreeBuilder {
         if (node.size() <= leafSize || node.depth() >= context.depthCap()) return true;
         SplitPlane plane = slidingMidpoint(node);
         if (plane == null) return true; // every centre coincides: no plane separates them
-        node.choose(plane);
+        node.keepPlane(plane);
         return false;
     }
 
     @Override protected SplitPlane findPlane(BuildContext context, BuildNode node) {
-        SplitPlane chosen = node.chosen();
-        return chosen != null ? chosen : slidingMidpoint(node);
+        SplitPlane kept = node.keptPlane();
+        return kept != null ? kept : slidingMidpoint(node);
     }
 
     /** The sliding midpoint plane of the node, or null when all centres coincide. */

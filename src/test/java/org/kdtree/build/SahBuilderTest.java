@@ -40,21 +40,31 @@ class SahBuilderTest {
         }
     }
 
-    /** terminate and findPlane stay the contract; what the SAH remembers between them is its own, not BuildNode's public API. */
-    @Test void thePlaneRememberedBetweenTerminateAndFindPlaneIsNotPublic() {
-        assertThat(java.util.Arrays.stream(BuildNode.class.getMethods()).map(java.lang.reflect.Method::getName))
-                .doesNotContain("plan", "plannedPlane", "plannedCost", "choose", "chosen");
+    /** What terminate finds, findPlane returns: through BuildNode's public keepPlane, which any builder may use. */
+    @Test void thePlaneTerminateFoundIsKeptForFindPlaneThroughThePublicApi() throws Exception {
+        assertThat(BuildNode.class.getMethod("keepPlane", org.kdtree.geom.SplitPlane.class)).isNotNull();
+        assertThat(BuildNode.class.getMethod("keptPlane")).isNotNull();
+        int[] planes = {0, 0};
+        SahBuilder counting = new SahBuilder() {
+            @Override protected org.kdtree.geom.SplitPlane findPlane(BuildContext c, BuildNode n) {
+                planes[0]++;
+                if (n.keptPlane() == null) planes[1]++;
+                return super.findPlane(c, n);
+            }
+        };
+        KdTree tree = counting.build(TestScenes.clusteredTriangles(500, 5));
+        assertThat(planes[0]).as("findPlane calls").isGreaterThan(100).isGreaterThanOrEqualTo(tree.nodeCount() / 2);
+        assertThat(planes[1]).as("findPlane calls that would search again").isZero();
     }
 
-    /** Each algorithm carries its own strategy: the exact ones and the binned one, with or without an engine, build the tree of their recursion. */
-    @Test void everyAlgorithmsEngineBuildsTheTreeOfItsRecursion() {
+    /** A subclass of the SAH runs on the same store and searches as the SAH itself: the same tree, whatever the algorithm. */
+    @Test void aSubclassBuildsTheSahsTreeWithEveryAlgorithm() {
         Primitives mesh = TestScenes.clusteredTriangles(3000, 5);
         for (SahBuilder.Algorithm a : SahBuilder.Algorithm.values()) {
             if (a == SahBuilder.Algorithm.NAIVE) continue; // O(N^2): SahAlgorithmsTest compares it on smaller scenes
-            KdTree engine = new SahBuilder().algorithm(a).build(mesh);
-            KdTree recursion = new SahBuilder() { }.algorithm(a).build(mesh); // a subclass always gets the recursion
-            Trees.assertSameTree(engine, recursion);
-            assertThat(a.hasEngine()).isEqualTo(a == SahBuilder.Algorithm.EVENT || a == SahBuilder.Algorithm.BINNED);
+            KdTree own = new SahBuilder().algorithm(a).build(mesh);
+            KdTree subclass = new SahBuilder() { }.algorithm(a).build(mesh);
+            Trees.assertSameTree(own, subclass);
         }
     }
 

@@ -5,44 +5,39 @@ import static org.assertj.core.api.Assertions.assertThatThrownBy;
 import org.junit.jupiter.api.Test;
 import org.kdtree.build.BuildContext;
 import org.kdtree.build.BuildNode;
-import org.kdtree.build.Children;
 import org.kdtree.build.KdTreeBuilder;
 import org.kdtree.build.MedianPlaneBuilder;
 import org.kdtree.geom.SplitPlane;
 import org.kdtree.shape.Primitives;
+import org.kdtree.tree.KdTree;
+import org.kdtree.tree.KdTreeWriter;
 import org.kdtree.testing.TestScenes;
 
 /** The contract's checks fail, with a useful message, on the mistakes students make. */
 class ContractCatchesBrokenBuildersTest {
     private final Primitives scene = TestScenes.random2D(200, 3);
 
-    /** Sends primitives crossing the plane to the left child only. */
-    static final class ForgetsStraddlers extends MedianPlaneBuilder {
-        @Override protected Children split(BuildContext c, BuildNode node, SplitPlane p) {
-            Children full = super.split(c, node, p);
-            int axis = p.axis();
-            int[] keep = java.util.Arrays.stream(full.right().refs()).filter(r -> {
-                for (int j = 0; j < node.size(); j++)
-                    if (node.ref(j) == r) return node.clippedMin(j, axis) >= p.position();
-                return true;
-            }).toArray();
-            int k = node.dimension();
-            double[] clipped = new double[2 * k * keep.length];
-            for (int i = 0; i < keep.length; i++)
-                for (int j = 0; j < full.right().size(); j++)
-                    if (full.right().ref(j) == keep[i])
-                        System.arraycopy(full.right().clippedBounds(), 2 * k * j, clipped, 2 * k * i, 2 * k);
-            return new Children(full.left(), new BuildNode(full.right().voxel(), keep, clipped, full.right().depth()));
-        }
+    /**
+     * The median plane's tree with its leaves rewritten by {@code leaf} (node, references -> references):
+     * what a broken partition would have built. A builder can no longer partition for itself (the
+     * recursion does), but the checks must still catch such trees.
+     */
+    private static KdTree rewritten(KdTree tree, java.util.function.BiFunction<Integer, int[], int[]> leaf) {
+        KdTreeWriter out = new KdTreeWriter(tree.dimension());
+        copy(tree, 0, out, leaf);
+        return out.finish(tree.bounds(), tree.costModel(), tree.builderName());
     }
 
-    /** Puts every primitive in both children. */
-    static final class SendsEverythingEverywhere extends MedianPlaneBuilder {
-        @Override protected Children split(BuildContext c, BuildNode node, SplitPlane p) {
-            Children full = super.split(c, node, p);
-            BuildNode left = new BuildNode(full.left().voxel(), node.refs().clone(), node.clippedBounds().clone(), node.depth() + 1);
-            return new Children(left, full.right());
+    private static void copy(KdTree tree, int node, KdTreeWriter out, java.util.function.BiFunction<Integer, int[], int[]> leaf) {
+        if (tree.isLeaf(node)) {
+            int[] refs = leaf.apply(node, tree.leafPrimitives(node));
+            out.leaf(refs, 0, refs.length);
+            return;
         }
+        int interior = out.interior(tree.axis(node), tree.split(node));
+        copy(tree, tree.leftChild(node), out, leaf);
+        out.setRightChild(interior);
+        copy(tree, tree.rightChild(node), out, leaf);
     }
 
     /** Ignores the depth cap it was given. */
@@ -63,15 +58,25 @@ class ContractCatchesBrokenBuildersTest {
     }
 
     @Test void aPrimitiveMissingFromALeafItCrossesIsReported() {
-        KdTreeBuilder b = new ForgetsStraddlers();
-        assertThatThrownBy(() -> TreeChecks.checkAll(b, scene, b.build(scene)))
+        KdTreeBuilder b = new MedianPlaneBuilder();
+        java.util.Set<Integer> seen = new java.util.HashSet<>();
+        KdTree forgets = rewritten(b.build(scene), (node, refs) ->   // each primitive only in the first leaf that lists it
+                java.util.Arrays.stream(refs).filter(seen::add).toArray());
+        assertThatThrownBy(() -> TreeChecks.checkAll(b, scene, forgets))
                 .isInstanceOf(ContractViolation.class)
                 .hasMessageContaining("does not list it");
     }
 
     @Test void aPrimitiveListedInALeafItDoesNotTouchIsReported() {
-        KdTreeBuilder b = new SendsEverythingEverywhere();
-        assertThatThrownBy(() -> TreeChecks.checkAll(b, scene, b.build(scene)))
+        KdTreeBuilder b = new MedianPlaneBuilder();
+        int[] all = java.util.stream.IntStream.range(0, scene.size()).toArray();
+        boolean[] first = {true};
+        KdTree everywhere = rewritten(b.build(scene), (node, refs) -> { // the first leaf lists every primitive
+            boolean me = first[0];
+            first[0] = false;
+            return me ? all : refs;
+        });
+        assertThatThrownBy(() -> TreeChecks.checkAll(b, scene, everywhere))
                 .isInstanceOf(ContractViolation.class)
                 .hasMessageContaining("does not touch that voxel");
     }
