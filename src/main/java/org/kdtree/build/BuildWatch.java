@@ -33,7 +33,7 @@ final class BuildWatch {
     private volatile RuntimeException stopWith;
     /** Odd while a call is under way: incremented on entering and on leaving (release stores). */
     @SuppressWarnings("unused") private long calls;
-    private long nodes;
+    private final java.util.concurrent.atomic.LongAdder nodes = new java.util.concurrent.atomic.LongAdder();
     private int method, depth, size;
 
     private BuildWatch(boolean watched) {
@@ -57,7 +57,7 @@ final class BuildWatch {
             cancel(null); // and so every thread of the build stops
             throw new CancellationException("build cancelled");
         }
-        if (watched) nodes++;
+        if (watched) nodes.increment();
     }
 
     /** Before the recursion calls the builder's {@code method} on a node. */
@@ -91,8 +91,8 @@ final class BuildWatch {
     /** {@return the count of entries into and exits from the builder's methods; odd while a call is under way} */
     long calls() { return (long) CALLS.getAcquire(this); }
 
-    /** {@return the nodes visited so far} (read racily by the watcher: a progress figure, not an exact count) */
-    long nodes() { return nodes; }
+    /** {@return the nodes visited so far, by every thread of the build} */
+    long nodes() { return nodes.sum(); }
 
     /** {@return {@link BuilderFault#TERMINATE} or {@link BuilderFault#FIND_PLANE}: the method of the last call} */
     String method() { return method == FIND_PLANE ? BuilderFault.FIND_PLANE : BuilderFault.TERMINATE; }

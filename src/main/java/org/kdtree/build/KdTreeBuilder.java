@@ -264,7 +264,7 @@ public abstract class KdTreeBuilder {
      * @param n N, the number of primitives
      * @return the cap
      */
-    public int depthCap(int n) {
+    public final int depthCap(int n) {
         return maxDepth >= 0 ? maxDepth : automaticDepthCap(n, depthFactor);
     }
 
