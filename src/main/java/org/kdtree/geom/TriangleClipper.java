@@ -20,7 +20,8 @@ public final class TriangleClipper {
 
     private final double[] a = new double[3 * MAX_VERTICES];
     private final double[] b = new double[3 * MAX_VERTICES];
-    private final double[] c = new double[3 * MAX_VERTICES];
+    /** The signed distances of the polygon's vertices to the plane of the current pass. */
+    private final double[] distance = new double[MAX_VERTICES];
     /** The buffer holding the polygon after {@link #clipToBox}. */
     private double[] polygon;
     /** Per axis, the triangle's own bounds and the padding of its clipped bounds ({@link #ownBounds}). */
@@ -87,17 +88,19 @@ public final class TriangleClipper {
      * negatives of each other, so their ratios t are the same double.
      */
     private void splitBounds(double[] poly, int count, int axis, double xi) {
-        java.util.Arrays.fill(lower, 0, 3, Double.POSITIVE_INFINITY);
-        java.util.Arrays.fill(lower, 3, 6, Double.NEGATIVE_INFINITY);
-        java.util.Arrays.fill(upper, 0, 3, Double.POSITIVE_INFINITY);
-        java.util.Arrays.fill(upper, 3, 6, Double.NEGATIVE_INFINITY);
+        double[] lo = lower, up = upper;
+        lo[0] = lo[1] = lo[2] = up[0] = up[1] = up[2] = Double.POSITIVE_INFINITY;
+        lo[3] = lo[4] = lo[5] = up[3] = up[4] = up[5] = Double.NEGATIVE_INFINITY;
+        if (count == 0) return;
+        double belowNext = xi - poly[axis], aboveNext = poly[axis] - xi;
         for (int i = 0; i < count; i++) {
             int p = 3 * i, q = i + 1 == count ? 0 : p + 3;
-            double below = xi - poly[p + axis], belowNext = xi - poly[q + axis];
-            double above = poly[p + axis] - xi, aboveNext = poly[q + axis] - xi;
+            double below = belowNext, above = aboveNext;
+            belowNext = xi - poly[q + axis];
+            aboveNext = poly[q + axis] - xi;
             boolean inLower = below >= 0, inUpper = above >= 0;
-            if (inLower) include(lower, poly[p], poly[p + 1], poly[p + 2]);
-            if (inUpper) include(upper, poly[p], poly[p + 1], poly[p + 2]);
+            if (inLower) include(lo, poly[p], poly[p + 1], poly[p + 2]);
+            if (inUpper) include(up, poly[p], poly[p + 1], poly[p + 2]);
             if (count < 2) continue;
             boolean crossLower = inLower != (belowNext >= 0), crossUpper = inUpper != (aboveNext >= 0);
             if (!crossLower && !crossUpper) continue;
@@ -108,8 +111,8 @@ public final class TriangleClipper {
             if (axis == 0) x = xi;
             else if (axis == 1) y = xi;
             else z = xi;
-            if (crossLower) include(lower, x, y, z);
-            if (crossUpper) include(upper, x, y, z);
+            if (crossLower) include(lo, x, y, z);
+            if (crossUpper) include(up, x, y, z);
         }
     }
 
@@ -146,8 +149,8 @@ public final class TriangleClipper {
             int axis = pass >> 1;
             boolean keepAbove = (pass & 1) == 0;   // the lower face keeps x >= min, the upper x <= max
             double plane = keepAbove ? box.min(axis) : box.max(axis);
-            if (allInside(src, count, axis, plane, keepAbove)) continue;   // the pass would copy src unchanged
-            count = clipHalf(src, dst, count, axis, plane, keepAbove);
+            if (distances(src, count, axis, plane, keepAbove)) continue;   // all inside: the pass would copy src unchanged
+            count = clipHalf(src, dst, count, axis, plane);
             double[] t = src; src = dst; dst = t;
         }
         polygon = src;
@@ -181,18 +184,32 @@ public final class TriangleClipper {
         dest.setMax(axis, Math.min(Math.min(max + pad[axis], ownMax[axis]), hi));
     }
 
-    private static boolean allInside(double[] polygon, int count, int axis, double plane, boolean keepAbove) {
-        for (int i = axis; i < 3 * count; i += 3)
-            if (!(distance(polygon[i], plane, keepAbove) >= 0)) return false;
-        return true;
+    /**
+     * The signed distance of each vertex to the plane, positive on the kept side, into
+     * {@link #distance}; returns whether every vertex is on the kept side (so the pass may be skipped).
+     */
+    private boolean distances(double[] polygon, int count, int axis, double plane, boolean keepAbove) {
+        boolean all = true;
+        for (int i = 0, at = axis; i < count; i++, at += 3) {
+            double d = distance(polygon[at], plane, keepAbove);
+            distance[i] = d;
+            all &= d >= 0;
+        }
+        return all;
     }
 
-    /** Writes the part of {@code src} with {@code x_axis >= plane} (keepAbove) or {@code <= plane} to {@code dst}. */
-    private static int clipHalf(double[] src, double[] dst, int count, int axis, double plane, boolean keepAbove) {
+    /**
+     * Writes the part of {@code src} on the kept side of the plane {@code x_axis = plane} to
+     * {@code dst}, from the vertices' distances ({@link #distances}, computed first).
+     */
+    private int clipHalf(double[] src, double[] dst, int count, int axis, double plane) {
+        double[] dist = distance;
         int out = 0;
+        double dq = dist[0];
         for (int i = 0; i < count; i++) {
-            int p = 3 * i, q = i + 1 == count ? 0 : p + 3;
-            double dp = distance(src[p + axis], plane, keepAbove), dq = distance(src[q + axis], plane, keepAbove);
+            int p = 3 * i, next = i + 1 == count ? 0 : i + 1, q = 3 * next;
+            double dp = dq;
+            dq = dist[next];
             boolean inP = dp >= 0;
             if (inP) {
                 dst[3 * out] = src[p];
