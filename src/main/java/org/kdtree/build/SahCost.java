@@ -39,7 +39,7 @@ public final class SahCost {
         faceAndSide();
     }
 
-    /** A cost to be pointed at one voxel after another with {@link #set} (the event engine keeps one). */
+    /** A cost to be pointed at one voxel after another with {@link #set} (each node store keeps one for the SAH). */
     SahCost(CostModel model, double emptyWeight, int k) {
         this.model = model;
         this.emptyWeight = emptyWeight;

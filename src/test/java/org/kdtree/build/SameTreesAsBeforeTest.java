@@ -38,8 +38,8 @@ class SameTreesAsBeforeTest {
         s.put("bumpy sphere", Scenes.bumpySphere(20, 30, 33));
         s.put("planar and degenerate", Scenes.planarAndDegenerate(34));
         s.put("random 2-D", Scenes.random2D(500, 35));
-        s.put("planes on bin boundaries", EnginesBuildTheRecursionsTreeTest.planesOnBinBoundaries());
-        s.put("points in 5-D", EnginesBuildTheRecursionsTreeTest.pointsIn5D());
+        s.put("planes on bin boundaries", SahVariantsBuildOneTreeTest.planesOnBinBoundaries());
+        s.put("points in 5-D", SahVariantsBuildOneTreeTest.pointsIn5D());
         s.put("talk figures", ContractScenes.talkFigures());
         s.put("identical triangles", ContractScenes.identicalTriangles(2000));
         s.put("cube grid", ContractScenes.cubeGrid(3));

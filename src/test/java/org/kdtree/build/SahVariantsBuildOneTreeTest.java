@@ -12,11 +12,12 @@ import org.kdtree.shape.TriangleMesh;
 import org.kdtree.tree.KdTree;
 
 /**
- * The primitive-array engines under {@link SahBuilder} build the very tree that the talk's
- * recursion ({@link KdTreeBuilder}, Algorithm 1) builds with the same settings. A subclass of
- * {@link SahBuilder} always gets the recursion, so it is the reference here.
+ * The SAH builds one tree whatever path a node takes through the node store: a subclass of
+ * {@link SahBuilder} and the builder itself, one thread or two, nodes turned into events at the
+ * root (EVENT) or below a size (BINNED's {@code exactBelow}), with and without perfect splits,
+ * under a binding reference budget.
  */
-class EnginesBuildTheRecursionsTreeTest {
+class SahVariantsBuildOneTreeTest {
     static Stream<Arguments> scenes() {
         return Stream.of(
                 Arguments.of("random 3-D", Scenes.randomTriangles(600, 0.2, 31)),
@@ -28,7 +29,7 @@ class EnginesBuildTheRecursionsTreeTest {
                 Arguments.of("points in 5-D", pointsIn5D()));
     }
 
-    /** Clustered points in five dimensions, some repeated: the engines are k-dimensional. */
+    /** Clustered points in five dimensions, some repeated: the store and the searches are k-dimensional. */
     static PointsKd pointsIn5D() {
         java.util.Random r = new java.util.Random(37);
         double[] c = new double[5 * 1500];
@@ -62,23 +63,23 @@ class EnginesBuildTheRecursionsTreeTest {
 
     @ParameterizedTest(name = "{0}")
     @MethodSource("scenes")
-    void binnedEngine(String name, Primitives scene) {
+    void binnedSubclassAndThreads(String name, Primitives scene) {
         for (int exactBelow : new int[] {0, 16, 64}) {
             for (boolean perfect : new boolean[] {true, false}) {
-                SahBuilder engine = binned(new SahBuilder(), exactBelow, perfect);
+                SahBuilder own = binned(new SahBuilder(), exactBelow, perfect);
                 SahBuilder recursion = binned(new SahBuilder() {}, exactBelow, perfect);
                 KdTree expected = recursion.build(scene);
                 assertThat(expected.nodeCount()).as("%s splits", name).isGreaterThan(8);
-                SahAlgorithmsTest.assertSameTree(engine.build(scene), expected,
+                SahAlgorithmsTest.assertSameTree(own.build(scene), expected,
                         name + " exactBelow=" + exactBelow + " perfect=" + perfect);
-                SahAlgorithmsTest.assertSameTree(engine.threads(2).build(scene), expected, name + " 2 threads");
+                SahAlgorithmsTest.assertSameTree(own.threads(2).build(scene), expected, name + " 2 threads");
             }
         }
     }
 
     @ParameterizedTest(name = "{0}")
     @MethodSource("scenes")
-    void eventEngine(String name, Primitives scene) {
+    void eventSubclassAndThreads(String name, Primitives scene) {
         for (boolean perfect : new boolean[] {true, false}) {
             KdTree expected = new SahBuilder() {}.algorithm(SahBuilder.Algorithm.EVENT).perfectSplits(perfect).build(scene);
             SahAlgorithmsTest.assertSameTree(new SahBuilder().perfectSplits(perfect).build(scene), expected, name);
@@ -89,7 +90,7 @@ class EnginesBuildTheRecursionsTreeTest {
 
     /**
      * A budget of 2 references per primitive binds on every scene with straddlers (points never
-     * straddle): the engines cut the tree where the recursion does.
+     * straddle): every path cuts the tree at the same nodes.
      */
     @ParameterizedTest(name = "{0}")
     @MethodSource("scenes")
