@@ -3,7 +3,9 @@
  * subclasses decide {@code terminate} and {@code findPlane}), its partition step, the median-
  * plane, object-median, sliding-midpoint and SAH builders with the SAH's plane searches and
  * engines, and {@link org.kdtree.build.Builders}, which finds every builder on the class path
- * through {@link java.util.ServiceLoader}.
+ * through {@link java.util.ServiceLoader}; {@link org.kdtree.build.Supervisor} runs an untrusted
+ * (a student's) builder on a thread of its own within deadlines, and names its faults
+ * ({@link org.kdtree.build.BuilderFault}).
  *
  * <p>Layer 3: it may use {@code limits}, {@code geom}, {@code shape} and {@code tree}; never a
  * package above it, so a builder of a student's jar joins without a change here.
