@@ -10,6 +10,7 @@ import java.util.concurrent.TimeoutException;
 import java.util.function.Consumer;
 import javax.swing.SwingUtilities;
 import org.kdtree.build.BuilderFault;
+import org.kdtree.build.Builders;
 import org.kdtree.build.KdTreeBuilder;
 import org.kdtree.build.Supervisor;
 import org.kdtree.limits.Deadlines;
@@ -42,13 +43,29 @@ final class BackgroundBuild {
     }
 
     /**
-     * Starts building {@code primitives} with {@code builder}, cancelling the build under way,
-     * and waits for it up to {@code waitMillis} on the calling (event) thread.
+     * How long the event thread waits for a build of a small scene by a plug-in's builder: a
+     * hung one holds the window for no longer than this.
+     */
+    static final long PLUGIN_WAIT_MILLIS = 250;
+
+    /**
+     * How long the event thread waits for a build of a small scene by one of the library's
+     * builders, which return in milliseconds (a busy machine's worst case: a cold JIT, a shared
+     * processor): long enough that its tree appears within the event that changed the scene.
+     */
+    static final long LIBRARY_WAIT_MILLIS = 2_000;
+
+    /**
+     * Starts building {@code primitives} with {@code builder}, cancelling the build under way;
+     * for a {@code small} scene, waits for it on the calling (event) thread, up to
+     * {@link #LIBRARY_WAIT_MILLIS} for the library's builders and {@link #PLUGIN_WAIT_MILLIS} for
+     * any other.
      *
      * @return true if it ended within the wait and {@code done} has had its outcome; false if it
      *         still runs, and {@code done} will have it later, on the event thread
      */
-    boolean start(KdTreeBuilder builder, Primitives primitives, long waitMillis, Consumer<Outcome> done) {
+    boolean start(KdTreeBuilder builder, Primitives primitives, boolean small, Consumer<Outcome> done) {
+        long waitMillis = !small ? 0 : Builders.isLibrarys(builder) ? LIBRARY_WAIT_MILLIS : PLUGIN_WAIT_MILLIS;
         int mine = ++started;
         if (pending != null) pending.cancel(true);
         Future<Outcome> job = thread.submit(() -> {

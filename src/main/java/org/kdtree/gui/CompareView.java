@@ -128,7 +128,7 @@ public final class CompareView extends JPanel {
         /** Builds this column's tree off the event thread (waiting for it briefly, as the model does), then shows it. */
         void update(Shapes2D scene, double[] ray) {
             BuilderSpec s = model.settings().forBuilder(builder);
-            if (!builds.start(s.create(), scene, WorkbenchModel.QUICK_MILLIS, o -> show(scene, ray, o)))
+            if (!builds.start(s.create(), scene, true, o -> show(scene, ray, o)))
                 stats.setText("<html>building ...</html>");
         }
 

@@ -19,9 +19,10 @@ import org.kdtree.tree.KdTree;
  *
  * <p>No build runs on the event thread: every build runs on the model's build thread, a
  * plug-in's under a supervisor with the workbench's deadlines ({@link BackgroundBuild}). For a scene of up
- * to {@link #BACKGROUND_ABOVE} objects the event thread waits for it {@link #QUICK_MILLIS} at
- * the most, so that a small scene's tree still appears within the event that changed it; past
- * that (a large scene, a slow or hung builder), listeners hear {@link Change#BUILDING}, the
+ * to {@link #BACKGROUND_ABOVE} objects the event thread waits for it a moment at the most (2 s
+ * for the library's builders, which need milliseconds, a quarter of a second for a plug-in's), so
+ * that a small scene's tree still appears within the event that changed it; past that (a large
+ * scene, a slow or hung builder), listeners hear {@link Change#BUILDING}, the
  * views keep showing the last scene and tree until the new tree is ready, and a change made
  * meanwhile cancels the stale build (its thread is interrupted; a hung plug-in's is stopped).
  * A builder that throws, answers wrongly, hangs or is too slow leaves the last tree shown,
@@ -47,12 +48,6 @@ final class WorkbenchModel {
     /** Scenes with more objects than this are built in the background. */
     public static final int BACKGROUND_ABOVE = 20_000;
 
-    /**
-     * How long the event thread waits for the build of a small scene before it shows the build as
-     * under way: the library's builders need a few milliseconds for one, so their trees appear at
-     * once, and a hung builder holds the window for no longer than this.
-     */
-    public static final long QUICK_MILLIS = 250;
 
     /** Hears the model's changes. */
     public interface Listener {
@@ -207,8 +202,7 @@ final class WorkbenchModel {
 
     private void rebuild() {
         Shapes2D next = new Shapes2D(shapes);
-        long wait = next.size() <= BACKGROUND_ABOVE ? QUICK_MILLIS : 0;
-        if (builds.start(settings.create(), next, wait, o -> finish(next, o))) return;
+        if (builds.start(settings.create(), next, next.size() <= BACKGROUND_ABOVE, o -> finish(next, o))) return;
         building = true;
         fire(Change.BUILDING);
     }

@@ -34,6 +34,8 @@ public record Deadlines(double callSeconds, double buildSeconds) {
     /**
      * Deadlines within their limits.
      *
+     * @param callSeconds  the longest one call may take, in seconds
+     * @param buildSeconds the longest the whole build may take, in seconds
      * @throws IllegalArgumentException if either is outside its limit
      */
     public Deadlines {
