@@ -26,11 +26,20 @@ public final class BuilderFault extends RuntimeException {
     /** {@code terminate}, {@code findPlane}: the methods a builder implements, as the talk names them. */
     public static final String TERMINATE = "terminate", FIND_PLANE = "findPlane";
 
+    /** The builder's name. */
     private final String builder;
+    /** What went wrong. */
     private final Kind kind;
+    /** The method to blame, or null. */
     private final String method;
-    private final int depth, size;
-    private final String problem, hint;
+    /** The node's depth, or -1. */
+    private final int depth;
+    /** The node's number of primitives, or -1. */
+    private final int size;
+    /** What was wrong, as a clause. */
+    private final String problem;
+    /** What to do about it. */
+    private final String hint;
 
     /**
      * @param builder the builder's name

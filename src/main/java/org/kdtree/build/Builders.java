@@ -127,6 +127,21 @@ public final class Builders {
         BY_NAME.remove(name);
     }
 
+    /**
+     * Whether {@code builder} is one of the library's own (its builders and the course's worked
+     * example), whose code is trusted to return and is timed as it is; any other (a student's,
+     * a plug-in's) runs under a {@link Supervisor} on the command line.
+     *
+     * @param builder a builder
+     * @return true if its class is the library's, loaded with the library
+     */
+    public static boolean isLibrarys(KdTreeBuilder builder) {
+        Class<?> c = builder.getClass();
+        String own = Builders.class.getPackageName(), pkg = c.getPackageName();
+        String examples = own.substring(0, own.lastIndexOf('.')) + ".examples"; // the course's example, no package named here
+        return c.getClassLoader() == Builders.class.getClassLoader() && (pkg.equals(own) || pkg.equals(examples));
+    }
+
     /** {@return the registered names, in registration order} */
     public static synchronized Set<String> names() {
         return java.util.Collections.unmodifiableSet(new java.util.LinkedHashSet<>(BY_NAME.keySet()));

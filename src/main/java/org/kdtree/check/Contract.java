@@ -5,14 +5,12 @@ import java.util.List;
 import java.util.Map;
 import java.util.Optional;
 import java.util.Random;
-import java.util.concurrent.CancellationException;
 import java.util.concurrent.ConcurrentHashMap;
-import java.util.concurrent.ExecutionException;
-import java.util.concurrent.FutureTask;
-import java.util.concurrent.TimeUnit;
-import java.util.concurrent.TimeoutException;
 import java.util.function.Supplier;
+import org.kdtree.build.BuilderFault;
 import org.kdtree.build.KdTreeBuilder;
+import org.kdtree.build.Supervisor;
+import org.kdtree.limits.Deadlines;
 import org.kdtree.shape.InvalidGeometryException;
 import org.kdtree.shape.PointsKd;
 import org.kdtree.shape.Primitives;
@@ -34,11 +32,11 @@ import org.kdtree.tree.KdTree;
  */
 public final class Contract {
     /**
-     * The longest one build of a contract scene may take. The library's builders need well
-     * under a second for any of them; a build still running after this never stops in practice,
-     * so it is interrupted and reported rather than left to slow the run down.
+     * The longest one build of a contract scene may take ({@link Deadlines#GRADE}). The library's
+     * builders need well under a second for any of them; a build still running after this is
+     * stopped and reported as slow rather than left to slow the run down.
      */
-    public static final long BUILD_SECONDS = 30;
+    public static final long BUILD_SECONDS = (long) Deadlines.GRADE.buildSeconds();
 
     /** The tries of the two random-scene properties: jqwik's in the JUnit contract, seeded ones in grading. */
     public static final int RANDOM_2D_TRIES = 30, RANDOM_TRIANGLE_TRIES = 20;
@@ -121,37 +119,43 @@ public final class Contract {
     }
 
     /**
-     * Builds the tree of {@code prims} within {@link #BUILD_SECONDS}; a build that takes longer
-     * is interrupted and reported as one that never stops, and a plane the base class refused
-     * (outside the voxel, null, a wrong axis) is reported as a violation.
+     * Builds the tree of {@code prims} under a {@link Supervisor} with this thread's deadlines
+     * ({@link #deadlines()}): a builder that throws, answers with a plane the recursion cannot
+     * use, hangs in a call or is too slow is reported as a violation with the builder's own
+     * one-line {@link BuilderFault} message (its cause), and the scene.
      * @param builder the builder
      * @param prims the scene
      * @param scene the scene in words, for the messages
      * @return the tree
      */
     public static KdTree build(KdTreeBuilder builder, Primitives prims, String scene) {
-        FutureTask<KdTree> task = new FutureTask<>(() -> builder.build(prims));
-        Thread worker = new Thread(task, "contract build of " + builder.name());
-        worker.setDaemon(true);
-        worker.start();
         try {
-            return task.get(BUILD_SECONDS, TimeUnit.SECONDS);
-        } catch (TimeoutException e) {
-            worker.interrupt();
-            throw new ContractViolation(builder.name() + " never stops: building " + scene + " (" + prims.size()
-                    + " primitives) took more than " + BUILD_SECONDS + " s, and the library's builders need under one;"
-                    + " terminate() must return true once a node is small enough, not leave stopping to the depth cap.");
-        } catch (InterruptedException e) {
-            worker.interrupt();
-            Thread.currentThread().interrupt();
-            throw new CancellationException("contract run interrupted");
-        } catch (ExecutionException e) {
-            Throwable cause = e.getCause();
-            if (cause instanceof org.kdtree.build.BuilderFault fault)
-                throw new ContractViolation(fault.getMessage() + " (building " + scene + ")");
-            if (cause instanceof RuntimeException r) throw r;
-            if (cause instanceof Error err) throw err;
-            throw new IllegalStateException(cause);
+            return Supervisor.of(deadlines()).build(builder, prims);
+        } catch (BuilderFault fault) {
+            throw new ContractViolation(fault.getMessage() + " (building " + scene + ")", fault);
+        }
+    }
+
+    private static final ThreadLocal<Deadlines> DEADLINES = ThreadLocal.withInitial(() -> Deadlines.GRADE);
+
+    /** {@return the deadlines of the builds this thread makes: {@link Deadlines#GRADE} unless {@link #withDeadlines} says otherwise} */
+    public static Deadlines deadlines() {
+        return DEADLINES.get();
+    }
+
+    /**
+     * Runs {@code body} with {@code deadlines} for every build it makes on this thread (grade's
+     * {@code --call-deadline} and {@code --build-deadline}).
+     * @param deadlines how long a call and a build may take
+     * @param body the checks to run
+     */
+    public static void withDeadlines(Deadlines deadlines, Runnable body) {
+        Deadlines before = DEADLINES.get();
+        DEADLINES.set(deadlines);
+        try {
+            body.run();
+        } finally {
+            DEADLINES.set(before);
         }
     }
 
@@ -248,7 +252,7 @@ public final class Contract {
     private static void nanCoordinateIsRejected(Supplier<? extends KdTreeBuilder> b) {
         KdTreeBuilder builder = b.get();
         try {
-            builder.build(new NaNAt(3));
+            build(builder, new NaNAt(3), "five points, one with a NaN coordinate");
         } catch (InvalidGeometryException e) {
             ContractViolation.require(e.getMessage().contains("primitive 3"), builder.name()
                     + ": a NaN coordinate must be rejected with a message naming the primitive (3), not: " + e.getMessage());

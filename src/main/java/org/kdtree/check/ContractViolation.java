@@ -17,6 +17,15 @@ public final class ContractViolation extends AssertionError {
     }
 
     /**
+     * A violation found as {@code cause} (a builder's own fault: its message is the explanation).
+     * @param message what broke, where, and what the builder must do instead
+     * @param cause what was found, for a report that looks further (grade: a hung builder)
+     */
+    public ContractViolation(String message, Throwable cause) {
+        super(message, cause);
+    }
+
+    /**
      * Throws a violation unless {@code holds}.
      * @param holds the invariant
      * @param message what broke, if it does not hold

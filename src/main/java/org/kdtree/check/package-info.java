@@ -4,7 +4,8 @@
  * ({@link org.kdtree.check.QualityChecks}) and the scenes they build ({@link org.kdtree.check.ContractScenes},
  * {@link org.kdtree.check.CourseScenes}). The JUnit base classes students extend
  * ({@code org.kdtree.contract}, the artifact {@code kdtree-contract}) and the {@code grade} command
- * run the same cases. Uses {@code build}, {@code tree}, {@code shape}, {@code geom} and {@code io}
+ * run the same cases, every build under a {@link org.kdtree.build.Supervisor}. Uses {@code build}, {@code tree},
+ * {@code shape}, {@code geom}, {@code limits} (the deadlines) and {@code io}
  * (the bundled scenes); used by {@code cli}.
  *
  * <p>Layer 6: it may use the library below it; only {@code cli} uses it.

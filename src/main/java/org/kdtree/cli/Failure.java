@@ -5,16 +5,18 @@ import java.io.PrintWriter;
 import java.io.StringWriter;
 import java.nio.file.Files;
 import java.nio.file.Path;
+import org.kdtree.build.BuilderFault;
 
 /**
  * What the command line prints when a command fails: one line, never a stack trace. A user's
- * mistake (bad file, bad option) says what is wrong; running out of memory says how much the
- * JVM had and how to give it more; anything else is a bug of ours, reported as one line with the
- * path of a file that holds the full trace.
+ * mistake (bad file, bad option) says what is wrong; a builder's own fault (a plug-in's that
+ * threw, answered wrongly, hung or was slow) names the builder, the method and the node;
+ * running out of memory says how much the JVM had and how to give it more; anything else is a
+ * bug of ours, reported as one line with the path of a file that holds the full trace.
  */
 final class Failure {
-    /** Exit codes: a user's mistake, out of memory, an unexpected failure. */
-    static final int USAGE = 2, MEMORY = 3, INTERNAL = 70;
+    /** Exit codes: a user's mistake, out of memory, a builder's fault, an unexpected failure. */
+    static final int USAGE = 2, MEMORY = 3, BUILDER = 4, INTERNAL = 70;
 
     private Failure() {
     }
@@ -29,6 +31,10 @@ final class Failure {
             err.println("error: cannot open a window (" + failure.getMessage() + "); the commands render, stats, raycast and "
                     + "tradeoff need no display");
             return USAGE;
+        }
+        if (failure instanceof BuilderFault fault) {
+            err.println("error: " + fault.getMessage());
+            return BUILDER;
         }
         if (failure instanceof OutOfMemoryError) {
             long mb = Runtime.getRuntime().maxMemory() >> 20;

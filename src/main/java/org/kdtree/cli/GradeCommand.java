@@ -7,14 +7,18 @@ import java.util.ArrayList;
 import java.util.List;
 import java.util.Locale;
 import java.util.concurrent.Callable;
+import org.kdtree.build.BuilderFault;
 import org.kdtree.build.Builders;
 import org.kdtree.build.KdTreeBuilder;
 import org.kdtree.check.Contract;
 import org.kdtree.check.ContractCase;
+import org.kdtree.check.ContractViolation;
 import org.kdtree.check.CourseScenes;
 import org.kdtree.check.QualityChecks;
+import org.kdtree.limits.Deadlines;
 import org.kdtree.tree.KdTree;
 import picocli.CommandLine.Command;
+import picocli.CommandLine.Mixin;
 import picocli.CommandLine.Option;
 
 /**
@@ -25,6 +29,8 @@ import picocli.CommandLine.Option;
 @Command(name = "grade", mixinStandardHelpOptions = true,
         description = {"Grade a builder: the contract's checks, the quality tier, and its trees of the course scenes "
                 + "against the median plane, object median and SAH (expected cost, nodes, depth, build time).",
+                "Every builder runs under supervision: a call that does not return within --call-deadline is stopped "
+                        + "and reported as hung, a build past --build-deadline as slow, and the checks after it are not run.",
                 "Exit code 0 if it honours the contract, 1 if not."})
 public final class GradeCommand implements Callable<Integer> {
     /** The built-ins a student's builder is measured against. */
@@ -37,13 +43,26 @@ public final class GradeCommand implements Callable<Integer> {
     @Option(names = {"-o", "--output"}, paramLabel = "FILE", description = "Also write the report: .md (Markdown) or .csv.")
     Path output;
 
-    /** One checked item: a contract case or a quality check, and what failed (null if it passed). */
-    record Check(String name, String failure) {
+    @Mixin
+    ProgressOption progress;
+
+    @Mixin
+    DeadlineOptions deadlines;
+
+    /**
+     * One checked item: a contract case or a quality check. It passed if neither {@code failure}
+     * (what failed) nor {@code notRun} (the finding it was skipped after: a hung or slow builder) is set.
+     */
+    record Check(String name, String failure, String notRun) {
+        boolean passed() { return failure == null && notRun == null; }
     }
 
     /** One tree of one course scene. */
     record Row(String scene, String builder, double cost, int nodes, int depth, double ms) {
     }
+
+    /** Why the remaining checks are not run (a hung or slow builder, said once), or null while they are. */
+    private String stopped;
 
     @Override public Integer call() throws IOException {
         Builders.create(builder); // an unknown name fails here, naming the known ones
@@ -53,14 +72,20 @@ public final class GradeCommand implements Callable<Integer> {
                 throw new IllegalArgumentException("-o " + output + ": write a .md (Markdown) or .csv report");
             CommandFiles.requireFolder("-o", output);
         }
-        List<Check> contract = new ArrayList<>();
         List<ContractCase> cases = new ArrayList<>(Contract.cases());
         cases.addAll(Contract.randomCases());
-        for (ContractCase c : cases) contract.add(run(c));
-        boolean correct = contract.stream().allMatch(c -> c.failure() == null);
-        List<Check> quality = new ArrayList<>();
+        List<Check> contract = new ArrayList<>(), quality = new ArrayList<>();
         List<Row> rows = new ArrayList<>();
-        if (correct) compare(quality, rows);
+        try (ProgressBar bar = progress.bar(cases.size() + CourseScenes.all().size(), "checks")) {
+            Contract.withDeadlines(deadlines.deadlines(Deadlines.GRADE), () -> {
+                for (int i = 0; i < cases.size(); i++) {
+                    bar.step(i, cases.get(i).name());
+                    contract.add(run(cases.get(i)));
+                }
+                if (contract.stream().allMatch(Check::passed)) compare(quality, rows, bar, cases.size());
+            });
+        }
+        boolean correct = contract.stream().allMatch(Check::passed);
         String verdict = verdict(contract, quality, rows);
         Report report = new Report(builder, contract, quality, rows, verdict);
         System.out.print(report.text());
@@ -71,21 +96,44 @@ public final class GradeCommand implements Callable<Integer> {
         return correct ? 0 : 1;
     }
 
+    /** Runs one case, unless the builder already hung or was too slow: then it is listed as not run, pointing at that finding. */
     private Check run(ContractCase c) {
+        if (stopped != null) return new Check(c.name(), null, stopped);
         try {
             c.run(() -> Builders.create(builder));
-            return new Check(c.name(), null);
+            return new Check(c.name(), null, null);
         } catch (AssertionError | RuntimeException e) {
-            return new Check(c.name(), e.getMessage() == null ? e.getClass().getSimpleName() : e.getMessage());
+            noteIfHaltedBy(e, c.name());
+            return new Check(c.name(), e.getMessage() == null ? e.getClass().getSimpleName() : e.getMessage(), null);
+        }
+    }
+
+    /** A builder that hung or was too slow would only do so again: the remaining checks are not run. */
+    private void noteIfHaltedBy(Throwable e, String where) {
+        for (Throwable t = e; t != null; t = t.getCause()) {
+            if (t instanceof BuilderFault f && f.kind() == BuilderFault.Kind.HUNG)
+                stopped = "builder " + f.builder() + " hung in " + f.method() + " (see " + where + ")";
+            else if (t instanceof BuilderFault f && f.kind() == BuilderFault.Kind.SLOW)
+                stopped = "builder " + f.builder() + " is too slow (see " + where + ")";
         }
     }
 
     /** Builds every course scene with the student's builder and the built-ins; the quality tier on the student's trees. */
-    private void compare(List<Check> quality, List<Row> rows) {
+    private void compare(List<Check> quality, List<Row> rows, ProgressBar bar, int stepsBefore) {
         String[] failures = new String[QualityChecks.NAMES.size()];
-        for (CourseScenes.Named scene : CourseScenes.all()) {
+        List<CourseScenes.Named> scenes = CourseScenes.all();
+        for (int s = 0; s < scenes.size(); s++) {
+            CourseScenes.Named scene = scenes.get(s);
+            bar.step(stepsBefore + s, scene.name());
             KdTreeBuilder own = Builders.create(builder);
-            KdTree ownTree = timed(own, scene, rows);
+            KdTree ownTree;
+            try {
+                ownTree = timed(own, scene, rows);
+            } catch (ContractViolation v) { // it hung, was slow or threw on a course scene: no quality to measure
+                noteIfHaltedBy(v, "builds every course scene");
+                quality.add(new Check("builds every course scene", v.getMessage(), null));
+                return;
+            }
             KdTree median = null;
             for (String b : BUILT_INS) {
                 KdTree t = timed(Builders.create(b), scene, rows);
@@ -94,7 +142,7 @@ public final class GradeCommand implements Callable<Integer> {
             List<String> found = QualityChecks.check(own, scene, ownTree, median.stats().expectedCost());
             for (int i = 0; i < failures.length; i++) if (failures[i] == null) failures[i] = found.get(i);
         }
-        for (int i = 0; i < failures.length; i++) quality.add(new Check(QualityChecks.NAMES.get(i), failures[i]));
+        for (int i = 0; i < failures.length; i++) quality.add(new Check(QualityChecks.NAMES.get(i), failures[i], null));
     }
 
     private static KdTree timed(KdTreeBuilder b, CourseScenes.Named scene, List<Row> rows) {
@@ -108,10 +156,12 @@ public final class GradeCommand implements Callable<Integer> {
     /** FAIL if it breaks the contract; CORRECT if it honours it but fails a quality check; GOOD if neither. */
     static String verdict(List<Check> contract, List<Check> quality, List<Row> rows) {
         List<String> broken = contract.stream().filter(c -> c.failure() != null).map(Check::name).toList();
+        long notRun = contract.stream().filter(c -> c.notRun() != null).count();
         if (!broken.isEmpty())
             return "FAIL: breaks the contract (" + broken.size() + " of " + contract.size() + " checks: "
-                    + String.join(", ", broken) + ")";
-        List<String> weak = quality.stream().filter(c -> c.failure() != null).map(Check::name).toList();
+                    + String.join(", ", broken) + ")" + (notRun == 0 ? "" : "; " + notRun + " not run: "
+                    + contract.get(contract.size() - 1).notRun());
+        List<String> weak = quality.stream().filter(c -> !c.passed()).map(Check::name).toList();
         StringBuilder v = new StringBuilder(weak.isEmpty() ? "GOOD" : "CORRECT");
         v.append(": honours the contract (").append(contract.size()).append(" of ").append(contract.size()).append(" checks); ");
         v.append(weak.isEmpty() ? "passes every quality check" : "fails quality: " + String.join(", ", weak));

@@ -8,6 +8,7 @@ import java.nio.file.Path;
 import java.util.Locale;
 import java.util.concurrent.Callable;
 import org.kdtree.build.KdTreeBuilder;
+import org.kdtree.build.Supervisor;
 import org.kdtree.build.Setting;
 import org.kdtree.limits.Limits;
 import org.kdtree.shape.ProceduralScenes;
@@ -70,6 +71,9 @@ final class RaycastCommand implements Callable<Integer> {
     @Mixin
     ProgressOption progress;
 
+    @Mixin
+    DeadlineOptions deadlines;
+
     @Override public Integer call() throws Exception {
         if ((raysFile == null) != (hitsFile == null))
             throw new IllegalArgumentException("--rays and --hits go together");
@@ -87,7 +91,7 @@ final class RaycastCommand implements Callable<Integer> {
         KdTree tree;
         try (ProgressBar bar = progress.bar(1, "builds")) {
             bar.step(0, "build");
-            tree = builder.build(scene);
+            tree = deadlines.supervisor().build(builder, scene);
         }
         Traverser traverser = new Traverser(tree, new TriangleIntersector(scene));
         if (!Files.isRegularFile(raysFile)) throw new java.io.IOException(raysFile + ": no such file");
@@ -106,8 +110,9 @@ final class RaycastCommand implements Callable<Integer> {
         Timing.Timed<RayBatch.Checksum> pr, rr;
         RaySet p, r;
         TriangleIntersector tris = new TriangleIntersector(scene);
+        Supervisor supervisor = deadlines.supervisor();
         try (ProgressBar bar = progress.bar(3 * passes, "steps")) {
-            build = Timing.median(warmup, runs, steps(bar, 0, "build"), () -> builder.build(scene));
+            build = Timing.median(warmup, runs, steps(bar, 0, "build"), () -> supervisor.build(builder, scene));
             p = RaySet.primary(scene, RaySet.SPEC_IMAGE);
             r = RaySet.random(scene, RaySet.SPEC_RANDOM_RAYS);
             KdTree built = build.value();

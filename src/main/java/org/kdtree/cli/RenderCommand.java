@@ -48,6 +48,9 @@ final class RenderCommand implements Callable<Integer> {
     @Mixin
     ProgressOption progress;
 
+    @Mixin
+    DeadlineOptions deadlines;
+
     @Override public Integer call() throws Exception {
         checkOutput();
         Scene s = SceneFile.read(BundledScenes.resolve(scene));
@@ -62,7 +65,7 @@ final class RenderCommand implements Callable<Integer> {
         if (threads != null) o = o.withThreads(Limits.THREADS.check("--threads", threads));
         RenderJob job;
         try (ProgressBar bar = progress.bar(1, "tiles")) {
-            job = RenderJob.run(s, options.create(), o.withProgress((done, total, image) -> bar.update(done, total)));
+            job = RenderJob.run(s, options.create(), deadlines.supervisor(), o.withProgress((done, total, image) -> bar.update(done, total)));
         }
         job.result().image().writePng(output);
         System.out.print(job.summary());

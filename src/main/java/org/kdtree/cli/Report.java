@@ -30,7 +30,7 @@ record Report(String builder, List<GradeCommand.Check> contract, List<GradeComma
     }
 
     private static String line(GradeCommand.Check c) {
-        return String.format(Locale.ROOT, "  %-44s %s%n", c.name(), c.failure() == null ? "pass" : "FAIL  " + firstLine(c.failure()));
+        return String.format(Locale.ROOT, "  %-44s %s%n", c.name(), result(c, "  ", false));
     }
 
     String markdown() {
@@ -49,7 +49,7 @@ record Report(String builder, List<GradeCommand.Check> contract, List<GradeComma
     }
 
     private static String mdRow(GradeCommand.Check c) {
-        return "| " + c.name() + " | " + (c.failure() == null ? "pass" : "FAIL: " + c.failure().replace("|", "\\|").replace("\n", " ")) + " |\n";
+        return "| " + c.name() + " | " + result(c, ": ", true).replace("|", "\\|").replace("\n", " ") + " |\n";
     }
 
     String csv() {
@@ -62,11 +62,20 @@ record Report(String builder, List<GradeCommand.Check> contract, List<GradeComma
     }
 
     private String csvCheck(String section, GradeCommand.Check c) {
-        return section + "," + quote(c.name()) + "," + quote(builder) + "," + quote(c.failure() == null ? "pass" : "FAIL: " + c.failure()) + ",,,,\n";
+        return section + "," + quote(c.name()) + "," + quote(builder) + "," + quote(result(c, ": ", true)) + ",,,,\n";
     }
 
     private static String quote(String v) {
         return '"' + v.replace("\"", "\"\"").replace("\n", " ") + '"';
+    }
+
+    /**
+     * "pass", "FAIL" and what failed (its first line unless {@code whole}), or "not run" and the
+     * finding it was skipped after; {@code gap} after the word.
+     */
+    private static String result(GradeCommand.Check c, String gap, boolean whole) {
+        if (c.notRun() != null) return "not run" + gap + c.notRun();
+        return c.failure() == null ? "pass" : "FAIL" + gap + (whole ? c.failure() : firstLine(c.failure()));
     }
 
     private static String firstLine(String s) {

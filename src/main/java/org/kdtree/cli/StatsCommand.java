@@ -6,6 +6,7 @@ import java.util.Locale;
 import java.util.concurrent.Callable;
 import org.kdtree.build.KdTreeBuilder;
 import org.kdtree.build.Setting;
+import org.kdtree.build.Supervisor;
 import org.kdtree.io.BundledScenes;
 import org.kdtree.tradeoff.Timing;
 import org.kdtree.io.SceneLoader;
@@ -47,6 +48,9 @@ final class StatsCommand implements Callable<Integer> {
     @Mixin
     ProgressOption progress;
 
+    @Mixin
+    DeadlineOptions deadlines;
+
     @Override public Integer call() throws Exception {
         Limits.RUNS.check("--runs", runs);
         Limits.WARMUP.check("--warmup", warmup);
@@ -59,10 +63,11 @@ final class StatsCommand implements Callable<Integer> {
         }
         KdTreeBuilder builder = options.spec().with(Setting.THREADS, threads).create();
         Primitives scenePrims = prims;
+        Supervisor supervisor = deadlines.supervisor();
         Timing.Timed<KdTree> build;
         try (ProgressBar bar = progress.bar(warmup + runs, "builds")) {
             build = Timing.median(warmup, runs, (i, warmUp) -> bar.step(i, warmUp ? "warm-up build" : "timed build"),
-                    () -> builder.build(scenePrims));
+                    () -> supervisor.build(builder, scenePrims));
         }
         KdTree tree = build.value();
         System.out.printf(Locale.ROOT, "scene: %s (%s, %d-D)%n", scene, RenderJob.count(prims.size(), "primitive"), prims.dimension());

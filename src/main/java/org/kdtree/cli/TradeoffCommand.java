@@ -67,6 +67,9 @@ final class TradeoffCommand implements Callable<Integer> {
     @Mixin
     ProgressOption progress;
 
+    @Mixin
+    DeadlineOptions deadlines;
+
     @Override public Integer call() throws Exception {
         Limits.GRID.check("--grid", grid);
         Limits.RAY_COUNT.check("--ray-count", rayCount);
@@ -97,7 +100,7 @@ final class TradeoffCommand implements Callable<Integer> {
                 base, m.size(), set.name(), set.size(), runs, threads);
         System.out.printf(Locale.ROOT, "%-22s %10s %10s %9s %8s %8s %9s %11s %11s %11s%n", "variant", "build ms", "SAH cost",
                 "nodes", "nodes/r", "tests/r", "Mrays/s", "1 r/tri ms", "10 r/tri", "100 r/tri");
-        Tradeoff t = new Tradeoff(m, set, runs, threads, countedRays);
+        Tradeoff t = new Tradeoff(m, set, runs, threads, countedRays).supervisedBy(deadlines.supervisor());
         List<TradeoffResult> results = new java.util.ArrayList<>();
         try (ProgressBar bar = progress.bar(variants.size(), "variants")) {
             for (int i = 0; i < variants.size(); i++) {

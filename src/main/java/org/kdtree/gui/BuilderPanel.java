@@ -34,6 +34,8 @@ public final class BuilderPanel extends JPanel {
     private final JComboBox<String> builder = new JComboBox<>(Builders.names().toArray(String[]::new));
     /** Why a typed value is refused, or blank. */
     private final JLabel rejection = new JLabel(" ");
+    /** The last build's fault, in the builder's own line (the tree shown is then stale), or blank. */
+    private final JLabel fault = new JLabel(" ");
     /** Kt, the cost of traversing a node. */
     private final JSpinner kt = LimitedSpinner.of(Limits.KT, "Kt", 15, 1, this::reject);
     /** Ki, the cost of intersecting an object. */
@@ -98,9 +100,19 @@ public final class BuilderPanel extends JPanel {
         row(10, "Kmaxdepth", maxDepth);
         row(11, "", autoDepth);
         row(12, "", rejection);
+        fault.setName("builder.fault");
+        fault.setForeground(new java.awt.Color(170, 0, 0));
+        row(13, "", fault);
         builder.addActionListener(e -> apply());
         algorithm.addActionListener(e -> apply());
         perfectSplits.addActionListener(e -> apply());
+        builder.setRenderer(new javax.swing.DefaultListCellRenderer() {
+            @Override public java.awt.Component getListCellRendererComponent(javax.swing.JList<?> list, Object value, int index,
+                                                                       boolean selected, boolean focus) {
+                String name = value == null ? "" : value.toString();
+                return super.getListCellRendererComponent(list, model.hung(name) ? name + " (hung)" : name, index, selected, focus);
+            }
+        });
         algorithm.setRenderer(new javax.swing.DefaultListCellRenderer() {
             @Override public java.awt.Component getListCellRendererComponent(javax.swing.JList<?> list, Object value, int index,
                                                                        boolean selected, boolean focus) {
@@ -115,8 +127,25 @@ public final class BuilderPanel extends JPanel {
         show(model.settings());
         model.addListener(c -> {
             if (c == WorkbenchModel.Change.TREE) show(model.settings());
+            if (c == WorkbenchModel.Change.TREE || c == WorkbenchModel.Change.FAULT) showFault();
         });
     }
+
+    /** Shows the last build's fault, wrapped to the panel's width, with the whole line as its tooltip; blank if it built. */
+    private void showFault() {
+        var f = model.fault();
+        fault.setText(f == null ? " " : "<html><div style='width:220px'>" + escaped(f.getMessage())
+                + "<br><b>The tree shown is the previous one (stale).</b></div></html>");
+        fault.setToolTipText(f == null ? null : f.getMessage());
+        builder.repaint(); // its box marks a hung builder
+    }
+
+    private static String escaped(String s) {
+        return s.replace("&", "&amp;").replace("<", "&lt;").replace(">", "&gt;");
+    }
+
+    /** {@return the fault shown, as its plain line, or null} (for tests) */
+    String faultShown() { return fault.getToolTipText(); }
 
     /** Shows why the value just typed is not taken (null: the text is valid again). */
     private void reject(String why) {

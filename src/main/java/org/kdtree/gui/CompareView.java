@@ -96,10 +96,13 @@ public final class CompareView extends JPanel {
         private String builder;
         private final JLabel stats = new JLabel();
         private final Mini canvas = new Mini();
+        /** This column's builds, off the event thread. */
+        private final BackgroundBuild builds;
 
         Column(int index, String initial) {
             super(new BorderLayout());
             builder = initial;
+            builds = new BackgroundBuild("compare build " + index);
             chooser.setSelectedItem(initial);
             chooser.setName("compare.builder." + index);
             chooser.setToolTipText("The builder this column shows: any registered builder, a student's too");
@@ -122,11 +125,21 @@ public final class CompareView extends JPanel {
             stats.setToolTipText("Statistics of the " + builder + " tree, and the cast ray's traversal in it");
         }
 
+        /** Builds this column's tree off the event thread (waiting for it briefly, as the model does), then shows it. */
         void update(Shapes2D scene, double[] ray) {
             BuilderSpec s = model.settings().forBuilder(builder);
-            long t0 = System.nanoTime();
-            KdTree tree = s.create().build(scene);
-            double ms = (System.nanoTime() - t0) / 1e6;
+            if (!builds.start(s.create(), scene, true, o -> show(scene, ray, o)))
+                stats.setText("<html>building ...</html>");
+        }
+
+        private void show(Shapes2D scene, double[] ray, BackgroundBuild.Outcome o) {
+            if (o.fault() != null) {
+                stats.setText("<html><div style='width:300px; color:#aa0000'>" + o.fault().getMessage().replace("&", "&amp;")
+                        .replace("<", "&lt;") + "<br><b>The tree shown is the previous one (stale).</b></div></html>");
+                return;
+            }
+            KdTree tree = o.tree();
+            double ms = o.millis();
             TraversalTrace trace = tracer.trace(tree, scene, ray);
             TreeStats st = tree.stats();
             StringBuilder b = new StringBuilder("<html>");

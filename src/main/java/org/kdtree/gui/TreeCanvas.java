@@ -106,6 +106,15 @@ final class TreeCanvas extends JComponent {
         }
     }
 
+    /** A banner over the top: the tree shown is the previous one, since the builder failed. */
+    private void paintStale(Graphics2D g, int w) {
+        String text = "stale: the previous tree; builder " + model.fault().builder() + " failed (see the builder panel)";
+        g.setColor(new java.awt.Color(170, 0, 0, 200));
+        g.fillRect(0, 0, w, g.getFontMetrics().getHeight() + 8);
+        g.setColor(java.awt.Color.WHITE);
+        g.drawString(text, 6, g.getFontMetrics().getAscent() + 4);
+    }
+
     /** The scene and tree without selection, kept while tree, view and size stay the same. */
     private BufferedImage base;
     /** The tree {@link #base} shows. */
@@ -125,6 +134,7 @@ final class TreeCanvas extends JComponent {
         g.drawImage(base, 0, 0, null);
         TreePainter.paintSelection(g, model.scene(), model.tree(), v, model.selectedNode(), model.selectedShape());
         for (CanvasOverlay o : overlays) o.paint(g, v);
+        if (model.stale()) paintStale(g, w);
         if (preview != null)
             TreePainter.paintShape(g, preview, v, Palette.SELECTED_SHAPE, null,
                     new BasicStroke(2f, BasicStroke.CAP_BUTT, BasicStroke.JOIN_MITER, 10, new float[] {4, 3}, 0));

@@ -28,6 +28,8 @@ import javax.swing.JTextArea;
 import javax.swing.SwingUtilities;
 import javax.swing.Timer;
 import org.kdtree.build.Builders;
+import org.kdtree.build.Supervisor;
+import org.kdtree.limits.Deadlines;
 import org.kdtree.limits.Limits;
 import org.kdtree.build.KdTreeBuilder;
 import org.kdtree.io.BundledScenes;
@@ -74,6 +76,9 @@ public final class View3D extends JPanel {
     private final WorkbenchModel model;
     /** Set by {@link #stop} to cancel the build or render under way. */
     private volatile boolean cancelled;
+    /** Runs a plug-in's builds: a builder that throws, hangs or crawls is stopped and named, and Build is free again. */
+    private static final Supervisor SUPERVISOR = Supervisor.of(Deadlines.WORKBENCH).trustingTheLibrary();
+
     /** The thread building or rendering, or null. */
     private Thread running;
 
@@ -235,7 +240,7 @@ public final class View3D extends JPanel {
         running = null;
         output.setText(text);
         output.setCaretPosition(0);
-        status.setText((cancelled ? "stopped " : "done: ") + name);
+        status.setText((cancelled ? "stopped " : text.startsWith("cannot ") ? "failed: " : "done: ") + name);
         build.setEnabled(true);
         stop.setEnabled(false);
         picture.repaint();
@@ -244,7 +249,7 @@ public final class View3D extends JPanel {
     private String statistics(Path file, KdTreeBuilder b) throws IOException {
         Primitives p = SceneLoader.load(file);
         long t0 = System.nanoTime();
-        KdTree tree = b.build(p);
+        KdTree tree = SUPERVISOR.build(b, p);
         double ms = (System.nanoTime() - t0) / 1e6;
         return String.format(Locale.ROOT, "scene: %s (%s, no camera: statistics only)%nbuilder: %s (%s)%n"
                 + "build time: %.1f ms%n%s%n", file.getFileName(), RenderJob.count(p.size(), "primitive"), b.name(), b.describeSettings(), ms, tree.stats().describe());
@@ -270,7 +275,7 @@ public final class View3D extends JPanel {
                     total.set(t);
                     done.accumulateAndGet(d, Math::max);
                 });
-        RenderJob job = RenderJob.run(s.withImageSize(w, h), b, options);
+        RenderJob job = RenderJob.run(s.withImageSize(w, h), b, SUPERVISOR, options);
         SwingUtilities.invokeLater(() -> {
             refresh.stop();
             picture.show(job.result().image().toBufferedImage(), done.get(), total.get());

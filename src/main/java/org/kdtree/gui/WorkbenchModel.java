@@ -1,13 +1,11 @@
 package org.kdtree.gui;
 
 import java.util.ArrayList;
+import java.util.HashSet;
+import java.util.Set;
 import java.util.List;
-import java.util.concurrent.CancellationException;
 import java.util.concurrent.CopyOnWriteArrayList;
-import java.util.concurrent.ExecutorService;
-import java.util.concurrent.Executors;
-import java.util.concurrent.Future;
-import javax.swing.SwingUtilities;
+import org.kdtree.build.BuilderFault;
 import org.kdtree.build.BuilderSpec;
 import org.kdtree.shape.Shape2D;
 import org.kdtree.shape.Shapes2D;
@@ -19,11 +17,16 @@ import org.kdtree.tree.KdTree;
  * hear what changed. Used on the Swing event thread only. It also holds the query point of the
  * nearest-neighbour stepper.
  *
- * <p>A scene of up to {@link #BACKGROUND_ABOVE} objects is rebuilt at once, within the event;
- * a larger one on a background thread, so that the window stays responsive: listeners hear
- * {@link Change#BUILDING}, the views keep showing the last scene and tree until the new tree is
- * ready, and a change made meanwhile cancels the stale build (its thread is interrupted, which
- * every builder obeys).
+ * <p>No build runs on the event thread: every build runs on the model's build thread, a
+ * plug-in's under a supervisor with the workbench's deadlines ({@link BackgroundBuild}). For a scene of up
+ * to {@link #BACKGROUND_ABOVE} objects the event thread waits for it a moment at the most (2 s
+ * for the library's builders, which need milliseconds, a quarter of a second for a plug-in's), so
+ * that a small scene's tree still appears within the event that changed it; past that (a large
+ * scene, a slow or hung builder), listeners hear {@link Change#BUILDING}, the
+ * views keep showing the last scene and tree until the new tree is ready, and a change made
+ * meanwhile cancels the stale build (its thread is interrupted; a hung plug-in's is stopped).
+ * A builder that throws, answers wrongly, hangs or is too slow leaves the last tree shown,
+ * marked {@link #stale()}, and its {@link #fault()} said ({@link Change#FAULT}).
  */
 final class WorkbenchModel {
     /** What changed, so that a view redoes only what it must. */
@@ -37,11 +40,14 @@ final class WorkbenchModel {
         /** A background build started. */
         BUILDING,
         /** The k-NN query point. */
-        QUERY
+        QUERY,
+        /** A build failed by the builder's fault: the tree shown is stale. */
+        FAULT
     }
 
     /** Scenes with more objects than this are built in the background. */
     public static final int BACKGROUND_ABOVE = 20_000;
+
 
     /** Hears the model's changes. */
     public interface Listener {
@@ -61,13 +67,9 @@ final class WorkbenchModel {
     private KdTree tree;
     private double buildMillis;
     private boolean building;
-    private Future<?> pending;
-    private int generation;
-    private final ExecutorService builderThread = Executors.newSingleThreadExecutor(r -> {
-        Thread t = new Thread(r, "workbench build");
-        t.setDaemon(true);
-        return t;
-    });
+    private final BackgroundBuild builds = new BackgroundBuild("workbench build");
+    private BuilderFault fault;
+    private final Set<String> hung = new HashSet<>();
     private int selectedNode = -1;
     private int selectedShape = -1;
     private double[] ray;
@@ -184,35 +186,39 @@ final class WorkbenchModel {
     /** {@return whether a background build is under way} (the views still show the previous tree). */
     public boolean building() { return building; }
 
+    /** {@return the fault of the last build, or null if it built the tree shown} */
+    public BuilderFault fault() { return fault; }
+
+    /** {@return whether the tree shown is not that of the scene and settings: its build failed by the builder's fault} */
+    public boolean stale() { return fault != null; }
+
+    /**
+     * {@return whether builder {@code name} hung (or was too slow) in this workbench}: it is
+     * marked in the builder box until a build with it succeeds
+     *
+     * @param name a builder's name
+     */
+    public boolean hung(String name) { return hung.contains(name); }
+
     private void rebuild() {
         Shapes2D next = new Shapes2D(shapes);
-        var builder = settings.create();
-        int mine = ++generation;
-        if (pending != null) pending.cancel(true);
-        pending = null;
-        if (next.size() <= BACKGROUND_ABOVE) {
-            building = false;
-            long t0 = System.nanoTime();
-            install(next, builder.build(next), (System.nanoTime() - t0) / 1e6);
-            return;
-        }
+        if (builds.start(settings.create(), next, next.size() <= BACKGROUND_ABOVE, o -> finish(next, o))) return;
         building = true;
         fire(Change.BUILDING);
-        pending = builderThread.submit(() -> {
-            long t0 = System.nanoTime();
-            KdTree built;
-            try {
-                built = builder.build(next);
-            } catch (CancellationException stale) {
-                return;
-            }
-            double ms = (System.nanoTime() - t0) / 1e6;
-            SwingUtilities.invokeLater(() -> {
-                if (mine != generation) return;          // a newer change is being built
-                building = false;
-                install(next, built, ms);
-            });
-        });
+    }
+
+    /** Shows the newest build's outcome: its tree, or its builder's fault over the last tree, then stale. */
+    private void finish(Shapes2D builtScene, BackgroundBuild.Outcome o) {
+        building = false;
+        if (o.fault() == null) {
+            fault = null;
+            hung.remove(o.tree().builderName());
+            install(builtScene, o.tree(), o.millis());
+            return;
+        }
+        fault = o.fault();
+        if (fault.kind() == BuilderFault.Kind.HUNG || fault.kind() == BuilderFault.Kind.SLOW) hung.add(fault.builder());
+        fire(Change.FAULT);
     }
 
     /** Publishes a scene and its tree together, so that the views never pair a tree with another scene. */

@@ -4,6 +4,7 @@ import org.kdtree.scene.Camera;
 import org.kdtree.scene.Scene;
 import java.util.Locale;
 import org.kdtree.build.KdTreeBuilder;
+import org.kdtree.build.Supervisor;
 import org.kdtree.traverse.Traverser;
 import org.kdtree.traverse.TriangleIntersector;
 import org.kdtree.tree.KdTree;
@@ -28,8 +29,23 @@ public record RenderJob(Scene scene, KdTree tree, long buildNanos, RenderResult 
      * @return the finished job
      */
     public static RenderJob run(Scene scene, KdTreeBuilder builder, Renderer.Options options) {
+        return run(scene, builder, null, options);
+    }
+
+    /**
+     * Builds the tree under {@code supervisor} (a plug-in builder's: it may throw, hang or be
+     * slow, and is stopped and named if so), then renders.
+     *
+     * @param scene the scene
+     * @param builder builds the tree over the scene's triangles
+     * @param supervisor runs the build; null to build on this thread, unsupervised
+     * @param options threads, tiles and progress
+     * @return the finished job
+     * @throws org.kdtree.build.BuilderFault if the builder failed under supervision
+     */
+    public static RenderJob run(Scene scene, KdTreeBuilder builder, Supervisor supervisor, Renderer.Options options) {
         long t0 = System.nanoTime();
-        KdTree tree = builder.build(scene.mesh());
+        KdTree tree = supervisor == null ? builder.build(scene.mesh()) : supervisor.build(builder, scene.mesh());
         long buildNanos = System.nanoTime() - t0;
         TriangleIntersector triangles = new TriangleIntersector(scene.mesh());
         RenderResult result = Renderer.render(scene, () -> new Traverser(tree, triangles), options);

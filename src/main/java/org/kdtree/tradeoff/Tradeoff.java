@@ -4,6 +4,7 @@ import java.util.ArrayList;
 import java.util.List;
 import org.kdtree.build.KdTreeBuilder;
 import org.kdtree.build.Setting;
+import org.kdtree.build.Supervisor;
 import org.kdtree.shape.TriangleMesh;
 import org.kdtree.traverse.TraversalStats;
 import org.kdtree.traverse.TriangleIntersector;
@@ -21,6 +22,7 @@ public final class Tradeoff {
     private final int runs;
     private final int threads;
     private final int countedRays;
+    private final Supervisor supervisor;
 
     /**
      * @param mesh        the scene every variant builds its tree over
@@ -30,11 +32,26 @@ public final class Tradeoff {
      * @param countedRays rays traced once more with a listener to count nodes and tests per ray
      */
     public Tradeoff(TriangleMesh mesh, RaySet rays, int runs, int threads, int countedRays) {
+        this(mesh, rays, runs, threads, countedRays, null);
+    }
+
+    private Tradeoff(TriangleMesh mesh, RaySet rays, int runs, int threads, int countedRays, Supervisor supervisor) {
+        this.supervisor = supervisor;
         this.mesh = mesh;
         this.rays = rays;
         this.runs = Math.max(1, runs);
         this.threads = threads;
         this.countedRays = Math.max(1, countedRays);
+    }
+
+    /**
+     * {@return the same study with each build run by {@code s}} (a registered plug-in builder is
+     * a variant too: it may throw, hang or be slow, and is then stopped and named)
+     *
+     * @param s the supervisor of the builds
+     */
+    public Tradeoff supervisedBy(Supervisor s) {
+        return new Tradeoff(mesh, rays, runs, threads, countedRays, s);
     }
 
     /**
@@ -45,7 +62,7 @@ public final class Tradeoff {
      */
     public TradeoffResult run(Variant v) {
         KdTreeBuilder builder = v.spec().with(Setting.THREADS, threads).create();
-        Timing.Timed<KdTree> build = Timing.median(1, runs, Timing.QUIET, () -> builder.build(mesh));
+        Timing.Timed<KdTree> build = Timing.median(1, runs, Timing.QUIET, () -> supervisor == null ? builder.build(mesh) : supervisor.build(builder, mesh));
         KdTree tree = build.value();
         TreeStats s = tree.stats();
         Traverser traverser = new Traverser(tree, new TriangleIntersector(mesh));

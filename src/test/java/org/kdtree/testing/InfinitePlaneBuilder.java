@@ -1,0 +1,15 @@
+package org.kdtree.testing;
+
+import org.kdtree.build.BuildContext;
+import org.kdtree.build.BuildNode;
+import org.kdtree.build.KdTreeBuilder;
+import org.kdtree.geom.SplitPlane;
+
+/** A broken student's builder for plug-in tests: its plane lies at infinity. */
+public class InfinitePlaneBuilder extends KdTreeBuilder {
+    @Override public String name() { return "infinite-plane"; }
+    @Override protected boolean terminate(BuildContext c, BuildNode n) { return n.size() <= 2; }
+    @Override protected SplitPlane findPlane(BuildContext c, BuildNode n) {
+        return new SplitPlane(0, n.voxel().max(0) / 0.0);
+    }
+}
