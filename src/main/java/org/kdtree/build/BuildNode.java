@@ -22,18 +22,27 @@ public final class BuildNode {
     private final NodeStore store;
     private final BuildContext context;
     private final Box voxel;
+    private final int k;
     private int d, c, size;
+    private boolean voxelFilled;
     private SplitPlane kept;
-    /** The references and clipped bounds of a node held as events, made when first asked for. */
+    /**
+     * Where the node's references and clipped bounds are read, from slot {@link #from}: the
+     * store's level arrays, or (for a node held as events) arrays made from its events when
+     * first asked for; null until then.
+     */
+    private int[] refArray;
+    private double[] boundsArray;
+    private int from;
     private int[] eventRefs = new int[0];
     private double[] eventBounds = new double[0];
-    private boolean eventBoundsMade;
     private double[] scratch = new double[16];
 
     BuildNode(NodeStore store, BuildContext context) {
         this.store = store;
         this.context = context;
-        this.voxel = new Box(store.k);
+        this.k = store.k;
+        this.voxel = new Box(k);
     }
 
     /** Points this view at child c of level d of its store; forgets the kept plane. */
@@ -42,15 +51,33 @@ public final class BuildNode {
         c = child;
         size = store.size(d, c);
         kept = null;
-        eventBoundsMade = false;
-        double[] v = store.voxel(d);
-        int k = store.k;
-        for (int a = 0; a < k; a++) voxel.setMin(a, v[2 * k * c + a]).setMax(a, v[2 * k * c + k + a]);
+        voxelFilled = false;
+        formChanged();
         return this;
     }
 
+    /** The node's form may have changed (the store turned it into events): read it afresh. */
+    void formChanged() {
+        if (store.formOf(d, c) == NodeStore.BOUNDS) {
+            refArray = store.refs(d);
+            boundsArray = store.bounds(d);
+            from = store.boundsMeta(d)[2 * c];
+        } else {
+            refArray = null;
+            boundsArray = null;
+            from = 0;
+        }
+    }
+
     /** {@return the voxel V of this node}; do not modify or keep it. */
-    public Box voxel() { return voxel; }
+    public Box voxel() {
+        if (!voxelFilled) {
+            double[] v = store.voxel(d);
+            for (int a = 0; a < k; a++) voxel.setMin(a, v[2 * k * c + a]).setMax(a, v[2 * k * c + k + a]);
+            voxelFilled = true;
+        }
+        return voxel;
+    }
 
     /** {@return D(V), the depth of this node}; the root has depth 0. */
     public int depth() { return d; }
@@ -59,7 +86,7 @@ public final class BuildNode {
     public int size() { return size; }
 
     /** {@return k, the dimension} */
-    public int dimension() { return store.k; }
+    public int dimension() { return k; }
 
     /** {@return what the build knows besides the node: its primitives, its depth cap} */
     public BuildContext context() { return context; }
@@ -72,9 +99,9 @@ public final class BuildNode {
      * @param j 0 .. {@link #size()} - 1
      */
     public int ref(int j) {
-        check(j);
-        if (store.formOf(d, c) == NodeStore.BOUNDS) return store.refs(d)[store.boundsMeta(d)[2 * c] + j];
-        return eventRefs()[j];
+        if (j < 0 || j >= size) throw outside(j, 0);
+        if (refArray == null) makeEventBounds();
+        return refArray[from + j];
     }
 
     /**
@@ -83,7 +110,9 @@ public final class BuildNode {
      * @param axis the axis, 0 .. {@link #dimension()} - 1
      */
     public double clippedMin(int j, int axis) {
-        return bound(j, axis);
+        if (j < 0 || j >= size || axis < 0 || axis >= k) throw outside(j, axis);
+        if (boundsArray == null) makeEventBounds();
+        return boundsArray[2 * k * (from + j) + axis];
     }
 
     /**
@@ -92,26 +121,21 @@ public final class BuildNode {
      * @param axis the axis, 0 .. {@link #dimension()} - 1
      */
     public double clippedMax(int j, int axis) {
-        return bound(j, store.k + axis);
+        if (j < 0 || j >= size || axis < 0 || axis >= k) throw outside(j, axis);
+        if (boundsArray == null) makeEventBounds();
+        return boundsArray[2 * k * (from + j) + k + axis];
     }
 
     /** {@return the primitive indices, {@link #size()} of them, in a new array} */
     public int[] refs() {
-        int[] r = new int[size];
-        for (int j = 0; j < size; j++) r[j] = ref(j);
-        return r;
+        if (refArray == null) makeEventBounds();
+        return Arrays.copyOfRange(refArray, from, from + size);
     }
 
     /** {@return the clipped bounds, {@code 2k} values per reference (k minima, then k maxima), in a new array} */
     public double[] clippedBounds() {
-        int k2 = 2 * store.k;
-        if (size > 0) check(0);
-        if (store.formOf(d, c) == NodeStore.BOUNDS) {
-            int from = store.boundsMeta(d)[2 * c];
-            return Arrays.copyOfRange(store.bounds(d), k2 * from, k2 * (from + size));
-        }
-        makeEventBounds();
-        return Arrays.copyOf(eventBounds, k2 * size);
+        if (boundsArray == null) makeEventBounds();
+        return Arrays.copyOfRange(boundsArray, 2 * k * from, 2 * k * (from + size));
     }
 
     /**
@@ -144,29 +168,15 @@ public final class BuildNode {
 
     int child() { return c; }
 
-    private double bound(int j, int at) {
-        check(j);
-        if (at < 0 || at >= 2 * store.k) throw new IndexOutOfBoundsException("axis " + (at % store.k) + " outside 0 .. " + (store.k - 1));
-        if (store.formOf(d, c) == NodeStore.BOUNDS)
-            return store.bounds(d)[2 * store.k * (store.boundsMeta(d)[2 * c] + j) + at];
-        makeEventBounds();
-        return eventBounds[2 * store.k * j + at];
-    }
-
-    private void check(int j) {
-        if (j < 0 || j >= size)
-            throw new IndexOutOfBoundsException("reference " + j + " of a node of " + size + " (valid: 0 .. " + (size - 1) + ")");
-    }
-
-    private int[] eventRefs() {
-        makeEventBounds();
-        return eventRefs;
+    private IndexOutOfBoundsException outside(int j, int axis) {
+        if (axis < 0 || axis >= k)
+            return new IndexOutOfBoundsException("axis " + axis + " of a " + k + "-D node (valid: 0 .. " + (k - 1) + ")");
+        return new IndexOutOfBoundsException("reference " + j + " of a node of " + size + " (valid: 0 .. " + (size - 1) + ")");
     }
 
     /** The references and clipped bounds of a node held as events: its primitives in order, their bounds from their events. */
     private void makeEventBounds() {
-        if (eventBoundsMade) return;
-        int k = store.k, n = store.leafRefs(d, c);
+        int n = store.leafRefs(d, c);
         if (eventRefs.length < n) eventRefs = new int[n];
         if (eventBounds.length < 2 * k * n) eventBounds = new double[2 * k * n];
         int[] slot = store.perPrimitive();
@@ -182,6 +192,8 @@ public final class BuildNode {
                 if (kind != EventCode.START) eventBounds[o + k + a] = pos[e];
             }
         }
-        eventBoundsMade = true;
+        refArray = eventRefs;
+        boundsArray = eventBounds;
+        from = 0;
     }
 }

@@ -18,11 +18,12 @@ final class BuildWatch {
     /** The methods of the builder that the recursion calls. */
     static final int TERMINATE = 1, FIND_PLANE = 2;
 
-    private static final VarHandle CALLS;
+    private static final VarHandle CALLS, OPEN;
 
     static {
         try {
             CALLS = MethodHandles.lookup().findVarHandle(BuildWatch.class, "calls", long.class);
+            OPEN = MethodHandles.lookup().findVarHandle(BuildWatch.class, "open", int.class);
         } catch (ReflectiveOperationException e) {
             throw new ExceptionInInitializerError(e);
         }
@@ -31,8 +32,12 @@ final class BuildWatch {
     private final boolean watched;
     private volatile boolean cancelled;
     private volatile RuntimeException stopWith;
-    /** Odd while a call is under way: incremented on entering and on leaving (release stores). */
+    /** Incremented on entering and on leaving a call: it stands still while a call hangs or nothing is called. */
     @SuppressWarnings("unused") private long calls;
+    /** The calls under way: 0 or 1 in a one-thread build. */
+    @SuppressWarnings("unused") private int open;
+    /** Whether several threads report to this watch (a parallel build): then the counts are updated atomically. */
+    private boolean shared;
     private final java.util.concurrent.atomic.LongAdder nodes = new java.util.concurrent.atomic.LongAdder();
     private int method, depth, size;
 
@@ -60,19 +65,35 @@ final class BuildWatch {
         if (watched) nodes.increment();
     }
 
+    /** Before the build starts: whether its nodes are built by several threads. */
+    void threads(int n) {
+        shared = n > 1;
+    }
+
     /** Before the recursion calls the builder's {@code method} on a node. */
     void enter(int which, int nodeDepth, int nodeSize) {
         if (!watched) return;
         method = which;
         depth = nodeDepth;
         size = nodeSize;
-        CALLS.setRelease(this, (long) CALLS.getOpaque(this) + 1);
+        count(1);
     }
 
     /** After the call returned or threw. */
     void leave() {
         if (!watched) return;
-        CALLS.setRelease(this, (long) CALLS.getOpaque(this) + 1);
+        count(-1);
+    }
+
+    /** One more entry or exit; plain release stores on one thread, atomic updates on several. */
+    private void count(int openDelta) {
+        if (shared) {
+            OPEN.getAndAdd(this, openDelta);
+            CALLS.getAndAdd(this, 1L);
+        } else {
+            OPEN.setRelease(this, (int) OPEN.getOpaque(this) + openDelta);
+            CALLS.setRelease(this, (long) CALLS.getOpaque(this) + 1);
+        }
     }
 
     /**
@@ -88,8 +109,11 @@ final class BuildWatch {
     /** {@return whether the build was told to stop} */
     boolean cancelled() { return cancelled; }
 
-    /** {@return the count of entries into and exits from the builder's methods; odd while a call is under way} */
+    /** {@return the count of entries into and exits from the builder's methods} */
     long calls() { return (long) CALLS.getAcquire(this); }
+
+    /** {@return whether a call into the builder is under way} */
+    boolean inCall() { return (int) OPEN.getAcquire(this) > 0; }
 
     /** {@return the nodes visited so far, by every thread of the build} */
     long nodes() { return nodes.sum(); }

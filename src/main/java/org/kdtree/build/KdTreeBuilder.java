@@ -78,6 +78,7 @@ public abstract class KdTreeBuilder {
                 new ConcurrentLinkedDeque<>());
         KdTreeWriter out = new KdTreeWriter(primitives.dimension());
         reserve(out, n);
+        watch.threads(threads);
         if (threads == 1) {
             recConstRoot(build, rootVoxel, out);
         } else {
@@ -120,7 +121,7 @@ public abstract class KdTreeBuilder {
             return;
         }
         int interior = out.interior(p.axis(), p.position());
-        if (store.size(d + 1, 1) >= build.forkThreshold && store.size(d + 1, 0) > 0) {
+        if (build.forkThreshold != Integer.MAX_VALUE && store.size(d + 1, 1) >= build.forkThreshold && store.size(d + 1, 0) > 0) {
             forkRight(build, store, d + 1, interior, out);
             return;
         }
@@ -198,6 +199,8 @@ public abstract class KdTreeBuilder {
         build.watch.enter(BuildWatch.TERMINATE, node.depth(), node.size());
         try {
             return terminate(build, node);
+        } catch (ThreadDeath stopped) {
+            throw stopped; // a supervisor stopped the thread: it has reported why
         } catch (RuntimeException | Error e) {
             throw BuilderFaults.threw(this, BuilderFault.TERMINATE, node, e);
         } finally {
@@ -210,6 +213,8 @@ public abstract class KdTreeBuilder {
         build.watch.enter(BuildWatch.FIND_PLANE, node.depth(), node.size());
         try {
             return findPlane(build, node);
+        } catch (ThreadDeath stopped) {
+            throw stopped; // a supervisor stopped the thread: it has reported why
         } catch (RuntimeException | Error e) {
             throw BuilderFaults.threw(this, BuilderFault.FIND_PLANE, node, e);
         } finally {
@@ -223,9 +228,10 @@ public abstract class KdTreeBuilder {
                 "return a plane for every node that terminate does not make a leaf");
         if (p.axis() >= node.dimension()) throw BuilderFaults.badPlane(this, node, "chose axis " + p.axis() + " in "
                 + node.dimension() + "-D", "the axis must be 0 .. " + (node.dimension() - 1));
-        Box v = node.voxel();
-        if (p.position() < v.min(p.axis()) || p.position() > v.max(p.axis()))
-            throw BuilderFaults.badPlane(this, node, "chose x" + p.axis() + " = " + p.position() + ", outside the voxel " + v,
+        int k = node.dimension(), at = 2 * k * node.child() + p.axis();
+        double[] v = node.store().voxel(node.depth());
+        if (p.position() < v[at] || p.position() > v[at + k])
+            throw BuilderFaults.badPlane(this, node, "chose x" + p.axis() + " = " + p.position() + ", outside the voxel " + node.voxel(),
                     "findPlane must return a plane on one of the node's axes, inside its voxel");
         return p;
     }

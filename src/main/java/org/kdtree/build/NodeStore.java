@@ -225,6 +225,7 @@ final class NodeStore {
         EventRoot.write(this, d, c, refs(d), m[2 * c], bounds(d), m[2 * c + 1],
                 d == 0 && java.util.concurrent.ForkJoinTask.inForkJoinPool());
         form(d)[c] = EVENTS;
+        if (view.level() == d && view.child() == c) view.formChanged();
     }
 
     /** Makes room for {@code count} events in level {@code d} (its old contents are dead). */

@@ -62,38 +62,38 @@ public class SlidingMidpointBuilder extends KdTreeBuilder {
     /** The sliding midpoint plane of the node, or null when all centres coincide. */
     static SplitPlane slidingMidpoint(BuildNode node) {
         int k = node.dimension();
-        double[] lo = new double[k], hi = new double[k];
-        centreRange(node, lo, hi);
-        int axis = longestSplittableSide(node.voxel(), lo, hi);
+        double[] range = node.scratch(2 * k);   // the centres' minima, then maxima
+        centreRange(node, range, k);
+        int axis = longestSplittableSide(node.voxel(), range, k);
         if (axis < 0) return null;
         Box v = node.voxel();
-        double mid = 0.5 * (v.min(axis) + v.max(axis));
+        double mid = 0.5 * (v.min(axis) + v.max(axis)), lo = range[axis], hi = range[k + axis];
         // Slide to the nearest centre; the centres lying in the plane go to the side that would
         // otherwise be empty, so both children get at least one.
-        if (mid <= lo[axis]) return new SplitPlane(axis, lo[axis], true);
-        if (mid >= hi[axis]) return new SplitPlane(axis, hi[axis], false);
+        if (mid <= lo) return new SplitPlane(axis, lo, true);
+        if (mid >= hi) return new SplitPlane(axis, hi, false);
         return new SplitPlane(axis, mid, true);
     }
 
-    /** The range of the primitives' centres (the points themselves, for points) on every axis. */
-    private static void centreRange(BuildNode node, double[] lo, double[] hi) {
-        java.util.Arrays.fill(lo, Double.POSITIVE_INFINITY);
-        java.util.Arrays.fill(hi, Double.NEGATIVE_INFINITY);
+    /** The range of the primitives' centres (the points themselves, for points) on every axis: minima, then maxima. */
+    private static void centreRange(BuildNode node, double[] range, int k) {
+        java.util.Arrays.fill(range, 0, k, Double.POSITIVE_INFINITY);
+        java.util.Arrays.fill(range, k, 2 * k, Double.NEGATIVE_INFINITY);
         for (int j = 0; j < node.size(); j++) {
-            for (int a = 0; a < lo.length; a++) {
+            for (int a = 0; a < k; a++) {
                 double c = 0.5 * (node.clippedMin(j, a) + node.clippedMax(j, a));
-                if (c < lo[a]) lo[a] = c;
-                if (c > hi[a]) hi[a] = c;
+                if (c < range[a]) range[a] = c;
+                if (c > range[k + a]) range[k + a] = c;
             }
         }
     }
 
     /** The axis of the voxel's longest side among those the centres spread over, or -1. */
-    private static int longestSplittableSide(Box voxel, double[] lo, double[] hi) {
+    private static int longestSplittableSide(Box voxel, double[] range, int k) {
         int best = -1;
         double bestExtent = -1, bestSpread = -1;
-        for (int a = 0; a < lo.length; a++) {
-            double spread = hi[a] - lo[a], extent = voxel.extent(a);
+        for (int a = 0; a < k; a++) {
+            double spread = range[k + a] - range[a], extent = voxel.extent(a);
             if (!(spread > 0)) continue;
             if (extent > bestExtent || (extent == bestExtent && spread > bestSpread)) {
                 best = a;

@@ -105,8 +105,7 @@ public final class Supervisor {
                     lastCalls = calls;
                     callSince = now;
                 }
-                boolean inCall = (calls & 1) == 1;
-                if (inCall && now - callSince > callNanos) {
+                if (watch.inCall() && now - callSince > callNanos) {
                     String method = watch.method();
                     int depth = watch.depth(), size = watch.size();
                     boolean stopped = stop(worker, watch);
