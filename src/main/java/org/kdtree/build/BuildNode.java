@@ -26,6 +26,8 @@ public final class BuildNode {
     private int d, c, size;
     private boolean voxelFilled;
     private SplitPlane kept;
+    /** Whether the SAH's terminate found this node's plane (kept in its search state, {@link NodeStore#best}). */
+    boolean searched;
     /**
      * Where the node's references and clipped bounds are read, from slot {@link #from}: the
      * store's level arrays, or (for a node held as events) arrays made from its events when
@@ -51,6 +53,7 @@ public final class BuildNode {
         c = child;
         size = store.size(d, c);
         kept = null;
+        searched = false;
         voxelFilled = false;
         formChanged();
         return this;

@@ -11,10 +11,12 @@ import org.kdtree.tree.KdTreeWriter;
  * {@code C_V(p)} (see {@link SahCost}); terminates automatically when no plane is cheaper than
  * a leaf ({@code min C_V(p) >= |T| Ki}, section 3.3.3), and at the depth cap.
  *
- * <p>Deciding terminate needs the best plane, so {@link #terminate} searches for it and keeps it
- * on the node ({@link BuildNode#keepPlane}), and {@link #findPlane} returns what was kept: one
- * search per node, by whichever {@link Algorithm} is set. A subclass gets the same searches
- * over the same node store as this class: there is no other path.
+ * <p>Deciding terminate needs the best plane, so {@link #terminate} searches for it and keeps it,
+ * and {@link #findPlane} returns what was kept: one search per node, by whichever
+ * {@link Algorithm} is set. (A student's builder keeps its plane with {@link BuildNode#keepPlane};
+ * this one keeps it in its search state, one per thread of the build, so that no plane object is
+ * made per node.) A subclass gets the same searches over the same node store as this class:
+ * there is no other path.
  *
  * <p>Defaults: Kt = 15, Ki = 20, empty-voxel weight lambda = 0.8, depth cap
  * {@code 8 + 1.3 log2 N}, perfect splits on, plane search {@link Algorithm#EVENT}.
@@ -80,15 +82,15 @@ public class SahBuilder extends KdTreeBuilder {
         best.reset();
         search.search(node, sah, best);
         if (!best.found() || best.cost() >= sah.leafCost(node.size())) return true;
-        node.keepPlane(best.plane());
+        node.searched = true;
         return false;
     }
 
-    /** The plane {@link #terminate} found and kept. */
+    /** The plane {@link #terminate} found and kept (searching now if this node's terminate did not). */
     @Override protected SplitPlane findPlane(BuildContext context, BuildNode node) {
-        if (node.keptPlane() == null && terminate(context, node))
+        if (!node.searched && terminate(context, node))
             throw new IllegalStateException("findPlane called on a node the SAH would make a leaf");
-        return node.keptPlane();
+        return node.store().best.plane();
     }
 
     @Override void reserve(KdTreeWriter out, int primitives) {
