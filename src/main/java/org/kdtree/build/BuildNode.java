@@ -55,20 +55,25 @@ public final class BuildNode {
         kept = null;
         searched = false;
         voxelFilled = false;
-        formChanged();
+        refArray = null;
+        boundsArray = null;
         return this;
     }
 
-    /** The node's form may have changed (the store turned it into events): read it afresh. */
+    /** The node's form changed (the store turned it into events): its arrays are read afresh when asked for. */
     void formChanged() {
+        refArray = null;
+        boundsArray = null;
+    }
+
+    /** Points {@link #refArray} and {@link #boundsArray} at the node's references and clipped bounds, in either form. */
+    private void arrays() {
         if (store.formOf(d, c) == NodeStore.BOUNDS) {
             refArray = store.refs(d);
             boundsArray = store.bounds(d);
             from = store.boundsMeta(d)[2 * c];
         } else {
-            refArray = null;
-            boundsArray = null;
-            from = 0;
+            makeEventBounds();
         }
     }
 
@@ -103,7 +108,7 @@ public final class BuildNode {
      */
     public int ref(int j) {
         if (j < 0 || j >= size) throw outside(j, 0);
-        if (refArray == null) makeEventBounds();
+        if (refArray == null) arrays();
         return refArray[from + j];
     }
 
@@ -114,7 +119,7 @@ public final class BuildNode {
      */
     public double clippedMin(int j, int axis) {
         if (j < 0 || j >= size || axis < 0 || axis >= k) throw outside(j, axis);
-        if (boundsArray == null) makeEventBounds();
+        if (boundsArray == null) arrays();
         return boundsArray[2 * k * (from + j) + axis];
     }
 
@@ -125,19 +130,19 @@ public final class BuildNode {
      */
     public double clippedMax(int j, int axis) {
         if (j < 0 || j >= size || axis < 0 || axis >= k) throw outside(j, axis);
-        if (boundsArray == null) makeEventBounds();
+        if (boundsArray == null) arrays();
         return boundsArray[2 * k * (from + j) + k + axis];
     }
 
     /** {@return the primitive indices, {@link #size()} of them, in a new array} */
     public int[] refs() {
-        if (refArray == null) makeEventBounds();
+        if (refArray == null) arrays();
         return Arrays.copyOfRange(refArray, from, from + size);
     }
 
     /** {@return the clipped bounds, {@code 2k} values per reference (k minima, then k maxima), in a new array} */
     public double[] clippedBounds() {
-        if (boundsArray == null) makeEventBounds();
+        if (boundsArray == null) arrays();
         return Arrays.copyOfRange(boundsArray, 2 * k * from, 2 * k * (from + size));
     }
 

@@ -41,8 +41,6 @@ final class BuildWatch {
     /** Set once by {@link #cancel}; read at every node without a fence (opaque), so it costs next to nothing. */
     @SuppressWarnings("unused") private boolean cancelled;
     private volatile RuntimeException stopWith;
-    /** Nodes since the build started, by every thread (racy: only its low bits matter, to pace the interrupt check). */
-    private int tick;
     /** Incremented on entering and on leaving a call: it stands still while a call hangs or nothing is called. */
     @SuppressWarnings("unused") private long calls;
     /** The calls under way: 0 or 1 in a one-thread build. */
@@ -66,10 +64,13 @@ final class BuildWatch {
         return new BuildWatch(true);
     }
 
-    /** At every node: counts it, and stops the build if it was cancelled or its thread interrupted. */
-    void node(int nodeDepth, int nodeSize) {
+    /**
+     * At every node: counts it, and stops the build if it was cancelled, or (every
+     * {@link #INTERRUPT_EVERY}th node of the thread's {@code tick}) if its thread was interrupted.
+     */
+    void node(int tick) {
         if ((boolean) CANCELLED.getOpaque(this)) throw stopped();
-        if ((++tick & (INTERRUPT_EVERY - 1)) == 0 && Thread.currentThread().isInterrupted()) {
+        if ((tick & (INTERRUPT_EVERY - 1)) == 0 && Thread.currentThread().isInterrupted()) {
             cancel(null); // and so every thread of the build stops
             throw new CancellationException("build cancelled");
         }

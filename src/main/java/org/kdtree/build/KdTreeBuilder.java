@@ -108,7 +108,7 @@ public abstract class KdTreeBuilder {
      */
     private void recConst(Build build, NodeStore store, int d, int c, KdTreeWriter out) {
         BuildNode node = store.view.point(d, c);
-        build.watch.node(d, node.size());
+        build.watch.node(++store.nodes);
         if (d >= build.depthCap || callTerminate(build, node)) {
             store.leaf(d, c, out);
             return;

@@ -53,6 +53,8 @@ final class NodeStore {
 
     /** The view the builder's methods see, pointed at one node after another. */
     final BuildNode view;
+    /** The nodes this store has served: paces the recursion's look at its thread's interrupt flag. */
+    int nodes;
     /** Per primitive, a slot or a side: scratch of the event split and of {@link BuildNode}'s bounds of an event node. */
     private int[] slotOf;
     private int[] leafRefs = new int[16];
