@@ -40,21 +40,58 @@ class SahBuilderTest {
         }
     }
 
-    /** What terminate finds, findPlane returns: through BuildNode's public keepPlane, which any builder may use. */
-    @Test void thePlaneTerminateFoundIsKeptForFindPlaneThroughThePublicApi() throws Exception {
-        assertThat(BuildNode.class.getMethod("keepPlane", org.kdtree.geom.SplitPlane.class)).isNotNull();
-        assertThat(BuildNode.class.getMethod("keptPlane")).isNotNull();
-        int[] planes = {0, 0};
+    /** What terminate finds, findPlane returns: the SAH searches once per node, never again in findPlane. */
+    @Test void findPlaneReturnsWhatTerminateFoundWithoutSearchingAgain() {
+        int[] finds = {0}, again = {0};
+        boolean[] inFind = {false};
         SahBuilder counting = new SahBuilder() {
+            @Override protected boolean terminate(BuildContext c, BuildNode n) {
+                if (inFind[0]) again[0]++;
+                return super.terminate(c, n);
+            }
+
             @Override protected org.kdtree.geom.SplitPlane findPlane(BuildContext c, BuildNode n) {
-                planes[0]++;
-                if (n.keptPlane() == null) planes[1]++;
-                return super.findPlane(c, n);
+                finds[0]++;
+                inFind[0] = true;
+                try {
+                    return super.findPlane(c, n);
+                } finally {
+                    inFind[0] = false;
+                }
             }
         };
         KdTree tree = counting.build(TestScenes.clusteredTriangles(500, 5));
-        assertThat(planes[0]).as("findPlane calls").isGreaterThan(100).isGreaterThanOrEqualTo(tree.nodeCount() / 2);
-        assertThat(planes[1]).as("findPlane calls that would search again").isZero();
+        assertThat(finds[0]).as("findPlane calls").isGreaterThan(100).isEqualTo((tree.nodeCount() - 1) / 2);
+        assertThat(again[0]).as("searches again in findPlane").isZero();
+    }
+
+    /**
+     * A student's SAH written with the public API only (BuildNode.keepPlane, SahCost, SahSplit, a
+     * public plane search) builds the library's tree: keepPlane carries terminate's plane to findPlane.
+     */
+    static final class KeepingSah extends KdTreeBuilder {
+        @Override public String name() { return "keeping-sah"; }
+
+        @Override protected boolean terminate(BuildContext context, BuildNode node) {
+            if (node.size() == 0) return true;
+            SahCost sah = new SahCost(costModel(), 0.8, node.voxel());
+            if (!(sah.halfArea() > 0)) return true;
+            SahSplit best = new SahSplit();
+            new SortedPlaneSearch().search(node, sah, best);
+            if (!best.found() || best.cost() >= sah.leafCost(node.size())) return true;
+            node.keepPlane(best.plane());
+            return false;
+        }
+
+        @Override protected org.kdtree.geom.SplitPlane findPlane(BuildContext context, BuildNode node) {
+            return node.keptPlane();
+        }
+    }
+
+    @Test void aStudentsSahWithKeepPlaneBuildsTheLibrarysTree() throws Exception {
+        assertThat(BuildNode.class.getMethod("keepPlane", org.kdtree.geom.SplitPlane.class)).isNotNull();
+        Primitives mesh = TestScenes.clusteredTriangles(2000, 6);
+        Trees.assertSameTree(new SahBuilder().build(mesh), new KeepingSah().build(mesh));
     }
 
     /** A subclass of the SAH runs on the same store and searches as the SAH itself: the same tree, whatever the algorithm. */
