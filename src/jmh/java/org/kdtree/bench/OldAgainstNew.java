@@ -1,0 +1,73 @@
+package org.kdtree.bench;
+
+import java.lang.management.ManagementFactory;
+import java.lang.management.ThreadMXBean;
+import java.lang.reflect.Method;
+import java.net.URL;
+import java.net.URLClassLoader;
+import java.nio.file.Path;
+import java.util.Arrays;
+import java.util.Locale;
+
+/**
+ * Builds one mesh with two versions of the library in one JVM, in turn, so that both see the
+ * same machine at the same moments: each jar in a class loader of its own (so each has its own
+ * compiled code), builds alternating and the order swapping every round, thread CPU time
+ * measured. A noisy shared machine moves a whole run; this keeps the ratio between the two.
+ *
+ * <pre>
+ * java -cp target/benchmarks.jar org.kdtree.bench.OldAgainstNew OLD.jar NEW.jar MESH.obj RUNS BUILDER [EVENT|BINNED|fast]
+ * </pre>
+ * BUILDER is a registered name ({@code sah}, {@code median-plane}, ...) or {@code centre-midpoint}.
+ */
+public final class OldAgainstNew {
+    private OldAgainstNew() {
+    }
+
+    public static void main(String[] args) throws Exception {
+        if (args.length < 5) {
+            System.err.println("usage: OldAgainstNew OLD.jar NEW.jar MESH.obj RUNS BUILDER [EVENT|BINNED|fast]");
+            System.exit(2);
+        }
+        int runs = Integer.parseInt(args[3]);
+        Object[] meshes = new Object[2], builders = new Object[2];
+        Method[] build = new Method[2];
+        for (int i = 0; i < 2; i++) {
+            ClassLoader cl = new URLClassLoader(new URL[] {Path.of(args[i]).toUri().toURL()}, ClassLoader.getPlatformClassLoader());
+            meshes[i] = cl.loadClass("org.kdtree.io.ObjMeshReader").getMethod("read", Path.class).invoke(null, Path.of(args[2]));
+            builders[i] = builder(cl, args[4], args.length > 5 ? args[5] : null);
+            build[i] = cl.loadClass("org.kdtree.build.KdTreeBuilder").getMethod("build", cl.loadClass("org.kdtree.shape.Primitives"));
+        }
+        ThreadMXBean mx = ManagementFactory.getThreadMXBean();
+        double[][] ms = new double[2][runs];
+        for (int r = -3; r < runs; r++) {
+            for (int o = 0; o < 2; o++) {
+                int i = (r & 1) == 0 ? o : 1 - o;
+                long t0 = mx.getCurrentThreadCpuTime();
+                build[i].invoke(builders[i], meshes[i]);
+                if (r >= 0) ms[i][r] = (mx.getCurrentThreadCpuTime() - t0) / 1e6;
+            }
+        }
+        for (double[] t : ms) Arrays.sort(t);
+        System.out.printf(Locale.ROOT, "%s %s: old median %.0f ms (q1 %.0f), new median %.0f ms (q1 %.0f), new/old %.3f%n",
+                args[4], args.length > 5 ? args[5] : "", ms[0][runs / 2], ms[0][runs / 4], ms[1][runs / 2], ms[1][runs / 4],
+                ms[1][runs / 2] / ms[0][runs / 2]);
+    }
+
+    /** The builder named {@code name} of the library in {@code cl}, with the SAH {@code variant} if given. */
+    @SuppressWarnings({"unchecked", "rawtypes"})
+    private static Object builder(ClassLoader cl, String name, String variant) throws Exception {
+        Object b = name.equals("centre-midpoint")
+                ? cl.loadClass("org.kdtree.examples.CentreMidpointBuilder").getConstructor().newInstance()
+                : cl.loadClass("org.kdtree.build.Builders").getMethod("create", String.class).invoke(null, name);
+        if (variant == null) return b;
+        if (variant.equals("fast")) {
+            Class quality = cl.loadClass("org.kdtree.build.Quality");
+            b.getClass().getMethod("quality", quality).invoke(b, Enum.valueOf(quality, "FAST"));
+        } else {
+            Class algorithm = cl.loadClass("org.kdtree.build.SahBuilder$Algorithm");
+            b.getClass().getMethod("algorithm", algorithm).invoke(b, Enum.valueOf(algorithm, variant));
+        }
+        return b;
+    }
+}
