@@ -104,9 +104,18 @@ public final class GradeCommand implements Callable<Integer> {
             return new Check(c.name(), null, null);
         } catch (AssertionError | RuntimeException e) {
             noteIfHaltedBy(e, c.name());
-            return new Check(c.name(), e.getMessage() == null ? e.getClass().getSimpleName() : e.getMessage(), null);
+            String failure = e.getMessage() == null ? e.getClass().getSimpleName() : e.getMessage();
+            String first = firstFailures.putIfAbsent(failure, c.name());
+            return new Check(c.name(), first == null ? failure : "the same failure as " + first + " above", null);
         }
     }
+
+    /**
+     * Each failure's message and the check that reported it first: the checks of scenes above 50
+     * primitives first build 50 random shapes (to catch a builder that never stops before a big
+     * scene), so one fault there fails them all with the same message, said once.
+     */
+    private final java.util.Map<String, String> firstFailures = new java.util.HashMap<>();
 
     /** A builder that hung or was too slow would only do so again: the remaining checks are not run. */
     private void noteIfHaltedBy(Throwable e, String where) {

@@ -43,6 +43,8 @@ class GradeCommandTest {
         assertThat(r.code()).as(r.err()).isEqualTo(1);
         assertThat(r.out()).contains("talk figures                                 FAIL  builder plane-outside: findPlane chose x0 = ")
                 .contains("outside the voxel")
+                .contains("random 2-D shapes                            FAIL  builder plane-outside: findPlane chose x0 = ")
+                .contains("random triangles                             FAIL  the same failure as random 2-D shapes above")
                 .contains("verdict: FAIL: breaks the contract (")
                 .doesNotContain("quality (course scenes)");
         assertThat(Files.readAllLines(csv).get(0)).isEqualTo("section,item,builder,result,expected_cost,nodes,depth,build_ms");
