@@ -102,7 +102,7 @@ public final class BuilderPanel extends JPanel {
         row(12, "", rejection);
         fault.setName("builder.fault");
         fault.setForeground(new java.awt.Color(170, 0, 0));
-        row(13, "", fault);
+        wideRow(13, fault);
         builder.addActionListener(e -> apply());
         algorithm.addActionListener(e -> apply());
         perfectSplits.addActionListener(e -> apply());
@@ -134,7 +134,7 @@ public final class BuilderPanel extends JPanel {
     /** Shows the last build's fault, wrapped to the panel's width, with the whole line as its tooltip; blank if it built. */
     private void showFault() {
         var f = model.fault();
-        fault.setText(f == null ? " " : "<html><div style='width:220px'>" + escaped(f.getMessage())
+        fault.setText(f == null ? " " : "<html><div style='width:230px'>" + escaped(f.getMessage())
                 + "<br><b>The tree shown is the previous one (stale).</b></div></html>");
         fault.setToolTipText(f == null ? null : f.getMessage());
         builder.repaint(); // its box marks a hung builder
@@ -230,6 +230,17 @@ public final class BuilderPanel extends JPanel {
             ((JSpinner.DefaultEditor) s.getEditor()).getTextField().setToolTipText(tip);
             ((JSpinner.DefaultEditor) s.getEditor()).getTextField().setName(name + ".text");
         }
+    }
+
+    /** A row of one component across both columns (a message as wide as the panel). */
+    private void wideRow(int y, JComponent c) {
+        GridBagConstraints g = new GridBagConstraints();
+        g.gridy = y;
+        g.gridwidth = 2;
+        g.insets = new Insets(2, 4, 2, 4);
+        g.anchor = GridBagConstraints.WEST;
+        g.fill = GridBagConstraints.HORIZONTAL;
+        add(c, g);
     }
 
     private void row(int y, String label, JComponent c) {

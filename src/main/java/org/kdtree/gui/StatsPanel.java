@@ -43,7 +43,7 @@ final class StatsPanel extends JPanel {
         model.addListener(c -> {
             if (c == WorkbenchModel.Change.TREE) show(model);
             if (c == WorkbenchModel.Change.BUILDING) set("build time", "building ...");
-            if (c == WorkbenchModel.Change.FAULT) set("build time", "failed: the tree shown is stale");
+            if (c == WorkbenchModel.Change.FAULT) set("build time", "failed (stale tree)");
             progress.setVisible(model.building());
         });
         show(model);

@@ -68,7 +68,7 @@ class HungBuilderGuiTest {
 
         window.tabbedPane("tabs").selectTab("2-D build");
         assertThat(window.label("builder.fault").text()).contains("findPlane did not return within 3 s").contains("stale");
-        assertThat(window.label("stat.build time").text()).isEqualTo("failed: the tree shown is stale");
+        assertThat(window.label("stat.build time").text()).isEqualTo("failed (stale tree)");
 
         window.comboBox("builder").selectItem("sah");                // a sound builder again: a fresh tree, nothing stale
         assertThat(GuiActionRunner.execute(() -> bench.model().stale())).isFalse();
