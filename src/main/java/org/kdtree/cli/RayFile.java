@@ -58,6 +58,7 @@ final class RayFile {
             rays++;
         }
         out.flush();
+        if (out.checkError()) throw new IOException(name + ": the hits could not be written");
         return rays;
     }
 
