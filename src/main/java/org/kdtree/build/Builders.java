@@ -2,7 +2,6 @@ package org.kdtree.build;
 
 import java.io.IOException;
 import java.io.UncheckedIOException;
-import java.net.MalformedURLException;
 import java.net.URL;
 import java.net.URLClassLoader;
 import java.nio.file.Files;
@@ -68,21 +67,8 @@ public final class Builders {
      */
     public static synchronized List<String> loadPlugins(Path jarOrFolder) {
         List<URL> jars = new ArrayList<>();
-        try {
-            if (Files.isDirectory(jarOrFolder)) {
-                try (var files = Files.list(jarOrFolder)) {
-                    for (Path f : files.sorted().toList()) if (f.toString().endsWith(".jar")) jars.add(f.toUri().toURL());
-                }
-            } else if (Files.isRegularFile(jarOrFolder) && jarOrFolder.toString().endsWith(".jar")) {
-                jars.add(jarOrFolder.toUri().toURL());
-            } else {
-                throw new IllegalArgumentException("--plugin " + jarOrFolder + ": no such jar or folder");
-            }
-        } catch (MalformedURLException e) {
-            throw new IllegalArgumentException("--plugin " + jarOrFolder + ": " + e.getMessage(), e);
-        } catch (IOException e) {
-            throw new UncheckedIOException(e);
-        }
+        List<Path> jarFiles = jarsOf(jarOrFolder);
+        for (Path jar : jarFiles) jars.add(PluginJar.open(jar));
         URLClassLoader loader = new URLClassLoader(jars.toArray(URL[]::new), Builders.class.getClassLoader());
         Set<String> ownClasses = listedClasses(loader);
         List<String> listed = new ArrayList<>();
@@ -93,10 +79,30 @@ public final class Builders {
             if (p.type().getClassLoader() != loader && BY_NAME.containsKey(name)) continue; // known already: same class
             register(name, () -> newInstance(p.type()));
         }
-        if (listed.isEmpty())
-            throw new IllegalArgumentException("--plugin " + jarOrFolder + ": no builder listed in META-INF/services/"
-                    + KdTreeBuilder.class.getName() + (jars.isEmpty() ? " (the folder holds no .jar)" : ""));
+        if (listed.isEmpty()) throw new IllegalArgumentException("--plugin " + jarOrFolder + ": " + noBuilder(jarFiles));
         return listed;
+    }
+
+    /** The plug-in's jars: the file itself (whatever its name: it is checked as a zip), or a folder's .jar files. */
+    private static List<Path> jarsOf(Path jarOrFolder) {
+        if (Files.isRegularFile(jarOrFolder)) return List.of(jarOrFolder);
+        if (!Files.isDirectory(jarOrFolder)) throw new IllegalArgumentException("--plugin " + jarOrFolder + ": no such jar or folder");
+        try (var files = Files.list(jarOrFolder)) {
+            return files.filter(f -> f.toString().endsWith(".jar")).sorted().toList();
+        } catch (IOException e) {
+            throw new IllegalArgumentException("--plugin " + jarOrFolder + ": the folder cannot be read (" + e.getMessage() + ")");
+        }
+    }
+
+    /** Why no builder was found, and what to do: the service file a jar needs, with its line. */
+    private static String noBuilder(List<Path> jars) {
+        if (jars.isEmpty()) return "no builder listed in " + PluginJar.SERVICES + " (the folder holds no .jar)";
+        List<Path> without = jars.stream().filter(j -> !PluginJar.listsBuilders(j)).toList();
+        if (without.size() == 1 && jars.size() == 1)
+            return "the jar lists no builder; " + PluginJar.missingServices(without.get(0), "the jar");
+        if (without.size() == jars.size())
+            return "no jar in the folder lists a builder; " + PluginJar.missingServices(jars.get(0), "your builder's jar");
+        return "no builder listed in " + PluginJar.SERVICES + " could be loaded";
     }
 
     /** The builder classes the plug-in jars themselves list (not their parent class loader's). */

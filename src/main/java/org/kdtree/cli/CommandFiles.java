@@ -4,6 +4,7 @@ import java.io.IOException;
 import java.nio.file.Files;
 import java.nio.file.Path;
 import java.util.Locale;
+import org.kdtree.files.SameFile;
 import org.kdtree.io.ObjMeshReader;
 import org.kdtree.shape.TriangleMesh;
 
@@ -26,5 +27,15 @@ final class CommandFiles {
         Path folder = file.toAbsolutePath().getParent();
         if (folder != null && !Files.isDirectory(folder))
             throw new IllegalArgumentException(option + " " + file + ": the folder " + folder + " does not exist");
+    }
+
+    /**
+     * Refuses an output of {@code option} that is the input {@code input} (same file by any
+     * spelling or link), before any work: writing it would destroy what the command reads.
+     */
+    static void requireNotInput(String option, Path output, String input, Path inputFile) {
+        if (output != null && inputFile != null && SameFile.same(output, inputFile))
+            throw new IllegalArgumentException(option + " " + output + " is the input " + input + " (" + inputFile
+                    + "); write the results elsewhere");
     }
 }

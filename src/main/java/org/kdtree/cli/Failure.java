@@ -6,6 +6,7 @@ import java.io.StringWriter;
 import java.nio.file.Files;
 import java.nio.file.Path;
 import org.kdtree.build.BuilderFault;
+import org.kdtree.files.AtomicFile;
 
 /**
  * What the command line prints when a command fails: one line, never a stack trace. A user's
@@ -53,7 +54,7 @@ final class Failure {
             Path file = Files.createTempFile("kdtree-error-", ".txt");
             StringWriter trace = new StringWriter();
             failure.printStackTrace(new PrintWriter(trace));
-            Files.writeString(file, trace.toString());
+            AtomicFile.writeString(file, trace.toString());
             return " (a bug of ours: the full report is in " + file + ")";
         } catch (IOException | RuntimeException e) {
             return " (a bug of ours; the report could not be written: " + e.getMessage() + ")";

@@ -1,7 +1,6 @@
 package org.kdtree.cli;
 
 import java.io.IOException;
-import java.nio.file.Files;
 import java.nio.file.Path;
 import java.util.ArrayList;
 import java.util.List;
@@ -15,6 +14,7 @@ import org.kdtree.check.ContractCase;
 import org.kdtree.check.ContractViolation;
 import org.kdtree.check.CourseScenes;
 import org.kdtree.check.QualityChecks;
+import org.kdtree.files.AtomicFile;
 import org.kdtree.limits.Deadlines;
 import org.kdtree.tree.KdTree;
 import picocli.CommandLine.Command;
@@ -90,7 +90,7 @@ public final class GradeCommand implements Callable<Integer> {
         Report report = new Report(builder, contract, quality, rows, verdict);
         System.out.print(report.text());
         if (output != null) {
-            Files.writeString(output, output.toString().toLowerCase(Locale.ROOT).endsWith(".csv") ? report.csv() : report.markdown());
+            AtomicFile.writeString(output, output.toString().toLowerCase(Locale.ROOT).endsWith(".csv") ? report.csv() : report.markdown());
             System.out.println("report: " + output);
         }
         return correct ? 0 : 1;

@@ -1,13 +1,12 @@
 package org.kdtree.cli;
 
-import java.io.BufferedWriter;
-import java.nio.charset.StandardCharsets;
-import java.nio.file.Files;
+import java.io.Writer;
 import java.nio.file.Path;
 import java.util.Locale;
 import java.util.concurrent.Callable;
 import org.kdtree.build.Builders;
 import org.kdtree.build.KdTreeBuilder;
+import org.kdtree.files.AtomicFile;
 import org.kdtree.io.PointCsv;
 import org.kdtree.limits.Limits;
 import org.kdtree.points.NearestQuery;
@@ -55,6 +54,8 @@ final class KnnCommand implements Callable<Integer> {
             throw new IllegalArgumentException("--radius must be a finite number >= 0, got " + radius);
         KdTreeBuilder b = Builders.create(builder);
         CommandFiles.requireFolder("--out", outFile);
+        CommandFiles.requireNotInput("--out", outFile, "POINTS", pointsFile);
+        CommandFiles.requireNotInput("--out", outFile, "--queries", queriesFile);
         PointsKd points = PointCsv.read(pointsFile);
         PointsKd queries = PointCsv.read(queriesFile);
         if (queries.dimension() != points.dimension())
@@ -72,31 +73,36 @@ final class KnnCommand implements Callable<Integer> {
 
     /**
      * Answers the queries a block at a time, timing the searches only (not the writing), and
-     * writes one line per query; returns the nanoseconds spent searching.
+     * writes one line per query, the whole file or nothing; returns the nanoseconds spent searching.
      */
     private long answer(PointTree tree, PointsKd queries, int kk) throws java.io.IOException {
+        long[] nanos = new long[1];
+        AtomicFile.writeText(outFile, out -> nanos[0] = answer(tree, queries, kk, out));
+        return nanos[0];
+    }
+
+    /** The searches and the lines of {@link #answer(PointTree, PointsKd, int)}, into {@code out}. */
+    private long answer(PointTree tree, PointsKd queries, int kk, Writer out) throws java.io.IOException {
         NearestQuery knn = new NearestQuery(tree);
         int dim = queries.dimension(), block = Math.max(1, Math.min(queries.size(), (1 << 20) / Math.max(1, kk)));
         double[] q = new double[dim];
         int[] found = new int[kk], neighbours = new int[block * kk], counts = new int[block];
         double maxDistance = radius != null ? radius : Double.POSITIVE_INFINITY;
         long nanos = 0;
-        try (BufferedWriter out = Files.newBufferedWriter(outFile, StandardCharsets.UTF_8)) {
-            StringBuilder line = new StringBuilder();
-            for (int from = 0; from < queries.size(); from += block) {
-                int to = Math.min(queries.size(), from + block);
-                long t0 = System.nanoTime();
-                for (int j = from; j < to; j++) {
-                    for (int a = 0; a < dim; a++) q[a] = queries.coord(j, a);
-                    counts[j - from] = knn.nearest(q, kk, maxDistance, found, null);
-                    System.arraycopy(found, 0, neighbours, (j - from) * kk, counts[j - from]);
-                }
-                nanos += System.nanoTime() - t0;
-                for (int j = 0; j < to - from; j++) {
-                    line.setLength(0);
-                    for (int i = 0; i < counts[j]; i++) line.append(i > 0 ? "," : "").append(neighbours[j * kk + i]);
-                    out.write(line.append('\n').toString());
-                }
+        StringBuilder line = new StringBuilder();
+        for (int from = 0; from < queries.size(); from += block) {
+            int to = Math.min(queries.size(), from + block);
+            long t0 = System.nanoTime();
+            for (int j = from; j < to; j++) {
+                for (int a = 0; a < dim; a++) q[a] = queries.coord(j, a);
+                counts[j - from] = knn.nearest(q, kk, maxDistance, found, null);
+                System.arraycopy(found, 0, neighbours, (j - from) * kk, counts[j - from]);
+            }
+            nanos += System.nanoTime() - t0;
+            for (int j = 0; j < to - from; j++) {
+                line.setLength(0);
+                for (int i = 0; i < counts[j]; i++) line.append(i > 0 ? "," : "").append(neighbours[j * kk + i]);
+                out.write(line.append('\n').toString());
             }
         }
         return nanos;

@@ -1,6 +1,5 @@
 package org.kdtree.cli;
 
-import java.nio.file.Files;
 import java.nio.file.Path;
 import java.util.ArrayList;
 import java.util.List;
@@ -124,6 +123,15 @@ final class KnnStudyCommand implements Callable<Integer> {
             throw new IllegalArgumentException("give POINTS and --queries FILE, or --generate uniform|clustered");
         CommandFiles.requireFolder("--csv", csvFile());
         CommandFiles.requireFolder("--chart", chartFile());
+        requireNotInput("--csv", csvFile());
+        requireNotInput("--chart", chartFile());
+        requireNotInput("--chart (its SVG)", ChartFile.svgBeside(chartFile()));
+    }
+
+    /** Refuses an output that is one of the study's input files. */
+    private void requireNotInput(String option, Path out) {
+        CommandFiles.requireNotInput(option, out, "POINTS", pointsFile);
+        CommandFiles.requireNotInput(option, out, "--queries", queriesFile);
     }
 
     private GeneratedPoints kind() {
@@ -150,23 +158,24 @@ final class KnnStudyCommand implements Callable<Integer> {
                 dataName(), tree.size(), queries.size(), tree.dimension(), k, b.name(), runs);
         int steps = 3 + budgets.size() + (epsilons == null ? 0 : epsilons.size());
         List<NeighbourResult> results = new ArrayList<>();
+        StudyFile table = new StudyFile(csvFile());
         try (ProgressBar bar = progress.bar(steps, "steps")) {
             bar.step(0, "exact answers (brute force)");
             NeighbourStudy s = new NeighbourStudy(tree, queries, k, runs);
             bar.print(System.out, String.format(Locale.ROOT, "%-24s %8s %14s %10s %12s", "search", "recall", "queries/s",
                     "speed-up", "leaves/query"));
-            measure(bar, 1, "brute force", results, s::bruteForce);
-            measure(bar, 2, "exact kd-tree", results, s::exact);
+            measure(bar, 1, "brute force", results, s::bruteForce, table);
+            measure(bar, 2, "exact kd-tree", results, s::exact, table);
             for (int i = 0; i < budgets.size(); i++) {
                 int budget = budgets.get(i);
-                measure(bar, 3 + i, "budget " + budget, results, () -> s.budget(budget));
+                measure(bar, 3 + i, "budget " + budget, results, () -> s.budget(budget), table);
             }
             for (int i = 0; epsilons != null && i < epsilons.size(); i++) {
                 double eps = epsilons.get(i);
-                measure(bar, 3 + budgets.size() + i, "epsilon " + eps, results, () -> s.epsilon(eps));
+                measure(bar, 3 + budgets.size() + i, "epsilon " + eps, results, () -> s.epsilon(eps), table);
             }
         }
-        Files.writeString(csvFile(), NeighbourStudy.csv(results));
+        table.finish(NeighbourStudy.csv(results));
         String caption = ChartFile.caption(String.format(Locale.ROOT, "%s: %,d points, %d-D, %,d queries, k %d, builder %s; median of %d run%s",
                 dataName(), tree.size(), tree.dimension(), queries.size(), k, b.name(), runs, runs == 1 ? "" : "s"), 1);
         NeighbourChart.write(results, dataName() + ": recall at k = " + k + " against queries per second", caption, chartFile());
@@ -174,12 +183,13 @@ final class KnnStudyCommand implements Callable<Integer> {
         return 0;
     }
 
-    /** Announces step {@code step} on the bar, measures it, and prints its line above the bar. */
+    /** Announces step {@code step} on the bar, measures it, keeps its row, and prints its line above the bar. */
     private static void measure(ProgressBar bar, int step, String name, List<NeighbourResult> results,
-                                java.util.function.Supplier<NeighbourResult> what) {
+                                java.util.function.Supplier<NeighbourResult> what, StudyFile table) throws java.io.IOException {
         bar.step(step, name);
         NeighbourResult r = what.get();
         results.add(r);
+        table.progress(NeighbourStudy.csv(results));
         bar.print(System.out, String.format(Locale.ROOT, "%-24s %8.4f %14.0f %10.2f %12.1f", r.name(), r.recall(),
                 r.queriesPerSecond(), r.speedUp(), r.leavesPerQuery()));
     }
@@ -190,16 +200,18 @@ final class KnnStudyCommand implements Callable<Integer> {
         System.out.printf(Locale.ROOT, "%9s %14s %14s %10s %12s%n", "dimension", "exact q/s", "brute q/s", "speed-up", "leaves/query");
         DimensionSweep sweep = new DimensionSweep(kind(), n, queryCount, k, runs, seed, b);
         List<DimensionResult> results = new ArrayList<>();
+        StudyFile table = new StudyFile(csvFile());
         try (ProgressBar bar = progress.bar(dimensions.size(), "dimensions")) {
             for (int i = 0; i < dimensions.size(); i++) {
                 bar.step(i, dimensions.get(i) + "-D");
                 DimensionResult r = sweep.measure(dimensions.get(i));
                 results.add(r);
+                table.progress(DimensionSweep.csv(results));
                 bar.print(System.out, String.format(Locale.ROOT, "%9d %14.0f %14.0f %10.2f %12.1f", r.dimension(),
                         r.exactQps(), r.bruteQps(), r.speedUp(), r.leavesPerQuery()));
             }
         }
-        Files.writeString(csvFile(), DimensionSweep.csv(results));
+        table.finish(DimensionSweep.csv(results));
         String caption = ChartFile.caption(String.format(Locale.ROOT, "%s points: %,d, %,d queries, k %d, builder %s; median of %d run%s",
                 kind().label(), n, queryCount, k, b.name(), runs, runs == 1 ? "" : "s"), 1);
         DimensionChart.write(results, "Where kd-trees stop helping: exact search against brute force (" + kind().label() + ")",

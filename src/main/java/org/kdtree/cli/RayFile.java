@@ -15,8 +15,17 @@ import org.kdtree.traverse.RayQuery;
  * {@code #} starting a comment line, blank lines ignored. The direction is used as given, so t is
  * the ray parameter. One output line per ray, in order: {@code t triangle} (t with 17
  * significant digits, enough to read the same double back) or {@code miss}.
+ *
+ * <p>A direction far from unit length (largest component below 2^-64 or above 2^64, down to the
+ * smallest subnormal) is traced rescaled by a power of two, which is exact, with tmin and tmax
+ * rescaled alike and t scaled back, so the answer is the same ray parameter; a hit whose t is
+ * beyond the largest double (a direction so short that the ray parameter overflows) is refused
+ * with the file and line.
  */
 final class RayFile {
+    /** Directions whose largest component has a binary exponent within this of 0 are traced as given. */
+    private static final int ORDINARY_EXPONENT = 64;
+
     private RayFile() {
     }
 
@@ -50,15 +59,38 @@ final class RayFile {
             v[7] = Double.POSITIVE_INFINITY;
             for (int k = 0; k < tok.length; k++) v[k] = number(tok[k], name, lineNo, k < 6);
             if (v[3] == 0 && v[4] == 0 && v[5] == 0) throw new SceneFormatException(name, lineNo, "direction is zero");
-            ray.set(v[0], v[1], v[2], v[3], v[4], v[5]);
-            if (query.closestHit(ray, v[6], v[7], hit))
-                out.println(String.format(Locale.ROOT, "%.17g %d", hit.t, hit.primitive));
+            int k = rescaling(v[3], v[4], v[5]);
+            ray.set(v[0], v[1], v[2], Math.scalb(v[3], k), Math.scalb(v[4], k), Math.scalb(v[5], k));
+            if (query.closestHit(ray, Math.scalb(v[6], -k), Math.scalb(v[7], -k), hit))
+                out.println(String.format(Locale.ROOT, "%.17g %d", rayParameter(hit.t, k, name, lineNo), hit.primitive));
             else
                 out.println("miss");
             rays++;
         }
         out.flush();
+        if (out.checkError()) throw new IOException(name + ": the hits could not be written");
         return rays;
+    }
+
+    /**
+     * The power of two that brings a direction far from unit length to a largest component in
+     * [1, 2) (scaling by it is exact, subnormals included), or 0 for an ordinary direction.
+     */
+    static int rescaling(double dx, double dy, double dz) {
+        double largest = Math.max(Math.abs(dx), Math.max(Math.abs(dy), Math.abs(dz)));
+        int exponent = largest >= Double.MIN_NORMAL ? Math.getExponent(largest)
+                : Math.getExponent(Math.scalb(largest, ORDINARY_EXPONENT)) - ORDINARY_EXPONENT;
+        return Math.abs(exponent) > ORDINARY_EXPONENT ? -exponent : 0;
+    }
+
+    /** The hit's t for the direction as given: the traced t scaled back, refused if no double holds it. */
+    private static double rayParameter(double tracedT, int k, String name, int line) throws SceneFormatException {
+        double t = Math.scalb(tracedT, k);
+        if (Double.isInfinite(t))
+            throw new SceneFormatException(name, line, String.format(Locale.ROOT, "the direction (dx dy dz) is so short that "
+                    + "the hit's t, about 1e%.0f, is beyond the largest double (1.8e308); give a longer direction",
+                    Math.log10(tracedT) + k * Math.log10(2)));
+        return t;
     }
 
     private static double number(String token, String name, int line, boolean finite) throws SceneFormatException {

@@ -10,6 +10,7 @@ import java.util.concurrent.Callable;
 import org.kdtree.build.KdTreeBuilder;
 import org.kdtree.build.Supervisor;
 import org.kdtree.build.Setting;
+import org.kdtree.files.AtomicFile;
 import org.kdtree.limits.Limits;
 import org.kdtree.shape.ProceduralScenes;
 import org.kdtree.shape.TriangleMesh;
@@ -81,6 +82,10 @@ final class RaycastCommand implements Callable<Integer> {
         Limits.WARMUP.check("--warmup", warmup);
         Limits.THREADS.check("--threads", threads);
         Limits.GRID.check("--grid", grid);
+        if (hitsFile != null && !hitsFile.toString().equals("-")) {
+            CommandFiles.requireNotInput("--hits", hitsFile, "MESH", mesh);
+            CommandFiles.requireNotInput("--hits", hitsFile, "--rays", raysFile);
+        }
         TriangleMesh scene = ProceduralScenes.grid(CommandFiles.readMesh(mesh, "raycast"), grid);
         KdTreeBuilder builder = options.spec().with(Setting.THREADS, threads).create();
         if (raysFile != null) return traceFile(scene, builder);
@@ -96,10 +101,9 @@ final class RaycastCommand implements Callable<Integer> {
         Traverser traverser = new Traverser(tree, new TriangleIntersector(scene));
         if (!Files.isRegularFile(raysFile)) throw new java.io.IOException(raysFile + ": no such file");
         if (!hitsFile.toString().equals("-")) CommandFiles.requireFolder("--hits", hitsFile);
-        try (BufferedReader in = Files.newBufferedReader(raysFile, StandardCharsets.UTF_8);
-             PrintWriter out = hitsFile.toString().equals("-") ? new PrintWriter(System.out)
-                     : new PrintWriter(Files.newBufferedWriter(hitsFile, StandardCharsets.UTF_8))) {
-            RayFile.trace(in, raysFile.toString(), traverser, out);
+        try (BufferedReader in = Files.newBufferedReader(raysFile, StandardCharsets.UTF_8)) {
+            if (hitsFile.toString().equals("-")) RayFile.trace(in, raysFile.toString(), traverser, new PrintWriter(System.out));
+            else AtomicFile.writeText(hitsFile, out -> RayFile.trace(in, raysFile.toString(), traverser, new PrintWriter(out)));
         }
         return 0;
     }

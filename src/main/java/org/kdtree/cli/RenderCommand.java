@@ -53,7 +53,9 @@ final class RenderCommand implements Callable<Integer> {
 
     @Override public Integer call() throws Exception {
         checkOutput();
-        Scene s = SceneFile.read(BundledScenes.resolve(scene));
+        Path sceneFile = BundledScenes.resolve(scene);
+        CommandFiles.requireNotInput("-o", output, "SCENE", sceneFile);
+        Scene s = SceneFile.read(sceneFile);
         if (spp != null) s = s.withSamplesPerPixel(Limits.SAMPLES_PER_PIXEL.check("--spp", spp));
         if (rayDepth != null) s = s.withMaxDepth(Limits.RAY_DEPTH.check("--ray-depth", rayDepth));
         if (width != null || height != null) {

@@ -1,6 +1,5 @@
 package org.kdtree.cli;
 
-import java.nio.file.Files;
 import java.nio.file.Path;
 import java.util.List;
 import java.util.Locale;
@@ -77,6 +76,14 @@ final class TradeoffCommand implements Callable<Integer> {
         Limits.RUNS.check("--runs", runs);
         Limits.THREADS.check("--threads", threads);
         Limits.RAYS_PER_TRIANGLE.check("--chart-rpt", chartRaysPerTriangle);
+        String base = mesh.getFileName().toString().replaceFirst("\\.[^.]*$", "") + (grid > 1 ? "-grid" + grid : "");
+        Path csvOut = csv != null ? csv : Path.of("tradeoff-" + base + ".csv");
+        Path pngOut = chart != null ? chart : Path.of("tradeoff-" + base + ".png");
+        CommandFiles.requireFolder("--csv", csvOut);
+        CommandFiles.requireFolder("--chart", pngOut);
+        CommandFiles.requireNotInput("--csv", csvOut, "MESH", mesh);
+        CommandFiles.requireNotInput("--chart", pngOut, "MESH", mesh);
+        CommandFiles.requireNotInput("--chart (its SVG)", ChartFile.svgBeside(pngOut), "MESH", mesh);
         TriangleMesh m = CommandFiles.readMesh(mesh, "tradeoff");
         if (grid > 1) m = ProceduralScenes.grid(m, grid);
         RaySet set = switch (rays.toUpperCase(Locale.ROOT)) {
@@ -90,11 +97,7 @@ final class TradeoffCommand implements Callable<Integer> {
             if (variants.isEmpty()) throw new IllegalArgumentException("no variant named " + only + "; known: "
                     + Variant.all().stream().map(Variant::name).toList());
         }
-        String base = mesh.getFileName().toString().replaceFirst("\\.[^.]*$", "") + (grid > 1 ? "-grid" + grid : "");
-        Path csvOut = csv != null ? csv : Path.of("tradeoff-" + base + ".csv");
-        Path pngOut = chart != null ? chart : Path.of("tradeoff-" + base + ".png");
-        CommandFiles.requireFolder("--csv", csvOut);
-        CommandFiles.requireFolder("--chart", pngOut);
+        StudyFile table = new StudyFile(csvOut);
 
         System.out.printf(Locale.ROOT, "scene: %s (%d triangles), rays: %s x %d, %d run(s), %d build thread(s)%n",
                 base, m.size(), set.name(), set.size(), runs, threads);
@@ -107,13 +110,14 @@ final class TradeoffCommand implements Callable<Integer> {
                 bar.step(i, variants.get(i).name());
                 TradeoffResult r = t.run(variants.get(i));
                 results.add(r);
+                table.progress(Tradeoff.csv(results));
                 bar.print(System.out, String.format(Locale.ROOT,
                         "%-22s %10.1f %10.2f %9d %8.1f %8.1f %9.3f %11.0f %11.0f %11.0f", r.variant(), r.buildMs(),
                         r.expectedCost(), r.nodes(), r.nodesPerRay(), r.testsPerRay(), r.raysPerSecond() / 1e6,
                         r.totalMs(1), r.totalMs(10), r.totalMs(100)));
             }
         }
-        Files.writeString(csvOut, Tradeoff.csv(results));
+        table.finish(Tradeoff.csv(results));
         String caption = ChartFile.caption(String.format(Locale.ROOT, "%s, %,d triangles; %s rays x %,d; median of %d run%s",
                 base, m.size(), set.name(), set.size(), runs, runs == 1 ? "" : "s"), threads);
         TradeoffChart.write(results, base + ": build time vs trace time (" + set.name() + " rays)", chartRaysPerTriangle,

@@ -4,6 +4,7 @@ import java.awt.image.BufferedImage;
 import java.io.IOException;
 import java.nio.file.Path;
 import javax.imageio.ImageIO;
+import org.kdtree.files.AtomicFile;
 
 /** Writes a canvas snapshot as a PNG file. */
 final class PngExport {
@@ -14,10 +15,12 @@ final class PngExport {
      * Writes {@code image} as a PNG file.
      *
      * @param image the picture
-     * @param file the PNG file, replaced if it exists
-     * @throws IOException if writing fails
+     * @param file the PNG file, replaced whole if it exists ({@link AtomicFile})
+     * @throws IOException if writing fails; the file is then left as it was
      */
     public static void write(BufferedImage image, Path file) throws IOException {
-        if (!ImageIO.write(image, "png", file.toFile())) throw new IOException("no PNG writer available");
+        AtomicFile.write(file, out -> {
+            if (!ImageIO.write(image, "png", out)) throw new IOException("no PNG writer available");
+        });
     }
 }

@@ -4,12 +4,11 @@ import java.io.IOException;
 import java.io.Reader;
 import java.io.StringReader;
 import java.io.Writer;
-import java.nio.charset.StandardCharsets;
-import java.nio.file.Files;
 import java.nio.file.Path;
 import java.util.ArrayList;
 import java.util.List;
 import java.util.Locale;
+import org.kdtree.files.AtomicFile;
 import org.kdtree.shape.Shape2D;
 import org.kdtree.shape.Shapes2D;
 
@@ -129,13 +128,11 @@ public final class Scene2DFormat {
      * Writes the shapes to a file in the format {@link #read} accepts.
      *
      * @param scene the shapes
-     * @param file the file, replaced if it exists
-     * @throws IOException if writing fails
+     * @param file the file, replaced whole if it exists ({@link AtomicFile})
+     * @throws IOException if writing fails; the file is then left as it was
      */
     public static void write(Shapes2D scene, Path file) throws IOException {
-        try (Writer w = Files.newBufferedWriter(file, StandardCharsets.UTF_8)) {
-            write(scene, w);
-        }
+        AtomicFile.writeText(file, w -> write(scene, w));
     }
 
     private static String format(double c) {

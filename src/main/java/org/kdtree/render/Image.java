@@ -72,13 +72,16 @@ public final class Image {
     /**
      * Writes the image as PNG.
      *
-     * @param file the PNG file; missing folders are made
-     * @throws java.io.IOException if writing fails
+     * @param file the PNG file, replaced whole if it exists ({@link org.kdtree.files.AtomicFile}); missing folders are made
+     * @throws java.io.IOException if writing fails; the file is then left as it was
      */
     public void writePng(java.nio.file.Path file) throws java.io.IOException {
         java.nio.file.Path parent = file.toAbsolutePath().getParent();
         if (parent != null) java.nio.file.Files.createDirectories(parent);
-        if (!javax.imageio.ImageIO.write(toBufferedImage(), "png", file.toFile()))
-            throw new java.io.IOException(file + ": no PNG writer available");
+        java.awt.image.BufferedImage picture = toBufferedImage();
+        org.kdtree.files.AtomicFile.write(file, out -> {
+            if (!javax.imageio.ImageIO.write(picture, "png", out))
+                throw new java.io.IOException(file + ": no PNG writer available");
+        });
     }
 }

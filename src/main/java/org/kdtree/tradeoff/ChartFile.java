@@ -10,13 +10,12 @@ import java.awt.Graphics2D;
 import java.awt.RenderingHints;
 import java.awt.image.BufferedImage;
 import java.io.IOException;
-import java.io.OutputStream;
-import java.nio.file.Files;
 import java.nio.file.Path;
 import java.time.LocalDate;
 import java.util.List;
 import java.util.Locale;
 import javax.imageio.ImageIO;
+import org.kdtree.files.AtomicFile;
 import org.knowm.xchart.XYChart;
 import org.knowm.xchart.XYChartBuilder;
 import org.knowm.xchart.XYSeries;
@@ -138,6 +137,15 @@ public final class ChartFile {
     }
 
     /**
+     * {@return the SVG file written beside a chart's PNG: the same name, {@code .svg}}
+     *
+     * @param png the chart's PNG file
+     */
+    public static Path svgBeside(Path png) {
+        return png.resolveSibling(png.getFileName().toString().replaceFirst("(?i)\\.png$", "") + ".svg");
+    }
+
+    /**
      * Writes {@code png} and, beside it, the same chart as SVG (same name, {@code .svg}); returns the SVG's path.
      *
      * @param chart   the chart to draw
@@ -155,13 +163,13 @@ public final class ChartFile {
         g.setRenderingHint(RenderingHints.KEY_TEXT_ANTIALIASING, RenderingHints.VALUE_TEXT_ANTIALIAS_ON);
         paint(chart, lines, g);
         g.dispose();
-        if (!ImageIO.write(image, "png", png.toFile())) throw new IOException(png + ": no PNG writer");
-        Path svg = png.resolveSibling(png.getFileName().toString().replaceFirst("(?i)\\.png$", "") + ".svg");
+        AtomicFile.write(png, out -> {
+            if (!ImageIO.write(image, "png", out)) throw new IOException(png + ": no PNG writer");
+        });
+        Path svg = svgBeside(png);
         VectorGraphics2D vg = new VectorGraphics2D();
         paint(chart, lines, vg);
-        try (OutputStream out = Files.newOutputStream(svg)) {
-            Processors.get("svg").getDocument(vg.getCommands(), new PageSize(0, 0, w, h)).writeTo(out);
-        }
+        AtomicFile.write(svg, out -> Processors.get("svg").getDocument(vg.getCommands(), new PageSize(0, 0, w, h)).writeTo(out));
         return svg;
     }
 

@@ -77,6 +77,23 @@ class ArchitectureTest {
         assertThat(found).as("tolerance literals outside geom.Tolerance").isEmpty();
     }
 
+    /**
+     * Files are written one way, whole or not at all ({@code files.AtomicFile}): no other code
+     * opens a file for writing or hands ImageIO a file of its own.
+     */
+    @Test void filesAreWrittenOnlyByAtomicFile() {
+        Pattern writing = Pattern.compile("Files\\.(write|writeString|newBufferedWriter|newOutputStream|copy)\\s*\\("
+                + "|new\\s+(FileOutputStream|FileWriter|RandomAccessFile)\\b|ImageIO\\.write\\s*\\([^;]*toFile\\(\\)"
+                + "|\\b(BitmapEncoder|VectorGraphicsEncoder)\\.");
+        List<String> found = new ArrayList<>();
+        for (Path file : SourceFiles.all()) {
+            if (file.startsWith(SourceFiles.MAIN.resolve("org/kdtree/files"))) continue;
+            Matcher m = writing.matcher(SourceFiles.code(SourceFiles.read(file)));
+            while (m.find()) found.add(file + ": " + m.group());
+        }
+        assertThat(found).as("files written other than by files.AtomicFile").isEmpty();
+    }
+
     /** Cycles in a graph: its strongly connected components of more than one node (Tarjan). */
     static final class Cycles {
         private final Map<String, ? extends Map<String, Integer>> graph;
