@@ -109,11 +109,11 @@ public abstract class KdTreeBuilder {
     private void recConst(Build build, NodeStore store, int d, int c, KdTreeWriter out) {
         BuildNode node = store.view.point(d, c);
         build.watch.node(++store.nodes);
-        if (d >= build.depthCap || callTerminate(build, node)) {
+        if (d >= build.depthCap || BuilderCalls.terminate(this, build, build.watch, node)) {
             store.leaf(d, c, out);
             return;
         }
-        SplitPlane p = checked(callFindPlane(build, node), node);
+        SplitPlane p = BuilderCalls.findPlane(this, build, build.watch, node);
         int outcome = store.split(d, c, p.axis(), p.position(), p.planarLeft(), perfectSplits);
         if (outcome != SplitOutcome.SPLIT) {
             if (outcome == SplitOutcome.OVER_BUDGET) out.budgetLeaf();
@@ -193,48 +193,6 @@ public abstract class KdTreeBuilder {
      * @return the plane to split it with
      */
     protected abstract SplitPlane findPlane(BuildContext context, BuildNode node);
-
-    /** terminate, with whatever it throws named as this builder's fault. */
-    private boolean callTerminate(Build build, BuildNode node) {
-        build.watch.enter(BuildWatch.TERMINATE, node.depth(), node.size());
-        try {
-            return terminate(build, node);
-        } catch (ThreadDeath stopped) {
-            throw stopped; // a supervisor stopped the thread: it has reported why
-        } catch (RuntimeException | Error e) {
-            throw BuilderFaults.threw(this, BuilderFault.TERMINATE, node, e);
-        } finally {
-            build.watch.leave();
-        }
-    }
-
-    /** findPlane, with whatever it throws named as this builder's fault. */
-    private SplitPlane callFindPlane(Build build, BuildNode node) {
-        build.watch.enter(BuildWatch.FIND_PLANE, node.depth(), node.size());
-        try {
-            return findPlane(build, node);
-        } catch (ThreadDeath stopped) {
-            throw stopped; // a supervisor stopped the thread: it has reported why
-        } catch (RuntimeException | Error e) {
-            throw BuilderFaults.threw(this, BuilderFault.FIND_PLANE, node, e);
-        } finally {
-            build.watch.leave();
-        }
-    }
-
-    /** The plane findPlane returned, if the recursion can use it; else this builder's fault. */
-    private SplitPlane checked(SplitPlane p, BuildNode node) {
-        if (p == null) throw BuilderFaults.badPlane(this, node, "returned null",
-                "return a plane for every node that terminate does not make a leaf");
-        if (p.axis() >= node.dimension()) throw BuilderFaults.badPlane(this, node, "chose axis " + p.axis() + " in "
-                + node.dimension() + "-D", "the axis must be 0 .. " + (node.dimension() - 1));
-        int k = node.dimension(), at = 2 * k * node.child() + p.axis();
-        double[] v = node.store().voxel(node.depth());
-        if (p.position() < v[at] || p.position() > v[at + k])
-            throw BuilderFaults.badPlane(this, node, "chose x" + p.axis() + " = " + p.position() + ", outside the voxel " + node.voxel(),
-                    "findPlane must return a plane on one of the node's axes, inside its voxel");
-        return p;
-    }
 
     private static Box rootVoxel(Primitives primitives) {
         int k = primitives.dimension();
