@@ -79,6 +79,7 @@ public final class ClassGradeCommand implements Callable<Integer> {
         ExecutorService pool = Executors.newFixedThreadPool(n);
         AtomicInteger done = new AtomicInteger();
         try (ProgressBar bar = progress.bar(jars.size(), "students")) {
+            bar.step(0, n + " at once"); // drawn now, so that the first minute shows the time too
             List<Future<StudentRow>> running = new ArrayList<>();
             for (Path jar : jars) running.add(pool.submit(() -> {
                 StudentRow r = jvm.grade(jar);

@@ -67,11 +67,10 @@ record StudentJvm(Deadlines deadlines, double seconds, int heapMb) {
 
     /** The child's command line: this JVM's java, the library's class path, the student's jar and nothing else. */
     private List<String> command(Path jar, Path csv) {
-        List<String> c = new ArrayList<>(List.of(Path.of(System.getProperty("java.home"), "bin", "java").toString(),
+        return List.of(Path.of(System.getProperty("java.home"), "bin", "java").toString(),
                 "-Xmx" + heapMb + "m", "-Djava.awt.headless=true", "-cp", classPath(), Main.class.getName(), "grade",
                 "--student-jar", jar.toAbsolutePath().toString(), "-o", csv.toString(), "--quiet",
-                "--call-deadline", Double.toString(deadlines.callSeconds()), "--build-deadline", Double.toString(deadlines.buildSeconds())));
-        return c;
+                "--call-deadline", Double.toString(deadlines.callSeconds()), "--build-deadline", Double.toString(deadlines.buildSeconds()));
     }
 
     /**
