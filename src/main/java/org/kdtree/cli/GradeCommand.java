@@ -36,9 +36,13 @@ public final class GradeCommand implements Callable<Integer> {
     /** The built-ins a student's builder is measured against. */
     static final List<String> BUILT_INS = List.of("median-plane", "object-median", "sah");
 
-    @Option(names = {"-b", "--builder"}, required = true, paramLabel = "NAME",
+    @Option(names = {"-b", "--builder"}, paramLabel = "NAME",
             description = "The builder to grade: a registered name (a jar on the class path, or --plugin my.jar).")
     String builder;
+
+    /** {@code grade-class}'s child: the one student's jar, whose one builder is graded (no other jar is loaded). */
+    @Option(names = "--student-jar", hidden = true, paramLabel = "JAR")
+    Path studentJar;
 
     @Option(names = {"-o", "--output"}, paramLabel = "FILE", description = "Also write the report: .md (Markdown) or .csv.")
     Path output;
@@ -65,6 +69,8 @@ public final class GradeCommand implements Callable<Integer> {
     private String stopped;
 
     @Override public Integer call() throws IOException {
+        if (studentJar != null) builder = onlyBuilder(studentJar);
+        if (builder == null) throw new IllegalArgumentException("grade needs --builder NAME (a folder of students' jars: grade-class FOLDER)");
         Builders.create(builder); // an unknown name fails here, naming the known ones
         if (output != null) {
             String n = output.getFileName().toString().toLowerCase(Locale.ROOT);
@@ -94,6 +100,15 @@ public final class GradeCommand implements Callable<Integer> {
             System.out.println("report: " + output);
         }
         return correct ? 0 : 1;
+    }
+
+    /** The name of the one builder a student's jar lists; a jar with none or several is refused in one line. */
+    private static String onlyBuilder(Path jar) {
+        List<String> names = Builders.loadPlugins(jar);
+        if (names.size() != 1)
+            throw new IllegalArgumentException(jar.getFileName() + " lists " + names.size() + " builders (" + String.join(", ", names)
+                    + "); a student's jar lists one");
+        return names.get(0);
     }
 
     /** Runs one case, unless the builder already hung or was too slow: then it is listed as not run, pointing at that finding. */

@@ -12,7 +12,7 @@ import picocli.CommandLine.Option;
 @Command(name = "kdtree", mixinStandardHelpOptions = true, version = "kdtree 0.1",
         description = "k-d trees for ray tracing: build, inspect, trace, render; nearest neighbours of points.",
         subcommands = {GuiCommand.class, StatsCommand.class, RaycastCommand.class, RenderCommand.class, TradeoffCommand.class,
-                KnnCommand.class, KnnStudyCommand.class, GradeCommand.class},
+                KnnCommand.class, KnnStudyCommand.class, GradeCommand.class, ClassGradeCommand.class},
         footer = {"", "Exit codes: 0 done; 1 grade: the builder breaks the contract; 2 a mistake in the command or a file;",
                 "3 out of memory; 4 a builder's own fault (a plug-in's: it threw, answered with an impossible plane,",
                 "hung or was slow: the line names it, the method and the node); 70 a bug of ours (a report file is named)."})

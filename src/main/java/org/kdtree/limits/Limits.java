@@ -35,6 +35,17 @@ public final class Limits {
     public static final Limit CALL_DEADLINE = Limit.real("call deadline", 0.1, 3600).noting("seconds");
     /** How long one supervised build may take before it is reported as slow ({@link Deadlines}). */
     public static final Limit BUILD_DEADLINE = Limit.real("build deadline", 0.1, 86_400).noting("seconds");
+    /** How long one student's whole grade, in a JVM of its own, may take before that JVM is killed ({@code grade-class}). */
+    public static final Limit STUDENT_DEADLINE = Limit.real("student deadline", 1, 86_400).noting("seconds");
+    /** The heap of one student's grading JVM ({@code grade-class}): a builder that allocates without bound stops there. */
+    public static final Limit STUDENT_HEAP = Limit.whole("student heap", 64, 65_536).noting("MB");
+    /**
+     * {@code grade-class}'s default student deadline, in seconds: a grade takes a sound builder
+     * seconds, and a hung one at most the contract's 10 s call deadline plus the quality builds'.
+     */
+    public static final double STUDENT_SECONDS = 300;
+    /** {@code grade-class}'s default heap per student, in MB: the course scenes need far less. */
+    public static final int STUDENT_HEAP_MB = 512;
 
     // Rendering.
     /** Image width and height, in pixels. */
@@ -93,7 +104,7 @@ public final class Limits {
 
     /** All of them, in the order of docs/limits.md. */
     public static final List<Limit> ALL = List.of(THREADS, MAX_DEPTH, DEPTH_FACTOR, REFERENCE_BUDGET, KT, KI, LAMBDA,
-            MIN_PRIMITIVES, BINS, EXACT_BELOW, LEAF_SIZE, CALL_DEADLINE, BUILD_DEADLINE, IMAGE_SIDE, SAMPLES_PER_PIXEL, RAY_DEPTH, LIGHT_SAMPLES, PREVIEW_WIDTH,
+            MIN_PRIMITIVES, BINS, EXACT_BELOW, LEAF_SIZE, CALL_DEADLINE, BUILD_DEADLINE, STUDENT_DEADLINE, STUDENT_HEAP, IMAGE_SIDE, SAMPLES_PER_PIXEL, RAY_DEPTH, LIGHT_SAMPLES, PREVIEW_WIDTH,
             SPHERE_SEGMENTS, SPHERE_RINGS, FLAKE_LEVELS,
             RUNS, WARMUP, GRID, RAY_COUNT, RAYS_PER_TRIANGLE,
             NEIGHBOURS, LEAF_BUDGET, EPSILON, POINT_COUNT, QUERY_COUNT, DIMENSION, SCENE_OBJECTS, STEPPER_K, BALLS);

@@ -1,0 +1,128 @@
+package org.kdtree.cli;
+
+import java.io.IOException;
+import java.nio.file.Files;
+import java.nio.file.Path;
+import java.util.ArrayList;
+import java.util.List;
+import java.util.Locale;
+import java.util.concurrent.Callable;
+import java.util.concurrent.ExecutionException;
+import java.util.concurrent.ExecutorService;
+import java.util.concurrent.Executors;
+import java.util.concurrent.Future;
+import java.util.concurrent.atomic.AtomicInteger;
+import org.kdtree.check.CourseScenes;
+import org.kdtree.files.AtomicFile;
+import org.kdtree.limits.Deadlines;
+import org.kdtree.limits.Limits;
+import picocli.CommandLine.Command;
+import picocli.CommandLine.Mixin;
+import picocli.CommandLine.Option;
+import picocli.CommandLine.Parameters;
+
+/**
+ * {@code grade-class FOLDER}: every jar of a folder graded as {@code grade} grades one builder,
+ * each in a JVM of its own (see {@link StudentJvm}), several at once, into one table.
+ */
+@Command(name = "grade-class", mixinStandardHelpOptions = true,
+        description = {"Grade a class: every .jar in FOLDER graded alone in a JVM of its own (a hang, System.exit or "
+                + "unbounded allocation ends only that student's run), several at once, into one table (CSV and Markdown): "
+                + "one row per jar, failures first.",
+                "Exit code 0 once the table is written, whatever the verdicts."})
+public final class ClassGradeCommand implements Callable<Integer> {
+    @Parameters(paramLabel = "FOLDER", description = "The students' jars (every .jar file in it; other files are not looked at).")
+    Path folder;
+
+    @Option(names = "--csv", paramLabel = "FILE", defaultValue = "class-grades.csv", description = "The table as CSV (default: ${DEFAULT-VALUE}).")
+    Path csv;
+
+    @Option(names = "--markdown", paramLabel = "FILE", defaultValue = "class-grades.md",
+            description = "The table as Markdown, with how many of each verdict (default: ${DEFAULT-VALUE}).")
+    Path markdown;
+
+    @Option(names = {"-j", "--jobs"}, paramLabel = "N",
+            description = "Students graded at once (default: the cores, fewer if memory is short for that many heaps).")
+    Integer jobs;
+
+    @Option(names = "--student-deadline", paramLabel = "SECONDS",
+            description = "A student's JVM still running after this is killed (default: 300; 1..86400).")
+    Double studentSeconds;
+
+    @Option(names = "--student-heap", paramLabel = "MB", description = "Each student's JVM's heap, -Xmx (default: 512; 64..65536).")
+    Integer heapMb;
+
+    @Mixin
+    ProgressOption progress;
+
+    @Mixin
+    DeadlineOptions deadlines;
+
+    @Override public Integer call() throws IOException, InterruptedException {
+        List<Path> jars = jars();
+        for (Path out : List.of(csv, markdown)) CommandFiles.requireFolder(out == csv ? "--csv" : "--markdown", out);
+        StudentJvm jvm = new StudentJvm(deadlines.deadlines(Deadlines.GRADE), seconds(), heap());
+        int n = jobs == null ? defaultJobs(jvm.heapMb()) : jobs;
+        Limits.THREADS.check("--jobs", n);
+        long t0 = System.nanoTime();
+        List<StudentRow> rows = gradeAll(jars, jvm, n);
+        ClassTable table = new ClassTable(rows, CourseScenes.all().stream().map(CourseScenes.Named::name).toList());
+        AtomicFile.writeString(csv, table.csv());
+        AtomicFile.writeString(markdown, table.markdown());
+        System.out.print(table.markdown());
+        System.out.printf(Locale.ROOT, "%ngraded in %.0f s, %d at once; table: %s, %s%n", (System.nanoTime() - t0) / 1e9, n, csv, markdown);
+        return 0;
+    }
+
+    /** Every student at once up to {@code n}, each on a thread that waits for its JVM; the bar counts those done. */
+    private List<StudentRow> gradeAll(List<Path> jars, StudentJvm jvm, int n) throws InterruptedException {
+        ExecutorService pool = Executors.newFixedThreadPool(n);
+        AtomicInteger done = new AtomicInteger();
+        try (ProgressBar bar = progress.bar(jars.size(), "students")) {
+            bar.step(0, n + " at once"); // drawn now, so that the first minute shows the time too
+            List<Future<StudentRow>> running = new ArrayList<>();
+            for (Path jar : jars) running.add(pool.submit(() -> {
+                StudentRow r = jvm.grade(jar);
+                bar.update(done.incrementAndGet());
+                return r;
+            }));
+            List<StudentRow> rows = new ArrayList<>();
+            for (Future<StudentRow> f : running) rows.add(f.get());
+            return rows;
+        } catch (ExecutionException e) {
+            throw new IllegalStateException("grading a student failed: " + e.getCause(), e.getCause());
+        } finally {
+            pool.shutdownNow();
+        }
+    }
+
+    private List<Path> jars() throws IOException {
+        if (!Files.isDirectory(folder)) throw new IllegalArgumentException("grade-class " + folder + ": no such folder");
+        try (var files = Files.list(folder)) {
+            List<Path> jars = files.filter(f -> f.getFileName().toString().toLowerCase(Locale.ROOT).endsWith(".jar")).sorted().toList();
+            if (jars.isEmpty()) throw new IllegalArgumentException("grade-class " + folder + ": the folder holds no .jar");
+            return jars;
+        }
+    }
+
+    private double seconds() {
+        if (studentSeconds == null) return Limits.STUDENT_SECONDS;
+        Limits.STUDENT_DEADLINE.check("--student-deadline", studentSeconds);
+        return studentSeconds;
+    }
+
+    private int heap() {
+        if (heapMb == null) return Limits.STUDENT_HEAP_MB;
+        Limits.STUDENT_HEAP.check("--student-heap", heapMb);
+        return heapMb;
+    }
+
+    /** The cores, but no more heaps than half the machine's memory holds (the rest: the JVMs' own, the system's). */
+    static int defaultJobs(int heapMb) {
+        int cores = Runtime.getRuntime().availableProcessors();
+        if (!(java.lang.management.ManagementFactory.getOperatingSystemMXBean() instanceof com.sun.management.OperatingSystemMXBean os))
+            return cores;
+        long fit = os.getTotalMemorySize() / 2 / ((long) heapMb << 20);
+        return (int) Math.max(1, Math.min(cores, fit));
+    }
+}
