@@ -37,7 +37,8 @@ public final class BuilderOptions {
             + "balanced (8 + 1.0 log2 N), exact (the default tree); --algorithm and --max-depth, if given, override it.")
     Quality quality;
 
-    @Option(names = "--algorithm", description = "SAH plane search: ${COMPLETION-CANDIDATES} (same tree, different time).")
+    @Option(names = "--algorithm", description = "SAH plane search: ${COMPLETION-CANDIDATES}. NAIVE, SORTED and EVENT build the same tree "
+            + "in different times; BINNED builds another (planes at bin boundaries only, see --bins).")
     SahBuilder.Algorithm algorithm;
 
     @Option(names = "--bins", description = "Bins per axis for --algorithm BINNED (default 32).")
