@@ -108,7 +108,7 @@ public final class ChartFile {
         if (step.signum() <= 0) return out;
         java.math.BigDecimal v = java.math.BigDecimal.valueOf(lo).divide(step, 0, java.math.RoundingMode.CEILING).multiply(step);
         for (; v.doubleValue() <= hi; v = v.add(step))
-            if (Math.abs(Math.log10(v.doubleValue()) % 1) > 1e-12) out.add(v.doubleValue());
+            if (!v.stripTrailingZeros().unscaledValue().equals(java.math.BigInteger.ONE)) out.add(v.doubleValue());
         return out;
     }
 
@@ -122,7 +122,12 @@ public final class ChartFile {
 
     /** How many powers of ten lie within {@code [lo, hi]}: the ticks XChart labels itself. */
     private static int decadesWithin(double lo, double hi) {
-        return (int) Math.max(0, Math.floor(Math.log10(hi) + 1e-12) - Math.ceil(Math.log10(lo) - 1e-12) + 1);
+        int n = 0;
+        for (long e = (long) Math.floor(Math.log10(lo)) - 1; e <= (long) Math.ceil(Math.log10(hi)) + 1; e++) {
+            double decade = Double.parseDouble("1e" + e);   // exact decimal, as the ticks
+            if (decade >= lo && decade <= hi) n++;
+        }
+        return n;
     }
 
     /**
