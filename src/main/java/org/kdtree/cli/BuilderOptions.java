@@ -26,7 +26,7 @@ public final class BuilderOptions {
     Integer maxDepth;
 
     @Option(names = "--reference-budget", paramLabel = "B",
-            description = "At most B references per primitive in the tree, 1..65536 (default 256): "
+            description = "At most B references per primitive in the tree, 1 to 65536 (default 256): "
                     + "where overlapping geometry would need more, nodes become leaves early and the output says so.")
     Integer referenceBudget;
 
@@ -50,7 +50,7 @@ public final class BuilderOptions {
     @Option(names = "--no-perfect-splits", description = "Use bounding boxes instead of exact clipping.")
     boolean noPerfectSplits;
 
-    @Option(names = "--leaf-size", description = "Largest leaf of the sliding-midpoint builder, 1..65536 (default 16).")
+    @Option(names = "--leaf-size", description = "Largest leaf of the sliding-midpoint builder, 1 to 65536 (default 16).")
     Integer leafSize;
 
     /**

@@ -17,6 +17,8 @@ class HelpTextTest {
             assertThat(r.out()).as(c).startsWith("Usage: kdtree " + c);
             for (String line : r.out().split("\\R"))
                 assertThat(line.length()).as("%s --help: %s", c, line).isLessThanOrEqualTo(80);
+            assertThat(r.out()).as("%s --help: a number broken across lines (\"1..\" then \"65536\")", c)
+                    .doesNotContainPattern("\\d\\.*\\R\\s*\\d");
         }
     }
 
