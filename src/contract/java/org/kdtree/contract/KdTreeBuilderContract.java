@@ -1,6 +1,8 @@
 package org.kdtree.contract;
 
+import java.util.Map;
 import java.util.ServiceLoader;
+import java.util.concurrent.ConcurrentHashMap;
 import java.util.concurrent.atomic.AtomicInteger;
 import java.util.stream.Stream;
 import net.jqwik.api.ForAll;
@@ -11,6 +13,7 @@ import org.junit.jupiter.api.DynamicTest;
 import org.junit.jupiter.api.Test;
 import org.junit.jupiter.api.TestFactory;
 import org.junit.platform.engine.TestEngine;
+import org.kdtree.build.BuilderFault;
 import org.kdtree.build.KdTreeBuilder;
 import org.kdtree.check.Contract;
 import org.kdtree.check.ContractViolation;
@@ -29,9 +32,16 @@ import org.kdtree.check.ContractViolation;
  *
  * A run without jqwik's engine would skip the two properties without a word; the test
  * {@code propertyEngineIsPresent} fails it instead.
+ *
+ * <p>A builder that hangs (a call of {@code terminate} or {@code findPlane} that does not return
+ * within its deadline) or crawls fails the check where it did so, once; every check after it, in
+ * the same run, fails at once pointing at that one, instead of waiting out a deadline of its own.
  */
 public abstract class KdTreeBuilderContract {
     private static final AtomicInteger TRIES = new AtomicInteger();
+
+    /** Per builder class, the first hang or crawl found in this run, and where: the checks after it are not run. */
+    private static final Map<Class<?>, String> HALTED = new ConcurrentHashMap<>();
 
     /** {@return a new builder with the settings under test} */
     protected abstract KdTreeBuilder newBuilder();
@@ -39,7 +49,7 @@ public abstract class KdTreeBuilderContract {
     /** {@return one test per case of the contract} */
     @TestFactory
     Stream<DynamicTest> contract() {
-        return Contract.cases().stream().map(c -> DynamicTest.dynamicTest(c.name(), () -> c.run(this::newBuilder)));
+        return Contract.cases().stream().map(c -> DynamicTest.dynamicTest(c.name(), () -> guarded(c.name(), () -> c.run(this::newBuilder))));
     }
 
     /** The two properties below run only if jqwik's engine is on the test class path: fail, not skip, if it is not. */
@@ -59,7 +69,7 @@ public abstract class KdTreeBuilderContract {
     @Property(tries = Contract.RANDOM_2D_TRIES)
     void anyRandom2DScene(@ForAll @IntRange(min = 0, max = 60) int n, @ForAll long seed) {
         TRIES.incrementAndGet();
-        Contract.anyRandom2DScene(newBuilder(), n, seed);
+        guarded("any random 2-D scene", () -> Contract.anyRandom2DScene(newBuilder(), n, seed));
     }
 
     /**
@@ -70,7 +80,26 @@ public abstract class KdTreeBuilderContract {
     @Property(tries = Contract.RANDOM_TRIANGLE_TRIES)
     void anyRandomTriangleSoup(@ForAll @IntRange(min = 0, max = 80) int n, @ForAll long seed) {
         TRIES.incrementAndGet();
-        Contract.anyRandomTriangleSoup(newBuilder(), n, seed);
+        guarded("any random triangle soup", () -> Contract.anyRandomTriangleSoup(newBuilder(), n, seed));
+    }
+
+    /**
+     * Runs one check of the builder, unless it already hung or crawled in this run: then it fails
+     * at once, naming that finding; a hang or crawl found here is remembered for the checks after.
+     */
+    private void guarded(String check, Runnable run) {
+        Class<?> type = newBuilder().getClass();
+        String earlier = HALTED.get(type);
+        if (earlier != null) throw new ContractViolation("not run: " + earlier);
+        try {
+            run.run();
+        } catch (RuntimeException | AssertionError e) {
+            for (Throwable t = e; t != null; t = t.getCause())
+                if (t instanceof BuilderFault f && (f.kind() == BuilderFault.Kind.HUNG || f.kind() == BuilderFault.Kind.SLOW))
+                    HALTED.putIfAbsent(type, "builder " + f.builder() + (f.kind() == BuilderFault.Kind.HUNG
+                            ? " hung in " + f.method() : " is too slow") + " (see the check '" + check + "')");
+            throw e;
+        }
     }
 
     /** Says how many property tries ran, so that a run whose properties were skipped shows it. */

@@ -26,7 +26,7 @@ public final class BuilderOptions {
     Integer maxDepth;
 
     @Option(names = "--reference-budget", paramLabel = "B",
-            description = "At most B references per primitive in the tree, 1..65536 (default 256): "
+            description = "At most B references per primitive in the tree, 1 to 65536 (default 256): "
                     + "where overlapping geometry would need more, nodes become leaves early and the output says so.")
     Integer referenceBudget;
 
@@ -37,7 +37,8 @@ public final class BuilderOptions {
             + "balanced (8 + 1.0 log2 N), exact (the default tree); --algorithm and --max-depth, if given, override it.")
     Quality quality;
 
-    @Option(names = "--algorithm", description = "SAH plane search: ${COMPLETION-CANDIDATES} (same tree, different time).")
+    @Option(names = "--algorithm", description = "SAH plane search: ${COMPLETION-CANDIDATES}. NAIVE, SORTED and EVENT build the same tree "
+            + "in different times; BINNED builds another (planes at bin boundaries only, see --bins).")
     SahBuilder.Algorithm algorithm;
 
     @Option(names = "--bins", description = "Bins per axis for --algorithm BINNED (default 32).")
@@ -49,7 +50,7 @@ public final class BuilderOptions {
     @Option(names = "--no-perfect-splits", description = "Use bounding boxes instead of exact clipping.")
     boolean noPerfectSplits;
 
-    @Option(names = "--leaf-size", description = "Largest leaf of the sliding-midpoint builder, 1..65536 (default 16).")
+    @Option(names = "--leaf-size", description = "Largest leaf of the sliding-midpoint builder, 1 to 65536 (default 16).")
     Integer leafSize;
 
     /**

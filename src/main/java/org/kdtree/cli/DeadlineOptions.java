@@ -19,7 +19,7 @@ final class DeadlineOptions {
 
     @Option(names = "--build-deadline", paramLabel = "SECONDS",
             description = "A plug-in builder's build that takes longer is stopped and reported as slow "
-                    + "(default: 600, grade: 30; 0.1..86400).")
+                    + "(default: 600, grade: 30; 0.1 to 86400).")
     Double build;
 
     /** {@return the deadlines given, each checked against its limit, or {@code defaults}' where not given} */

@@ -30,10 +30,10 @@ import picocli.CommandLine.Parameters;
  * kd-tree search stops beating brute force. See docs/points.md, "What accuracy costs".
  */
 @Command(name = "knn-study", mixinStandardHelpOptions = true,
-        description = {"What accuracy costs for k nearest neighbours: for each best-bin-first",
-                "budget (leaves scanned) and each epsilon, the recall at k (the fraction of",
-                "the true k nearest found, against brute force) and the queries per second,",
-                "with the exact kd-tree search and brute force as references.",
+        description = {"What accuracy costs for k nearest neighbours: recall against queries per second.",
+                "For each best-bin-first budget (leaves scanned) and each epsilon, the recall at k (the fraction of "
+                        + "the true k nearest found, against brute force) and the queries per second, "
+                        + "with the exact kd-tree search and brute force as references.",
                 "Data: POINTS and --queries files (CSV, as for knn), or --generate.",
                 "With --dimensions: the exact search against brute force on generated data",
                 "at each dimension, where kd-trees stop helping.",

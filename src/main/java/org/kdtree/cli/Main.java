@@ -13,9 +13,11 @@ import picocli.CommandLine.Option;
         description = "k-d trees for ray tracing: build, inspect, trace, render; nearest neighbours of points.",
         subcommands = {GuiCommand.class, StatsCommand.class, RaycastCommand.class, RenderCommand.class, TradeoffCommand.class,
                 KnnCommand.class, KnnStudyCommand.class, GradeCommand.class, ClassGradeCommand.class},
-        footer = {"", "Exit codes: 0 done; 1 grade: the builder breaks the contract; 2 a mistake in the command or a file;",
-                "3 out of memory; 4 a builder's own fault (a plug-in's: it threw, answered with an impossible plane,",
-                "hung or was slow: the line names it, the method and the node); 70 a bug of ours (a report file is named)."})
+        footer = {"", "Exit codes: 0 done; 1 grade: the builder breaks the contract;",
+                "2 a mistake in the command or a file; 3 out of memory;",
+                "4 a builder's own fault (a plug-in's: it threw, answered with an impossible",
+                "  plane, hung or was slow: the line names it, the method and the node);",
+                "70 a bug of ours (a report file is named)."})
 public final class Main implements Runnable {
     /** Read before picocli parses (see {@link #loadPlugins}); declared here for the usage text. */
     @Option(names = "--plugin", paramLabel = "JAR|FOLDER",

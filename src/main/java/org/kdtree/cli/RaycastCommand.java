@@ -65,8 +65,8 @@ final class RaycastCommand implements Callable<Integer> {
     @Option(names = "--warmup", defaultValue = "2", description = "Untimed runs first (default: ${DEFAULT-VALUE}).")
     int warmup;
 
-    @Option(names = "--verify", hidden = true, paramLabel = "STRIDE",
-            description = "Also trace every STRIDE-th ray of each set by brute force and compare (stderr).")
+    @Option(names = "--verify", paramLabel = "STRIDE",
+            description = "Also trace every STRIDE-th ray of each set by brute force and compare (stderr; slow by design).")
     int verifyStride;
 
     @Mixin

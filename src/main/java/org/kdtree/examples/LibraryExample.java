@@ -4,6 +4,7 @@ import java.nio.file.Path;
 import org.kdtree.build.Quality;
 import org.kdtree.build.SahBuilder;
 import org.kdtree.geom.Ray;
+import org.kdtree.io.BundledScenes;
 import org.kdtree.io.ObjMeshReader;
 import org.kdtree.shape.TriangleMesh;
 import org.kdtree.traverse.Hit;
@@ -11,10 +12,7 @@ import org.kdtree.traverse.Traverser;
 import org.kdtree.traverse.TriangleIntersector;
 import org.kdtree.tree.KdTree;
 
-/**
- * The library used from code, as the README shows it: load a mesh, build a tree, trace a ray,
- * read the statistics. {@code java -cp target/kdtree.jar org.kdtree.examples.LibraryExample scenes/clustered-spheres.obj}
- */
+/** Loads a mesh (an OBJ file, or by default a bundled scene), builds a tree, traces a ray, prints the statistics. */
 public final class LibraryExample {
     private LibraryExample() {
     }
@@ -22,11 +20,12 @@ public final class LibraryExample {
     /**
      * Runs the example.
      *
-     * @param args an optional OBJ file (default {@code scenes/clustered-spheres.obj})
+     * @param args an optional OBJ file or bundled scene (default {@code scenes:clustered-spheres})
      * @throws Exception if the mesh cannot be read
      */
     public static void main(String[] args) throws Exception {
-        TriangleMesh mesh = ObjMeshReader.read(Path.of(args.length > 0 ? args[0] : "scenes/clustered-spheres.obj"));
+        Path file = BundledScenes.resolve(args.length > 0 ? args[0] : "scenes:clustered-spheres");  // any folder
+        TriangleMesh mesh = ObjMeshReader.read(file);
         KdTree tree = new SahBuilder().quality(Quality.EXACT).build(mesh);                 // Kt 15, Ki 20, lambda 0.8
         Traverser rays = new Traverser(tree, new TriangleIntersector(mesh));              // one per thread
         double[] aim = new double[3];                                                       // triangle 0's centre

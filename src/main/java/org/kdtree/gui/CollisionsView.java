@@ -9,6 +9,7 @@ import java.awt.Graphics2D;
 import java.awt.RenderingHints;
 import java.awt.event.HierarchyEvent;
 import java.awt.geom.Ellipse2D;
+import java.awt.geom.Rectangle2D;
 import java.awt.image.BufferedImage;
 import java.util.Locale;
 import java.util.Random;
@@ -44,7 +45,7 @@ final class CollisionsView extends JPanel {
     /** Ball radius as a fraction of the scene's extent. */
     private static final double RADIUS = 0.005;
     /** How far above the scene balls start, in scene extents (the first drop is spread over it). */
-    private static final double DROP_HEIGHT = 0.6;
+    private static final double DROP_HEIGHT = 0.25;
 
     /** The model whose scene and tree the balls collide with. */
     private final WorkbenchModel model;
@@ -181,6 +182,35 @@ final class CollisionsView extends JPanel {
         sim.place(i, x, y, 0, 0);
     }
 
+    /**
+     * The scene's box and the room above it where balls start: a ball never rises above its start
+     * (bounces lose energy), so every ball stays in the picture; at the sides and below, as far as
+     * a ball goes before it is dropped again.
+     */
+    private Box shown() {
+        double side = 0.05 * extent + RADIUS * extent;
+        return Box.of2(simBox.min(0) - side, simBox.min(1) - side, simBox.max(0) + side,
+                simBox.max(1) + (3 * RADIUS + DROP_HEIGHT) * extent);
+    }
+
+    /**
+     * {@return the balls' union on screen, in the arena's pixels} (empty before the first drop):
+     * what a test checks against the arena's size.
+     */
+    Rectangle2D ballsOnScreen() {
+        Rectangle2D all = new Rectangle2D.Double();
+        for (int i = 0; sim != null && i < sim.balls(); i++) {
+            double r = Math.max(1.5, sim.radius(i) * arena.view.scale());
+            Rectangle2D one = new Rectangle2D.Double(
+                    arena.view.screenX(sim.x(i)) - r, arena.view.screenY(sim.y(i)) - r, 2 * r, 2 * r);
+            if (i == 0) all = one; else all.add(one);
+        }
+        return all;
+    }
+
+    /** {@return the component the scene and balls are drawn on} */
+    JComponent arena() { return arena; }
+
     private void frame() {
         if (sim == null) return;
         sim.step(FRAME_SECONDS);
@@ -232,9 +262,7 @@ final class CollisionsView extends JPanel {
                 return;
             }
             if (base == null || base.getWidth() != w || base.getHeight() != h) {
-                Box shown = simBox.copy();
-                shown.setMax(1, simBox.max(1) + 0.12 * extent);   // room to see the balls come in
-                view.fit(shown, w, h);
+                view.fit(shown(), w, h);
                 base = new BufferedImage(w, h, BufferedImage.TYPE_INT_RGB);
                 Graphics2D bg = base.createGraphics();
                 TreePainter.paint(bg, w, h, simScene, simTree, view, TreePainter.Options.PLAIN);

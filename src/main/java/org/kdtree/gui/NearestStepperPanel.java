@@ -224,7 +224,7 @@ final class NearestStepperPanel extends JPanel implements CanvasOverlay {
 
     @Override public void paint(Graphics2D g, ViewTransform v) {
         double[] q = model.query();
-        if (q == null || trace.size() == 0 || voxelsOf != model.tree()) return;
+        if (q == null || !isVisible() || trace.size() == 0 || voxelsOf != model.tree()) return;   // hidden tab: not drawn
         NearestTrace.Step s = trace.step(controls.index());
         for (int n = entered.nextSetBit(0); n >= 0; n = entered.nextSetBit(n + 1))
             if (model.tree().isLeaf(n)) fill(g, v, n, ENTERED);

@@ -175,7 +175,7 @@ final class StepperPanel extends JPanel implements CanvasOverlay {
 
     @Override public void paint(Graphics2D g, ViewTransform v) {
         double[] ray = model.ray();
-        if (ray == null) return;
+        if (ray == null || !isVisible()) return;   // another stepper's tab is up: its drawing alone
         KdTree tree = model.tree();
         double tEnd = rayEnd(tree.bounds(), ray);
         g.setColor(Palette.RAY);

@@ -81,6 +81,10 @@ public final class View3D extends JPanel {
 
     /** The thread building or rendering, or null. */
     private Thread running;
+    /** Image and statistics side by side; widened for the statistics when a line would be cut. */
+    private JSplitPane split;
+    /** Whether the view has been shown: the first showing renders the chosen scene unasked. */
+    private boolean shownOnce;
 
     /**
      * A view rendering the bundled 3-D scenes and those of {@code scenesDir}, if it exists.
@@ -131,7 +135,7 @@ public final class View3D extends JPanel {
         text.setBorder(BorderFactory.createTitledBorder("Statistics"));
         JScrollPane pic = new JScrollPane(picture);
         pic.setBorder(BorderFactory.createTitledBorder("Image"));
-        JSplitPane split = new JSplitPane(JSplitPane.HORIZONTAL_SPLIT, pic, text);
+        split = new JSplitPane(JSplitPane.HORIZONTAL_SPLIT, pic, text);
         split.setResizeWeight(0.7);   // the image gets most of the room; the statistics are a narrow column
         add(split, BorderLayout.CENTER);
         for (String f : BundledScenes.FILES) if (is3D(f)) offer(f, BundledScenes.path(f));
@@ -139,6 +143,14 @@ public final class View3D extends JPanel {
         scene.addActionListener(e -> build.setText(isJson((String) scene.getSelectedItem()) ? "Render" : "Build"));
         build.addActionListener(e -> build());
         stop.addActionListener(e -> cancelled = true);
+        addHierarchyListener(e -> renderOnFirstShow());
+    }
+
+    /** A tab first opened starts rendering at once, rather than showing a grey, empty image until Render. */
+    private void renderOnFirstShow() {
+        if (shownOnce || !isShowing()) return;
+        shownOnce = true;
+        SwingUtilities.invokeLater(this::build);   // after the tab is laid out
     }
 
     /** The JSON scenes, then the .obj meshes of {@code dir}, by name. */
@@ -240,10 +252,20 @@ public final class View3D extends JPanel {
         running = null;
         output.setText(text);
         output.setCaretPosition(0);
+        widenForStatistics();
         status.setText((cancelled ? "stopped " : text.startsWith("cannot ") ? "failed: " : "done: ") + name);
         build.setEnabled(true);
         stop.setEnabled(false);
         picture.repaint();
+    }
+
+    /** Moves the divider left so the statistics' longest line shows whole, leaving the image at least a third. */
+    private void widenForStatistics() {
+        JScrollPane text = (JScrollPane) split.getRightComponent();   // its preferred width is 30 columns, not the text's
+        java.awt.Insets in = text.getInsets();
+        int need = output.getPreferredSize().width + in.left + in.right + text.getVerticalScrollBar().getPreferredSize().width;
+        if (split.getWidth() <= 0 || text.getWidth() >= need) return;
+        split.setDividerLocation(Math.max(split.getWidth() / 3, split.getWidth() - split.getDividerSize() - need));
     }
 
     private String statistics(Path file, KdTreeBuilder b) throws IOException {

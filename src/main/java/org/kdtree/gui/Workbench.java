@@ -158,6 +158,7 @@ public final class Workbench extends JFrame {
         JPanel tab = new JPanel(new BorderLayout());
         tab.add(split, BorderLayout.CENTER);
         steppers.setName("steppers");
+        steppers.addChangeListener(e -> canvas.repaint());   // only the shown stepper draws over the tree
         steppers.addTab("Ray traversal", stepper);
         steppers.setMnemonicAt(0, KeyEvent.VK_Y);
         steppers.setToolTipTextAt(0, "Step through the cast ray's traversal (Algorithm 2); casting a ray shows it (Alt+Y)");

@@ -72,21 +72,62 @@ public final class ChartFile {
     }
 
     /**
-     * The values 2 and 5 times a power of ten within {@code [lo, hi]}, where a log axis gets extra labelled ticks.
+     * The ticks a log axis gets labelled besides XChart's decades: 2 and 5 times a power of ten
+     * within {@code [lo, hi]}; where that makes fewer than three labels with the decades (data
+     * spanning less than a decade), every 2..9 times a power of ten; and where even that does,
+     * evenly spaced round values (1, 2 or 5 times a power of ten apart).
      *
      * @param lo the low end of the axis's range, > 0
      * @param hi the high end, >= {@code lo}
-     * @return the values in ascending order; empty if the range is not positive or is empty
+     * @return the values in ascending order, never a power of ten; empty if the range is not positive or is empty
      */
     public static List<Double> intermediateTicks(double lo, double hi) {
+        if (!(lo > 0) || !(hi >= lo)) return new java.util.ArrayList<>();
+        int decades = decadesWithin(lo, hi);
+        List<Double> out = mantissaTicks(lo, hi, new int[] {2, 5});
+        if (decades + out.size() < 3) out = mantissaTicks(lo, hi, new int[] {2, 3, 4, 5, 6, 7, 8, 9});
+        if (decades + out.size() < 3) out = evenTicks(lo, hi);
+        return out;
+    }
+
+    /** The values m times a power of ten within {@code [lo, hi]}, for each m of {@code mantissas}. */
+    private static List<Double> mantissaTicks(double lo, double hi, int[] mantissas) {
         List<Double> out = new java.util.ArrayList<>();
-        if (!(lo > 0) || !(hi >= lo)) return out;
         for (double decade = Math.pow(10, Math.floor(Math.log10(lo))); decade <= hi; decade *= 10)
-            for (int m : new int[] {2, 5}) {
+            for (int m : mantissas) {
                 double v = Double.parseDouble(m + "e" + Math.round(Math.log10(decade)));   // exact decimal, no drift
                 if (v >= lo && v <= hi) out.add(v);
             }
         return out;
+    }
+
+    /** Round values from {@code lo} to {@code hi}, about four steps apart, powers of ten left to XChart. */
+    private static List<Double> evenTicks(double lo, double hi) {
+        java.math.BigDecimal step = niceStep((hi - lo) / 4);
+        List<Double> out = new java.util.ArrayList<>();
+        if (step.signum() <= 0) return out;
+        java.math.BigDecimal v = java.math.BigDecimal.valueOf(lo).divide(step, 0, java.math.RoundingMode.CEILING).multiply(step);
+        for (; v.doubleValue() <= hi; v = v.add(step))
+            if (!v.stripTrailingZeros().unscaledValue().equals(java.math.BigInteger.ONE)) out.add(v.doubleValue());
+        return out;
+    }
+
+    /** 1, 2 or 5 times a power of ten, the largest not above {@code raw} (zero for a zero span). */
+    private static java.math.BigDecimal niceStep(double raw) {
+        if (!(raw > 0)) return java.math.BigDecimal.ZERO;
+        int exp = (int) Math.floor(Math.log10(raw));
+        double m = raw / Math.pow(10, exp);
+        return new java.math.BigDecimal((m >= 5 ? 5 : m >= 2 ? 2 : 1) + "E" + exp);
+    }
+
+    /** How many powers of ten lie within {@code [lo, hi]}: the ticks XChart labels itself. */
+    private static int decadesWithin(double lo, double hi) {
+        int n = 0;
+        for (long e = (long) Math.floor(Math.log10(lo)) - 1; e <= (long) Math.ceil(Math.log10(hi)) + 1; e++) {
+            double decade = Double.parseDouble("1e" + e);   // exact decimal, as the ticks
+            if (decade >= lo && decade <= hi) n++;
+        }
+        return n;
     }
 
     /**

@@ -17,6 +17,8 @@ class HelpTextTest {
             assertThat(r.out()).as(c).startsWith("Usage: kdtree " + c);
             for (String line : r.out().split("\\R"))
                 assertThat(line.length()).as("%s --help: %s", c, line).isLessThanOrEqualTo(80);
+            assertThat(r.out()).as("%s --help: a number broken across lines (\"1..\" then \"65536\")", c)
+                    .doesNotContainPattern("\\d\\.*\\R\\s*\\d");
         }
     }
 
@@ -30,6 +32,27 @@ class HelpTextTest {
         CliRun r = CliRun.of("--help");
         assertThat(r.code()).isZero();
         for (String c : COMMANDS) assertThat(r.out()).contains(c);
+    }
+
+    @Test void theTopLevelHelpsSummariesAreWholeSentences() {
+        String out = CliRun.of("--help").out();
+        String list = out.substring(out.indexOf("Commands:\n") + "Commands:\n".length(), out.indexOf("\nExit codes:"));
+        for (String entry : list.strip().split("\\R(?=  \\S)")) {   // a command's entry: its name's line and the indented rest
+            String summary = entry.strip().replaceAll("\\s+", " ");
+            assertThat(summary).as("the command list's summary is cut: %s", summary).endsWith(".");
+        }
+        for (String line : out.substring(out.indexOf("Exit codes:")).strip().split("\\R"))
+            assertThat(line).as("the exit codes' lines end at a clause, or continue indented: %s", line).matches("(?s).*[;.]|.*\\($|.*impossible");
+    }
+
+    @Test void raycastsHelpShowsVerify() {
+        assertThat(CliRun.of("raycast", "--help").out()).contains("--verify=STRIDE", "brute force");
+    }
+
+    @Test void theAlgorithmsHelpSaysBinnedBuildsAnotherTree() {
+        String help = CliRun.of("stats", "--help").out().replaceAll("\\s+", " ");
+        assertThat(help).contains("NAIVE, SORTED and EVENT build the same tree in different times; BINNED builds another")
+                .doesNotContain("(same tree, different time)");
     }
 
     @Test void countsAreSingularForOne() {

@@ -25,6 +25,11 @@ class ChartsTest {
         assertThat(ChartFile.intermediateTicks(30, 470)).containsExactly(50.0, 200.0);
         assertThat(ChartFile.intermediateTicks(0.01, 1)).containsExactly(0.02, 0.05, 0.2, 0.5);
         assertThat(ChartFile.intermediateTicks(1000, 100_000)).containsExactly(2000.0, 5000.0, 20_000.0, 50_000.0);
+        // less than a decade: at least three labels however narrow the span, never a decade (XChart's own)
+        assertThat(ChartFile.intermediateTicks(30, 80)).containsExactly(30.0, 40.0, 50.0, 60.0, 70.0, 80.0);
+        assertThat(ChartFile.intermediateTicks(31, 38)).containsExactly(31.0, 32.0, 33.0, 34.0, 35.0, 36.0, 37.0, 38.0);
+        assertThat(ChartFile.intermediateTicks(0.42, 0.47)).hasSizeGreaterThanOrEqualTo(3).allMatch(v -> v >= 0.42 && v <= 0.47);
+        assertThat(ChartFile.intermediateTicks(90, 110)).containsExactly(90.0, 95.0, 105.0, 110.0);
         assertThat(ChartFile.tickLabel(20)).isEqualTo("20");
         assertThat(ChartFile.tickLabel(0.05)).isEqualTo("0.05");
         assertThat(ChartFile.tickLabel(5000)).isEqualTo("5,000");
