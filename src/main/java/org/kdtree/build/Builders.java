@@ -72,15 +72,30 @@ public final class Builders {
         URLClassLoader loader = new URLClassLoader(jars.toArray(URL[]::new), Builders.class.getClassLoader());
         Set<String> ownClasses = listedClasses(loader);
         List<String> listed = new ArrayList<>();
-        for (ServiceLoader.Provider<KdTreeBuilder> p : ServiceLoader.load(KdTreeBuilder.class, loader).stream().toList()) {
-            if (!ownClasses.contains(p.type().getName())) continue; // the library's own, seen through the parent
-            String name = p.get().name();
-            listed.add(name);
-            if (p.type().getClassLoader() != loader && BY_NAME.containsKey(name)) continue; // known already: same class
-            register(name, () -> newInstance(p.type()));
+        try {
+            for (ServiceLoader.Provider<KdTreeBuilder> p : ServiceLoader.load(KdTreeBuilder.class, loader).stream().toList()) {
+                if (!ownClasses.contains(p.type().getName())) continue; // the library's own, seen through the parent
+                String name = p.get().name();
+                listed.add(name);
+                if (p.type().getClassLoader() != loader && BY_NAME.containsKey(name)) continue; // known already: same class
+                register(name, () -> newInstance(p.type()));
+            }
+        } catch (java.util.ServiceConfigurationError | LinkageError e) {
+            throw new IllegalArgumentException("--plugin " + jarOrFolder + ": " + unloadable(e), e);
         }
         if (listed.isEmpty()) throw new IllegalArgumentException("--plugin " + jarOrFolder + ": " + noBuilder(jarFiles));
         return listed;
+    }
+
+    /** Why a listed builder could not be loaded, from the deepest cause, with what to do. */
+    private static String unloadable(Throwable e) {
+        Throwable root = e;
+        while (root.getCause() != null && root.getCause() != root) root = root.getCause();
+        if (root instanceof UnsupportedClassVersionError v)
+            return "a builder class was compiled for a newer Java than this one runs (" + v.getMessage()
+                    + "); compile it for Java " + Runtime.version().feature() + " (maven.compiler.release, or javac --release)";
+        if (root instanceof LinkageError l) return "a builder class cannot be loaded (" + l + ")";
+        return "a listed builder cannot be made: " + root;
     }
 
     /** The plug-in's jars: the file itself (whatever its name: it is checked as a zip), or a folder's .jar files. */

@@ -64,4 +64,36 @@ class PluginJarTest {
         assertThatThrownBy(() -> Builders.loadPlugins(two))
                 .hasMessage("--plugin " + two + ": the jar lists no builder; add the file " + SERVICES + " to the jar, with one line: " + line);
     }
+
+    /**
+     * A builder compiled for a newer Java than the one running (its class file's major version
+     * raised, as javac --release 25 writes it): named so, with what to do, not a stack trace.
+     */
+    @Test void aBuilderCompiledForANewerJavaIsNamedWithTheFix() throws Exception {
+        Path src = Files.createDirectories(dir.resolve("src/student")), classes = Files.createDirectories(dir.resolve("classes"));
+        Files.writeString(src.resolve("Future.java"), "package student;\n"
+                + "public class Future extends org.kdtree.build.MedianPlaneBuilder {\n"
+                + "    @Override public String name() { return \"future\"; }\n}\n");
+        int compiled = javax.tools.ToolProvider.getSystemJavaCompiler().run(null, null, null, "--release", "17",
+                "-cp", System.getProperty("java.class.path"), "-d", classes.toString(), src.resolve("Future.java").toString());
+        org.assertj.core.api.Assertions.assertThat(compiled).isZero();
+        Path classFile = classes.resolve("student/Future.class");
+        byte[] bytes = Files.readAllBytes(classFile);
+        bytes[6] = 0;
+        bytes[7] = 69; // class file version 69: Java 25
+        Path jar = dir.resolve("future.jar");
+        try (OutputStream out = Files.newOutputStream(jar); JarOutputStream j = new JarOutputStream(out)) {
+            j.putNextEntry(new JarEntry("student/Future.class"));
+            j.write(bytes);
+            j.closeEntry();
+            j.putNextEntry(new JarEntry(SERVICES));
+            j.write("student.Future\n".getBytes(java.nio.charset.StandardCharsets.UTF_8));
+            j.closeEntry();
+        }
+        assertThatThrownBy(() -> Builders.loadPlugins(jar))
+                .isInstanceOf(IllegalArgumentException.class)
+                .hasMessageStartingWith("--plugin " + jar + ": a builder class was compiled for a newer Java than this one runs")
+                .hasMessageContaining("class file version 69")
+                .hasMessageEndingWith("compile it for Java " + Runtime.version().feature() + " (maven.compiler.release, or javac --release)");
+    }
 }
