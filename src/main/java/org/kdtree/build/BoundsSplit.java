@@ -36,30 +36,17 @@ final class BoundsSplit {
             if (s != Partition.Side.LEFT) nr++;
         }
         store.reserveBounds(d + 1, nl + nr);
-        bounds = store.bounds(d);
-        double[] v = store.voxel(d);
-        for (int a = 0; a < k; a++) voxel.setMin(a, v[2 * k * c + a]).setMax(a, v[2 * k * c + k + a]);
+        store.voxel(d, c, voxel);
         long sizes = partition(d, from, n, axis, xi, planarLeft, perfectSplits, nl);
         int sizeL = (int) (sizes >>> 32), sizeR = (int) sizes;
-        long budget = store.budget(d)[c];
-        int outcome = SplitOutcome.of(n, sizeL, sizeR, budget);
+        int outcome = SplitOutcome.of(n, sizeL, sizeR, store.budget(d)[c]);
         if (outcome != SplitOutcome.SPLIT) return outcome;
-        long[] shares = store.budget(d + 1);
-        shares[0] = ReferenceBudget.share(budget, sizeL, sizeL, sizeR);
-        shares[1] = ReferenceBudget.share(budget, sizeR, sizeL, sizeR);
         int[] below = store.boundsMeta(d + 1);
         below[0] = 0;
         below[1] = sizeL;
         below[2] = nl;
         below[3] = sizeR;
-        byte[] form = store.form(d + 1);
-        form[0] = NodeStore.BOUNDS;
-        form[1] = NodeStore.BOUNDS;
-        double[] vb = store.voxel(d + 1);
-        System.arraycopy(v, 2 * k * c, vb, 0, 2 * k);
-        System.arraycopy(v, 2 * k * c, vb, 2 * k, 2 * k);
-        vb[k + axis] = xi;
-        vb[2 * k + axis] = xi;
+        store.writeChildren(d, c, axis, xi, sizeL, sizeR, NodeStore.BOUNDS);
         return SplitOutcome.SPLIT;
     }
 

@@ -20,7 +20,6 @@ import org.kdtree.geom.SplitPlane;
  */
 public final class BuildNode {
     private final NodeStore store;
-    private final BuildContext context;
     private final Box voxel;
     private final int k;
     private int d, c, size;
@@ -40,9 +39,8 @@ public final class BuildNode {
     private double[] eventBounds = new double[0];
     private double[] scratch = new double[16];
 
-    BuildNode(NodeStore store, BuildContext context) {
+    BuildNode(NodeStore store) {
         this.store = store;
-        this.context = context;
         this.k = store.k;
         this.voxel = new Box(k);
     }
@@ -80,8 +78,7 @@ public final class BuildNode {
     /** {@return the voxel V of this node}; do not modify or keep it. */
     public Box voxel() {
         if (!voxelFilled) {
-            double[] v = store.voxel(d);
-            for (int a = 0; a < k; a++) voxel.setMin(a, v[2 * k * c + a]).setMax(a, v[2 * k * c + k + a]);
+            store.voxel(d, c, voxel);
             voxelFilled = true;
         }
         return voxel;
@@ -95,9 +92,6 @@ public final class BuildNode {
 
     /** {@return k, the dimension} */
     public int dimension() { return k; }
-
-    /** {@return what the build knows besides the node: its primitives, its depth cap} */
-    public BuildContext context() { return context; }
 
     /** {@return how many references this node's subtree may hold ({@link ReferenceBudget})} */
     public long budget() { return store.budget(d)[c]; }

@@ -50,13 +50,10 @@ final class EventSplit {
         int nl = (int) (counts >>> 32), nb = (int) counts, nr = n - nl - nb;
         long added = clipStraddlers(d, c, axis, xi, nb, perfectSplits);
         int sizeL = nl + (int) (added >>> 32), sizeR = nr + (int) added;
-        long budget = store.budget(d)[c];
-        int outcome = SplitOutcome.of(n, sizeL, sizeR, budget);
+        int outcome = SplitOutcome.of(n, sizeL, sizeR, store.budget(d)[c]);
         if (outcome != SplitOutcome.SPLIT) return outcome;
-        writeChildren(d, c, axis, xi, nb, sizeL, sizeR);
-        long[] below = store.budget(d + 1);
-        below[0] = ReferenceBudget.share(budget, sizeL, sizeL, sizeR);
-        below[1] = ReferenceBudget.share(budget, sizeR, sizeL, sizeR);
+        writeChildEvents(d, c, nb, sizeL, sizeR);
+        store.writeChildren(d, c, axis, xi, sizeL, sizeR, NodeStore.EVENTS);
         return SplitOutcome.SPLIT;
     }
 
@@ -99,8 +96,7 @@ final class EventSplit {
      */
     private long clipStraddlers(int d, int c, int axis, double xi, int nb, boolean perfectSplits) {
         if (nb == 0) return 0;
-        double[] v = store.voxel(d);
-        for (int a = 0; a < k; a++) voxel.setMin(a, v[2 * k * c + a]).setMax(a, v[2 * k * c + k + a]);
+        store.voxel(d, c, voxel);
         if (bounds.length < 6 * k * nb) bounds = new double[NodeStore.grown(bounds.length, 6 * k * nb)];
         if (!perfectSplits) parentBounds(d, c, nb);
         int left = 0, right = 0;
@@ -133,12 +129,12 @@ final class EventSplit {
     }
 
     /**
-     * Writes both children into level d + 1: voxels, sizes, and per axis the one-sided events
+     * Writes both children's events into level d + 1: sizes, and per axis the one-sided events
      * copied in order with the straddlers' new events merged in. Each child's region on an axis
      * is sized before anything is copied: its one-sided events are among the node's, and each of
      * its primitives has at most two; one slot more for the branch-free copy.
      */
-    private void writeChildren(int d, int c, int axis, double xi, int nb, int sizeL, int sizeR) {
+    private void writeChildEvents(int d, int c, int nb, int sizeL, int sizeR) {
         double[] pos = store.positions(d);
         int[] code = store.codes(d), meta = store.eventMeta(d);
         int at = store.metaAt(c);
@@ -168,10 +164,6 @@ final class EventSplit {
             startL += Math.min(to - from + 2 * nb, 2 * sizeL) + 1;
             startR += Math.min(to - from + 2 * nb, 2 * sizeR) + 1;
         }
-        childVoxels(d, c, axis, xi);
-        byte[] form = store.form(d + 1);
-        form[0] = NodeStore.EVENTS;
-        form[1] = NodeStore.EVENTS;
     }
 
     /**
@@ -224,14 +216,5 @@ final class EventSplit {
             if (i >= from && dp[i] > sp[s]) { dp[at] = dp[i]; dc[at--] = dc[i--]; }
             else { dp[at] = sp[s]; dc[at--] = sc[s--]; }
         }
-    }
-
-    /** The children's voxels: the node's, cut at the plane. */
-    private void childVoxels(int d, int c, int axis, double xi) {
-        double[] v = store.voxel(d), below = store.voxel(d + 1);
-        System.arraycopy(v, 2 * k * c, below, 0, 2 * k);
-        System.arraycopy(v, 2 * k * c, below, 2 * k, 2 * k);
-        below[k + axis] = xi;
-        below[2 * k + axis] = xi;
     }
 }

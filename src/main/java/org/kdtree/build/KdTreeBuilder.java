@@ -97,7 +97,7 @@ public abstract class KdTreeBuilder {
 
     /** The root: every primitive with its own bounds, in the scene's box, with the whole reference budget. */
     private void recConstRoot(Build build, Box rootVoxel, KdTreeWriter out) {
-        NodeStore store = new NodeStore(build.primitives, build);
+        NodeStore store = new NodeStore(build.primitives);
         store.writeRoot(rootVoxel, ReferenceBudget.root(referenceBudget, build.primitives.size()));
         recConst(build, store, 0, 0, out);
     }
@@ -138,7 +138,7 @@ public abstract class KdTreeBuilder {
      */
     private void forkRight(Build build, NodeStore store, int d, int interior, KdTreeWriter out) {
         Spare spare = build.spares.poll();
-        if (spare == null) spare = new Spare(new NodeStore(build.primitives, build), new KdTreeWriter(store.k));
+        if (spare == null) spare = new Spare(new NodeStore(build.primitives), new KdTreeWriter(store.k));
         Spare other = spare;
         int n = store.copyChild(d, 1, other.store);
         ForkJoinTask<?> right = ForkJoinTask.adapt(() -> {

@@ -67,10 +67,10 @@ final class NodeStore {
     SahCost sahCost;
     final SahSplit best = new SahSplit();
 
-    NodeStore(Primitives prims, BuildContext context) {
+    NodeStore(Primitives prims) {
         this.prims = prims;
         this.k = prims.dimension();
-        this.view = new BuildNode(this, context);
+        this.view = new BuildNode(this);
     }
 
     /** Writes the root, child 0 of level 0: every primitive with its own bounds, in {@code rootVoxel}, with {@code budget}. */
@@ -120,6 +120,33 @@ final class NodeStore {
         long[] b = budget[d - base];
         if (b == null) budget[d - base] = b = new long[2];
         return b;
+    }
+
+    /** {@return {@code dest}, set to the voxel of child c of level d} */
+    Box voxel(int d, int c, Box dest) {
+        double[] v = voxel(d);
+        for (int a = 0; a < k; a++) dest.setMin(a, v[2 * k * c + a]).setMax(a, v[2 * k * c + k + a]);
+        return dest;
+    }
+
+    /**
+     * What every split writes for its two children into level d + 1, whatever their form: their
+     * voxels (child c of level d's, cut at {@code x_axis = xi}), their shares of its reference
+     * budget, and their form.
+     */
+    void writeChildren(int d, int c, int axis, double xi, int sizeL, int sizeR, byte childForm) {
+        double[] v = voxel(d), below = voxel(d + 1);
+        System.arraycopy(v, 2 * k * c, below, 0, 2 * k);
+        System.arraycopy(v, 2 * k * c, below, 2 * k, 2 * k);
+        below[k + axis] = xi;
+        below[2 * k + axis] = xi;
+        long budget = budget(d)[c];
+        long[] shares = budget(d + 1);
+        shares[0] = ReferenceBudget.share(budget, sizeL, sizeL, sizeR);
+        shares[1] = ReferenceBudget.share(budget, sizeR, sizeL, sizeR);
+        byte[] f = form(d + 1);
+        f[0] = childForm;
+        f[1] = childForm;
     }
 
     /**
