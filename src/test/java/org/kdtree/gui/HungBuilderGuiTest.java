@@ -35,10 +35,8 @@ class HungBuilderGuiTest {
     @BeforeEach void open() throws Exception {
         assumeFalse(GraphicsEnvironment.isHeadless(), "no display");
         Builders.loadPlugins(PluginJars.listing(dir, "broken.jar", LoopingFindPlaneBuilder.class.getName(), ThrowingBuilder.class.getName()));
-        GuiActionRunner.execute(() -> javax.swing.ToolTipManager.sharedInstance().setEnabled(false));
-        bench = GuiActionRunner.execute(() -> new Workbench());
-        window = new FrameFixture(bench);
-        window.show();
+        window = WorkbenchWindow.open(null);
+        bench = (Workbench) window.target();
         window.menuItemWithPath("Scene", "Clustered (200)").click();
     }
 

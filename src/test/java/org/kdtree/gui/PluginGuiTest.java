@@ -31,10 +31,8 @@ class PluginGuiTest {
         assumeFalse(GraphicsEnvironment.isHeadless(), "no display");
         assertThat(Builders.names()).doesNotContain("plugin-midpoint");
         Builders.loadPlugins(PluginJars.listing(dir, "student.jar", PluginMidpointBuilder.class.getName()));
-        GuiActionRunner.execute(() -> javax.swing.ToolTipManager.sharedInstance().setEnabled(false));
-        bench = GuiActionRunner.execute(() -> new Workbench());
-        window = new FrameFixture(bench);
-        window.show();
+        window = WorkbenchWindow.open(null);
+        bench = (Workbench) window.target();
     }
 
     @AfterEach void close() {

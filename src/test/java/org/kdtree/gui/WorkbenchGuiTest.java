@@ -26,12 +26,8 @@ class WorkbenchGuiTest {
 
     @BeforeEach void open() {
         assumeFalse(GraphicsEnvironment.isHeadless(), "no display");
-        // a tooltip popping up under the robot's mouse would swallow its clicks on the canvas
-        GuiActionRunner.execute(() -> javax.swing.ToolTipManager.sharedInstance().setEnabled(false));
-        bench = GuiActionRunner.execute(() -> new Workbench());
-        window = new FrameFixture(bench);
-        window.show();
-        window.moveTo(new java.awt.Point(0, 0)); // the robot shows it away from the corner: on a 1280-wide screen the side panel's right edge (Generate) was off it
+        window = WorkbenchWindow.open(null);
+        bench = (Workbench) window.target();
     }
 
     @AfterEach void close() {

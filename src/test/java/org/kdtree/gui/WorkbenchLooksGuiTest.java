@@ -27,11 +27,8 @@ class WorkbenchLooksGuiTest {
 
     @BeforeEach void open() {
         assumeFalse(GraphicsEnvironment.isHeadless(), "no display");
-        GuiActionRunner.execute(() -> javax.swing.ToolTipManager.sharedInstance().setEnabled(false));
-        bench = GuiActionRunner.execute(() -> new Workbench());
-        window = new FrameFixture(bench);
-        window.show(new java.awt.Dimension(1280, 880));
-        window.moveTo(new java.awt.Point(0, 0));
+        window = WorkbenchWindow.open(new java.awt.Dimension(1280, 880));
+        bench = (Workbench) window.target();
     }
 
     @AfterEach void close() {
