@@ -3,6 +3,7 @@ package org.kdtree.traverse;
 import org.kdtree.geom.Box;
 import org.kdtree.geom.Ray;
 import org.kdtree.tree.KdTree;
+import org.kdtree.tree.Nodes;
 
 /**
  * The specialised 3-D path of {@link Traverser} for triangle meshes: the same algorithm and the
@@ -11,9 +12,11 @@ import org.kdtree.tree.KdTree;
  * safe: owned by one traverser.
  */
 final class MeshTraversal {
+    /** A 3-D tree's {@link KdTree#axisBits()}, a constant the JIT folds into the node decoding. */
+    private static final int BITS = Nodes.axisBits(3);
     private static final double SLACK = Traverser.SLACK;
 
-    /** The tree's nodes, three ints each ({@link KdTree#nodeArray()}; 3-D: a 2-bit axis field, leaf mark 3). */
+    /** The tree's nodes ({@link KdTree#nodeArray()}), read with {@link Nodes}. */
     private final int[] nodes;
     private final int[] refs;
     private final double[] corners;
@@ -25,7 +28,7 @@ final class MeshTraversal {
     private final Hit scratch = new Hit();
 
     MeshTraversal(KdTree tree, TriangleIntersector tris, Mailbox mailbox, int stackSize) {
-        if (tree.axisBits() != 2) throw new IllegalArgumentException("a 3-D tree has a 2-bit axis field");
+        if (tree.axisBits() != BITS) throw new IllegalArgumentException("a 3-D tree's axis field is " + BITS + " bits");
         nodes = tree.nodeArray();
         refs = tree.refArray();
         corners = tris.cornerArray();
@@ -95,13 +98,13 @@ final class MeshTraversal {
         double lo = curMin - Math.abs(curMin) * SLACK, hi = curMax + Math.abs(curMax) * SLACK;
         boolean found = false;
         while (true) {
-            int w = nodes[3 * node];
-            while ((w & 3) != 3) {
-                int axis = w & 3;
+            int w = Nodes.word(nodes, node);
+            while (!Nodes.isLeaf(w, BITS)) {
+                int axis = Nodes.axis(w, BITS);
                 double ia = iv[axis];
-                double tSplit = (KdTree.splitOf(nodes, node) - o[axis]) * ia;
-                int near = node + 1, far = w >>> 2;
-                if (!(ia > 0)) { far = near; near = w >>> 2; }
+                double tSplit = (Nodes.split(nodes, node) - o[axis]) * ia;
+                int near = Nodes.leftChild(node), far = Nodes.rightChild(w, BITS);
+                if (!(ia > 0)) { far = near; near = Nodes.rightChild(w, BITS); }
                 if (tSplit > hi) {
                     node = near;
                 } else if (tSplit < lo) {
@@ -119,9 +122,9 @@ final class MeshTraversal {
                     }
                     sp++;
                 }
-                w = nodes[3 * node];
+                w = Nodes.word(nodes, node);
             }
-            for (int r = nodes[3 * node + 1], end = r + (w >>> 2); r < end; r++) {
+            for (int r = Nodes.leafStart(nodes, node), end = r + Nodes.leafSize(w, BITS); r < end; r++) {
                 int p = refs[r];
                 if (box[p] == stamp) continue;
                 box[p] = stamp;

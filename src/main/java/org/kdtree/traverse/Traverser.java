@@ -7,6 +7,7 @@ import java.util.List;
 import org.kdtree.geom.Box;
 import org.kdtree.geom.Ray;
 import org.kdtree.tree.KdTree;
+import org.kdtree.tree.Nodes;
 
 /**
  * Ray queries on a {@link KdTree}: the talk's Algorithm 2 (stack-based near/far traversal with
@@ -41,10 +42,10 @@ public final class Traverser implements RayQuery {
 
     private final KdTree tree;
     private final Intersector prims;
-    /** The tree's nodes, three ints each ({@link KdTree#nodeArray()}). */
+    /** The tree's nodes ({@link KdTree#nodeArray()}), read with {@link Nodes}. */
     private final int[] nodes;
-    /** The word's leaf mark and axis-field width ({@link KdTree#leafMark()}, {@link KdTree#axisBits()}). */
-    private final int mark, shift;
+    /** The tree's {@link KdTree#axisBits()}, which {@link Nodes} decodes a word with. */
+    private final int bits;
     private final int[] refs;
     private final double[] lo, hi;
     private final Mailbox mailbox;
@@ -67,8 +68,7 @@ public final class Traverser implements RayQuery {
         this.tree = tree;
         this.prims = prims;
         nodes = tree.nodeArray();
-        mark = tree.leafMark();
-        shift = tree.axisBits();
+        bits = tree.axisBits();
         refs = tree.refArray();
         Box b = tree.bounds();
         lo = b.minCorner();
@@ -171,12 +171,12 @@ public final class Traverser implements RayQuery {
         int sp = 0, node = 0;
         double curMin = enter, curMax = exit;
         while (true) {
-            int w = nodes[3 * node];
-            while ((w & mark) != mark) {
-                int axis = w & mark, far = w >>> shift, near = node + 1;
-                double inv = ray.inverseDirection(axis), xi = KdTree.splitOf(nodes, node);
+            int w = Nodes.word(nodes, node);
+            while (!Nodes.isLeaf(w, bits)) {
+                int axis = Nodes.axis(w, bits), far = Nodes.rightChild(w, bits), near = Nodes.leftChild(node);
+                double inv = ray.inverseDirection(axis), xi = Nodes.split(nodes, node);
                 double tSplit = (xi - ray.origin(axis)) * inv;
-                if (!(inv > 0)) { far = near; near = w >>> shift; }
+                if (!(inv > 0)) { far = near; near = Nodes.rightChild(w, bits); }
                 TraversalListener.Visit visit = decide(tSplit, curMin, curMax);
                 l.interior(node, axis, xi, curMin, curMax, tSplit, near, far, visit);
                 switch (visit) {
@@ -185,10 +185,11 @@ public final class Traverser implements RayQuery {
                     case BOTH_IN_PLANE -> { push(sp++, far, curMin, curMax, l); node = near; }
                     case BOTH -> { push(sp++, far, tSplit, curMax, l); node = near; curMax = tSplit; }
                 }
-                w = nodes[3 * node];
+                w = Nodes.word(nodes, node);
             }
-            l.leaf(node, curMin, curMax, w >>> shift);
-            int result = visitLeaf(nodes[3 * node + 1], w >>> shift, stamp, mode, ray, tMin, tMax, hit, all, l);
+            int count = Nodes.leafSize(w, bits);
+            l.leaf(node, curMin, curMax, count);
+            int result = visitLeaf(Nodes.leafStart(nodes, node), count, stamp, mode, ray, tMin, tMax, hit, all, l);
             if (result == ANY) return true;
             found |= result == CLOSEST;
             // Take the next saved far child that can still hold something closer.
