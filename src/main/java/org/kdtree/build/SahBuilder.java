@@ -18,8 +18,9 @@ import org.kdtree.tree.KdTreeWriter;
  * made per node.) A subclass gets the same searches over the same node store as this class:
  * there is no other path.
  *
- * <p>Defaults: Kt = 15, Ki = 20, empty-voxel weight lambda = 0.8, depth cap
- * {@code 8 + 1.3 log2 N}, perfect splits on, plane search {@link Algorithm#EVENT}.
+ * <p>Its settings and their defaults are rows of {@link Setting} (docs/limits.md lists them):
+ * those of every builder, and {@link Setting#LAMBDA}, {@link Setting#ALGORITHM},
+ * {@link Setting#BINS}, {@link Setting#EXACT_BELOW} and the preset {@link Setting#QUALITY}.
  */
 public class SahBuilder extends KdTreeBuilder {
     /** How the best plane of a node is found. Every exact algorithm builds the same tree. */
@@ -48,23 +49,18 @@ public class SahBuilder extends KdTreeBuilder {
 
     private static final PlaneSearch NAIVE_SEARCH = new NaivePlaneSearch(), SORTED_SEARCH = new SortedPlaneSearch();
 
-    /** The default number of bins per axis of {@link Algorithm#BINNED}. */
-    public static final int DEFAULT_BINS = 32;
-
-    /** The default node size below which {@link Algorithm#BINNED} searches exactly. */
-    public static final int DEFAULT_EXACT_BELOW = 64;
-
     /**
      * Nodes and leaf references an SAH tree has per primitive, a little above what the meshes
      * measured gave (bunny 8.9 and 5.3, its 4 x 4 grid 9.5 and 5.6).
      */
     private static final int NODES_PER_PRIMITIVE = 10, REFS_PER_PRIMITIVE = 6;
 
-    private double emptyWeight = 0.8;
-    private Algorithm algorithm = Algorithm.EVENT;
-    private int bins = DEFAULT_BINS;
-    private int exactBelow = DEFAULT_EXACT_BELOW;
-    private PlaneSearch search = EventSweep.INSTANCE;
+    /** lambda; named as SahCost names it, which terminate's search reads it into (renamed with the engine). */
+    private double emptyWeight = Setting.LAMBDA.defaultValue();
+    private Algorithm algorithm = Setting.ALGORITHM.defaultValue();
+    private int bins = Setting.BINS.defaultValue();
+    private int exactBelow = Setting.EXACT_BELOW.defaultValue();
+    private PlaneSearch search = searchOf(algorithm);
 
     @Override public String name() { return "sah"; }
 
@@ -108,8 +104,8 @@ public class SahBuilder extends KdTreeBuilder {
         };
     }
 
-    /** {@return lambda, the weight of a plane that leaves one child empty} (default 0.8; 1 disables the bonus). */
-    public double emptyWeight() { return emptyWeight; }
+    /** {@return lambda, the weight of a plane that leaves one child empty} (1 disables the bonus; default: {@link Setting#LAMBDA}). */
+    public double lambda() { return emptyWeight; }
 
     /**
      * Sets lambda ({@link Limits#LAMBDA}: 0.01 .. 1).
@@ -117,12 +113,12 @@ public class SahBuilder extends KdTreeBuilder {
      * @param lambda the weight
      * @return this builder
      */
-    public SahBuilder emptyWeight(double lambda) {
-        this.emptyWeight = Limits.LAMBDA.check("emptyWeight (lambda)", lambda);
+    public SahBuilder lambda(double lambda) {
+        this.emptyWeight = Limits.LAMBDA.check("lambda", lambda);
         return this;
     }
 
-    /** {@return the plane-search algorithm} (default EVENT). */
+    /** {@return the plane-search algorithm} (default: {@link Setting#ALGORITHM}). */
     public Algorithm algorithm() { return algorithm; }
 
     /**
@@ -137,7 +133,7 @@ public class SahBuilder extends KdTreeBuilder {
         return this;
     }
 
-    /** {@return B, the number of bins per axis of {@link Algorithm#BINNED}} (default 32). */
+    /** {@return B, the number of bins per axis of {@link Algorithm#BINNED}} (default: {@link Setting#BINS}). */
     public int bins() { return bins; }
 
     /**
@@ -153,7 +149,7 @@ public class SahBuilder extends KdTreeBuilder {
     }
 
     /**
-     * {@return the node size below which {@link Algorithm#BINNED} uses the exact sweep} (default 64; 0 = bins everywhere).
+     * {@return the node size below which {@link Algorithm#BINNED} uses the exact sweep} (0 = bins everywhere; default: {@link Setting#EXACT_BELOW}).
      */
     public int exactBelow() { return exactBelow; }
 

@@ -5,7 +5,6 @@ import java.util.ArrayList;
 import java.util.List;
 import java.util.Locale;
 import java.util.concurrent.Callable;
-import org.kdtree.build.Builders;
 import org.kdtree.build.KdTreeBuilder;
 import org.kdtree.io.PointCsv;
 import org.kdtree.limits.Limits;
@@ -48,9 +47,8 @@ final class KnnStudyCommand implements Callable<Integer> {
     @Option(names = "--k", required = true, paramLabel = "K", description = "Neighbours per query (see docs/limits.md).")
     int k;
 
-    @Option(names = {"-b", "--builder"}, defaultValue = "sliding-midpoint", paramLabel = "NAME",
-            description = "Builder: sliding-midpoint, median-plane, object-median, sah, or a registered name (default: ${DEFAULT-VALUE}).")
-    String builder;
+    @Mixin
+    BuilderOptions options = new BuilderOptions("sliding-midpoint");
 
     @Option(names = "--budgets", split = ",", paramLabel = "L", defaultValue = "1,2,4,8,16,32,64,128",
             description = "Best-bin-first budgets: leaves scanned per query (default: ${DEFAULT-VALUE}).")
@@ -92,7 +90,7 @@ final class KnnStudyCommand implements Callable<Integer> {
 
     @Override public Integer call() throws Exception {
         checkOptions();
-        KdTreeBuilder b = Builders.create(builder);
+        KdTreeBuilder b = options.spec().create();
         if (dimensions != null) return sweep(b);
         PointsKd points = generate != null ? kind().points(n, dimension, seed) : PointCsv.read(pointsFile);
         PointsKd queries = generate != null ? kind().queries(queryCount, dimension, seed) : PointCsv.read(queriesFile);

@@ -26,6 +26,7 @@ import javax.swing.JToolBar;
 import javax.swing.KeyStroke;
 import javax.swing.SwingUtilities;
 import javax.swing.filechooser.FileNameExtensionFilter;
+import org.kdtree.build.BuilderSpec;
 import org.kdtree.build.Builders;
 
 /**
@@ -111,9 +112,17 @@ public final class Workbench extends JFrame {
         setLocationRelativeTo(null);
     }
 
-    /** Opens the workbench on the event thread and returns at once. */
-    public static void open() {
-        SwingUtilities.invokeLater(() -> new Workbench().setVisible(true));
+    /**
+     * Opens the workbench on the event thread and returns at once.
+     *
+     * @param settings the builder and settings it starts with
+     */
+    public static void open(BuilderSpec settings) {
+        SwingUtilities.invokeLater(() -> {
+            Workbench w = new Workbench();
+            w.model().setSettings(settings);
+            w.setVisible(true);
+        });
     }
 
     /** {@return the scene, settings, tree and selection every view shows} */

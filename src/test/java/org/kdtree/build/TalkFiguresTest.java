@@ -59,14 +59,14 @@ class TalkFiguresTest {
     }
 
     @Test void figure5FavouringEmptyVoxelsCutsOffMoreEmptySpace() {
-        KdTree plain = new SahBuilder().emptyWeight(1.0).build(scene);
-        KdTree favoured = new SahBuilder().emptyWeight(0.8).build(scene);
+        KdTree plain = new SahBuilder().lambda(1.0).build(scene);
+        KdTree favoured = new SahBuilder().lambda(0.8).build(scene);
         assertThat(favoured.stats().emptyLeaves()).isGreaterThan(plain.stats().emptyLeaves());
         assertThat(emptyArea(favoured)).isGreaterThan(emptyArea(plain));
     }
 
     @Test void sahStopsWhereNoSplitBeatsALeaf() {
-        KdTree tree = new SahBuilder().emptyWeight(1.0).build(scene);
+        KdTree tree = new SahBuilder().lambda(1.0).build(scene);
         // the two objects on the left share a leaf: separating them costs more than testing both
         TreeInspector in = new TreeInspector(tree);
         assertThat(in.leaves()).anySatisfy(l -> assertThat(l.refs()).containsExactlyInAnyOrder(0, 1));
