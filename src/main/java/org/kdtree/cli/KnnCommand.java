@@ -6,7 +6,7 @@ import java.util.Locale;
 import java.util.concurrent.Callable;
 import org.kdtree.build.KdTreeBuilder;
 import org.kdtree.files.AtomicFile;
-import org.kdtree.io.PointCsv;
+import org.kdtree.io.PointCsvReader;
 import org.kdtree.limits.Limits;
 import org.kdtree.points.NearestQuery;
 import org.kdtree.points.PointTree;
@@ -55,8 +55,8 @@ final class KnnCommand implements Callable<Integer> {
         CommandFiles.requireFolder("--out", outFile);
         CommandFiles.requireNotInput("--out", outFile, "POINTS", pointsFile);
         CommandFiles.requireNotInput("--out", outFile, "--queries", queriesFile);
-        PointsKd points = PointCsv.read(pointsFile);
-        PointsKd queries = PointCsv.read(queriesFile);
+        PointsKd points = PointCsvReader.read(pointsFile);
+        PointsKd queries = PointCsvReader.read(queriesFile);
         if (queries.dimension() != points.dimension())
             throw new IllegalArgumentException(queriesFile + ": the queries are " + queries.dimension() + "-D, the points "
                     + points.dimension() + "-D (" + pointsFile + ")");

@@ -6,7 +6,7 @@ import java.util.List;
 import java.util.Locale;
 import java.util.concurrent.Callable;
 import org.kdtree.build.KdTreeBuilder;
-import org.kdtree.io.PointCsv;
+import org.kdtree.io.PointCsvReader;
 import org.kdtree.limits.Limits;
 import org.kdtree.points.PointTree;
 import org.kdtree.shape.PointsKd;
@@ -92,8 +92,8 @@ final class KnnStudyCommand implements Callable<Integer> {
         checkOptions();
         KdTreeBuilder b = options.spec().create();
         if (dimensions != null) return sweep(b);
-        PointsKd points = generate != null ? kind().points(n, dimension, seed) : PointCsv.read(pointsFile);
-        PointsKd queries = generate != null ? kind().queries(queryCount, dimension, seed) : PointCsv.read(queriesFile);
+        PointsKd points = generate != null ? kind().points(n, dimension, seed) : PointCsvReader.read(pointsFile);
+        PointsKd queries = generate != null ? kind().queries(queryCount, dimension, seed) : PointCsvReader.read(queriesFile);
         if (queries.dimension() != points.dimension())
             throw new IllegalArgumentException(queriesFile + ": the queries are " + queries.dimension() + "-D, the points "
                     + points.dimension() + "-D (" + pointsFile + ")");

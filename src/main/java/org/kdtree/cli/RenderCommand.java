@@ -5,7 +5,7 @@ import java.util.concurrent.Callable;
 import org.kdtree.build.BuilderSpec;
 import org.kdtree.build.Setting;
 import org.kdtree.io.BundledScenes;
-import org.kdtree.io.SceneFile;
+import org.kdtree.io.SceneReader;
 import org.kdtree.render.RenderJob;
 import org.kdtree.limits.Limits;
 import org.kdtree.render.Renderer;
@@ -54,7 +54,7 @@ final class RenderCommand implements Callable<Integer> {
         checkOutput();
         Path sceneFile = BundledScenes.resolve(scene);
         CommandFiles.requireNotInput("-o", output, "SCENE", sceneFile);
-        Scene s = SceneFile.read(sceneFile);
+        Scene s = SceneReader.read(sceneFile);
         if (spp != null) s = s.withSamplesPerPixel(Limits.SAMPLES_PER_PIXEL.check("--spp", spp));
         if (rayDepth != null) s = s.withMaxDepth(Limits.RAY_DEPTH.check("--ray-depth", rayDepth));
         if (width != null || height != null) {

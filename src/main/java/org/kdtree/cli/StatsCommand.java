@@ -4,12 +4,12 @@ import java.nio.file.Path;
 import java.util.Arrays;
 import java.util.Locale;
 import java.util.concurrent.Callable;
-import org.kdtree.build.KdTreeBuilder;
 import org.kdtree.build.BuilderSpec;
+import org.kdtree.build.KdTreeBuilder;
 import org.kdtree.build.Supervisor;
 import org.kdtree.io.BundledScenes;
+import org.kdtree.io.PrimitivesReader;
 import org.kdtree.tradeoff.Timing;
-import org.kdtree.io.SceneLoader;
 import org.kdtree.limits.Limits;
 import org.kdtree.render.RenderJob;
 import org.kdtree.shape.Primitives;
@@ -53,7 +53,7 @@ final class StatsCommand implements Callable<Integer> {
         Limits.WARMUP.check("--warmup", warmup);
         Limits.GRID.check("--grid", grid);
         BuilderSpec spec = options.spec();
-        Primitives prims = SceneLoader.load(BundledScenes.resolve(scene));
+        Primitives prims = PrimitivesReader.read(BundledScenes.resolve(scene));
         if (grid != 1) {
             if (!(prims instanceof TriangleMesh mesh)) throw new IllegalArgumentException("--grid applies to OBJ meshes only");
             prims = ProceduralScenes.grid(mesh, grid);

@@ -5,13 +5,13 @@ import static org.assertj.core.api.Assertions.assertThat;
 import org.junit.jupiter.api.Test;
 import org.kdtree.check.TreeInspector;
 import org.kdtree.geom.Box;
-import org.kdtree.shape.Shapes2D;
+import org.kdtree.shape.Scene2D;
 import org.kdtree.testing.TestScenes;
 import org.kdtree.tree.KdTree;
 
 /** The handful of 2-D objects of the talk's figures 2-5 give the splits the talk describes. */
 class TalkFiguresTest {
-    private final Shapes2D scene = TestScenes.talkFigures();
+    private final Scene2D scene = TestScenes.talkFigures();
 
     @Test void figure2MedianPlanesCutEveryVoxelInItsMiddleCyclingTheAxes() {
         KdTree tree = new MedianPlaneBuilder().minPrimitives(1).build(scene);

@@ -8,7 +8,7 @@ import java.nio.file.Path;
 import java.util.List;
 import org.junit.jupiter.api.Test;
 import org.kdtree.build.SahBuilder;
-import org.kdtree.io.SceneFile;
+import org.kdtree.io.SceneReader;
 import org.kdtree.scene.Tessellation;
 import org.kdtree.tree.CostModel;
 
@@ -47,7 +47,7 @@ class LimitsTest {
                 {"camera": {"eye": [0, 0, 5], "lookAt": [0, 0, 0], "fov": 40, "width": 20000, "height": 10},
                  "objects": []}
                 """);
-        assertThatThrownBy(() -> SceneFile.read(f)).hasMessageEndingWith(
+        assertThatThrownBy(() -> SceneReader.read(f)).hasMessageEndingWith(
                 "$.camera.width: " + Limits.IMAGE_SIDE.requirement() + ", got 20000");
     }
 
