@@ -5,7 +5,7 @@ import java.util.List;
 import java.util.Locale;
 import java.util.concurrent.Callable;
 import org.kdtree.limits.Limits;
-import org.kdtree.shape.ProceduralScenes;
+import org.kdtree.generate.MeshGrid;
 import org.kdtree.shape.TriangleMesh;
 import org.kdtree.tradeoff.ChartFile;
 import org.kdtree.tradeoff.RaySet;
@@ -86,7 +86,7 @@ final class TradeoffCommand implements Callable<Integer> {
         CommandFiles.requireNotInput("--chart", pngOut, "MESH", mesh);
         CommandFiles.requireNotInput("--chart (its SVG)", ChartFile.svgBeside(pngOut), "MESH", mesh);
         TriangleMesh m = CommandFiles.readMesh(mesh, "tradeoff");
-        if (grid > 1) m = ProceduralScenes.grid(m, grid);
+        if (grid > 1) m = MeshGrid.grid(m, grid);
         RaySet set = switch (rays.toUpperCase(Locale.ROOT)) {
             case "P" -> RaySet.primary(m, Math.max(1, (int) Math.round(Math.sqrt(rayCount))));
             case "R" -> RaySet.random(m, rayCount);

@@ -6,11 +6,11 @@ import static org.assertj.core.api.Assertions.assertThatThrownBy;
 import java.io.StringWriter;
 import org.junit.jupiter.api.Test;
 import org.kdtree.shape.Shapes2D;
-import org.kdtree.testing.TestScenes;
+import org.kdtree.generate.Shapes;
 
 class Scene2DFormatTest {
     @Test void writeThenReadGivesTheSameShapes() throws Exception {
-        Shapes2D scene = TestScenes.random2D(40, 8);
+        Shapes2D scene = Shapes.mixed(40, 8);
         StringWriter out = new StringWriter();
         Scene2DFormat.write(scene, out);
         assertThat(Scene2DFormat.parse(out.toString(), "x").shapes()).isEqualTo(scene.shapes());
@@ -18,7 +18,7 @@ class Scene2DFormatTest {
 
     @Test void theBundledTalkSceneMatchesTheTestScene() throws Exception {
         Shapes2D fromFile = Scene2DFormat.read(java.nio.file.Path.of("scenes/talk-figures.scene2d"));
-        assertThat(fromFile.shapes()).isEqualTo(TestScenes.talkFigures().shapes());
+        assertThat(fromFile.shapes()).isEqualTo(BundledScenes.read2D("talk-figures.scene2d").shapes());
     }
 
     @Test void errorsNameTheFileAndLine() {
