@@ -3,20 +3,19 @@ package org.kdtree.bench;
 import java.io.IOException;
 import java.io.UncheckedIOException;
 import java.nio.file.Path;
+import org.kdtree.generate.MeshGrid;
+import org.kdtree.generate.Meshes;
 import org.kdtree.io.ObjMeshReader;
-import org.kdtree.shape.ProceduralScenes;
 import org.kdtree.shape.TriangleMesh;
 
-/** Scenes by name for the benchmarks: {@code uniform}, {@code clustered}, {@code surface}, or an OBJ path (optionally {@code PATH@grid4}). */
+/** Scenes by name for the benchmarks: a generated scene ({@link Meshes#named}: {@code uniform}, {@code clustered}, {@code surface}), or an OBJ path (optionally {@code PATH@grid4}). */
 public final class BenchScenes {
     private BenchScenes() {
     }
 
     public static TriangleMesh make(String kind, int n) {
         return switch (kind) {
-            case "uniform" -> ProceduralScenes.uniform(n, 1);
-            case "clustered" -> ProceduralScenes.clustered(n, 2);
-            case "surface" -> ProceduralScenes.surface(n, 3);
+            case "uniform", "clustered", "surface" -> Meshes.named(kind, n);
             default -> load(kind);
         };
     }
@@ -25,7 +24,7 @@ public final class BenchScenes {
         try {
             boolean grid = spec.endsWith("@grid4");
             TriangleMesh m = ObjMeshReader.read(Path.of(grid ? spec.substring(0, spec.length() - 6) : spec));
-            return grid ? ProceduralScenes.grid(m, 4) : m;
+            return grid ? MeshGrid.grid(m, 4) : m;
         } catch (IOException e) {
             throw new UncheckedIOException(e);
         }

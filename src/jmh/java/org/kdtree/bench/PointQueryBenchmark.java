@@ -2,9 +2,9 @@ package org.kdtree.bench;
 
 import java.util.ArrayList;
 import java.util.List;
-import java.util.SplittableRandom;
 import java.util.concurrent.TimeUnit;
 import org.kdtree.build.SlidingMidpointBuilder;
+import org.kdtree.generate.Points;
 import org.kdtree.points.NearestQuery;
 import org.kdtree.points.PointTree;
 import org.kdtree.points.RadiusQuery;
@@ -31,7 +31,8 @@ import smile.neighbor.Neighbor;
  * Smile's KDTree. For each data set, the build (one operation = one whole tree) and batches of
  * 10,000 queries (one operation = the whole batch): the 10 nearest neighbours, and all points
  * within a radius chosen so that a query finds about 10. Every library answers the same queries
- * from the same points; {@link #setUp} checks that they agree before anything is timed.
+ * (uniform in the unit cube) from the same points ({@link Points}: uniform, or the clustered set
+ * of the nearest-neighbour study); {@link #setUp} checks that they agree before anything is timed.
  *
  * <p>tinspin has no radius query: its box query around the ball, filtered by distance, stands
  * in for one (what a user of it would write).
@@ -67,11 +68,9 @@ public class PointQueryBenchmark {
         String[] p = data.split("-");
         int dims = Integer.parseInt(p[1].replace("d", ""));
         int n = Integer.parseInt(p[2].replace("M", "000000").replace("K", "000"));
-        points = p[0].equals("uniform") ? uniform(n, dims, 1) : clustered(n, dims, 2);
-        queries = uniform(QUERIES, dims, 3);
-        double[] c = new double[n * dims];
-        for (int i = 0; i < n; i++) System.arraycopy(points[i], 0, c, i * dims, dims);
-        flat = new PointsKd(dims, c);
+        flat = p[0].equals("uniform") ? Points.uniform(n, dims, 1) : Points.clustered(n, dims, 2);
+        points = rows(flat);
+        queries = rows(Points.uniform(QUERIES, dims, 3));
         build();
         radius = radiusForTen();
         checkAgreement();
@@ -185,27 +184,10 @@ public class PointQueryBenchmark {
         return Math.sqrt(s);
     }
 
-    static double[][] uniform(int n, int dims, long seed) {
-        SplittableRandom r = new SplittableRandom(seed);
-        double[][] p = new double[n][dims];
-        for (double[] x : p) for (int a = 0; a < dims; a++) x[a] = r.nextDouble();
-        return p;
-    }
-
-    /** 100 Gaussian clusters of standard deviation 0.01 with uniform centres. */
-    static double[][] clustered(int n, int dims, long seed) {
-        SplittableRandom r = new SplittableRandom(seed);
-        double[][] centres = uniform(100, dims, seed + 1);
-        double[][] p = new double[n][dims];
-        for (double[] x : p) {
-            double[] c = centres[r.nextInt(centres.length)];
-            for (int a = 0; a < dims; a++) x[a] = c[a] + 0.01 * gaussian(r);
-        }
-        return p;
-    }
-
-    private static double gaussian(SplittableRandom r) {
-        double u = 1 - r.nextDouble(), v = r.nextDouble();
-        return Math.sqrt(-2 * Math.log(u)) * Math.cos(2 * Math.PI * v);
+    /** The points as one array each, as tinspin and Smile take them. */
+    private static double[][] rows(PointsKd p) {
+        double[][] rows = new double[p.size()][p.dimension()];
+        for (int i = 0; i < rows.length; i++) for (int a = 0; a < rows[i].length; a++) rows[i][a] = p.coord(i, a);
+        return rows;
     }
 }

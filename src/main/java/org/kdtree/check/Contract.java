@@ -10,12 +10,16 @@ import java.util.function.Supplier;
 import org.kdtree.build.BuilderFault;
 import org.kdtree.build.KdTreeBuilder;
 import org.kdtree.build.Supervisor;
+import org.kdtree.generate.HardMeshes;
+import org.kdtree.generate.Meshes;
+import org.kdtree.generate.Points;
+import org.kdtree.generate.Shapes;
+import org.kdtree.io.BundledScenes;
 import org.kdtree.limits.Deadlines;
 import org.kdtree.shape.InvalidGeometryException;
-import org.kdtree.shape.PointsKd;
 import org.kdtree.shape.Primitives;
-import org.kdtree.shape.Scene2D;
 import org.kdtree.shape.Shape2D;
+import org.kdtree.shape.Scene2D;
 import org.kdtree.shape.TriangleMesh;
 import org.kdtree.tree.KdTree;
 
@@ -47,20 +51,20 @@ public final class Contract {
     /** {@return the contract's cases on fixed scenes, in the order a report lists them} */
     public static List<ContractCase> cases() {
         List<ContractCase> c = new ArrayList<>();
-        c.add(new ContractCase("talk figures", b -> check(b.get(), ContractScenes.talkFigures(), "the talk figures")));
-        c.add(new ContractCase("random 2-D shapes", b -> check(b.get(), ContractScenes.random2D(400, 1), "400 random 2-D shapes")));
-        c.add(new ContractCase("clustered 2-D shapes", b -> check(b.get(), ContractScenes.clustered2D(300, 2), "300 clustered 2-D triangles")));
-        c.add(new ContractCase("random triangles", b -> check(b.get(), ContractScenes.randomTriangles(600, 0.05, 3), "600 random triangles")));
-        c.add(new ContractCase("clustered triangles", b -> check(b.get(), ContractScenes.clusteredTriangles(600, 4), "600 clustered triangles")));
-        c.add(new ContractCase("cube grid, faces in split planes", b -> check(b.get(), ContractScenes.cubeGrid(3), "a 3 x 3 x 3 grid of cubes")));
+        c.add(new ContractCase("talk figures", b -> check(b.get(), BundledScenes.read2D("talk-figures.scene2d"), "the talk figures")));
+        c.add(new ContractCase("mixed 2-D shapes", b -> check(b.get(), Shapes.named("mixed", 400), "400 mixed 2-D shapes")));
+        c.add(new ContractCase("clustered 2-D shapes", b -> check(b.get(), Shapes.named("clustered", 300), "300 clustered 2-D triangles")));
+        c.add(new ContractCase("uniform triangles", b -> check(b.get(), Meshes.named("uniform", 600), "600 uniform triangles")));
+        c.add(new ContractCase("corner clusters", b -> check(b.get(), Meshes.cornerClusters(600, 4), "600 triangles in corner clusters")));
+        c.add(new ContractCase("cube grid, faces in split planes", b -> check(b.get(), HardMeshes.cubeGrid(3), "a 3 x 3 x 3 grid of cubes")));
         c.add(new ContractCase("points in 1-D and 4-D", Contract::pointsIn1DAnd4D));
         c.add(new ContractCase("stops before the depth cap", Contract::stopsBeforeTheDepthCap));
         c.add(new ContractCase("empty scene", Contract::emptySceneGivesOneEmptyLeaf));
         c.add(new ContractCase("one primitive", Contract::onePrimitive));
         c.add(new ContractCase("10,000 identical triangles", Contract::identicalTrianglesStayBounded));
-        c.add(new ContractCase("flat 3-D scene", b -> check(b.get(), ContractScenes.flatTriangles(300, 6), "300 triangles in one plane")));
+        c.add(new ContractCase("flat 3-D scene", b -> check(b.get(), Meshes.flat(300, 6), "300 triangles in one plane")));
         c.add(new ContractCase("flat 2-D scene", Contract::flatScene2D));
-        c.add(new ContractCase("degenerate triangles", b -> check(b.get(), ContractScenes.degenerateTriangles(), "degenerate triangles")));
+        c.add(new ContractCase("degenerate triangles", b -> check(b.get(), HardMeshes.degenerate(), "degenerate triangles")));
         c.add(new ContractCase("tiny and huge coordinates", Contract::tinyAndHugeCoordinates));
         c.add(new ContractCase("NaN coordinate rejected", Contract::nanCoordinateIsRejected));
         return c;
@@ -84,23 +88,23 @@ public final class Contract {
     }
 
     /**
-     * One try of the first property: n random 2-D shapes.
+     * One try of the first property: n {@link Shapes#mixed mixed 2-D shapes}.
      * @param builder the builder
      * @param n 0 .. 60 shapes
      * @param seed the scene's seed
      */
     public static void anyRandom2DScene(KdTreeBuilder builder, int n, long seed) {
-        check(builder, ContractScenes.random2D(n, seed), n + " random 2-D shapes (seed " + seed + ")");
+        check(builder, Shapes.mixed(n, seed), n + " mixed 2-D shapes (seed " + seed + ")");
     }
 
     /**
-     * One try of the second property: a soup of n random triangles.
+     * One try of the second property: a soup of n {@link Meshes#uniform(int, double, long) uniform triangles}.
      * @param builder the builder
      * @param n 0 .. 80 triangles
      * @param seed the scene's seed
      */
     public static void anyRandomTriangleSoup(KdTreeBuilder builder, int n, long seed) {
-        check(builder, ContractScenes.randomTriangles(n, 0.1, seed), n + " random triangles (seed " + seed + ")");
+        check(builder, Meshes.uniform(n, 0.1, seed), n + " uniform triangles (seed " + seed + ")");
     }
 
     /**
@@ -160,12 +164,8 @@ public final class Contract {
     }
 
     private static void pointsIn1DAnd4D(Supplier<? extends KdTreeBuilder> b) {
-        double[] one = new double[200], four = new double[400];
-        Random r = new Random(5);
-        for (int i = 0; i < one.length; i++) one[i] = r.nextDouble();
-        for (int i = 0; i < four.length; i++) four[i] = r.nextInt(10);
-        check(b.get(), new PointsKd(1, one), "200 points in 1-D");
-        check(b.get(), new PointsKd(4, four), "100 points in 4-D");
+        check(b.get(), Points.uniform(200, 1, 5), "200 points in 1-D");
+        check(b.get(), Points.grid(100, 4, 5), "100 points on a grid in 4-D");
     }
 
     /**
@@ -192,13 +192,13 @@ public final class Contract {
     private static final Map<Class<?>, Optional<ContractViolation>> STOPS = new ConcurrentHashMap<>();
 
     private static ContractViolation stopping(KdTreeBuilder builder) {
-        Scene2D scene = ContractScenes.random2D(50, 11);
-        KdTree tree = build(builder, scene, "50 random 2-D shapes");
+        Scene2D scene = Shapes.mixed(50, 11);
+        KdTree tree = build(builder, scene, "50 mixed 2-D shapes");
         TreeChecks.checkAll(builder, scene, tree);
         int[] emptySplits = {0};
         referencesBelow(tree, 0, emptySplits);
         if (emptySplits[0] == 0) return null;
-        return new ContractViolation(builder.name() + " never stops: on 50 random 2-D shapes it split " + emptySplits[0]
+        return new ContractViolation(builder.name() + " never stops: on 50 mixed 2-D shapes it split " + emptySplits[0]
                 + " nodes holding no primitive, down to the depth cap (" + builder.depthCap(scene.size()) + ");"
                 + " terminate() must return true once a node is small enough (an empty node at the latest).");
     }
@@ -222,7 +222,7 @@ public final class Contract {
 
     private static void onePrimitive(Supplier<? extends KdTreeBuilder> b) {
         KdTreeBuilder builder = b.get();
-        KdTree tree = check(builder, ContractScenes.soup(new double[] {0, 0, 0, 1, 0, 0, 0, 1, 0}), "one triangle");
+        KdTree tree = check(builder, HardMeshes.soup(new double[] {0, 0, 0, 1, 0, 0, 0, 1, 0}), "one triangle");
         ContractViolation.require(tree.stats().references() > 0,
                 builder.name() + ": a scene of one triangle gave a tree listing it in no leaf.");
         check(b.get(), new Scene2D(List.of(new Shape2D.Segment(0, 0, 3, 1))), "one 2-D segment");
@@ -230,7 +230,7 @@ public final class Contract {
 
     private static void identicalTrianglesStayBounded(Supplier<? extends KdTreeBuilder> b) {
         KdTreeBuilder builder = b.get();
-        TriangleMesh copies = ContractScenes.identicalTriangles(10_000);
+        TriangleMesh copies = HardMeshes.identical(10_000);
         KdTree tree = check(builder, copies, "10,000 identical triangles");
         long refs = tree.stats().references();
         ContractViolation.require(refs <= 64L * copies.size(), builder.name() + ": the tree of 10,000 identical triangles lists "
@@ -245,8 +245,8 @@ public final class Contract {
     }
 
     private static void tinyAndHugeCoordinates(Supplier<? extends KdTreeBuilder> b) {
-        check(b.get(), ContractScenes.scaled(ContractScenes.clusteredTriangles(300, 7), 1e-6), "300 triangles scaled by 1e-6");
-        check(b.get(), ContractScenes.scaled(ContractScenes.clusteredTriangles(300, 7), 1e6), "300 triangles scaled by 1e6");
+        check(b.get(), HardMeshes.scaled(Meshes.cornerClusters(300, 7), 1e-6), "300 triangles scaled by 1e-6");
+        check(b.get(), HardMeshes.scaled(Meshes.cornerClusters(300, 7), 1e6), "300 triangles scaled by 1e6");
     }
 
     private static void nanCoordinateIsRejected(Supplier<? extends KdTreeBuilder> b) {

@@ -36,7 +36,7 @@ import picocli.CommandLine.Parameters;
                 "Data: POINTS and --queries files (CSV, as for knn), or --generate.",
                 "With --dimensions: the exact search against brute force on generated data",
                 "at each dimension, where kd-trees stop helping.",
-                "One thread; prints a table, writes a CSV and a chart (PNG and SVG)."})
+                "One thread; prints a table, writes a CSV and a chart (PNG or SVG)."})
 final class KnnStudyCommand implements Callable<Integer> {
     @Parameters(paramLabel = "POINTS", arity = "0..1", description = "The points (CSV); or use --generate.")
     Path pointsFile;
@@ -82,7 +82,7 @@ final class KnnStudyCommand implements Callable<Integer> {
     @Option(names = "--csv", description = "CSV output file (default: knn-study-DATA.csv).")
     Path csv;
 
-    @Option(names = "--chart", description = "PNG chart file, with an SVG beside it (default: knn-study-DATA.png).")
+    @Option(names = "--chart", description = "Chart file, .png or .svg (default: knn-study-DATA.png).")
     Path chart;
 
     @Mixin
@@ -123,7 +123,7 @@ final class KnnStudyCommand implements Callable<Integer> {
         CommandFiles.requireFolder("--chart", chartFile());
         requireNotInput("--csv", csvFile());
         requireNotInput("--chart", chartFile());
-        requireNotInput("--chart (its SVG)", ChartFile.svgBeside(chartFile()));
+        ChartFile.requireFormat("--chart", chartFile());
     }
 
     /** Refuses an output that is one of the study's input files. */
@@ -177,7 +177,7 @@ final class KnnStudyCommand implements Callable<Integer> {
         String caption = ChartFile.caption(String.format(Locale.ROOT, "%s: %,d points, %d-D, %,d queries, k %d, builder %s; median of %d run%s",
                 dataName(), tree.size(), tree.dimension(), queries.size(), k, b.name(), runs, runs == 1 ? "" : "s"), 1);
         NeighbourChart.write(results, dataName() + ": recall at k = " + k + " against queries per second", caption, chartFile());
-        System.out.println("wrote " + csvFile() + ", " + chartFile() + " and its SVG");
+        System.out.println("wrote " + csvFile() + " and " + chartFile());
         return 0;
     }
 
@@ -214,7 +214,7 @@ final class KnnStudyCommand implements Callable<Integer> {
                 kind().label(), n, queryCount, k, b.name(), runs, runs == 1 ? "" : "s"), 1);
         DimensionChart.write(results, "Where kd-trees stop helping: exact search against brute force (" + kind().label() + ")",
                 caption, chartFile());
-        System.out.println("wrote " + csvFile() + ", " + chartFile() + " and its SVG");
+        System.out.println("wrote " + csvFile() + " and " + chartFile());
         return 0;
     }
 }

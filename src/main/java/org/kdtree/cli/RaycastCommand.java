@@ -12,7 +12,7 @@ import org.kdtree.build.Supervisor;
 import org.kdtree.build.BuilderSpec;
 import org.kdtree.files.AtomicFile;
 import org.kdtree.limits.Limits;
-import org.kdtree.shape.ProceduralScenes;
+import org.kdtree.generate.MeshGrid;
 import org.kdtree.shape.TriangleMesh;
 import org.kdtree.traverse.Traverser;
 import org.kdtree.traverse.TriangleIntersector;
@@ -85,7 +85,7 @@ final class RaycastCommand implements Callable<Integer> {
             CommandFiles.requireNotInput("--hits", hitsFile, "MESH", mesh);
             CommandFiles.requireNotInput("--hits", hitsFile, "--rays", raysFile);
         }
-        TriangleMesh scene = ProceduralScenes.grid(CommandFiles.readMesh(mesh, "raycast"), grid);
+        TriangleMesh scene = MeshGrid.grid(CommandFiles.readMesh(mesh, "raycast"), grid);
         KdTreeBuilder builder = spec.create();
         threads = builder.threads();
         if (raysFile != null) return traceFile(scene, builder);

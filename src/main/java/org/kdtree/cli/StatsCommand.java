@@ -13,7 +13,7 @@ import org.kdtree.tradeoff.Timing;
 import org.kdtree.limits.Limits;
 import org.kdtree.render.RenderJob;
 import org.kdtree.shape.Primitives;
-import org.kdtree.shape.ProceduralScenes;
+import org.kdtree.generate.MeshGrid;
 import org.kdtree.shape.TriangleMesh;
 import org.kdtree.tree.KdTree;
 import picocli.CommandLine.Command;
@@ -56,7 +56,7 @@ final class StatsCommand implements Callable<Integer> {
         Primitives prims = PrimitivesReader.read(BundledScenes.resolve(scene));
         if (grid != 1) {
             if (!(prims instanceof TriangleMesh mesh)) throw new IllegalArgumentException("--grid applies to OBJ meshes only");
-            prims = ProceduralScenes.grid(mesh, grid);
+            prims = MeshGrid.grid(mesh, grid);
         }
         KdTreeBuilder builder = spec.create();
         Primitives scenePrims = prims;

@@ -7,7 +7,7 @@ import java.util.Locale;
 import java.util.concurrent.Callable;
 import org.kdtree.build.Setting;
 import org.kdtree.limits.Limits;
-import org.kdtree.shape.ProceduralScenes;
+import org.kdtree.generate.MeshGrid;
 import org.kdtree.shape.TriangleMesh;
 import org.kdtree.tradeoff.ChartFile;
 import org.kdtree.tradeoff.RaySet;
@@ -27,7 +27,7 @@ import picocli.CommandLine.Parameters;
                 + "object median, SAH with lambda 1.0, 0.8 and 0.5, exact vs binned with 8, 32 and 256 bins, perfect splits on/off, "
                 + "depth caps, then every other registered builder), traces a ray workload, and reports build time, expected SAH cost, nodes, memory, nodes "
                 + "visited and triangle tests per ray, rays per second and the total time for 1, 10 and 100 rays per "
-                + "triangle. Writes CSV and a PNG chart with the Pareto front of build time against trace time."})
+                + "triangle. Writes CSV and a chart (PNG, or SVG if its name ends in .svg) with the Pareto front of build time against trace time."})
 final class TradeoffCommand implements Callable<Integer> {
     @Parameters(paramLabel = "MESH", description = "An OBJ mesh.")
     Path mesh;
@@ -61,7 +61,7 @@ final class TradeoffCommand implements Callable<Integer> {
     @Option(names = "--csv", description = "CSV output file (default: tradeoff-MESHNAME.csv).")
     Path csv;
 
-    @Option(names = "--chart", description = "PNG chart file (default: tradeoff-MESHNAME.png).")
+    @Option(names = "--chart", description = "Chart file, .png or .svg (default: tradeoff-MESHNAME.png).")
     Path chart;
 
     @Option(names = "--chart-rpt", defaultValue = "10", description = "Rays per triangle for the chart's trace time (default: ${DEFAULT-VALUE}).")
@@ -103,9 +103,9 @@ final class TradeoffCommand implements Callable<Integer> {
         CommandFiles.requireFolder("--chart", pngOut);
         CommandFiles.requireNotInput("--csv", csvOut, "MESH", mesh);
         CommandFiles.requireNotInput("--chart", pngOut, "MESH", mesh);
-        CommandFiles.requireNotInput("--chart (its SVG)", ChartFile.svgBeside(pngOut), "MESH", mesh);
+        ChartFile.requireFormat("--chart", pngOut);
         TriangleMesh m = CommandFiles.readMesh(mesh, "tradeoff");
-        if (grid > 1) m = ProceduralScenes.grid(m, grid);
+        if (grid > 1) m = MeshGrid.grid(m, grid);
         RaySet set = switch (rays.toUpperCase(Locale.ROOT)) {
             case "P" -> RaySet.primary(m, Math.max(1, (int) Math.round(Math.sqrt(rayCount))));
             case "R" -> RaySet.random(m, rayCount);
@@ -138,7 +138,7 @@ final class TradeoffCommand implements Callable<Integer> {
                 base, m.size(), set.name(), set.size(), runs, runs == 1 ? "" : "s"), threads);
         TradeoffChart.write(results, base + ": build time vs trace time (" + set.name() + " rays)", chartRaysPerTriangle,
                 caption, pngOut);
-        System.out.println("wrote " + csvOut + ", " + pngOut + " and its SVG");
+        System.out.println("wrote " + csvOut + " and " + pngOut);
         return 0;
     }
 }

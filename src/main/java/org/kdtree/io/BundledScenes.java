@@ -14,6 +14,8 @@ import java.util.List;
 import java.util.Locale;
 import java.util.Map;
 import java.util.Optional;
+import org.kdtree.shape.Primitives;
+import org.kdtree.shape.Scene2D;
 
 /**
  * The scenes of the repository's {@code scenes/} folder, packaged in the jar as class-path
@@ -83,6 +85,34 @@ public final class BundledScenes {
             return Path.of(uri);
         } catch (URISyntaxException e) {
             throw new IllegalStateException(url + ": " + e.getMessage(), e);
+        }
+    }
+
+    /**
+     * Reads a bundled scene, which must exist, by its extension ({@link PrimitivesReader}).
+     * @param file one of {@link #FILES}
+     * @return its primitives
+     * @throws UncheckedIOException if it cannot be read (a broken jar)
+     */
+    public static Primitives load(String file) {
+        try {
+            return PrimitivesReader.read(path(file));
+        } catch (IOException e) {
+            throw new UncheckedIOException(e);
+        }
+    }
+
+    /**
+     * Reads a bundled 2-D scene, which must exist: the talk's figures ({@code talk-figures.scene2d}) or one the workbench names.
+     * @param file one of the {@code .scene2d} files of {@link #FILES}
+     * @return its shapes
+     * @throws UncheckedIOException if it cannot be read (a broken jar)
+     */
+    public static Scene2D read2D(String file) {
+        try {
+            return Scene2DReader.read(path(file));
+        } catch (IOException e) {
+            throw new UncheckedIOException(e);
         }
     }
 

@@ -25,7 +25,7 @@ import org.knowm.xchart.style.markers.SeriesMarkers;
 /**
  * What makes every chart the project writes readable on its own: log axes labelled at each
  * decade and at 2 and 5 between, one marker and colour per series, a caption that says what was
- * measured where and when, and both PNG and SVG files.
+ * measured where and when, and one file, PNG or SVG, as its name says.
  */
 public final class ChartFile {
     private static final Marker[] MARKERS = {SeriesMarkers.CIRCLE, SeriesMarkers.DIAMOND, SeriesMarkers.SQUARE,
@@ -178,40 +178,45 @@ public final class ChartFile {
     }
 
     /**
-     * {@return the SVG file written beside a chart's PNG: the same name, {@code .svg}}
+     * Refuses a chart file whose name says neither format, before any work.
      *
-     * @param png the chart's PNG file
+     * @param option the option that named it, for the message
+     * @param file   the chart file
+     * @throws IllegalArgumentException unless its name ends in {@code .png} or {@code .svg}
      */
-    public static Path svgBeside(Path png) {
-        return png.resolveSibling(png.getFileName().toString().replaceFirst("(?i)\\.png$", "") + ".svg");
+    public static void requireFormat(String option, Path file) {
+        String name = file.getFileName().toString().toLowerCase(Locale.ROOT);
+        if (!name.endsWith(".png") && !name.endsWith(".svg"))
+            throw new IllegalArgumentException(option + " " + file + ": a chart is written as .png or .svg");
     }
 
     /**
-     * Writes {@code png} and, beside it, the same chart as SVG (same name, {@code .svg}); returns the SVG's path.
+     * Writes the chart with its caption to {@code file}: as SVG if its name ends in {@code .svg},
+     * else as PNG. One file per chart: the docs keep each chart in one format.
      *
      * @param chart   the chart to draw
      * @param caption the text under the chart, wrapped to its width
-     * @param png     the PNG file to write
-     * @return the path of the SVG written
-     * @throws IOException if either file cannot be written
+     * @param file    the PNG or SVG file to write
+     * @throws IOException if the file cannot be written
      */
-    public static Path write(XYChart chart, String caption, Path png) throws IOException {
+    public static void write(XYChart chart, String caption, Path file) throws IOException {
         List<String> lines = captionLines(caption, chart.getWidth() - 20);
         int w = chart.getWidth(), h = chart.getHeight() + CAPTION_LINE * lines.size() + 10;
+        if (file.getFileName().toString().toLowerCase(Locale.ROOT).endsWith(".svg")) {
+            VectorGraphics2D vg = new VectorGraphics2D();
+            paint(chart, lines, vg);
+            AtomicFile.write(file, out -> Processors.get("svg").getDocument(vg.getCommands(), new PageSize(0, 0, w, h)).writeTo(out));
+            return;
+        }
         BufferedImage image = new BufferedImage(w, h, BufferedImage.TYPE_INT_RGB);
         Graphics2D g = image.createGraphics();
         g.setRenderingHint(RenderingHints.KEY_ANTIALIASING, RenderingHints.VALUE_ANTIALIAS_ON);
         g.setRenderingHint(RenderingHints.KEY_TEXT_ANTIALIASING, RenderingHints.VALUE_TEXT_ANTIALIAS_ON);
         paint(chart, lines, g);
         g.dispose();
-        AtomicFile.write(png, out -> {
-            if (!ImageIO.write(image, "png", out)) throw new IOException(png + ": no PNG writer");
+        AtomicFile.write(file, out -> {
+            if (!ImageIO.write(image, "png", out)) throw new IOException(file + ": no PNG writer");
         });
-        Path svg = svgBeside(png);
-        VectorGraphics2D vg = new VectorGraphics2D();
-        paint(chart, lines, vg);
-        AtomicFile.write(svg, out -> Processors.get("svg").getDocument(vg.getCommands(), new PageSize(0, 0, w, h)).writeTo(out));
-        return svg;
     }
 
     /**

@@ -18,12 +18,12 @@ public final class DimensionChart {
     }
 
     /**
-     * Writes the chart as PNG and SVG with {@code caption} under it ({@link ChartFile}).
+     * Writes the chart as PNG or SVG with {@code caption} under it ({@link ChartFile}).
      *
      * @param results the measurements to draw
      * @param title   the chart's title
      * @param caption the text under the chart
-     * @param png     the PNG file to write; the SVG goes beside it
+     * @param png     the chart file, PNG or SVG ({@link ChartFile#write})
      * @throws IOException if a file cannot be written
      */
     public static void write(List<DimensionResult> results, String title, String caption, Path png) throws IOException {

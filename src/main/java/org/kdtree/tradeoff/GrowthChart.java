@@ -29,7 +29,7 @@ public final class GrowthChart {
      * Reads the CSV files and writes the chart for one scene, exiting with 2 on a usage error and
      * 1 if no row is for the scene.
      *
-     * @param args the PNG to write, the scene, then one or more JMH CSV files
+     * @param args the chart to write (PNG or SVG), the scene, then one or more JMH CSV files
      * @throws IOException if a CSV file cannot be read or is not a build benchmark's, or the chart cannot be written
      */
     public static void main(String[] args) throws IOException {
@@ -47,7 +47,7 @@ public final class GrowthChart {
         String caption = "JMH averages from " + String.join(", ", List.of(args).subList(2, args.length))
                 + " · one build thread · drawn " + java.time.LocalDate.now();
         write(series, scene, caption, Path.of(args[0]));
-        System.out.println("wrote " + args[0] + " and its SVG");
+        System.out.println("wrote " + args[0]);
     }
 
     /** Adds the rows of one JMH CSV whose scene is {@code scene}: builder -> (N -> ms per build). */

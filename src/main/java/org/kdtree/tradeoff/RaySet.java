@@ -1,7 +1,7 @@
 package org.kdtree.tradeoff;
 
 import org.kdtree.geom.Box;
-import org.kdtree.shape.ProceduralScenes;
+import org.kdtree.generate.MeshGrid;
 import org.kdtree.shape.TriangleMesh;
 
 /**
@@ -9,7 +9,7 @@ import org.kdtree.shape.TriangleMesh;
  * generating them is not timed with tracing. The sets of the benchmark spec
  * (docs/benchmark-spec.md): P, the primary rays of a 1024 x 1024 camera, and R, random rays
  * from origins inside the scene's box. The box is always the spec's: min and max over all the
- * mesh's vertices, used by a triangle or not ({@link ProceduralScenes#vertexBounds}).
+ * mesh's vertices, used by a triangle or not ({@link MeshGrid#vertexBounds}).
  */
 public final class RaySet {
     /** Width and height of the spec's set P image. */
@@ -42,7 +42,7 @@ public final class RaySet {
      * @return the {@code res * res} rays, row by row from the top, unit directions
      */
     public static RaySet primary(TriangleMesh mesh, int res) {
-        return primary(ProceduralScenes.vertexBounds(mesh), res);
+        return primary(MeshGrid.vertexBounds(mesh), res);
     }
 
     /**
@@ -53,7 +53,7 @@ public final class RaySet {
      * @return the rays, unit directions
      */
     public static RaySet random(TriangleMesh mesh, int n) {
-        return random(ProceduralScenes.vertexBounds(mesh), n);
+        return random(MeshGrid.vertexBounds(mesh), n);
     }
 
     /**

@@ -15,14 +15,14 @@ public final class TradeoffChart {
     }
 
     /**
-     * Writes a PNG (and an SVG beside it) of build time (x) against the time to trace the
+     * Writes a chart (PNG or SVG) of build time (x) against the time to trace the
      * workload (y), both in ms, with {@code caption} under the chart.
      *
      * @param results         the measurements, one point per variant
      * @param title           the chart's title
      * @param raysPerTriangle the workload: rays traced per triangle of the scene
      * @param caption         the text under the chart
-     * @param png             the PNG file to write; the SVG goes beside it
+     * @param png             the chart file, PNG or SVG ({@link ChartFile#write})
      * @throws IOException if a file cannot be written
      */
     public static void write(List<TradeoffResult> results, String title, double raysPerTriangle, String caption, Path png)

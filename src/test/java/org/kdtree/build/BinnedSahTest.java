@@ -8,10 +8,12 @@ import org.junit.jupiter.api.Test;
 import org.kdtree.shape.Primitives;
 import org.kdtree.shape.TriangleMesh;
 import org.kdtree.tree.KdTree;
+import org.kdtree.generate.Meshes;
+import org.kdtree.generate.Shapes;
 
 /** Binned SAH: a valid tree whose expected cost is close to, and never far below, the exact one. */
 class BinnedSahTest {
-    private static final TriangleMesh SPHERE = Scenes.bumpySphere(30, 50, 21);
+    private static final TriangleMesh SPHERE = Meshes.surface(30, 50, 21);
 
     @Test void binnedTreeHoldsEveryPrimitiveAndCostsLittleMoreThanExact() {
         double exact = new SahBuilder().build(SPHERE).stats().expectedCost();
@@ -26,7 +28,7 @@ class BinnedSahTest {
     }
 
     @Test void binnedWorksIn2DAndOnDegenerateScenes() {
-        for (Primitives p : new Primitives[] {Scenes.random2D(200, 22), Scenes.planarAndDegenerate(23)}) {
+        for (Primitives p : new Primitives[] {Shapes.aligned(200, 22), Meshes.planarAndDegenerate(23)}) {
             KdTree t = new SahBuilder().algorithm(SahBuilder.Algorithm.BINNED).bins(16).build(p);
             assertEveryPrimitiveReferenced(t, p);
             assertThat(t.nodeCount()).isGreaterThan(1);

@@ -5,12 +5,12 @@ import static org.assertj.core.api.Assertions.assertThatThrownBy;
 
 import org.junit.jupiter.api.Test;
 import org.kdtree.shape.TriangleMesh;
-import org.kdtree.testing.TestScenes;
 import org.kdtree.testing.Trees;
+import org.kdtree.generate.Meshes;
 
 /** One builder specification: one validation, one rule for settings that do not apply, any registered builder. */
 class BuilderSpecTest {
-    private static final TriangleMesh MESH = TestScenes.clusteredTriangles(2000, 7);
+    private static final TriangleMesh MESH = Meshes.cornerClusters(2000, 7);
 
     @Test void theFluentApiChainsTheBaseSettersIntoEachBuildersOwn() {
         MedianPlaneBuilder median = (MedianPlaneBuilder) new MedianPlaneBuilder().threads(4).minPrimitives(1);

@@ -11,9 +11,9 @@ import java.util.regex.Matcher;
 import java.util.regex.Pattern;
 import java.util.stream.Stream;
 import org.junit.jupiter.api.Test;
-import org.kdtree.check.ContractScenes;
 import org.kdtree.shape.Primitives;
 import org.kdtree.tree.KdTree;
+import org.kdtree.generate.Meshes;
 
 /**
  * Algorithm 1 is written once (KdTreeBuilder.recConst) and every builder runs through it: every
@@ -57,7 +57,7 @@ class OneRecursionTest {
 
     /** Every registered builder, the SAH's algorithms, one and two threads: the recursion visits every node of the tree. */
     @Test void everyNodeOfEveryBuildersTreeIsVisitedByTheRecursion() {
-        Primitives scene = ContractScenes.clusteredTriangles(6000, 4);
+        Primitives scene = Meshes.cornerClusters(6000, 4);
         List<KdTreeBuilder> builders = new ArrayList<>();
         for (String name : Builders.names()) builders.add(Builders.create(name));
         for (SahBuilder.Algorithm a : SahBuilder.Algorithm.values())

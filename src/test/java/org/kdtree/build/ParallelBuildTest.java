@@ -6,11 +6,12 @@ import static org.assertj.core.api.Assertions.assertThatThrownBy;
 import org.junit.jupiter.api.Test;
 import org.kdtree.shape.TriangleMesh;
 import org.kdtree.tree.KdTree;
+import org.kdtree.generate.Meshes;
 
 /** A build with several threads makes the very tree of the sequential build. */
 class ParallelBuildTest {
-    private static final TriangleMesh SPHERE = Scenes.bumpySphere(40, 70, 11);       // 5,600 triangles
-    private static final TriangleMesh CLUSTERS = Scenes.clustered(5000, 12);
+    private static final TriangleMesh SPHERE = Meshes.surface(40, 70, 11);       // 5,600 triangles
+    private static final TriangleMesh CLUSTERS = Meshes.clustered(5000, 0.02, 12);
 
     @Test void eventSahWithTwoAndThreeThreadsBuildsTheSequentialTree() {
         for (TriangleMesh scene : new TriangleMesh[] {SPHERE, CLUSTERS}) {

@@ -6,10 +6,11 @@ import static org.assertj.core.api.Assertions.assertThatThrownBy;
 import org.junit.jupiter.api.Test;
 import org.kdtree.shape.TriangleMesh;
 import org.kdtree.tree.KdTree;
+import org.kdtree.generate.Meshes;
 
 /** The quality presets: exact is the default tree; the others are shallower, smaller and cost a little more. */
 class QualityTest {
-    private static final TriangleMesh SPHERE = Scenes.bumpySphere(60, 90, 41);   // 10,800 triangles
+    private static final TriangleMesh SPHERE = Meshes.surface(60, 90, 41);   // 10,800 triangles
 
     @Test void exactIsTheDefaultTree() {
         SahAlgorithmsTest.assertSameTree(new SahBuilder().quality(Quality.EXACT).build(SPHERE), new SahBuilder().build(SPHERE));

@@ -8,18 +8,20 @@ import org.junit.jupiter.params.provider.Arguments;
 import org.junit.jupiter.params.provider.MethodSource;
 import org.kdtree.shape.Primitives;
 import org.kdtree.tree.KdTree;
+import org.kdtree.generate.Meshes;
+import org.kdtree.generate.Shapes;
 
 /** NAIVE, SORTED and EVENT must build the very same tree: same splits, same leaves, same order of references. */
 class SahAlgorithmsTest {
     static Stream<Arguments> scenes() {
         return Stream.of(
-                Arguments.of("random 3-D", Scenes.randomTriangles(300, 0.2, 1)),
-                Arguments.of("random 3-D, large triangles", Scenes.randomTriangles(200, 0.8, 2)),
-                Arguments.of("clustered", Scenes.clustered(400, 3)),
-                Arguments.of("bumpy sphere", Scenes.bumpySphere(12, 20, 4)),
-                Arguments.of("planar and degenerate", Scenes.planarAndDegenerate(5)),
-                Arguments.of("random 2-D", Scenes.random2D(300, 6)),
-                Arguments.of("random 2-D, small", Scenes.random2D(40, 7)));
+                Arguments.of("random 3-D", Meshes.uniform(300, 0.2, 1)),
+                Arguments.of("random 3-D, large triangles", Meshes.uniform(200, 0.8, 2)),
+                Arguments.of("clustered", Meshes.clustered(400, 0.02, 3)),
+                Arguments.of("bumpy sphere", Meshes.surface(12, 20, 4)),
+                Arguments.of("planar and degenerate", Meshes.planarAndDegenerate(5)),
+                Arguments.of("random 2-D", Shapes.aligned(300, 6)),
+                Arguments.of("random 2-D, small", Shapes.aligned(40, 7)));
     }
 
     @ParameterizedTest(name = "{0}")

@@ -8,13 +8,15 @@ import net.jqwik.api.Property;
 import net.jqwik.api.constraints.IntRange;
 import org.junit.jupiter.api.Test;
 import org.kdtree.shape.Primitives;
-import org.kdtree.testing.TestScenes;
 import org.kdtree.testing.Trees;
 import org.kdtree.tree.KdTree;
+import org.kdtree.generate.HardMeshes;
+import org.kdtree.generate.Meshes;
+import org.kdtree.generate.Shapes;
 
 class SahBuilderTest {
     @Test void onClusteredScenesSahCostsLessThanBothMedianTrees() {
-        for (Primitives scene : new Primitives[] {TestScenes.clustered2D(300, 11), TestScenes.clusteredTriangles(600, 12)}) {
+        for (Primitives scene : new Primitives[] {Shapes.clustered(300, 11), Meshes.cornerClusters(600, 12)}) {
             double sah = new SahBuilder().build(scene).stats().expectedCost();
             double medianPlane = new MedianPlaneBuilder().build(scene).stats().expectedCost();
             double objectMedian = new ObjectMedianBuilder().build(scene).stats().expectedCost();
@@ -26,15 +28,15 @@ class SahBuilderTest {
     @Property(tries = 25)
     void naiveAndSortedSearchesBuildTheSameTree(@ForAll @IntRange(min = 0, max = 120) int n, @ForAll long seed,
                                                 @ForAll boolean threeD) {
-        Primitives scene = threeD ? TestScenes.randomTriangles(n, 0.1, seed) : TestScenes.random2D(n, seed);
+        Primitives scene = threeD ? Meshes.uniform(n, 0.1, seed) : Shapes.mixed(n, seed);
         KdTree naive = new SahBuilder().algorithm(SahBuilder.Algorithm.NAIVE).build(scene);
         KdTree sorted = new SahBuilder().algorithm(SahBuilder.Algorithm.SORTED).build(scene);
         Trees.assertSameTree(naive, sorted);
     }
 
     @Test void naiveAndSortedAgreeOnPlanarAndFlatScenes() {
-        for (Primitives scene : new Primitives[] {TestScenes.cubeGrid(2), TestScenes.flatTriangles(200, 3),
-                TestScenes.degenerateTriangles(), TestScenes.clustered2D(100, 5)}) {
+        for (Primitives scene : new Primitives[] {HardMeshes.cubeGrid(2), Meshes.flat(200, 3),
+                HardMeshes.degenerate(), Shapes.clustered(100, 5)}) {
             Trees.assertSameTree(new SahBuilder().algorithm(SahBuilder.Algorithm.NAIVE).build(scene),
                     new SahBuilder().algorithm(SahBuilder.Algorithm.SORTED).build(scene));
         }
@@ -60,7 +62,7 @@ class SahBuilderTest {
                 }
             }
         };
-        KdTree tree = counting.build(TestScenes.clusteredTriangles(500, 5));
+        KdTree tree = counting.build(Meshes.cornerClusters(500, 5));
         assertThat(finds[0]).as("findPlane calls").isGreaterThan(100).isEqualTo((tree.nodeCount() - 1) / 2);
         assertThat(again[0]).as("searches again in findPlane").isZero();
     }
@@ -90,13 +92,13 @@ class SahBuilderTest {
 
     @Test void aStudentsSahWithKeepPlaneBuildsTheLibrarysTree() throws Exception {
         assertThat(BuildNode.class.getMethod("keepPlane", org.kdtree.geom.SplitPlane.class)).isNotNull();
-        Primitives mesh = TestScenes.clusteredTriangles(2000, 6);
+        Primitives mesh = Meshes.cornerClusters(2000, 6);
         Trees.assertSameTree(new SahBuilder().build(mesh), new KeepingSah().build(mesh));
     }
 
     /** A subclass of the SAH runs on the same store and searches as the SAH itself: the same tree, whatever the algorithm. */
     @Test void aSubclassBuildsTheSahsTreeWithEveryAlgorithm() {
-        Primitives mesh = TestScenes.clusteredTriangles(3000, 5);
+        Primitives mesh = Meshes.cornerClusters(3000, 5);
         for (SahBuilder.Algorithm a : SahBuilder.Algorithm.values()) {
             if (a == SahBuilder.Algorithm.NAIVE) continue; // O(N^2): SahAlgorithmsTest compares it on smaller scenes
             KdTree own = new SahBuilder().algorithm(a).build(mesh);
@@ -106,20 +108,20 @@ class SahBuilderTest {
     }
 
     @Test void aSinglePrimitiveIsALeaf() {
-        KdTree tree = new SahBuilder().build(TestScenes.soup(new double[] {0, 0, 0, 1, 0, 0, 0, 1, 0}));
+        KdTree tree = new SahBuilder().build(HardMeshes.soup(new double[] {0, 0, 0, 1, 0, 0, 0, 1, 0}));
         assertThat(tree.nodeCount()).isEqualTo(1);
         assertThat(tree.leafSize(0)).isEqualTo(1);
     }
 
     @Test void higherTraversalCostMakesShallowerTrees() {
-        Primitives scene = TestScenes.randomTriangles(500, 0.05, 9);
+        Primitives scene = Meshes.uniform(500, 0.05, 9);
         int cheap = new SahBuilder().costs(1, 20).build(scene).nodeCount();
         int dear = new SahBuilder().costs(200, 20).build(scene).nodeCount();
         assertThat(dear).isLessThan(cheap);
     }
 
     @Test void depthCapIsRespected() {
-        KdTree tree = new SahBuilder().maxDepth(3).build(TestScenes.randomTriangles(500, 0.01, 9));
+        KdTree tree = new SahBuilder().maxDepth(3).build(Meshes.uniform(500, 0.01, 9));
         assertThat(tree.stats().maxDepth()).isLessThanOrEqualTo(3);
     }
 

@@ -10,6 +10,8 @@ import org.kdtree.shape.PointsKd;
 import org.kdtree.shape.Primitives;
 import org.kdtree.shape.TriangleMesh;
 import org.kdtree.tree.KdTree;
+import org.kdtree.generate.Meshes;
+import org.kdtree.generate.Shapes;
 
 /**
  * The SAH builds one tree whatever path a node takes through the node store: a subclass of
@@ -20,11 +22,11 @@ import org.kdtree.tree.KdTree;
 class SahVariantsBuildOneTreeTest {
     static Stream<Arguments> scenes() {
         return Stream.of(
-                Arguments.of("random 3-D", Scenes.randomTriangles(600, 0.2, 31)),
-                Arguments.of("clustered", Scenes.clustered(3000, 32)),
-                Arguments.of("bumpy sphere", Scenes.bumpySphere(30, 40, 33)),
-                Arguments.of("planar and degenerate", Scenes.planarAndDegenerate(34)),
-                Arguments.of("random 2-D", Scenes.random2D(800, 35)),
+                Arguments.of("random 3-D", Meshes.uniform(600, 0.2, 31)),
+                Arguments.of("clustered", Meshes.clustered(3000, 0.02, 32)),
+                Arguments.of("bumpy sphere", Meshes.surface(30, 40, 33)),
+                Arguments.of("planar and degenerate", Meshes.planarAndDegenerate(34)),
+                Arguments.of("random 2-D", Shapes.aligned(800, 35)),
                 Arguments.of("planes on bin boundaries", planesOnBinBoundaries()),
                 Arguments.of("points in 5-D", pointsIn5D()));
     }

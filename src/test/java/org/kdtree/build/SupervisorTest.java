@@ -7,7 +7,6 @@ import static org.assertj.core.api.Assertions.catchThrowableOfType;
 import java.util.concurrent.CancellationException;
 import java.util.concurrent.atomic.AtomicReference;
 import org.junit.jupiter.api.Test;
-import org.kdtree.check.ContractScenes;
 import org.kdtree.limits.Deadlines;
 import org.kdtree.shape.Scene2D;
 import org.kdtree.testing.InfinitePlaneBuilder;
@@ -16,10 +15,11 @@ import org.kdtree.testing.LoopingTerminateBuilder;
 import org.kdtree.testing.NaNPlaneBuilder;
 import org.kdtree.testing.SleepyBuilder;
 import org.kdtree.testing.ThrowingBuilder;
+import org.kdtree.generate.Shapes;
 
 /** A builder that throws, answers wrongly, hangs or crawls is stopped and named; its thread does not stay spinning. */
 class SupervisorTest {
-    private static final Scene2D SCENE = ContractScenes.random2D(40, 3);
+    private static final Scene2D SCENE = Shapes.mixed(40, 3);
     private static final Supervisor QUICK = Supervisor.of(new Deadlines(0.5, 1.5));
 
     @Test void aBuilderThatThrowsIsNamedWithTheMethodAndTheNode() {

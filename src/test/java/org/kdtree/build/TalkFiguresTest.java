@@ -6,12 +6,12 @@ import org.junit.jupiter.api.Test;
 import org.kdtree.check.TreeInspector;
 import org.kdtree.geom.Box;
 import org.kdtree.shape.Scene2D;
-import org.kdtree.testing.TestScenes;
 import org.kdtree.tree.KdTree;
+import org.kdtree.io.BundledScenes;
 
 /** The handful of 2-D objects of the talk's figures 2-5 give the splits the talk describes. */
 class TalkFiguresTest {
-    private final Scene2D scene = TestScenes.talkFigures();
+    private final Scene2D scene = BundledScenes.read2D("talk-figures.scene2d");
 
     @Test void figure2MedianPlanesCutEveryVoxelInItsMiddleCyclingTheAxes() {
         KdTree tree = new MedianPlaneBuilder().minPrimitives(1).build(scene);

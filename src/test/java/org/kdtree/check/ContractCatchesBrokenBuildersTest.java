@@ -11,11 +11,12 @@ import org.kdtree.geom.SplitPlane;
 import org.kdtree.shape.Primitives;
 import org.kdtree.tree.KdTree;
 import org.kdtree.tree.KdTreeWriter;
-import org.kdtree.testing.TestScenes;
+import org.kdtree.generate.HardMeshes;
+import org.kdtree.generate.Shapes;
 
 /** The contract's checks fail, with a useful message, on the mistakes students make. */
 class ContractCatchesBrokenBuildersTest {
-    private final Primitives scene = TestScenes.random2D(200, 3);
+    private final Primitives scene = Shapes.mixed(200, 3);
 
     /**
      * The median plane's tree with its leaves rewritten by {@code leaf} (node, references -> references):
@@ -84,7 +85,7 @@ class ContractCatchesBrokenBuildersTest {
     @Test void theBaseClassEnforcesTheDepthCapEvenIfTerminateForgetsIt() {
         KdTreeBuilder b = new IgnoresDepth().maxDepth(4);
         // the tree is valid: the recursion itself stops at the cap
-        TreeChecks.checkAll(b, TestScenes.identicalTriangles(50), b.build(TestScenes.identicalTriangles(50)));
+        TreeChecks.checkAll(b, HardMeshes.identical(50), b.build(HardMeshes.identical(50)));
         TreeChecks.checkAll(b, scene, b.build(scene));
     }
 

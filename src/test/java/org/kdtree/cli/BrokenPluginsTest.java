@@ -120,7 +120,7 @@ class BrokenPluginsTest {
             statsSaysOneLine(b);
             String method = b.endsWith("terminate") ? "terminate" : "findPlane";
             CliRun r = gradeFailsWithOneLine(b);
-            assertThat(r.out()).contains("  random 2-D shapes                            not run  builder " + b + " hung in " + method
+            assertThat(r.out()).contains("  mixed 2-D shapes                             not run  builder " + b + " hung in " + method
                             + " (see talk figures)")
                     .contains("verdict: FAIL: breaks the contract (1 of 18 checks: talk figures); 17 not run: builder " + b
                             + " hung in " + method + " (see talk figures)")

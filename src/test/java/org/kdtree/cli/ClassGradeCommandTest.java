@@ -41,7 +41,7 @@ class ClassGradeCommandTest {
         Map<String, Map<String, String>> rows = rows(Files.readString(csv, StandardCharsets.UTF_8));
         assertThat(rows).hasSize(10);
         for (String good : List.of("alice.jar", "bob.jar")) {
-            assertThat(rows.get(good).get("verdict")).isIn("CORRECT", "GOOD");
+            assertThat(rows.get(good).get("verdict")).as(good + ": " + rows.get(good)).isIn("CORRECT", "GOOD");
             assertThat(rows.get(good).get("builder")).isEqualTo("plugin-midpoint");
             assertThat(rows.get(good).get("cost_vs_median")).isNotEmpty();
         }

@@ -28,7 +28,7 @@ class GradeCommandTest {
                 .contains("any random 2-D scene (30 tries)              pass")
                 .contains("planes separate something                    pass")
                 .contains("leaves stop before the depth cap             pass")
-                .contains("expected cost at most the median plane's     FAIL  centre-midpoint: on clustered triangles,"
+                .contains("expected cost at most the median plane's     FAIL  centre-midpoint: on corner clusters,"
                         + " the tree's expected SAH cost is 601.86, 5.02 times the median-plane builder's 119.84")
                 .contains("verdict: CORRECT: honours the contract (18 of 18 checks); fails quality:"
                         + " expected cost at most the median plane's; cheaper than median-plane on 2 of 5 scenes");
@@ -43,8 +43,8 @@ class GradeCommandTest {
         assertThat(r.code()).as(r.err()).isEqualTo(1);
         assertThat(r.out()).contains("talk figures                                 FAIL  builder plane-outside: findPlane chose x0 = ")
                 .contains("outside the voxel")
-                .contains("random 2-D shapes                            FAIL  builder plane-outside: findPlane chose x0 = ")
-                .contains("random triangles                             FAIL  the same failure as random 2-D shapes above")
+                .contains("mixed 2-D shapes                             FAIL  builder plane-outside: findPlane chose x0 = ")
+                .contains("uniform triangles                            FAIL  the same failure as mixed 2-D shapes above")
                 .contains("verdict: FAIL: breaks the contract (")
                 .doesNotContain("quality (course scenes)");
         assertThat(Files.readAllLines(csv).get(0)).isEqualTo("section,item,builder,result,expected_cost,nodes,depth,build_ms");

@@ -4,9 +4,8 @@ import static org.assertj.core.api.Assertions.assertThat;
 
 import java.util.List;
 import org.junit.jupiter.api.Test;
-import org.kdtree.render.RenderJob;
 
-/** What a newcomer reads first: every command's help, whole and unbroken, and counts in good English. */
+/** What a newcomer reads first: every command's help, whole and unbroken. */
 class HelpTextTest {
     private static final List<String> COMMANDS = List.of("gui", "stats", "raycast", "render", "tradeoff", "knn", "knn-study", "grade");
 
@@ -53,11 +52,5 @@ class HelpTextTest {
         String help = CliRun.of("stats", "--help").out().replaceAll("\\s+", " ");
         assertThat(help).contains("NAIVE, SORTED and EVENT build the same tree in different times; BINNED builds another")
                 .doesNotContain("(same tree, different time)");
-    }
-
-    @Test void countsAreSingularForOne() {
-        assertThat(RenderJob.count(1, "light")).isEqualTo("1 light");
-        assertThat(RenderJob.count(2, "light")).isEqualTo("2 lights");
-        assertThat(RenderJob.count(10_370, "primitive")).isEqualTo("10,370 primitives");
     }
 }

@@ -14,7 +14,7 @@ import org.junit.jupiter.api.Test;
 import org.kdtree.build.SahBuilder;
 import org.kdtree.geom.Ray;
 import org.kdtree.io.SceneFormatException;
-import org.kdtree.shape.ProceduralScenes;
+import org.kdtree.generate.MeshGrid;
 import org.kdtree.shape.TriangleMesh;
 import org.kdtree.traverse.BruteForce;
 import org.kdtree.traverse.Hit;
@@ -59,7 +59,7 @@ class RayDirectionScalesTest {
      * ordinary by an exact power of two, t scaled back), or the refusal when t overflows.
      */
     @Test void everyScaleGivesTheBruteForceAnswer() throws IOException {
-        TriangleMesh mesh = ProceduralScenes.grid(ONE, 3);
+        TriangleMesh mesh = MeshGrid.grid(ONE, 3);
         BruteForce brute = new BruteForce(new TriangleIntersector(mesh));
         Random rnd = new Random(23);
         int hits = 0, refused = 0;

@@ -14,7 +14,7 @@ import org.junit.jupiter.api.io.TempDir;
 import org.kdtree.geom.Box;
 import org.kdtree.geom.Ray;
 import org.kdtree.io.ObjMeshReader;
-import org.kdtree.shape.ProceduralScenes;
+import org.kdtree.generate.MeshGrid;
 import org.kdtree.shape.TriangleMesh;
 import org.kdtree.traverse.BruteForce;
 import org.kdtree.traverse.Hit;
@@ -151,9 +151,9 @@ class RaycastCommandTest {
 
     @Test void gridRepeatsTheMeshSixteenTimes() throws Exception {
         TriangleMesh mesh = ObjMeshReader.read(cube());
-        TriangleMesh grid = ProceduralScenes.grid(mesh, 4);
+        TriangleMesh grid = MeshGrid.grid(mesh, 4);
         assertThat(grid.size()).isEqualTo(16 * 12);
-        Box b = ProceduralScenes.vertexBounds(grid);
+        Box b = MeshGrid.vertexBounds(grid);
         assertThat(b.max(0)).isEqualTo(1.1 * 3 + 1);
         assertThat(b.max(1)).isEqualTo(1.0);
         assertThat(b.max(2)).isEqualTo(1.1 * 3 + 1);

@@ -112,10 +112,14 @@ class UserFilesTest {
         assertThat(r.err().strip()).isEqualTo("error: --csv " + obj + " is the input MESH (" + obj + "); write the results elsewhere");
         Path pts = points(), q = Files.writeString(dir.resolve("q.csv"), "0.5,0.5\n");
         Path svgLink = Files.createSymbolicLink(dir.resolve("chart.svg"), q);
-        r = CliRun.of("knn-study", pts.toString(), "--queries", q.toString(), "--k", "1", "--chart", dir.resolve("chart.png").toString());
+        r = CliRun.of("knn-study", pts.toString(), "--queries", q.toString(), "--k", "1", "--chart", svgLink.toString());
         assertThat(r.code()).isEqualTo(Failure.USAGE);
-        assertThat(r.err().strip()).isEqualTo("error: --chart (its SVG) " + svgLink + " is the input --queries (" + q
+        assertThat(r.err().strip()).isEqualTo("error: --chart " + svgLink + " is the input --queries (" + q
                 + "); write the results elsewhere");
+        Path gif = dir.resolve("chart.gif");
+        r = CliRun.of("knn-study", pts.toString(), "--queries", q.toString(), "--k", "1", "--chart", gif.toString());
+        assertThat(r.code()).isEqualTo(Failure.USAGE);
+        assertThat(r.err().strip()).isEqualTo("error: --chart " + gif + ": a chart is written as .png or .svg");
     }
 
     /** A study stopped midway keeps its finished rows beside the user's file, never in its place. */

@@ -7,15 +7,15 @@ import java.util.List;
 import java.util.Random;
 import org.junit.jupiter.api.Test;
 import org.kdtree.build.Builders;
-import org.kdtree.shape.Scene2D;
 import org.kdtree.shape.Shape2D;
-import org.kdtree.testing.TestScenes;
+import org.kdtree.shape.Scene2D;
 import org.kdtree.tree.KdTree;
+import org.kdtree.generate.Shapes;
 
 /** Balls dropped into a walled 2-D scene stay out of its objects, do not gain energy, and the tree saves tests. */
 class BallSimulationTest {
     @Test void ballsStayOutOfTheSceneAndDoNotGainEnergy() {
-        List<Shape2D> shapes = new ArrayList<>(TestScenes.random2D(120, 9).shapes());
+        List<Shape2D> shapes = new ArrayList<>(Shapes.mixed(120, 9).shapes());
         shapes.add(new Shape2D.Rect(-10, -10, 110, -5));  // floor
         shapes.add(new Shape2D.Rect(-10, -10, -5, 130));  // walls
         shapes.add(new Shape2D.Rect(105, -10, 110, 130));

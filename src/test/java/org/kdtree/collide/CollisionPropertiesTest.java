@@ -15,14 +15,16 @@ import net.jqwik.api.constraints.IntRange;
 import org.kdtree.build.Builders;
 import org.kdtree.geom.Ray;
 import org.kdtree.geom.Tolerance;
-import org.kdtree.shape.Scene2D;
 import org.kdtree.shape.Shape2D;
+import org.kdtree.shape.Scene2D;
 import org.kdtree.shape.TriangleMesh;
-import org.kdtree.testing.TestScenes;
 import org.kdtree.traverse.Hit;
 import org.kdtree.traverse.Shape2DIntersector;
 import org.kdtree.traverse.Traverser;
 import org.kdtree.traverse.TriangleIntersector;
+import org.kdtree.generate.HardMeshes;
+import org.kdtree.generate.Meshes;
+import org.kdtree.generate.Shapes;
 
 /**
  * Random scenes and spheres, for every builder, against brute force over all primitives. As in
@@ -51,7 +53,7 @@ class CollisionPropertiesTest {
     void sphereQueriesAgreeWithBruteForce3D(@ForAll("triangles") List<double[]> tris, @ForAll("point") double[] centre,
                                             @ForAll("motion") double[] d, @ForAll("radius") double r,
                                             @ForAll @IntRange(max = 1000) int pick) {
-        TriangleMesh mesh = TestScenes.soup(flatten(tris));
+        TriangleMesh mesh = HardMeshes.soup(flatten(tris));
         double[] t = tris.get(pick % tris.size());
         int corner = 3 * (pick % 3);
         double[] v = {t[corner], t[corner + 1], t[corner + 2]};
@@ -112,7 +114,7 @@ class CollisionPropertiesTest {
     /** Radius 0 is a segment's first hit: compared with the ray traversal, in general position. */
     @Property(tries = 20)
     void radiusZeroIsTheSegmentsFirstHit3D(@ForAll @IntRange(max = 100000) int seed) {
-        TriangleMesh mesh = TestScenes.randomTriangles(300, 0.1, seed);
+        TriangleMesh mesh = Meshes.uniform(300, 0.1, seed);
         Traverser rays = new Traverser(Builders.create("sah").build(mesh), new TriangleIntersector(mesh));
         Random rnd = new Random(~seed); // not the scene's sequence: its first point is a vertex
         Hit hit = new Hit();
@@ -131,7 +133,7 @@ class CollisionPropertiesTest {
 
     @Property(tries = 20)
     void radiusZeroIsTheSegmentsFirstHit2D(@ForAll @IntRange(max = 100000) int seed) {
-        Scene2D scene = TestScenes.random2D(200, seed);
+        Scene2D scene = Shapes.mixed(200, seed);
         Traverser rays = new Traverser(Builders.create("sah").build(scene), new Shape2DIntersector(scene));
         Random rnd = new Random(~seed); // not the scene's sequence: its first point is a vertex
         Hit hit = new Hit();

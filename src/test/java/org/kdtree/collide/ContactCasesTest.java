@@ -9,7 +9,7 @@ import org.junit.jupiter.api.Test;
 import org.kdtree.shape.Scene2D;
 import org.kdtree.shape.Shape2D;
 import org.kdtree.shape.TriangleMesh;
-import org.kdtree.testing.TestScenes;
+import org.kdtree.generate.HardMeshes;
 
 /**
  * Exact contacts, built from small integers and halves so that every product is exact: a sphere
@@ -26,7 +26,7 @@ class ContactCasesTest {
         t.add(new double[] {-10, 5, 3, -9, 5, 3, -10, 6, 4});
         double[] v = new double[9 * t.size()];
         for (int i = 0; i < t.size(); i++) System.arraycopy(t.get(i), 0, v, 9 * i, 9);
-        return TestScenes.soup(v);
+        return HardMeshes.soup(v);
     }
 
     private static List<CollideOracle> oracles3() {
@@ -111,10 +111,10 @@ class ContactCasesTest {
 
     @Test void spheresInsideAClosedBox() {
         List<double[]> tris = new ArrayList<>();
-        TestScenes.addCube(tris, 0, 0, 0, 4);
+        HardMeshes.addCube(tris, 0, 0, 0, 4);
         double[] v = new double[9 * tris.size()];
         for (int i = 0; i < tris.size(); i++) System.arraycopy(tris.get(i), 0, v, 9 * i, 9);
-        TriangleMesh box = TestScenes.soup(v);
+        TriangleMesh box = HardMeshes.soup(v);
         for (CollideOracle o : CollideOracle.allBuilders(box, new MeshCollider(box))) {
             assertThat(o.checkOverlap(new double[] {2, 2, 2}, 1)).isEmpty();
             assertThat(o.checkOverlap(new double[] {2, 2, 2}, 2)).hasSize(12); // every face, both halves at the centre
@@ -177,7 +177,7 @@ class ContactCasesTest {
     }
 
     @Test void zeroAreaTrianglesAndRectsAreNeverTouchedAsRaysNeverHitThem() {
-        TriangleMesh m = TestScenes.degenerateTriangles(); // three of zero area, then two ordinary
+        TriangleMesh m = HardMeshes.degenerate(); // three of zero area, then two ordinary
         MeshCollider c = new MeshCollider(m);
         double[] out = new double[3];
         for (int t = 0; t < 3; t++) {

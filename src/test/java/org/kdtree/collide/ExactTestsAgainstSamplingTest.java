@@ -5,9 +5,10 @@ import static org.assertj.core.api.Assertions.assertThat;
 import java.util.List;
 import java.util.Random;
 import org.junit.jupiter.api.Test;
-import org.kdtree.shape.Scene2D;
 import org.kdtree.shape.Shape2D;
-import org.kdtree.testing.TestScenes;
+import org.kdtree.shape.Scene2D;
+import org.kdtree.generate.Meshes;
+import org.kdtree.generate.Shapes;
 
 /**
  * The exact primitive tests against a simple independent computation on random cases. Distance:
@@ -44,7 +45,7 @@ class ExactTestsAgainstSamplingTest {
 
     @Test void shapeDistanceAndSweepAgreeWithSampling() {
         Random rnd = new Random(17);
-        Scene2D scene = TestScenes.random2D(200, 5);
+        Scene2D scene = Shapes.mixed(200, 5);
         ShapeCollider c = new ShapeCollider(scene);
         double[] out = new double[3];
         for (int i = 0; i < scene.size(); i++) {
@@ -103,7 +104,7 @@ class ExactTestsAgainstSamplingTest {
         return best;
     }
 
-    private static final org.kdtree.shape.TriangleMesh MESH = TestScenes.randomTriangles(100, 0.3, 3);
+    private static final org.kdtree.shape.TriangleMesh MESH = Meshes.uniform(100, 0.3, 3);
 
     private static double[] cornerOf(int tri, int k) {
         return new double[] {MESH.corner(tri, k, 0), MESH.corner(tri, k, 1), MESH.corner(tri, k, 2)};

@@ -6,9 +6,10 @@ import static org.assertj.core.api.Assertions.assertThat;
 import java.util.List;
 import java.util.Random;
 import org.junit.jupiter.api.Test;
-import org.kdtree.shape.Scene2D;
 import org.kdtree.shape.Shape2D;
+import org.kdtree.shape.Scene2D;
 import org.kdtree.tree.KdTree;
+import org.kdtree.generate.Shapes;
 
 /** The nearest-neighbour stepper's recording: the brute-force answer, and pruning that never cuts inside the k-th distance. */
 class NearestRecorderTest {
@@ -16,8 +17,8 @@ class NearestRecorderTest {
         Random r = new Random(7);
         int searches = 0;
         for (String b : CompareView.DEFAULT_BUILDERS) {
-            for (List<Shape2D> shapes : List.of(BuiltinScenes.clustered(300, 5), BuiltinScenes.uniform(250, 8),
-                    BuiltinScenes.talkFigures(), mixed(200, r))) {
+            for (List<Shape2D> shapes : List.of(Shapes.clustered(300, 5).shapes(), Shapes.uniform(250, 8).shapes(),
+                    BuiltinScenes.talkFigures(), onGridWithDuplicates(200, r))) {
                 Scene2D scene = new Scene2D(shapes);
                 KdTree tree = BuilderSpec.of(b).create().build(scene);
                 for (int i = 0; i < 60; i++) {
@@ -72,7 +73,7 @@ class NearestRecorderTest {
     }
 
     @Test void theSearchPrunesAndTestsFewerObjectsThanTheScene() {
-        Scene2D scene = new Scene2D(BuiltinScenes.uniform(400, 3));
+        Scene2D scene = new Scene2D(Shapes.uniform(400, 3).shapes());
         KdTree tree = BuilderSpec.of("sah").create().build(scene);
         NearestTrace t = NearestRecorder.record(tree, scene, new double[] {5, 5}, 3);
         assertThat(t.pruned()).isPositive();
@@ -93,8 +94,8 @@ class NearestRecorderTest {
         assertThat(t.result().get(1).distance()).isEqualTo(3.0);
     }
 
-    /** Points, segments, rectangles (some flat) and triangles, with duplicates for ties. */
-    private static List<Shape2D> mixed(int n, Random r) {
+    /** Points, segments, rectangles (some flat) and triangles on a grid of halves, with duplicates for ties. */
+    private static List<Shape2D> onGridWithDuplicates(int n, Random r) {
         List<Shape2D> out = new java.util.ArrayList<>();
         while (out.size() < n) {
             double x = Math.floor(r.nextDouble() * 20) / 2, y = Math.floor(r.nextDouble() * 20) / 2;

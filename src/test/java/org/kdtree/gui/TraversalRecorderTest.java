@@ -11,11 +11,12 @@ import org.kdtree.traverse.BruteForce;
 import org.kdtree.traverse.Hit;
 import org.kdtree.traverse.Shape2DIntersector;
 import org.kdtree.tree.KdTree;
+import org.kdtree.generate.Shapes;
 
 /** The stepper's recording of the library's traversal: consistent steps, and the same hit as brute force. */
 class TraversalRecorderTest {
     @Test void recordedTracesEndWithTheBruteForceHit() {
-        Scene2D scene = new Scene2D(BuiltinScenes.clustered(300, 5));
+        Scene2D scene = new Scene2D(Shapes.clustered(300, 5).shapes());
         Random r = new Random(2);
         for (String b : CompareView.DEFAULT_BUILDERS) {
             KdTree tree = BuilderSpec.of(b).create().build(scene);
@@ -39,7 +40,7 @@ class TraversalRecorderTest {
     }
 
     @Test void theStackGrowsOnPushAndShrinksOnPop() {
-        Scene2D scene = new Scene2D(BuiltinScenes.uniform(200, 3));
+        Scene2D scene = new Scene2D(Shapes.uniform(200, 3).shapes());
         KdTree tree = BuilderSpec.of("sah").create().build(scene);
         TraversalTrace t = TraversalRecorder.record(tree, scene, new double[] {-1, 0.3, 1, 0.02});
         int pushes = 0;

@@ -8,13 +8,14 @@ import java.util.List;
 import javax.swing.tree.TreePath;
 import org.junit.jupiter.api.Test;
 import org.kdtree.shape.Shape2D;
+import org.kdtree.generate.Shapes;
 
 class WorkbenchModelTest {
     @Test void everyChangeRebuildsTheTree() {
         WorkbenchModel m = new WorkbenchModel();
         List<WorkbenchModel.Change> heard = new ArrayList<>();
         m.addListener(heard::add);
-        m.setScene("t", BuiltinScenes.clustered(300, 3));
+        m.setScene("t", Shapes.clustered(300, 3).shapes());
         int sahNodes = m.tree().nodeCount();
         m.setSettings(m.settings().with(org.kdtree.build.Setting.LAMBDA, 1.0));
         assertThat(m.tree()).isNotNull();
@@ -34,7 +35,7 @@ class WorkbenchModelTest {
 
     @Test void scenesSaveAndLoadBack(@org.junit.jupiter.api.io.TempDir java.nio.file.Path dir) throws Exception {
         WorkbenchModel m = new WorkbenchModel();
-        m.setScene("mixed", BuiltinScenes.mixed(40, 2));
+        m.setScene("mixed", Shapes.mixed(40, 2).shapes());
         java.nio.file.Path f = dir.resolve("mixed.scene2d");
         m.save(f);
         WorkbenchModel n = new WorkbenchModel();
@@ -100,7 +101,7 @@ class WorkbenchModelTest {
 
     @Test void treeViewPathsFollowTheTree() {
         WorkbenchModel m = new WorkbenchModel();
-        m.setScene("t", BuiltinScenes.uniform(100, 1));
+        m.setScene("t", Shapes.uniform(100, 1).shapes());
         var tree = m.tree();
         KdTreeModel tm = new KdTreeModel(tree);
         for (int n = 0; n < tree.nodeCount(); n++) {

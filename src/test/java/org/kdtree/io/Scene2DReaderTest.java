@@ -7,12 +7,12 @@ import java.io.StringReader;
 import java.io.StringWriter;
 import org.junit.jupiter.api.Test;
 import org.kdtree.shape.Scene2D;
-import org.kdtree.testing.TestScenes;
+import org.kdtree.generate.Shapes;
 
 /** The .scene2d format: what Scene2DWriter writes, Scene2DReader reads back; errors name the file and the line. */
 class Scene2DReaderTest {
     @Test void writeThenReadGivesTheSameShapes() throws Exception {
-        Scene2D scene = TestScenes.random2D(40, 8);
+        Scene2D scene = Shapes.mixed(40, 8);
         StringWriter out = new StringWriter();
         Scene2DWriter.write(scene, out);
         assertThat(Scene2DReader.read(new StringReader(out.toString()), "x").shapes()).isEqualTo(scene.shapes());
@@ -20,7 +20,7 @@ class Scene2DReaderTest {
 
     @Test void theBundledTalkSceneMatchesTheTestScene() throws Exception {
         Scene2D fromFile = Scene2DReader.read(java.nio.file.Path.of("scenes/talk-figures.scene2d"));
-        assertThat(fromFile.shapes()).isEqualTo(TestScenes.talkFigures().shapes());
+        assertThat(fromFile.shapes()).isEqualTo(BundledScenes.read2D("talk-figures.scene2d").shapes());
     }
 
     @Test void errorsNameTheFileAndLine() {

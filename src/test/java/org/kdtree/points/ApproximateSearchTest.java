@@ -55,7 +55,7 @@ class ApproximateSearchTest {
     }
 
     @Test void recallOnEasyDataIsHighWithAFewLeaves() {
-        PointsKd pts = PointSets.of(Kind.RANDOM, 5000, 3, 11);
+        PointsKd pts = PointSets.of(Kind.UNIFORM, 5000, 3, 11);
         PointTree tree = PointTree.build(pts, Builders.create("sliding-midpoint"));
         NearestQuery bbf = new NearestQuery(tree).maxLeaves(8);
         int[] idx = new int[10];

@@ -45,7 +45,7 @@ class ExactQueriesTest {
 
     @Test void emptyAndSinglePointSets() {
         for (int n : new int[] {0, 1}) {
-            PointTree tree = PointTree.build(PointSets.of(Kind.RANDOM, n, 3, 1), Builders.create("sliding-midpoint"));
+            PointTree tree = PointTree.build(PointSets.of(Kind.UNIFORM, n, 3, 1), Builders.create("sliding-midpoint"));
             int[] idx = new int[4];
             double[] dist = new double[4];
             assertThat(new NearestQuery(tree).nearest(new double[] {5, 5, 5}, 4, idx, dist)).isEqualTo(n);

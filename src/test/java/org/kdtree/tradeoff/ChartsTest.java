@@ -125,13 +125,14 @@ class ChartsTest {
     }
 
     private void assertWritten(XYChart chart) throws Exception {
-        Path png = dir.resolve("chart.png");
-        Path svg = ChartFile.write(chart, "the caption line", png);
+        Path png = dir.resolve("chart.png"), svg = dir.resolve("chart.svg");
+        ChartFile.write(chart, "the caption line", png);
         BufferedImage image = ImageIO.read(png.toFile());
         assertThat(image.getWidth()).isEqualTo(chart.getWidth());
         assertThat(image.getHeight()).as("the chart plus its caption").isGreaterThan(chart.getHeight());
-        assertThat(svg.getFileName().toString()).isEqualTo("chart.svg");
-        String text = Files.readString(svg);
-        assertThat(text).contains("<svg").contains("the caption line");
+        assertThat(svg).as("one file per chart").doesNotExist();
+        ChartFile.write(chart, "the caption line", svg);
+        assertThat(Files.readString(svg)).contains("<svg").contains("the caption line");
+        assertThat(Files.list(dir)).as("one file per chart").hasSize(2);
     }
 }

@@ -10,11 +10,11 @@ import java.util.Locale;
 import org.junit.jupiter.api.Test;
 import org.junit.jupiter.api.io.TempDir;
 import org.kdtree.cli.Main;
-import org.kdtree.shape.ProceduralScenes;
 import org.kdtree.shape.TriangleMesh;
 import org.kdtree.traverse.BruteForce;
 import org.kdtree.traverse.TriangleIntersector;
 import org.kdtree.traverse.Traverser;
+import org.kdtree.generate.Meshes;
 
 class TradeoffTest {
     @TempDir Path dir;
@@ -31,7 +31,7 @@ class TradeoffTest {
     }
 
     @Test void rayCheckSumsMatchBruteForce() {
-        TriangleMesh m = ProceduralScenes.surface(400, 5);
+        TriangleMesh m = Meshes.surface(400, 5);
         TriangleIntersector tri = new TriangleIntersector(m);
         var tree = new org.kdtree.build.SahBuilder().build(m);
         for (RaySet set : new RaySet[] {RaySet.primary(m, 30), RaySet.random(m, 500)}) {
@@ -48,7 +48,7 @@ class TradeoffTest {
     }
 
     @Test void commandWritesCsvAndChart() throws IOException {
-        Path obj = writeObj(ProceduralScenes.surface(300, 7));
+        Path obj = writeObj(Meshes.surface(300, 7));
         Path csv = dir.resolve("out.csv"), png = dir.resolve("out.png");
         int code = Main.run("tradeoff", obj.toString(), "--quick", "--ray-count", "2000", "--runs", "1",
                 "--counted-rays", "300", "--csv", csv.toString(), "--chart", png.toString());
@@ -63,7 +63,7 @@ class TradeoffTest {
     /** The course example is declared in META-INF/services only: the study lists it, as it would a student's builder. */
     @Test void aBuilderOnTheClassPathIsAVariant() throws IOException {
         assertThat(Variant.all()).anyMatch(v -> v.name().equals("centre-midpoint") && v.spec().builder().equals("centre-midpoint"));
-        Path obj = writeObj(ProceduralScenes.surface(200, 7));
+        Path obj = writeObj(Meshes.surface(200, 7));
         Path csv = dir.resolve("cm.csv"), png = dir.resolve("cm.png");
         int code = Main.run("tradeoff", obj.toString(), "--variants", "centre-midpoint", "--ray-count", "1000", "--runs", "1",
                 "--counted-rays", "100", "--csv", csv.toString(), "--chart", png.toString(), "--quiet");
@@ -72,7 +72,7 @@ class TradeoffTest {
     }
 
     @Test void unknownVariantIsAClearError() throws IOException {
-        Path obj = writeObj(ProceduralScenes.surface(50, 7));
+        Path obj = writeObj(Meshes.surface(50, 7));
         assertThat(Main.run("tradeoff", obj.toString(), "--variants", "nonsense")).isEqualTo(2);
     }
 

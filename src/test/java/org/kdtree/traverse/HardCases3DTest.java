@@ -5,6 +5,7 @@ import static org.assertj.core.api.Assertions.assertThat;
 import java.util.ArrayList;
 import java.util.List;
 import org.junit.jupiter.api.Test;
+import org.kdtree.generate.HardMeshes;
 import org.kdtree.geom.Ray;
 import org.kdtree.shape.TriangleMesh;
 
@@ -84,19 +85,19 @@ class HardCases3DTest {
     }
 
     @Test void scaledByOneMillionth() {
-        TriangleMesh m = MeshBuilder.scaled(boxes(), 1e-6);
+        TriangleMesh m = HardMeshes.scaled(boxes(), 1e-6);
         assertThat(shoot(m, origins(), directions(), 1e-6)).isGreaterThan(1000);
     }
 
     @Test void scaledByOneMillion() {
-        TriangleMesh m = MeshBuilder.scaled(boxes(), 1e6);
+        TriangleMesh m = HardMeshes.scaled(boxes(), 1e6);
         assertThat(shoot(m, origins(), directions(), 1e6)).isGreaterThan(1000);
     }
 
     /** The ends of the supported range (geom.Tolerance): coordinates up to 1e100, extents down to 1e-100. */
     @Test void scaledToTheEndsOfTheSupportedRange() {
         for (double scale : new double[] {2e99, 1e-100})
-            assertThat(shoot(MeshBuilder.scaled(boxes(), scale), origins(), directions(), scale)).as("scale %s", scale)
+            assertThat(shoot(HardMeshes.scaled(boxes(), scale), origins(), directions(), scale)).as("scale %s", scale)
                     .isGreaterThan(1000);
     }
 
@@ -126,10 +127,10 @@ class HardCases3DTest {
 
     @Test void scalesBeyondTheRangeAreRefusedNotAnsweredWrongly() {
         for (double scale : new double[] {1e110, 1e150, 1e300})
-            org.assertj.core.api.Assertions.assertThatThrownBy(() -> MeshBuilder.scaled(boxes(), scale))
+            org.assertj.core.api.Assertions.assertThatThrownBy(() -> HardMeshes.scaled(boxes(), scale))
                     .isInstanceOf(org.kdtree.shape.InvalidGeometryException.class).hasMessageContaining("-1e100 .. 1e100");
         for (double scale : new double[] {1e-110, 1e-150, 1e-300})
-            org.assertj.core.api.Assertions.assertThatThrownBy(() -> MeshBuilder.scaled(boxes(), scale))
+            org.assertj.core.api.Assertions.assertThatThrownBy(() -> HardMeshes.scaled(boxes(), scale))
                     .isInstanceOf(org.kdtree.shape.InvalidGeometryException.class).hasMessageContaining("smallest supported extent is 1e-100");
     }
 

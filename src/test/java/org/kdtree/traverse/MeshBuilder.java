@@ -51,13 +51,6 @@ final class MeshBuilder {
 
     TriangleMesh build() { return Scenes.mesh(v, f); }
 
-    /** The same mesh with every coordinate multiplied by {@code s}. */
-    static TriangleMesh scaled(TriangleMesh m, double s) {
-        double[] v = m.vertices().clone();
-        for (int i = 0; i < v.length; i++) v[i] *= s;
-        return new TriangleMesh(v, m.indices().clone());
-    }
-
     /** The same mesh moved by {@code offset} (its coordinates rounded as the sums round). */
     static TriangleMesh moved(TriangleMesh m, double[] offset) {
         double[] v = m.vertices().clone();

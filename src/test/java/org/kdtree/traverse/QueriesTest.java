@@ -10,10 +10,11 @@ import org.junit.jupiter.api.Test;
 import org.kdtree.build.Builders;
 import org.kdtree.geom.Ray;
 import org.kdtree.shape.TriangleMesh;
+import org.kdtree.generate.Meshes;
 
 /** allHits, anyHit, statistics, mailboxing and the listener's event stream. */
 class QueriesTest {
-    private final TriangleMesh mesh = new MeshBuilder().mesh(Scenes.soup(3, 400, 0.3)).mesh(Scenes.gridCube(4, 0.25)).build();
+    private final TriangleMesh mesh = new MeshBuilder().mesh(Meshes.uniform(400, 0.3, 3)).mesh(Scenes.gridCube(4, 0.25)).build();
     private final TriangleIntersector tris = new TriangleIntersector(mesh);
 
     @Test void allHitsAreBruteForceHitsInOrderEachPrimitiveOnce() {

@@ -2,9 +2,8 @@ package org.kdtree.traverse;
 
 import java.util.ArrayList;
 import java.util.List;
-import org.kdtree.shape.Scene2D;
 import org.kdtree.shape.Shape2D;
-import org.kdtree.shape.ProceduralScenes;
+import org.kdtree.shape.Scene2D;
 import org.kdtree.shape.TriangleMesh;
 
 /** Test scenes whose hard cases are known by construction. */
@@ -88,10 +87,6 @@ final class Scenes {
         return mesh(v, f);
     }
 
-    /** n random triangles in [0,1]^3 (sizes up to {@code size}). */
-    static TriangleMesh soup(long seed, int n, double size) {
-        return ProceduralScenes.uniform(n, size, seed);
-    }
 
     /** A 2-D grid of n x n unit rectangles and their outline segments, plus triangles and points. */
     static Scene2D grid2D(int n) {

@@ -6,6 +6,7 @@ import static org.assertj.core.api.Assertions.within;
 import org.junit.jupiter.api.Test;
 import org.kdtree.geom.Ray;
 import org.kdtree.shape.TriangleMesh;
+import org.kdtree.generate.Meshes;
 
 class TriangleIntersectorTest {
     private static final double[] A = {0, 0, 0}, B = {1, 0, 0}, C = {0, 1, 0};
@@ -114,7 +115,7 @@ class TriangleIntersectorTest {
     }
 
     @Test void closestHitAllIsBruteForce() {
-        TriangleMesh soup = Scenes.soup(9, 300, 0.3);
+        TriangleMesh soup = Meshes.uniform(300, 0.3, 9);
         TriangleIntersector x = new TriangleIntersector(soup);
         BruteForce brute = new BruteForce(x);
         java.util.Random rnd = new java.util.Random(9);

@@ -10,7 +10,8 @@ import javax.swing.SwingUtilities;
  * installed, with AWT's {@code Robot}). Run under Xvfb:
  * <pre>
  * Xvfb :99 -screen 0 1300x900x24 &amp;
- * DISPLAY=:99 java -cp target/classes:target/test-classes:$(cat cp.txt) org.kdtree.gui.Screenshots docs/images
+ * mvn -B -q -Ptools test-compile dependency:build-classpath -Dmdep.outputFile=target/cp.txt -Dmdep.includeScope=test
+ * DISPLAY=:99 java -cp target/classes:target/test-classes:$(cat target/cp.txt) org.kdtree.gui.Screenshots docs/images
  * </pre>
  */
 public final class Screenshots {

@@ -13,7 +13,8 @@ import org.kdtree.tree.KdTree;
 /**
  * Render time against thread count on one scene: the tree is built once, a small render warms
  * up the JIT, then full renders alternate between the thread counts and the median of each is
- * reported with its speed-up over the first. Not a test: run on a quiet machine (docs/rendering.md).
+ * reported with its speed-up over the first. Not a test: compiled with {@code mvn -Ptools test-compile},
+ * run on a quiet machine (docs/rendering.md).
  *
  * <p>Arguments: SCENE [runs per count, default 3] [thread counts, default "1,2"] [WIDTHxHEIGHT] [spp].
  */
