@@ -64,16 +64,17 @@ public class SahBuilder extends KdTreeBuilder {
     private Algorithm algorithm = Algorithm.EVENT;
     private int bins = DEFAULT_BINS;
     private int exactBelow = DEFAULT_EXACT_BELOW;
+    private int leafBelow = 1;
     private PlaneSearch search = EventSweep.INSTANCE;
 
     @Override public String name() { return "sah"; }
 
     /**
-     * A leaf if the node is empty, at the depth cap, or flat (no ray meets it with positive
+     * A leaf if the node is empty or smaller than {@link #leafBelow()}, at the depth cap, or flat (no ray meets it with positive
      * probability), or if no plane is cheaper than the leaf; else keeps the best plane found.
      */
     @Override protected boolean terminate(BuildContext context, BuildNode node) {
-        if (node.size() == 0 || node.depth() >= context.depthCap()) return true;
+        if (node.size() < leafBelow || node.size() == 0 || node.depth() >= context.depthCap()) return true;
         NodeStore store = node.store();
         if (store.sahCost == null) store.sahCost = new SahCost(costModel(), emptyWeight, node.dimension());
         SahCost sah = store.sahCost.set(store.voxel(node.level()), 2 * node.dimension() * node.child());
@@ -166,6 +167,26 @@ public class SahBuilder extends KdTreeBuilder {
     public SahBuilder exactBelow(int n) {
         this.exactBelow = Limits.EXACT_BELOW.check("exactBelow", n);
         this.search = searchOf(algorithm);
+        return this;
+    }
+
+    /**
+     * {@return the node size below which a node becomes a leaf without a plane search} (default 1:
+     * only empty nodes; the SAH alone decides the others).
+     */
+    public int leafBelow() { return leafBelow; }
+
+    /**
+     * Makes every node of fewer than {@code n} primitives a leaf ({@link Limits#LEAF_BELOW}: 1 ..
+     * 65,536). Near the leaves the greedy SAH goes on cutting a few triangles apart for small local
+     * savings that do not add up (docs/performance.md, "Quality presets"): stopping at a few
+     * primitives builds far fewer nodes for about the same expected cost.
+     *
+     * @param n the smallest node searched
+     * @return this builder
+     */
+    public SahBuilder leafBelow(int n) {
+        this.leafBelow = Limits.LEAF_BELOW.check("leafBelow", n);
         return this;
     }
 

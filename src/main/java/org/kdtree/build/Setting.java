@@ -48,6 +48,9 @@ public final class Setting<T> {
     /** The node size below which the binned SAH searches exactly. */
     public static final Setting<Integer> EXACT_BELOW = sah("--exact-below", Integer.class, Limits.EXACT_BELOW,
             SahBuilder::exactBelow, SahBuilder::exactBelow);
+    /** The SAH's smallest node it searches a plane for. */
+    public static final Setting<Integer> LEAF_BELOW = sah("--leaf-below", Integer.class, Limits.LEAF_BELOW,
+            SahBuilder::leafBelow, SahBuilder::leafBelow);
     /** Kmintri, the median builders' smallest node worth splitting. */
     public static final Setting<Integer> MIN_PRIMITIVES = new Setting<>("--min-prims", Integer.class, Limits.MIN_PRIMITIVES,
             CyclingAxisBuilder.class, "the median builders", CyclingAxisBuilder::minPrimitives, CyclingAxisBuilder::minPrimitives);
@@ -58,7 +61,7 @@ public final class Setting<T> {
 
     /** Every setting, in the order a spec applies them (a preset first, so that what follows overrides it). */
     public static final List<Setting<?>> ALL = List.of(QUALITY, KT, KI, MAX_DEPTH, REFERENCE_BUDGET, PERFECT_SPLITS, THREADS,
-            LAMBDA, ALGORITHM, BINS, EXACT_BELOW, MIN_PRIMITIVES, LEAF_SIZE);
+            LAMBDA, ALGORITHM, BINS, EXACT_BELOW, LEAF_BELOW, MIN_PRIMITIVES, LEAF_SIZE);
 
     private final String option;
     private final Class<T> type;

@@ -47,6 +47,10 @@ public final class BuilderOptions {
     @Option(names = "--exact-below", description = "BINNED: nodes with fewer references use the exact sweep (default 64; 0 = never).")
     Integer exactBelow;
 
+    @Option(names = "--leaf-below", description = "SAH: nodes with fewer references become leaves without a plane search, "
+            + "1 to 65536 (default 1: only empty nodes).")
+    Integer leafBelow;
+
     @Option(names = "--no-perfect-splits", description = "Use bounding boxes instead of exact clipping.")
     boolean noPerfectSplits;
 
@@ -68,6 +72,7 @@ public final class BuilderOptions {
                 .with(Setting.ALGORITHM, algorithm)
                 .with(Setting.BINS, bins)
                 .with(Setting.EXACT_BELOW, exactBelow)
+                .with(Setting.LEAF_BELOW, leafBelow)
                 .with(Setting.MIN_PRIMITIVES, minPrims)
                 .with(Setting.LEAF_SIZE, leafSize);
     }
