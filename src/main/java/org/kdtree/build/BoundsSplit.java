@@ -16,8 +16,6 @@ final class BoundsSplit {
     private final int k;
     private final Box voxel, clipLeft, clipRight;
 
-    static final int CLIP_ABOVE = Integer.getInteger("clipAbove", 0);
-
     BoundsSplit(NodeStore store) {
         this.store = store;
         this.k = store.k;
@@ -39,8 +37,7 @@ final class BoundsSplit {
         }
         store.reserveBounds(d + 1, nl + nr);
         store.voxel(d, c, voxel);
-        boolean perfect = perfectSplits && (CLIP_ABOVE >= 0 ? n >= CLIP_ABOVE : n < -CLIP_ABOVE);
-        long sizes = partition(d, from, n, axis, xi, planarLeft, perfect, nl);
+        long sizes = partition(d, from, n, axis, xi, planarLeft, perfectSplits, nl);
         int sizeL = (int) (sizes >>> 32), sizeR = (int) sizes;
         int outcome = SplitOutcome.of(n, sizeL, sizeR, store.budget(d)[c]);
         if (outcome != SplitOutcome.SPLIT) return outcome;
