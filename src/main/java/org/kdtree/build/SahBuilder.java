@@ -211,7 +211,7 @@ public class SahBuilder extends KdTreeBuilder {
     @Override public SahBuilder referenceBudget(int perPrimitive) { super.referenceBudget(perPrimitive); return this; }
 
     /**
-     * Applies a named preset ({@link Quality}): the event algorithm under that preset's depth cap.
+     * Applies a named preset ({@link Quality}): its plane search and leaf size.
      *
      * @param q the preset
      * @return this builder
@@ -224,6 +224,7 @@ public class SahBuilder extends KdTreeBuilder {
 
     @Override public String describeSettings() {
         return "lambda=" + emptyWeight + " algorithm=" + algorithm.name().toLowerCase()
-                + (!algorithm.exact() ? " bins=" + bins + " exactBelow=" + exactBelow : "") + " " + super.describeSettings();
+                + (!algorithm.exact() ? " bins=" + bins + " exactBelow=" + exactBelow : "")
+                + (leafBelow > 1 ? " leafBelow=" + leafBelow : "") + " " + super.describeSettings();
     }
 }

@@ -33,8 +33,8 @@ public final class BuilderOptions {
     @Option(names = "--min-prims", description = "Kmintri for the median builders (default 2).")
     Integer minPrims;
 
-    @Option(names = "--quality", description = "SAH preset: ${COMPLETION-CANDIDATES}: fast (depth cap 8 + 0.8 log2 N), "
-            + "balanced (8 + 1.0 log2 N), exact (the default tree); --algorithm and --max-depth, if given, override it.")
+    @Option(names = "--quality", description = "SAH preset: ${COMPLETION-CANDIDATES}: fast (binned, leaves below 11 references), "
+            + "balanced (exact search, leaves below 6), exact (the default tree); options given with it override its settings.")
     Quality quality;
 
     @Option(names = "--algorithm", description = "SAH plane search: ${COMPLETION-CANDIDATES}. NAIVE, SORTED and EVENT build the same tree "
