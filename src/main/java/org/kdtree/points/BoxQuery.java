@@ -1,5 +1,7 @@
 package org.kdtree.points;
 
+import org.kdtree.tree.Nodes;
+
 /**
  * All points inside an axis-aligned box (faces included), by increasing index. One instance per
  * thread, reused across queries; its stack is sized once from the tree's depth and its result
@@ -12,10 +14,10 @@ package org.kdtree.points;
 public final class BoxQuery {
     private final PointTree points;
     private final int k;
-    /** The tree's nodes, three ints each ({@link org.kdtree.tree.KdTree#nodeArray()}). */
+    /** The tree's nodes and references ({@link org.kdtree.tree.KdTree#nodeArray()}), read with {@link Nodes}. */
     private final int[] nodes, refs;
-    /** The words' leaf mark and axis-field width ({@link org.kdtree.tree.KdTree#leafMark()}). */
-    private final int mark, shift;
+    /** The tree's {@link org.kdtree.tree.KdTree#axisBits()}, which {@link Nodes} decodes a word with. */
+    private final int bits;
     private final double[] coords;
     private final int[] stack;
     private int[] found = new int[64];
@@ -26,8 +28,7 @@ public final class BoxQuery {
         this.points = points;
         k = points.dimension();
         nodes = points.tree().nodeArray();
-        mark = points.tree().leafMark();
-        shift = points.tree().axisBits();
+        bits = points.tree().axisBits();
         refs = points.tree().refArray();
         coords = points.leafCoordArray();
         stack = new int[points.maxDepth() + 2];
@@ -60,18 +61,18 @@ public final class BoxQuery {
     private void search(double[] min, double[] max) {
         int sp = 0, node = 0;
         while (true) {
-            int w = nodes[3 * node];
-            while ((w & mark) != mark) {
-                int axis = w & mark;
-                double xi = org.kdtree.tree.KdTree.splitOf(nodes, node);
+            int w = Nodes.word(nodes, node);
+            while (!Nodes.isLeaf(w, bits)) {
+                int axis = Nodes.axis(w, bits);
+                double xi = Nodes.split(nodes, node);
                 boolean left = min[axis] <= xi, right = max[axis] >= xi;
-                if (left && right) stack[sp++] = w >>> shift;
-                if (left) node = node + 1;
-                else if (right) node = w >>> shift;
+                if (left && right) stack[sp++] = Nodes.rightChild(w, bits);
+                if (left) node = Nodes.leftChild(node);
+                else if (right) node = Nodes.rightChild(w, bits);
                 else break; // an empty box (min > max) reaches neither side
-                w = nodes[3 * node];
+                w = Nodes.word(nodes, node);
             }
-            if ((w & mark) == mark) scanLeaf(nodes[3 * node + 1], w >>> shift, min, max);
+            if (Nodes.isLeaf(w, bits)) scanLeaf(Nodes.leafStart(nodes, node), Nodes.leafSize(w, bits), min, max);
             if (sp == 0) return;
             node = stack[--sp];
         }

@@ -1,5 +1,7 @@
 package org.kdtree.points;
 
+import org.kdtree.tree.Nodes;
+
 /**
  * The k nearest neighbours of a query point, optionally within a maximum distance: exact by
  * default, approximate on request. One instance per thread (it owns its scratch memory: the
@@ -178,12 +180,12 @@ public final class NearestQuery extends VoxelDescent {
             double rd = branches.nearestDistance();
             if (rd > reach()) break; // the nearest branch is out of reach, and so are the others
             int node = branches.popNearest(off);
-            int w = word(node);
-            while (!isLeaf(w)) {
-                int axis = axis(w);
-                double diff = q[axis] - split(node);
-                int near = node + 1, far = rightChild(w);
-                if (diff > 0) { near = far; far = node + 1; }
+            int w = Nodes.word(nodes, node);
+            while (!Nodes.isLeaf(w, bits)) {
+                int axis = Nodes.axis(w, bits);
+                double diff = q[axis] - Nodes.split(nodes, node);
+                int near = Nodes.leftChild(node), far = Nodes.rightChild(w, bits);
+                if (diff > 0) { near = far; far = Nodes.leftChild(node); }
                 double old = off[axis];
                 double farRd = metric.replace(rd, old, diff);
                 if (farRd <= reach()) {
@@ -192,7 +194,7 @@ public final class NearestQuery extends VoxelDescent {
                     off[axis] = old;
                 }
                 node = near;
-                w = word(node);
+                w = Nodes.word(nodes, node);
             }
             scan(node, w);
         }

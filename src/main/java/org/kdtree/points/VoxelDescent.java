@@ -2,6 +2,7 @@ package org.kdtree.points;
 
 import org.kdtree.geom.Tolerance;
 import org.kdtree.tree.KdTree;
+import org.kdtree.tree.Nodes;
 
 /**
  * The exact search shared by the nearest-neighbour and the radius query: descend the near child
@@ -22,10 +23,10 @@ abstract class VoxelDescent {
 
     final PointTree points;
     final int k;
-    /** The tree's nodes, three ints each ({@link KdTree#nodeArray()}). */
+    /** The tree's nodes ({@link KdTree#nodeArray()}), read with {@link Nodes}. */
     final int[] nodes;
-    /** The words' leaf mark and axis-field width, as {@link KdTree} lays them out for this dimension. */
-    final int mark, shift;
+    /** The tree's {@link KdTree#axisBits()}, which {@link Nodes} decodes a word with. */
+    final int bits;
     final double[] coords;
     final int[] refs;
     private final double[] rootMin, rootMax;
@@ -41,8 +42,7 @@ abstract class VoxelDescent {
         KdTree tree = points.tree();
         k = points.dimension();
         nodes = tree.nodeArray();
-        mark = tree.leafMark();
-        shift = tree.axisBits();
+        bits = tree.axisBits();
         refs = tree.refArray();
         coords = points.leafCoordArray();
         rootMin = new double[k];
@@ -82,15 +82,15 @@ abstract class VoxelDescent {
 
     /** The exact depth-first search below {@code node}, whose voxel lies at accumulated distance {@code rd}. */
     final void descend(int node, double rd) {
-        int w = nodes[3 * node];
-        if ((w & mark) == mark) {
+        int w = Nodes.word(nodes, node);
+        if (Nodes.isLeaf(w, bits)) {
             scan(node, w);
             return;
         }
-        int axis = w & mark;
-        double diff = q[axis] - split(node);
-        int near = node + 1, far = w >>> shift;
-        if (diff > 0) { near = far; far = node + 1; }
+        int axis = Nodes.axis(w, bits);
+        double diff = q[axis] - Nodes.split(nodes, node);
+        int near = Nodes.leftChild(node), far = Nodes.rightChild(w, bits);
+        if (diff > 0) { near = far; far = Nodes.leftChild(node); }
         descend(near, rd);
         double old = off[axis];
         double farRd = metric.replace(rd, old, diff);
@@ -104,22 +104,7 @@ abstract class VoxelDescent {
     /** Scans leaf {@code node}, whose word is {@code w}. */
     final void scan(int node, int w) {
         leavesVisited++;
-        int first = nodes[3 * node + 1];
-        scanLeaf(first, first + (w >>> shift));
+        int first = Nodes.leafStart(nodes, node);
+        scanLeaf(first, first + Nodes.leafSize(w, bits));
     }
-
-    /** The word of a node. */
-    final int word(int node) { return nodes[3 * node]; }
-
-    /** The split position of interior node {@code node}. */
-    final double split(int node) { return KdTree.splitOf(nodes, node); }
-
-    /** Whether the word is a leaf's. */
-    final boolean isLeaf(int w) { return (w & mark) == mark; }
-
-    /** The axis of an interior node's word. */
-    final int axis(int w) { return w & mark; }
-
-    /** The right child of an interior node's word. */
-    final int rightChild(int w) { return w >>> shift; }
 }

@@ -10,13 +10,13 @@ import org.kdtree.geom.Box;
  * build) are spliced in with {@link #append}.
  */
 public final class KdTreeWriter {
-    /** Three ints per node, as {@link KdTree} stores them. */
-    private int[] nodes = new int[192];
+    /** The nodes, laid out as {@link Nodes} says. */
+    private int[] nodes = new int[64 * Nodes.INTS];
     private int nodeCount;
     private int[] refs = new int[64];
     private int refCount;
     private int budgetLeaves;
-    private final int dimension, axisBits, leafMark, maxNode, maxLeafSize;
+    private final int dimension, axisBits, maxNode, maxLeafSize;
 
     /**
      * A writer for a tree of {@code dimension} dimensions (1 .. {@link KdTree#MAX_DIMENSION}): it fixes the word's layout.
@@ -25,10 +25,9 @@ public final class KdTreeWriter {
      */
     public KdTreeWriter(int dimension) {
         this.dimension = dimension;
-        axisBits = KdTree.axisBits(dimension);
-        leafMark = (1 << axisBits) - 1;
-        maxNode = KdTree.maxNode(dimension);
-        maxLeafSize = -1 >>> axisBits;
+        axisBits = Nodes.axisBits(dimension);
+        maxNode = Nodes.maxNode(dimension);
+        maxLeafSize = Nodes.maxLeafSize(axisBits);
     }
 
     /**
@@ -42,10 +41,7 @@ public final class KdTreeWriter {
         if (axis < 0 || axis >= dimension)
             throw new IllegalArgumentException("axis " + axis + " out of range 0.." + (dimension - 1));
         int n = newNode();
-        long bits = Double.doubleToRawLongBits(xi);
-        nodes[3 * n] = axis; // right child patched later
-        nodes[3 * n + 1] = (int) bits;
-        nodes[3 * n + 2] = (int) (bits >>> 32);
+        Nodes.writeInterior(nodes, n, axis, xi); // right child patched later
         return n;
     }
 
@@ -57,7 +53,7 @@ public final class KdTreeWriter {
     public void setRightChild(int node) {
         int child = nodeCount;
         if (child > maxNode) throw new IllegalStateException("tree exceeds " + maxNode + " nodes");
-        nodes[3 * node] = (child << axisBits) | (nodes[3 * node] & leafMark);
+        Nodes.writeRightChild(nodes, node, child, axisBits);
     }
 
     /**
@@ -89,9 +85,7 @@ public final class KdTreeWriter {
         if (refCount + count > refs.length) refs = Arrays.copyOf(refs, Math.max(refs.length * 2, refCount + count));
         int n = newNode();
         System.arraycopy(prims, from, refs, refCount, count);
-        nodes[3 * n] = (count << axisBits) | leafMark;
-        nodes[3 * n + 1] = refCount;
-        nodes[3 * n + 2] = 0;
+        Nodes.writeLeaf(nodes, n, refCount, count, axisBits);
         refCount += count;
         return n;
     }
@@ -110,12 +104,8 @@ public final class KdTreeWriter {
         System.arraycopy(sub.refs, 0, refs, refCount, sub.refCount);
         refCount += sub.refCount;
         for (int i = 0; i < sub.nodeCount; i++) {
-            int n = newNode();
-            int w = sub.nodes[3 * i];
-            boolean leaf = (w & leafMark) == leafMark;
-            nodes[3 * n] = leaf ? w : (((w >>> axisBits) + base) << axisBits) | (w & leafMark);
-            nodes[3 * n + 1] = leaf ? sub.nodes[3 * i + 1] + refBase : sub.nodes[3 * i + 1];
-            nodes[3 * n + 2] = sub.nodes[3 * i + 2];
+            int n = newNode(); // first: it may grow the array
+            Nodes.copyMoved(sub.nodes, i, nodes, n, base, refBase, axisBits);
         }
         budgetLeaves += sub.budgetLeaves;
         return base;
@@ -128,7 +118,7 @@ public final class KdTreeWriter {
      * @param refs the expected number of leaf references
      */
     public void reserve(int nodes, int refs) {
-        if (this.nodes.length < 3L * nodes) this.nodes = Arrays.copyOf(this.nodes, 3 * nodes);
+        if (this.nodes.length < (long) Nodes.INTS * nodes) this.nodes = Arrays.copyOf(this.nodes, Nodes.INTS * nodes);
         if (this.refs.length < refs) this.refs = Arrays.copyOf(this.refs, refs);
     }
 
@@ -154,12 +144,12 @@ public final class KdTreeWriter {
         if (rootVoxel.dimension() != dimension)
             throw new IllegalArgumentException("a " + rootVoxel.dimension() + "-D root for a writer of another dimension");
         if (nodeCount == 0) leaf(new int[0], 0);
-        return new KdTree(rootVoxel.copy(), cost, builderName, Arrays.copyOf(nodes, 3 * nodeCount),
+        return new KdTree(rootVoxel.copy(), cost, builderName, Arrays.copyOf(nodes, Nodes.INTS * nodeCount),
                 Arrays.copyOf(refs, refCount), budgetLeaves);
     }
 
     private int newNode() {
-        if (3 * nodeCount == nodes.length) nodes = Arrays.copyOf(nodes, Math.max(6, nodes.length * 2));
+        if (Nodes.INTS * nodeCount == nodes.length) nodes = Arrays.copyOf(nodes, Math.max(2 * Nodes.INTS, nodes.length * 2));
         return nodeCount++;
     }
 }

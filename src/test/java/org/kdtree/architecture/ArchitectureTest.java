@@ -14,8 +14,9 @@ import org.junit.jupiter.api.Test;
 
 /**
  * The package structure of docs/architecture.md, checked against the imports of src/main: no
- * cycle between packages, every package in a layer, every use pointing to a lower layer; and the
- * precision rule of {@code geom.Tolerance}: no tolerance written as a literal anywhere else.
+ * cycle between packages, every package in a layer, every use pointing to a lower layer; the
+ * precision rule of {@code geom.Tolerance}: no tolerance written as a literal anywhere else; one
+ * way to write a file; and the node layout known only to {@code tree}.
  */
 class ArchitectureTest {
     private static final SortedMap<String, SortedMap<String, Integer>> USES = PackageImports.read();
@@ -92,6 +93,50 @@ class ArchitectureTest {
             while (m.find()) found.add(file + ": " + m.group());
         }
         assertThat(found).as("files written other than by files.AtomicFile").isEmpty();
+    }
+
+    /**
+     * Only {@code tree} knows the node layout: every other package reads nodes through
+     * {@code tree.Nodes} (hot loops) or {@code KdTree}'s methods, never by indexing the node array,
+     * masking or shifting a word, or asking for a leaf mark.
+     */
+    @Test void nodeWordsAreDecodedOnlyInTree() {
+        List<String> found = new ArrayList<>();
+        for (Path file : SourceFiles.all()) {
+            if (file.startsWith(SourceFiles.MAIN.resolve("org/kdtree/tree"))) continue;
+            for (String d : NodeDecoding.in(SourceFiles.code(SourceFiles.read(file)))) found.add(file + ": " + d);
+        }
+        assertThat(found).as("node words decoded outside org.kdtree.tree (read them with tree.Nodes)").isEmpty();
+    }
+
+    /** The check above on the hand decodings it replaced (the traversal's and the point queries'), and on their fix. */
+    @Test void theNodeCheckFindsHandDecoding() {
+        String generic = """
+                nodes = tree.nodeArray(); mark = tree.leafMark(); shift = tree.axisBits();
+                int w = nodes[3 * node];
+                while ((w & mark) != mark) { int axis = w & mark, far = w >>> shift; }
+                """;
+        assertThat(NodeDecoding.in(generic)).contains("leafMark", "nodes[", "& mark", ">>> shift");
+        String mesh = """
+                this.nodes = tree.nodeArray();
+                int[] nodes = this.nodes;
+                int w = nodes[3 * node];
+                while ((w & 3) != 3) w = nodes[3 * (node + 1)];
+                for (int r = nodes[3 * node + 1], end = r + (w >>> 2); r < end; r++) { }
+                """;
+        assertThat(NodeDecoding.in(mesh)).contains("nodes[", "w &", "w >>>");
+        String points = """
+                int bits = points.tree().axisBits();
+                int w = Nodes.word(nodes, node);
+                if ((w & 3) == 3) scan(w >>> bits);
+                """;
+        assertThat(NodeDecoding.in(points)).contains("w &", ">>> bits");
+        String now = """
+                bits = tree.axisBits(); nodes = tree.nodeArray();
+                int w = Nodes.word(nodes, node);
+                while (!Nodes.isLeaf(w, bits) && sp > 0) node = Nodes.rightChild(w, bits);
+                """;
+        assertThat(NodeDecoding.in(now)).isEmpty();
     }
 
     /** Cycles in a graph: its strongly connected components of more than one node (Tarjan). */

@@ -66,15 +66,50 @@ class KdTreeWriterTest {
         assertThat(t.leafPrimitives(1)).containsExactly(7);
     }
 
+    /** Writes a chain of {@code n} interior nodes on cycling axes, each with a leaf on its left, below a node already written. */
+    private static void writeChain(KdTreeWriter w, int n, int dimension) {
+        int[] prims = {3, 1, 4, 1, 5};
+        for (int i = 0; i < n; i++) {
+            int node = w.interior(i % dimension, i * 0.1 - 7);
+            w.leaf(prims, i % 3, i % 3);
+            w.setRightChild(node);
+        }
+        w.leaf(prims, 2);
+    }
+
+    /** Splicing moves children and references and keeps planes to the bit, also when the writer's arrays grow meanwhile. */
+    @Test void anAppendedSubtreeIsTheTreeWrittenInOnePiece() {
+        for (int k : new int[] {2, 3, 64}) {
+            KdTreeWriter whole = new KdTreeWriter(k), top = new KdTreeWriter(k), sub = new KdTreeWriter(k);
+            for (KdTreeWriter w : new KdTreeWriter[] {whole, top}) {
+                int root = w.interior(k - 1, -0.0);
+                w.leaf(new int[] {9, 8}, 2);
+                w.setRightChild(root);
+            }
+            writeChain(whole, 200, k);
+            writeChain(sub, 200, k);
+            top.append(sub);
+            double[] lo = new double[k], hi = new double[k];
+            java.util.Arrays.fill(hi, 1);
+            KdTree expected = whole.finish(new Box(lo, hi), CostModel.WALD_HAVRAN, "whole");
+            KdTree spliced = top.finish(new Box(lo, hi), CostModel.WALD_HAVRAN, "spliced");
+            assertThat(spliced.nodeArray()).as("%d-D nodes", k).isEqualTo(expected.nodeArray());
+            assertThat(spliced.refArray()).as("%d-D references", k).isEqualTo(expected.refArray());
+            int last = Nodes.rightChild(Nodes.word(spliced.nodeArray(), spliced.nodeCount() - 3), spliced.axisBits());
+            assertThat(Nodes.isLeaf(Nodes.word(spliced.nodeArray(), last), spliced.axisBits())).isTrue();
+            assertThat(spliced.leafPrimitives(last)).containsExactly(3, 1);
+        }
+    }
+
     @Test void theAxisFieldIsAsWideAsTheDimensionNeeds() {
-        assertThat(KdTree.axisBits(1)).isEqualTo(1);
-        assertThat(KdTree.axisBits(3)).isEqualTo(2);
-        assertThat(KdTree.axisBits(31)).isEqualTo(5);
-        assertThat(KdTree.axisBits(32)).isEqualTo(6);
-        assertThat(KdTree.axisBits(64)).isEqualTo(7);
-        assertThat(KdTree.maxNode(3)).isEqualTo((1 << 29) - 1);
-        assertThat(KdTree.maxNode(64)).isEqualTo((1 << 24) - 1);
-        org.assertj.core.api.Assertions.assertThatThrownBy(() -> KdTree.axisBits(65)).hasMessageContaining("1 to 64 dimensions");
+        assertThat(Nodes.axisBits(1)).isEqualTo(1);
+        assertThat(Nodes.axisBits(3)).isEqualTo(2);
+        assertThat(Nodes.axisBits(31)).isEqualTo(5);
+        assertThat(Nodes.axisBits(32)).isEqualTo(6);
+        assertThat(Nodes.axisBits(64)).isEqualTo(7);
+        assertThat(Nodes.maxNode(3)).isEqualTo((1 << 29) - 1);
+        assertThat(Nodes.maxNode(64)).isEqualTo((1 << 24) - 1);
+        org.assertj.core.api.Assertions.assertThatThrownBy(() -> Nodes.axisBits(65)).hasMessageContaining("1 to 64 dimensions");
     }
 
     @Test void aSixtyFourDimensionalTreeKeepsItsLastAxisApartFromItsLeaves() {
@@ -105,7 +140,7 @@ class KdTreeWriterTest {
         KdTree t = w.finish(Box.of2(-1, -1, 4, 4), CostModel.WALD_HAVRAN, "test");
         assertThat(t.split(0)).isEqualTo(0.1);
         assertThat(Double.doubleToRawLongBits(t.split(t.rightChild(0)))).isEqualTo(Double.doubleToRawLongBits(-0.0));
-        assertThat(KdTree.splitOf(t.nodeArray(), 0)).isEqualTo(0.1);
+        assertThat(Nodes.split(t.nodeArray(), 0)).isEqualTo(0.1);
         assertThat(t.memoryBytes()).isEqualTo(2 * 16 + 12L * 5 + 4L * 3);
         assertThat(t.leafStart(t.leftChild(t.rightChild(0)))).isEqualTo(1);
         assertThat(t.leafSize(t.leftChild(t.rightChild(0)))).isEqualTo(2);
