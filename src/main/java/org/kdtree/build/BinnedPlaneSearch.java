@@ -30,13 +30,12 @@ final class BinnedPlaneSearch implements PlaneSearch {
     @Override public void search(BuildNode node, SahCost sah, SahSplit best) {
         NodeStore store = node.store();
         int n = node.size(), k = node.dimension(), d = node.level(), c = node.child();
-        boolean flat = store.formOf(d, c) == NodeStore.BOUNDS;
         if (n < exactBelow) {
-            if (flat) BoundsSweep.search(store, d, c, sah, best);
-            else EventSweep.INSTANCE.search(node, sah, best);
+            EventSweep.INSTANCE.search(node, sah, best);
             return;
         }
         int[] minBin = store.minBins(k * bins), maxBin = store.maxBins();
+        boolean flat = store.formOf(d, c) == NodeStore.BOUNDS;
         double[] bounds = flat ? store.bounds(d) : node.clippedBounds();
         int at = flat ? store.boundsMeta(d)[2 * c] : 0;
         double[] v = store.voxel(d);

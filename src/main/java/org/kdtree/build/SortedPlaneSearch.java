@@ -27,31 +27,27 @@ public final class SortedPlaneSearch implements PlaneSearch {
             Arrays.sort(starts, 0, ns);
             Arrays.sort(ends, 0, ns);
             Arrays.sort(planars, 0, np);
-            sweep(sah, best, axis, n, starts, 0, ends, 0, ns, planars, 0, np);
+            sweep(sah, best, axis, n, starts, ends, ns, planars, np);
         }
     }
 
-    /**
-     * The sweep over one axis's sorted events: {@code ns} starts from {@code starts[s0]}, as many
-     * ends from {@code ends[e0]}, {@code np} planar positions from {@code planars[p0]}; shared
-     * with {@link BoundsSweep}, which keeps the three in one scratch array.
-     */
-    static void sweep(SahCost sah, SahSplit best, int axis, int n, double[] starts, int s0, double[] ends, int e0, int ns,
-                      double[] planars, int p0, int np) {
-        int is = s0, ie = e0, ip = p0, sEnd = s0 + ns, eEnd = e0 + ns, pEnd = p0 + np;
+    /** The sweep over one axis's sorted events; shared with the event-based builder. */
+    static void sweep(SahCost sah, SahSplit best, int axis, int n,
+                      double[] starts, double[] ends, int ns, double[] planars, int np) {
+        int is = 0, ie = 0, ip = 0;
         int nl = 0, nr = n;
-        while (is < sEnd || ie < eEnd || ip < pEnd) {
+        while (is < ns || ie < ns || ip < np) {
             double x = Double.POSITIVE_INFINITY;
-            if (is < sEnd) x = starts[is];
-            if (ie < eEnd) x = Math.min(x, ends[ie]);
-            if (ip < pEnd) x = Math.min(x, planars[ip]);
-            int ending = 0, planar = 0, starting = 0;
-            while (ie < eEnd && ends[ie] == x) { ie++; ending++; }
-            while (ip < pEnd && planars[ip] == x) { ip++; planar++; }
-            while (is < sEnd && starts[is] == x) { is++; starting++; }
-            nr -= planar + ending;
-            best.offer(sah, axis, x, nl, planar, nr);
-            nl += starting + planar;
+            if (is < ns) x = starts[is];
+            if (ie < ns) x = Math.min(x, ends[ie]);
+            if (ip < np) x = Math.min(x, planars[ip]);
+            int pEnd = 0, pPlanar = 0, pStart = 0;
+            while (ie < ns && ends[ie] == x) { ie++; pEnd++; }
+            while (ip < np && planars[ip] == x) { ip++; pPlanar++; }
+            while (is < ns && starts[is] == x) { is++; pStart++; }
+            nr -= pPlanar + pEnd;
+            best.offer(sah, axis, x, nl, pPlanar, nr);
+            nl += pStart + pPlanar;
         }
     }
 }
