@@ -7,7 +7,7 @@ import org.kdtree.build.BuilderSpec;
 import org.kdtree.gui.BuiltinScenes;
 import org.kdtree.gui.TreePainter;
 import org.kdtree.gui.ViewTransform;
-import org.kdtree.shape.Shapes2D;
+import org.kdtree.shape.Scene2D;
 import org.kdtree.tree.KdTree;
 import org.openjdk.jmh.annotations.Benchmark;
 import org.openjdk.jmh.annotations.BenchmarkMode;
@@ -39,11 +39,11 @@ public class WorkbenchBenchmark {
     @Param({"10000"})
     public int objects;
 
-    private Shapes2D shapes;
+    private Scene2D shapes;
     private BufferedImage image;
 
     @Setup public void setUp() {
-        shapes = new Shapes2D(scene.equals("uniform") ? BuiltinScenes.uniform(objects, 1) : BuiltinScenes.clustered(objects, 1));
+        shapes = new Scene2D(scene.equals("uniform") ? BuiltinScenes.uniform(objects, 1) : BuiltinScenes.clustered(objects, 1));
         image = new BufferedImage(1000, 800, BufferedImage.TYPE_INT_RGB);
     }
 

@@ -92,6 +92,18 @@ public final class BuilderSpec {
     }
 
     /**
+     * {@return this spec over {@code base}: with each setting {@code base} gives that applies to
+     * this builder and that this spec does not give itself} (a study's common settings under each variant's own)
+     *
+     * @param base the settings to fill in from (its builder's name is not used)
+     */
+    public BuilderSpec over(BuilderSpec base) {
+        Map<Setting<?>, Object> m = new LinkedHashMap<>(base.forBuilder(builder).given);
+        m.putAll(given);
+        return new BuilderSpec(builder, Collections.unmodifiableMap(m));
+    }
+
+    /**
      * {@return whether the builder {@code name} takes {@code setting}}
      *
      * @param setting the setting

@@ -9,7 +9,7 @@ import org.kdtree.tree.CostModel;
  * {@code |T| <= Kmintri or D(V) >= Kmaxdepth}. Subclasses choose only the position xi.
  */
 public abstract class CyclingAxisBuilder extends KdTreeBuilder {
-    private int minPrimitives = 2;
+    private int minPrimitives = Setting.MIN_PRIMITIVES.defaultValue();
 
     /**
      * The axis for this node: {@code D(V) mod k}.
@@ -25,7 +25,7 @@ public abstract class CyclingAxisBuilder extends KdTreeBuilder {
         return node.size() <= minPrimitives || node.depth() >= context.depthCap();
     }
 
-    /** {@return Kmintri}: a node with at most this many primitives becomes a leaf (default 2). */
+    /** {@return Kmintri}: a node with at most this many primitives becomes a leaf (default: {@link Setting#MIN_PRIMITIVES}). */
     public int minPrimitives() { return minPrimitives; }
 
     /**

@@ -43,18 +43,16 @@ public abstract class KdTreeBuilder {
     /** Depth beyond which no setting can go: 2^64 voxels would not fit in any memory ({@link Limits#MAX_DEPTH}). */
     public static final int DEPTH_LIMIT = (int) Limits.MAX_DEPTH.max();
 
-    /** B, the references per input primitive a tree may hold at the most ({@link ReferenceBudget}). */
-    public static final int DEFAULT_REFERENCE_BUDGET = 256;
-
     /** c in the automatic depth cap {@code 8 + c log2 N} (pbrt's and Wald and Havran's 1.3). */
     public static final double DEFAULT_DEPTH_FACTOR = 1.3;
 
-    private int maxDepth = -1;
+    // Each setting starts from its row of the one table, Setting.
+    private int maxDepth = Setting.MAX_DEPTH.defaultValue();
     private double depthFactor = DEFAULT_DEPTH_FACTOR;
-    private int referenceBudget = DEFAULT_REFERENCE_BUDGET;
-    private CostModel costModel = CostModel.WALD_HAVRAN;
-    private boolean perfectSplits = true;
-    private int threads = 1;
+    private int referenceBudget = Setting.REFERENCE_BUDGET.defaultValue();
+    private CostModel costModel = new CostModel(Setting.KT.defaultValue(), Setting.KI.defaultValue());
+    private boolean perfectSplits = Setting.PERFECT_SPLITS.defaultValue();
+    private int threads = Setting.THREADS.defaultValue();
 
     /**
      * Builds the tree of {@code primitives}, starting from their bounding box (constKdTree).
@@ -263,7 +261,7 @@ public abstract class KdTreeBuilder {
     }
 
     /**
-     * {@return B, the references per input primitive the tree may hold at the most} (default 256; {@link ReferenceBudget}).
+     * {@return B, the references per input primitive the tree may hold at the most} ({@link ReferenceBudget}; default: {@link Setting#REFERENCE_BUDGET}).
      */
     public int referenceBudget() { return referenceBudget; }
 
@@ -283,7 +281,7 @@ public abstract class KdTreeBuilder {
     public CostModel costModel() { return costModel; }
 
     /**
-     * Sets Kt and Ki (default 15 and 20).
+     * Sets Kt and Ki (default: {@link Setting#KT} and {@link Setting#KI}, Wald and Havran's {@link CostModel#WALD_HAVRAN}).
      *
      * @param model Kt and Ki
      * @return this builder
@@ -295,7 +293,7 @@ public abstract class KdTreeBuilder {
         return this;
     }
 
-    /** {@return whether straddling primitives are clipped to each child voxel} (default true). */
+    /** {@return whether straddling primitives are clipped to each child voxel} (default: {@link Setting#PERFECT_SPLITS}). */
     public boolean perfectSplits() { return perfectSplits; }
 
     /**
@@ -309,7 +307,7 @@ public abstract class KdTreeBuilder {
         return this;
     }
 
-    /** {@return the number of threads a build uses} (default 1). */
+    /** {@return the number of threads a build uses} (default: {@link Setting#THREADS}). */
     public int threads() { return threads; }
 
     /**
@@ -328,7 +326,7 @@ public abstract class KdTreeBuilder {
         return "maxDepth=" + (maxDepth >= 0 ? String.valueOf(maxDepth)
                 : depthFactor == DEFAULT_DEPTH_FACTOR ? "auto" : "auto(8+" + depthFactor + " log2 N)") + " Kt=" + costModel.kt() + " Ki=" + costModel.ki()
                 + " perfectSplits=" + perfectSplits + (threads > 1 ? " threads=" + threads : "")
-                + (referenceBudget != DEFAULT_REFERENCE_BUDGET ? " referenceBudget=" + referenceBudget : "");
+                + (referenceBudget != Setting.REFERENCE_BUDGET.defaultValue() ? " referenceBudget=" + referenceBudget : "");
     }
 
     /** The per-build context that {@link BuildContext} exposes to subclasses. */

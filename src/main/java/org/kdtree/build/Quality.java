@@ -18,11 +18,12 @@ public enum Quality {
      * The exact event algorithm, leaves below 6 references: on the meshes measured, 35 to 45 % of
      * the exact tree's nodes, within 4 % of its expected cost.
      */
-    BALANCED(SahBuilder.Algorithm.EVENT, SahBuilder.DEFAULT_EXACT_BELOW, 6),
+    BALANCED(SahBuilder.Algorithm.EVENT, 0, 6),
     /** The exact SAH tree (event algorithm), every split that pays. */
-    EXACT(SahBuilder.Algorithm.EVENT, SahBuilder.DEFAULT_EXACT_BELOW, 1);
+    EXACT(SahBuilder.Algorithm.EVENT, 0, 1);
 
     private final SahBuilder.Algorithm algorithm;
+    /** The binned search's exact threshold (0 for an exact search: the setting's default is then applied). */
     private final int exactBelow, leafBelow;
 
     Quality(SahBuilder.Algorithm algorithm, int exactBelow, int leafBelow) {
@@ -33,6 +34,11 @@ public enum Quality {
 
     /** {@return the plane search of this preset} */
     public SahBuilder.Algorithm algorithm() { return algorithm; }
+
+    /** {@return what the preset sets, in a few words}, e.g. for the command line's help */
+    public String describe() {
+        return (algorithm.exact() ? "exact " : "binned, exact below " + exactBelow + ", ") + "leaves below " + leafBelow + " references";
+    }
 
     /** {@return the node size below which this preset makes leaves without a plane search} */
     public int leafBelow() { return leafBelow; }
@@ -47,7 +53,8 @@ public enum Quality {
      * @return {@code sah}
      */
     public SahBuilder applyTo(SahBuilder sah) {
-        sah.algorithm(algorithm).bins(SahBuilder.DEFAULT_BINS).exactBelow(exactBelow).leafBelow(leafBelow);
+        sah.algorithm(algorithm).bins(Setting.BINS.defaultValue())
+                .exactBelow(exactBelow > 0 ? exactBelow : Setting.EXACT_BELOW.defaultValue()).leafBelow(leafBelow);
         sah.maxDepth(-1).depthFactor(KdTreeBuilder.DEFAULT_DEPTH_FACTOR);
         return sah;
     }

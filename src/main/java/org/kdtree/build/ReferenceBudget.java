@@ -3,7 +3,7 @@ package org.kdtree.build;
 /**
  * The rule that keeps every build bounded in references, and so in memory and time, whatever
  * the geometry: the root may hold {@code B N} references (B per input primitive, default
- * {@link KdTreeBuilder#DEFAULT_REFERENCE_BUDGET}), and a split passes its node's budget on to
+ * {@link Setting#REFERENCE_BUDGET}), and a split passes its node's budget on to
  * its children in proportion to the references each receives. A split whose children would hold
  * more references than the node's budget makes a leaf instead. The leaves' budgets add up to the
  * root's and each leaf holds no more than its budget, so a tree never holds more than {@code B N}

@@ -18,8 +18,9 @@ import org.kdtree.tree.KdTreeWriter;
  * made per node.) A subclass gets the same searches over the same node store as this class:
  * there is no other path.
  *
- * <p>Defaults: Kt = 15, Ki = 20, empty-voxel weight lambda = 0.8, depth cap
- * {@code 8 + 1.3 log2 N}, perfect splits on, plane search {@link Algorithm#EVENT}.
+ * <p>Its settings and their defaults are rows of {@link Setting} (docs/limits.md lists them):
+ * those of every builder, and {@link Setting#LAMBDA}, {@link Setting#ALGORITHM},
+ * {@link Setting#BINS}, {@link Setting#EXACT_BELOW} and the preset {@link Setting#QUALITY}.
  */
 public class SahBuilder extends KdTreeBuilder {
     /** How the best plane of a node is found. Every exact algorithm builds the same tree. */
@@ -48,24 +49,18 @@ public class SahBuilder extends KdTreeBuilder {
 
     private static final PlaneSearch NAIVE_SEARCH = new NaivePlaneSearch(), SORTED_SEARCH = new SortedPlaneSearch();
 
-    /** The default number of bins per axis of {@link Algorithm#BINNED}. */
-    public static final int DEFAULT_BINS = 32;
-
-    /** The default node size below which {@link Algorithm#BINNED} searches exactly. */
-    public static final int DEFAULT_EXACT_BELOW = 64;
-
     /**
      * Nodes and leaf references an SAH tree has per primitive, a little above what the meshes
      * measured gave (bunny 8.9 and 5.3, its 4 x 4 grid 9.5 and 5.6).
      */
     private static final int NODES_PER_PRIMITIVE = 10, REFS_PER_PRIMITIVE = 6;
 
-    private double emptyWeight = 0.8;
-    private Algorithm algorithm = Algorithm.EVENT;
-    private int bins = DEFAULT_BINS;
-    private int exactBelow = DEFAULT_EXACT_BELOW;
-    private int leafBelow = 1;
-    private PlaneSearch search = EventSweep.INSTANCE;
+    private double lambda = Setting.LAMBDA.defaultValue();
+    private Algorithm algorithm = Setting.ALGORITHM.defaultValue();
+    private int bins = Setting.BINS.defaultValue();
+    private int exactBelow = Setting.EXACT_BELOW.defaultValue();
+    private int leafBelow = Setting.LEAF_BELOW.defaultValue();
+    private PlaneSearch search = searchOf(algorithm);
 
     @Override public String name() { return "sah"; }
 
@@ -76,7 +71,7 @@ public class SahBuilder extends KdTreeBuilder {
     @Override protected boolean terminate(BuildContext context, BuildNode node) {
         if (node.size() < leafBelow || node.size() == 0 || node.depth() >= context.depthCap()) return true;
         NodeStore store = node.store();
-        if (store.sahCost == null) store.sahCost = new SahCost(costModel(), emptyWeight, node.dimension());
+        if (store.sahCost == null) store.sahCost = new SahCost(costModel(), lambda, node.dimension());
         SahCost sah = store.sahCost.set(store.voxel(node.level()), 2 * node.dimension() * node.child());
         if (!(sah.halfArea() > 0)) return true;
         SahSplit best = store.best;
@@ -109,8 +104,8 @@ public class SahBuilder extends KdTreeBuilder {
         };
     }
 
-    /** {@return lambda, the weight of a plane that leaves one child empty} (default 0.8; 1 disables the bonus). */
-    public double emptyWeight() { return emptyWeight; }
+    /** {@return lambda, the weight of a plane that leaves one child empty} (1 disables the bonus; default: {@link Setting#LAMBDA}). */
+    public double lambda() { return lambda; }
 
     /**
      * Sets lambda ({@link Limits#LAMBDA}: 0.01 .. 1).
@@ -118,12 +113,12 @@ public class SahBuilder extends KdTreeBuilder {
      * @param lambda the weight
      * @return this builder
      */
-    public SahBuilder emptyWeight(double lambda) {
-        this.emptyWeight = Limits.LAMBDA.check("emptyWeight (lambda)", lambda);
+    public SahBuilder lambda(double lambda) {
+        this.lambda = Limits.LAMBDA.check("lambda", lambda);
         return this;
     }
 
-    /** {@return the plane-search algorithm} (default EVENT). */
+    /** {@return the plane-search algorithm} (default: {@link Setting#ALGORITHM}). */
     public Algorithm algorithm() { return algorithm; }
 
     /**
@@ -138,7 +133,7 @@ public class SahBuilder extends KdTreeBuilder {
         return this;
     }
 
-    /** {@return B, the number of bins per axis of {@link Algorithm#BINNED}} (default 32). */
+    /** {@return B, the number of bins per axis of {@link Algorithm#BINNED}} (default: {@link Setting#BINS}). */
     public int bins() { return bins; }
 
     /**
@@ -154,7 +149,7 @@ public class SahBuilder extends KdTreeBuilder {
     }
 
     /**
-     * {@return the node size below which {@link Algorithm#BINNED} uses the exact sweep} (default 64; 0 = bins everywhere).
+     * {@return the node size below which {@link Algorithm#BINNED} uses the exact sweep} (0 = bins everywhere; default: {@link Setting#EXACT_BELOW}).
      */
     public int exactBelow() { return exactBelow; }
 
@@ -223,7 +218,7 @@ public class SahBuilder extends KdTreeBuilder {
     @Override public SahBuilder threads(int n) { super.threads(n); return this; }
 
     @Override public String describeSettings() {
-        return "lambda=" + emptyWeight + " algorithm=" + algorithm.name().toLowerCase()
+        return "lambda=" + lambda + " algorithm=" + algorithm.name().toLowerCase()
                 + (!algorithm.exact() ? " bins=" + bins + " exactBelow=" + exactBelow : "")
                 + (leafBelow > 1 ? " leafBelow=" + leafBelow : "") + " " + super.describeSettings();
     }

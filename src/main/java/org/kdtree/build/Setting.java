@@ -1,113 +1,169 @@
 package org.kdtree.build;
 
+import java.util.ArrayList;
+import java.util.Arrays;
 import java.util.List;
+import java.util.Locale;
 import java.util.function.BiConsumer;
 import java.util.function.Function;
+import java.util.stream.Collectors;
 import org.kdtree.limits.Limit;
 import org.kdtree.limits.Limits;
 import org.kdtree.tree.CostModel;
 
 /**
- * One setting a builder takes, as a {@link BuilderSpec} names it: its command-line option, its
- * {@link Limits} entry, the builders it applies to, and how it is given to and read from a
- * builder. The list {@link #ALL} is the one place that says which settings exist; the command
- * line, the workbench, the trade-off study and the benchmarks all go through it.
+ * One setting a builder takes, declared once: its name, its command-line option, its default,
+ * its {@link Limits} entry, a line of help, the builders it applies to, and how it is given to
+ * and read from a builder. The rows below are the one table of builder settings: the builders
+ * start from these defaults, {@link BuilderSpec} checks and applies them, and the command line's
+ * options, the workbench's controls and the table in docs/limits.md are made from them.
+ *
+ * <p>Adding a setting is one row here (with the builder's own getter and setter that the row
+ * names): the row's declaration adds it to {@link #ALL}, and with it to every command that
+ * builds a tree, to the workbench and, once regenerated, to docs/limits.md.
  *
  * @param <T> the value's type
  */
 public final class Setting<T> {
-    /** A named SAH preset: the event algorithm under a depth cap; applied first, so that the other settings override it. */
-    public static final Setting<Quality> QUALITY = sah("--quality", Quality.class, null,
+    /** The rows, in the order they are declared: each constructor call appends its own. */
+    private static final List<Setting<?>> TABLE = new ArrayList<>();
+
+    private static final Owner<KdTreeBuilder> EVERY = new Owner<>(KdTreeBuilder.class, "every builder");
+    private static final Owner<SahBuilder> SAH = new Owner<>(SahBuilder.class, "the sah builder");
+    private static final Owner<CyclingAxisBuilder> MEDIAN = new Owner<>(CyclingAxisBuilder.class, "the median builders");
+    private static final Owner<SlidingMidpointBuilder> SLIDING = new Owner<>(SlidingMidpointBuilder.class, "the sliding-midpoint builder");
+
+    /** A named SAH preset (plane search and leaf size); first in the table, so that the other settings override it. */
+    public static final Setting<Quality> QUALITY = new Setting<>("quality", "--quality", Quality.class, null, null, SAH,
+            "a named SAH preset, " + Arrays.stream(Quality.values())
+                    .map(q -> q.name().toLowerCase(Locale.ROOT) + " (" + q.describe() + ")")
+                    .collect(Collectors.joining(", ")) + "; the other settings, if given, override it",
             SahBuilder::quality, b -> null);
-    /** Kt, the cost of one traversal step. */
-    public static final Setting<Double> KT = every("--kt", Double.class, Limits.KT,
+    /** Kt, the cost of one traversal step (Wald and Havran's, {@link CostModel#WALD_HAVRAN}, by default). */
+    public static final Setting<Double> KT = new Setting<>("--kt", Limits.KT, CostModel.WALD_HAVRAN.kt(), EVERY,
+            "cost of traversing one node (the SAH's, and every tree's expected cost)",
             (b, v) -> b.costModel(new CostModel(v, b.costModel().ki())), b -> b.costModel().kt());
     /** Ki, the cost of one primitive test. */
-    public static final Setting<Double> KI = every("--ki", Double.class, Limits.KI,
+    public static final Setting<Double> KI = new Setting<>("--ki", Limits.KI, CostModel.WALD_HAVRAN.ki(), EVERY,
+            "cost of intersecting one primitive (the SAH's, and every tree's expected cost)",
             (b, v) -> b.costModel(new CostModel(b.costModel().kt(), v)), b -> b.costModel().ki());
     /** Kmaxdepth, or -1 for the automatic depth cap. */
-    public static final Setting<Integer> MAX_DEPTH = every("--max-depth", Integer.class, Limits.MAX_DEPTH,
-            KdTreeBuilder::maxDepth, KdTreeBuilder::maxDepth);
+    public static final Setting<Integer> MAX_DEPTH = new Setting<>("--max-depth", Limits.MAX_DEPTH, -1, EVERY,
+            "the depth cap: no node deeper is split", KdTreeBuilder::maxDepth, KdTreeBuilder::maxDepth);
     /** B, the references per input primitive the tree may hold. */
-    public static final Setting<Integer> REFERENCE_BUDGET = every("--reference-budget", Integer.class, Limits.REFERENCE_BUDGET,
+    public static final Setting<Integer> REFERENCE_BUDGET = new Setting<>("--reference-budget", Limits.REFERENCE_BUDGET, 256, EVERY,
+            "references per primitive the tree may hold: where overlapping geometry would need more, "
+                    + "nodes become leaves early and the statistics say so",
             KdTreeBuilder::referenceBudget, KdTreeBuilder::referenceBudget);
     /** Whether straddling primitives are clipped exactly to each child (the option turns it off). */
-    public static final Setting<Boolean> PERFECT_SPLITS = every("--no-perfect-splits", Boolean.class, null,
+    public static final Setting<Boolean> PERFECT_SPLITS = new Setting<>("perfect splits", "--no-perfect-splits", Boolean.class, true,
+            null, EVERY, "a primitive that straddles a split plane is clipped to each child exactly, not kept whole by its bounding box",
             KdTreeBuilder::perfectSplits, KdTreeBuilder::perfectSplits);
     /** Threads building the tree. */
-    public static final Setting<Integer> THREADS = every("--threads", Integer.class, Limits.THREADS,
+    public static final Setting<Integer> THREADS = new Setting<>("--threads", Limits.THREADS, 1, EVERY,
+            "threads building the tree (the same tree at any count)",
             KdTreeBuilder::threads, KdTreeBuilder::threads);
     /** lambda, the SAH's weight of a plane that leaves one child empty. */
-    public static final Setting<Double> LAMBDA = sah("--lambda", Double.class, Limits.LAMBDA,
-            SahBuilder::emptyWeight, SahBuilder::emptyWeight);
+    public static final Setting<Double> LAMBDA = new Setting<>("--lambda", Limits.LAMBDA, 0.8, SAH,
+            "the SAH's weight of a plane that cuts off empty space (1 = no bonus)", SahBuilder::lambda, SahBuilder::lambda);
     /** The SAH's plane search. */
-    public static final Setting<SahBuilder.Algorithm> ALGORITHM = sah("--algorithm", SahBuilder.Algorithm.class, null,
+    public static final Setting<SahBuilder.Algorithm> ALGORITHM = new Setting<>("plane search", "--algorithm",
+            SahBuilder.Algorithm.class, SahBuilder.Algorithm.EVENT, null, SAH,
+            "how the SAH searches for its planes (NAIVE, SORTED and EVENT build the same tree in different times; "
+                    + "BINNED builds another, with planes at bin boundaries only)",
             SahBuilder::algorithm, SahBuilder::algorithm);
     /** Bins per axis of the binned SAH (the exact algorithms take it and do not use it). */
-    public static final Setting<Integer> BINS = sah("--bins", Integer.class, Limits.BINS, SahBuilder::bins, SahBuilder::bins);
+    public static final Setting<Integer> BINS = new Setting<>("--bins", Limits.BINS, 32, SAH,
+            "bins per axis of the BINNED plane search", SahBuilder::bins, SahBuilder::bins);
     /** The node size below which the binned SAH searches exactly. */
-    public static final Setting<Integer> EXACT_BELOW = sah("--exact-below", Integer.class, Limits.EXACT_BELOW,
-            SahBuilder::exactBelow, SahBuilder::exactBelow);
+    public static final Setting<Integer> EXACT_BELOW = new Setting<>("--exact-below", Limits.EXACT_BELOW, 64, SAH,
+            "the BINNED plane search sweeps nodes of fewer references exactly", SahBuilder::exactBelow, SahBuilder::exactBelow);
     /** The SAH's smallest node it searches a plane for. */
-    public static final Setting<Integer> LEAF_BELOW = sah("--leaf-below", Integer.class, Limits.LEAF_BELOW,
+    public static final Setting<Integer> LEAF_BELOW = new Setting<>("--leaf-below", Limits.LEAF_BELOW, 1, SAH,
+            "nodes of fewer references become leaves without a plane search (1 = only empty ones)",
             SahBuilder::leafBelow, SahBuilder::leafBelow);
     /** Kmintri, the median builders' smallest node worth splitting. */
-    public static final Setting<Integer> MIN_PRIMITIVES = new Setting<>("--min-prims", Integer.class, Limits.MIN_PRIMITIVES,
-            CyclingAxisBuilder.class, "the median builders", CyclingAxisBuilder::minPrimitives, CyclingAxisBuilder::minPrimitives);
+    public static final Setting<Integer> MIN_PRIMITIVES = new Setting<>("--min-prims", Limits.MIN_PRIMITIVES, 2, MEDIAN,
+            "a voxel with at most this many primitives becomes a leaf", CyclingAxisBuilder::minPrimitives,
+            CyclingAxisBuilder::minPrimitives);
     /** The sliding-midpoint builder's largest leaf. */
-    public static final Setting<Integer> LEAF_SIZE = new Setting<>("--leaf-size", Integer.class, Limits.LEAF_SIZE,
-            SlidingMidpointBuilder.class, "the sliding-midpoint builder", SlidingMidpointBuilder::leafSize,
-            SlidingMidpointBuilder::leafSize);
+    public static final Setting<Integer> LEAF_SIZE = new Setting<>("--leaf-size", Limits.LEAF_SIZE, 16, SLIDING,
+            "the largest leaf, unless its primitives coincide or the depth cap is reached",
+            SlidingMidpointBuilder::leafSize, SlidingMidpointBuilder::leafSize);
 
-    /** Every setting, in the order a spec applies them (a preset first, so that what follows overrides it). */
-    public static final List<Setting<?>> ALL = List.of(QUALITY, KT, KI, MAX_DEPTH, REFERENCE_BUDGET, PERFECT_SPLITS, THREADS,
-            LAMBDA, ALGORITHM, BINS, EXACT_BELOW, LEAF_BELOW, MIN_PRIMITIVES, LEAF_SIZE);
+    /** Every setting, in the order a spec applies them (the preset first, so that what follows overrides it). */
+    public static final List<Setting<?>> ALL = List.copyOf(TABLE);
 
+    /** The builders a setting applies to: a class and its subclasses, and how a message names them. */
+    private record Owner<B extends KdTreeBuilder>(Class<B> type, String name) {
+    }
+
+    private final String name;
     private final String option;
     private final Class<T> type;
+    private final T defaultValue;
     private final Limit limit;
-    private final Class<? extends KdTreeBuilder> owner;
-    private final String ownerName;
+    private final Owner<?> owner;
+    private final String help;
     private final BiConsumer<KdTreeBuilder, T> give;
     private final Function<KdTreeBuilder, T> read;
 
+    /** A number in the range of {@code limit}, named by the limit's title. */
     @SuppressWarnings("unchecked")
-    private <B extends KdTreeBuilder> Setting(String option, Class<T> type, Limit limit, Class<B> owner, String ownerName,
+    private <B extends KdTreeBuilder> Setting(String option, Limit limit, T defaultValue, Owner<B> owner, String help,
                                               BiConsumer<B, T> give, Function<B, T> read) {
+        this(limit.title(), option, (Class<T>) defaultValue.getClass(), defaultValue, limit, owner, help, give, read);
+    }
+
+    @SuppressWarnings("unchecked")
+    private <B extends KdTreeBuilder> Setting(String name, String option, Class<T> type, T defaultValue, Limit limit,
+                                              Owner<B> owner, String help, BiConsumer<B, T> give, Function<B, T> read) {
+        this.name = name;
         this.option = option;
         this.type = type;
+        this.defaultValue = defaultValue;
         this.limit = limit;
         this.owner = owner;
-        this.ownerName = ownerName;
+        this.help = help;
         this.give = (b, v) -> give.accept((B) b, v);
         this.read = b -> read.apply((B) b);
+        if (limit != null) check(defaultValue);
+        TABLE.add(this);
     }
 
-    private static <T> Setting<T> every(String option, Class<T> type, Limit limit, BiConsumer<KdTreeBuilder, T> give,
-                                        Function<KdTreeBuilder, T> read) {
-        return new Setting<>(option, type, limit, KdTreeBuilder.class, "every builder", give, read);
-    }
+    /** {@return what the setting is called, in the talk's words where it has one}, e.g. "lambda", "Kmaxdepth" */
+    public String name() { return name; }
 
-    private static <T> Setting<T> sah(String option, Class<T> type, Limit limit, BiConsumer<SahBuilder, T> give,
-                                      Function<SahBuilder, T> read) {
-        return new Setting<>(option, type, limit, SahBuilder.class, "the sah builder", give, read);
-    }
-
-    /** {@return the command-line option that gives it}, e.g. {@code --lambda}; errors name the setting by it. */
+    /** {@return the command-line option that gives it}, e.g. {@code --lambda}; errors name the setting by it */
     public String option() { return option; }
 
-    /** {@return the type of its value} */
+    /** {@return the type of its value}: Double, Integer, Boolean or an enum */
     public Class<T> type() { return type; }
 
-    /** {@return the builders it applies to, as a message says it}, e.g. "the sah builder" */
-    public String ownerName() { return ownerName; }
+    /**
+     * {@return the value the library's builders start from}, null for a preset (none is applied
+     * unless given). A boolean setting's option switches it away from this default.
+     */
+    public T defaultValue() { return defaultValue; }
+
+    /** {@return its allowed range}, null for a setting that is not a number */
+    public Limit limit() { return limit; }
+
+    /** {@return one line on what it does}, without its range, default or builders (each reader adds those its own way) */
+    public String help() { return help; }
+
+    /** {@return the builders it applies to, as a message says it}, e.g. "the sah builder", "every builder" */
+    public String ownerName() { return owner.name(); }
+
+    /** {@return whether every builder takes it} */
+    public boolean appliesToEvery() { return owner == EVERY; }
 
     /**
      * {@return whether {@code builder} takes this setting} (a builder of the owning class or a subclass of it).
      *
      * @param builder a builder
      */
-    public boolean appliesTo(KdTreeBuilder builder) { return owner.isInstance(builder); }
+    public boolean appliesTo(KdTreeBuilder builder) { return owner.type().isInstance(builder); }
 
     /**
      * {@code value}, checked against this setting's {@link Limits} entry (the error names {@link #option()}).
@@ -130,6 +186,18 @@ public final class Setting<T> {
      * @param builder a builder this setting applies to
      */
     public T read(KdTreeBuilder builder) { return read.apply(builder); }
+
+    /**
+     * {@return {@code value} as people write it}: whole numbers without a decimal point, on/off for a switch, an enum's name
+     *
+     * @param value a value of this setting, or null
+     */
+    public String format(Object value) {
+        if (value == null) return "none";
+        if (value instanceof Boolean on) return on ? "on" : "off";
+        if (value instanceof Number n) return Limit.format(n.doubleValue());
+        return value.toString();
+    }
 
     @Override public String toString() { return option; }
 }

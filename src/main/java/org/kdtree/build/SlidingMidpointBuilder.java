@@ -22,13 +22,11 @@ import org.kdtree.geom.SplitPlane;
  */
 public class SlidingMidpointBuilder extends KdTreeBuilder {
     /**
-     * The default largest leaf, chosen for memory: with 16 the tree over uniformly random points
-     * costs under 8 bytes per point beyond the points themselves (a reference and a share of the
-     * nodes), which a test checks on a million 3-D points.
+     * The largest leaf; its default ({@link Setting#LEAF_SIZE}, 16) is chosen for memory: the tree
+     * over uniformly random points then costs under 8 bytes per point beyond the points themselves
+     * (a reference and a share of the nodes), which a test checks on a million 3-D points.
      */
-    public static final int DEFAULT_LEAF_SIZE = 16;
-
-    private int leafSize = DEFAULT_LEAF_SIZE;
+    private int leafSize = Setting.LEAF_SIZE.defaultValue();
 
     @Override public String name() { return "sliding-midpoint"; }
 

@@ -14,8 +14,8 @@ import org.kdtree.limits.Deadlines;
 import org.kdtree.shape.InvalidGeometryException;
 import org.kdtree.shape.PointsKd;
 import org.kdtree.shape.Primitives;
+import org.kdtree.shape.Scene2D;
 import org.kdtree.shape.Shape2D;
-import org.kdtree.shape.Shapes2D;
 import org.kdtree.shape.TriangleMesh;
 import org.kdtree.tree.KdTree;
 
@@ -192,7 +192,7 @@ public final class Contract {
     private static final Map<Class<?>, Optional<ContractViolation>> STOPS = new ConcurrentHashMap<>();
 
     private static ContractViolation stopping(KdTreeBuilder builder) {
-        Shapes2D scene = ContractScenes.random2D(50, 11);
+        Scene2D scene = ContractScenes.random2D(50, 11);
         KdTree tree = build(builder, scene, "50 random 2-D shapes");
         TreeChecks.checkAll(builder, scene, tree);
         int[] emptySplits = {0};
@@ -225,7 +225,7 @@ public final class Contract {
         KdTree tree = check(builder, ContractScenes.soup(new double[] {0, 0, 0, 1, 0, 0, 0, 1, 0}), "one triangle");
         ContractViolation.require(tree.stats().references() > 0,
                 builder.name() + ": a scene of one triangle gave a tree listing it in no leaf.");
-        check(b.get(), new Shapes2D(List.of(new Shape2D.Segment(0, 0, 3, 1))), "one 2-D segment");
+        check(b.get(), new Scene2D(List.of(new Shape2D.Segment(0, 0, 3, 1))), "one 2-D segment");
     }
 
     private static void identicalTrianglesStayBounded(Supplier<? extends KdTreeBuilder> b) {
@@ -241,7 +241,7 @@ public final class Contract {
         List<Shape2D> onALine = new ArrayList<>();
         for (int i = 0; i < 50; i++) onALine.add(new Shape2D.Segment(i, 5, i + 0.5, 5));
         onALine.add(new Shape2D.Point(7.25, 5));
-        check(b.get(), new Shapes2D(onALine), "50 segments on one line");
+        check(b.get(), new Scene2D(onALine), "50 segments on one line");
     }
 
     private static void tinyAndHugeCoordinates(Supplier<? extends KdTreeBuilder> b) {

@@ -7,9 +7,9 @@ import java.util.Arrays;
 import java.util.List;
 import java.util.Random;
 import org.kdtree.io.BundledScenes;
-import org.kdtree.io.Scene2DFormat;
+import org.kdtree.io.Scene2DReader;
+import org.kdtree.shape.Scene2D;
 import org.kdtree.shape.Shape2D;
-import org.kdtree.shape.Shapes2D;
 import org.kdtree.shape.TriangleMesh;
 
 /**
@@ -23,9 +23,9 @@ public class ContractScenes {
     }
 
     /** {@return the handful of 2-D objects of the bundled scenes/talk-figures.scene2d, like the talk's figures 2-5} */
-    public static Shapes2D talkFigures() {
+    public static Scene2D talkFigures() {
         try {
-            return Scene2DFormat.read(BundledScenes.path("talk-figures.scene2d"));
+            return Scene2DReader.read(BundledScenes.path("talk-figures.scene2d"));
         } catch (IOException e) {
             throw new UncheckedIOException(e);
         }
@@ -37,7 +37,7 @@ public class ContractScenes {
      * @param seed the random seed
      * @return the shapes
      */
-    public static Shapes2D random2D(int n, long seed) {
+    public static Scene2D random2D(int n, long seed) {
         Random r = new Random(seed);
         List<Shape2D> shapes = new ArrayList<>();
         for (int i = 0; i < n; i++) {
@@ -50,7 +50,7 @@ public class ContractScenes {
                         x + r.nextGaussian() * s, y + r.nextGaussian() * s);
             });
         }
-        return new Shapes2D(shapes);
+        return new Scene2D(shapes);
     }
 
     /**
@@ -59,7 +59,7 @@ public class ContractScenes {
      * @param seed the random seed
      * @return the shapes
      */
-    public static Shapes2D clustered2D(int n, long seed) {
+    public static Scene2D clustered2D(int n, long seed) {
         Random r = new Random(seed);
         double[][] centres = {{10, 10}, {85, 20}, {40, 90}};
         List<Shape2D> shapes = new ArrayList<>();
@@ -70,7 +70,7 @@ public class ContractScenes {
         }
         shapes.add(new Shape2D.Point(0, 0));
         shapes.add(new Shape2D.Point(100, 100));
-        return new Shapes2D(shapes);
+        return new Scene2D(shapes);
     }
 
     /**

@@ -4,7 +4,7 @@ import java.io.IOException;
 import java.io.UncheckedIOException;
 import java.util.List;
 import org.kdtree.io.BundledScenes;
-import org.kdtree.io.SceneLoader;
+import org.kdtree.io.PrimitivesReader;
 import org.kdtree.shape.Primitives;
 
 /**
@@ -37,7 +37,7 @@ public final class CourseScenes {
 
     private static Named bundled(String file) {
         try {
-            return new Named(file.substring(0, file.lastIndexOf('.')), SceneLoader.load(BundledScenes.path(file)));
+            return new Named(file.substring(0, file.lastIndexOf('.')), PrimitivesReader.read(BundledScenes.path(file)));
         } catch (IOException e) {
             throw new UncheckedIOException(e);
         }

@@ -4,8 +4,8 @@ import java.util.ArrayList;
 import java.util.List;
 import org.kdtree.shape.PointsKd;
 import org.kdtree.shape.Primitives;
+import org.kdtree.shape.Scene2D;
 import org.kdtree.shape.Shape2D;
-import org.kdtree.shape.Shapes2D;
 import org.kdtree.shape.TriangleMesh;
 
 /** Points that lie on a primitive: its vertices, points on its edges and inside it. */
@@ -21,7 +21,7 @@ final class PrimitiveSamples {
                 for (int a = 0; a < 3; a++) c[corner][a] = m.corner(i, corner, a);
             return polygon(c, true);
         }
-        if (prims instanceof Shapes2D s) return shape(s.get(i));
+        if (prims instanceof Scene2D s) return shape(s.get(i));
         if (prims instanceof PointsKd p) {
             double[] x = new double[p.dimension()];
             for (int a = 0; a < x.length; a++) x[a] = p.coord(i, a);

@@ -1,89 +1,166 @@
 package org.kdtree.cli;
 
+import java.util.ArrayList;
+import java.util.Arrays;
+import java.util.LinkedHashMap;
+import java.util.List;
+import java.util.Map;
+import java.util.stream.Collectors;
 import org.kdtree.build.BuilderSpec;
-import org.kdtree.build.KdTreeBuilder;
-import org.kdtree.build.Quality;
-import org.kdtree.build.SahBuilder;
 import org.kdtree.build.Setting;
-import picocli.CommandLine.Option;
+import org.kdtree.limits.Limit;
+import picocli.CommandLine.Command;
+import picocli.CommandLine.IModelTransformer;
+import picocli.CommandLine.Model.CommandSpec;
+import picocli.CommandLine.Model.ISetter;
+import picocli.CommandLine.Model.OptionSpec;
 
-/** The builder options every command shares (a picocli mixin): they fill a {@link BuilderSpec}. */
+/**
+ * The builder options of every command that builds a tree (a picocli mixin): {@code -b NAME}
+ * and one option per row of {@link Setting}, made from the row (its option, help, range,
+ * default and builders), so that a setting added there is an option of every such command.
+ * The values are kept as typed and checked when {@link #spec()} makes the {@link BuilderSpec},
+ * whose errors name the option in one line.
+ *
+ * <p>A command declares {@code @Mixin BuilderOptions options = new BuilderOptions("sah")} with
+ * its own default builder; picocli's model transformer adds the options to the command.
+ */
+@Command(modelTransformer = BuilderOptions.AddOptions.class)
 public final class BuilderOptions {
-    @Option(names = {"-b", "--builder"}, defaultValue = "sah",
-            description = "Builder: sah, median-plane, object-median, sliding-midpoint, or a registered name (default: ${DEFAULT-VALUE}).")
-    String builder;
+    private final String defaultBuilder;
+    private final String role;
+    private String builder;
+    private final Map<Setting<?>, Object> given = new LinkedHashMap<>();
 
-    @Option(names = "--lambda", description = "SAH empty-voxel weight, 0.01..1 (default 0.8).")
-    Double lambda;
-
-    @Option(names = "--kt", description = "Traversal cost Kt, 0..10000 (default 15).")
-    Double kt;
-
-    @Option(names = "--ki", description = "Intersection cost Ki, 0.001..10000 (default 20).")
-    Double ki;
-
-    @Option(names = "--max-depth", description = "Kmaxdepth, 0..64 (default: 8 + 1.3 log2 N).")
-    Integer maxDepth;
-
-    @Option(names = "--reference-budget", paramLabel = "B",
-            description = "At most B references per primitive in the tree, 1 to 65536 (default 256): "
-                    + "where overlapping geometry would need more, nodes become leaves early and the output says so.")
-    Integer referenceBudget;
-
-    @Option(names = "--min-prims", description = "Kmintri for the median builders (default 2).")
-    Integer minPrims;
-
-    @Option(names = "--quality", description = "SAH preset: ${COMPLETION-CANDIDATES}: fast (binned, leaves below 11 references), "
-            + "balanced (exact search, leaves below 6), exact (the default tree); options given with it override its settings.")
-    Quality quality;
-
-    @Option(names = "--algorithm", description = "SAH plane search: ${COMPLETION-CANDIDATES}. NAIVE, SORTED and EVENT build the same tree "
-            + "in different times; BINNED builds another (planes at bin boundaries only, see --bins).")
-    SahBuilder.Algorithm algorithm;
-
-    @Option(names = "--bins", description = "Bins per axis for --algorithm BINNED (default 32).")
-    Integer bins;
-
-    @Option(names = "--exact-below", description = "BINNED: nodes with fewer references use the exact sweep (default 64; 0 = never).")
-    Integer exactBelow;
-
-    @Option(names = "--leaf-below", description = "SAH: nodes with fewer references become leaves without a plane search, "
-            + "1 to 65536 (default 1: only empty nodes).")
-    Integer leafBelow;
-
-    @Option(names = "--no-perfect-splits", description = "Use bounding boxes instead of exact clipping.")
-    boolean noPerfectSplits;
-
-    @Option(names = "--leaf-size", description = "Largest leaf of the sliding-midpoint builder, 1 to 65536 (default 16).")
-    Integer leafSize;
-
-    /**
-     * {@return the builder specification the options give} (each value checked against its limit, the error naming the option)
-     */
-    public BuilderSpec spec() {
-        return BuilderSpec.of(builder)
-                .with(Setting.QUALITY, quality)
-                .with(Setting.KT, kt)
-                .with(Setting.KI, ki)
-                .with(Setting.MAX_DEPTH, maxDepth)
-                .with(Setting.REFERENCE_BUDGET, referenceBudget)
-                .with(Setting.PERFECT_SPLITS, noPerfectSplits ? Boolean.FALSE : null)
-                .with(Setting.LAMBDA, lambda)
-                .with(Setting.ALGORITHM, algorithm)
-                .with(Setting.BINS, bins)
-                .with(Setting.EXACT_BELOW, exactBelow)
-                .with(Setting.LEAF_BELOW, leafBelow)
-                .with(Setting.MIN_PRIMITIVES, minPrims)
-                .with(Setting.LEAF_SIZE, leafSize);
+    /** For picocli, should a command declare the mixin without a value: the default builder is sah. */
+    public BuilderOptions() {
+        this("sah");
     }
 
     /**
-     * A builder configured from the options.
+     * Options whose {@code -b} defaults to {@code defaultBuilder}.
      *
-     * @return a new builder of the chosen kind, with every given option applied
-     * @throws IllegalArgumentException for a value out of range or an option that does not apply to the builder
+     * @param defaultBuilder the command's builder when {@code -b} is not given
      */
-    public KdTreeBuilder create() {
-        return spec().create();
+    public BuilderOptions(String defaultBuilder) {
+        this(defaultBuilder, null);
+    }
+
+    /**
+     * Options whose {@code -b} has no default, for a command where it means something else.
+     *
+     * @param defaultBuilder null, or the builder when {@code -b} is not given
+     * @param role           what {@code -b} does in the command, for its help (null: "the builder")
+     */
+    BuilderOptions(String defaultBuilder, String role) {
+        this.defaultBuilder = defaultBuilder;
+        this.role = role;
+    }
+
+    /** {@return the builder named by {@code -b}, or the command's default (null if it has none)} */
+    public String builder() {
+        return builder != null ? builder : defaultBuilder;
+    }
+
+    /** {@return whether any builder option was given} ({@code -b} or a setting) */
+    public boolean given() {
+        return builder != null || !given.isEmpty();
+    }
+
+    /**
+     * {@return the builder specification the options give} (each value checked against its limit, the error naming the option)
+     *
+     * @throws IllegalArgumentException for a value out of range, or if no builder is named and the command has no default
+     */
+    public BuilderSpec spec() {
+        String name = builder();
+        if (name == null) throw new IllegalArgumentException("give a builder: -b NAME");
+        return spec(name);
+    }
+
+    /**
+     * {@return the settings given, for the builder {@code name}} (checked as {@link #spec()} checks them)
+     *
+     * @param name a builder's name
+     */
+    public BuilderSpec spec(String name) {
+        BuilderSpec s = BuilderSpec.of(name);
+        for (Map.Entry<Setting<?>, Object> e : given.entrySet()) s = with(s, e.getKey(), e.getValue());
+        return s;
+    }
+
+    private static <T> BuilderSpec with(BuilderSpec s, Setting<T> setting, Object value) {
+        return s.with(setting, setting.type().cast(value));
+    }
+
+    /**
+     * {@return the value given for {@code setting}, or its default}
+     *
+     * @param setting a setting
+     * @param <T>     its type
+     */
+    public <T> T value(Setting<T> setting) {
+        Object v = given.get(setting);
+        return v != null ? setting.type().cast(v) : setting.defaultValue();
+    }
+
+    /** Adds {@code -b} and one option per setting to the command that mixes these options in. */
+    public static final class AddOptions implements IModelTransformer {
+        @Override public CommandSpec transform(CommandSpec command) {
+            BuilderOptions o = command.mixins().values().stream().map(CommandSpec::userObject)
+                    .filter(BuilderOptions.class::isInstance).map(BuilderOptions.class::cast).findFirst().orElseThrow();
+            command.addOption(OptionSpec.builder("-b", "--builder").type(String.class).paramLabel("NAME")
+                    .description("Builder: sah, median-plane, object-median, sliding-midpoint, or a registered name "
+                            + (o.role != null ? "(" + o.role + ")." : "(default: " + o.defaultBuilder + ")."))
+                    .setter(setter(v -> o.builder = (String) v)).build());
+            for (Setting<?> s : Setting.ALL) command.addOption(option(s, o));
+            return command;
+        }
+
+        /** The option of one setting: a switch for a boolean (it turns the default over), else an option with a value. */
+        private static OptionSpec option(Setting<?> s, BuilderOptions o) {
+            boolean flag = s.type() == Boolean.class;
+            OptionSpec.Builder b = OptionSpec.builder(s.option()).description(description(s));
+            if (flag) b.type(boolean.class).arity("0");
+            else b.type(s.type()).paramLabel(label(s));
+            return b.setter(setter(v -> {
+                if (v == null || Boolean.FALSE.equals(v) && flag) o.given.remove(s);
+                else o.given.put(s, flag ? !(Boolean) s.defaultValue() : v);
+            })).build();
+        }
+
+        /** "lambda: the SAH's weight of ... (1 = no bonus). 0.01..1, default 0.8; the sah builder only." */
+        static String description(Setting<?> s) {
+            String only = s.appliesToEvery() ? "." : "; " + s.ownerName() + " only.";
+            if (s.type() == Boolean.class)
+                return "Turn " + s.name() + " " + s.format(!(Boolean) s.defaultValue()) + " (default " + s.format(s.defaultValue())
+                        + "): " + s.help() + only;
+            List<String> facts = new ArrayList<>();
+            if (s.limit() != null) facts.add(range(s.limit()));
+            if (s.type().isEnum()) facts.add("one of " + Arrays.stream(s.type().getEnumConstants()).map(Object::toString)
+                    .collect(Collectors.joining(", ")));
+            facts.add("default " + s.format(s.defaultValue()));
+            String f = String.join(", ", facts);
+            return s.name() + ": " + s.help() + ". " + Character.toUpperCase(f.charAt(0)) + f.substring(1) + only;
+        }
+
+        /** "1 to 256", not 1..256, which picocli may break after the dots. */
+        private static String range(Limit l) {
+            return Limit.format(l.min()) + " to " + Limit.format(l.max()) + (l.note().isEmpty() ? "" : " (" + l.note() + ")");
+        }
+
+        /** The option's value as the usage line shows it: N, a whole number; X, a real; NAME, a choice. */
+        private static String label(Setting<?> s) {
+            return s.type() == Integer.class ? "N" : s.type() == Double.class ? "X" : "NAME";
+        }
+
+        private static ISetter setter(java.util.function.Consumer<Object> set) {
+            return new ISetter() {
+                @Override public <T> T set(T value) {
+                    set.accept(value);
+                    return null;
+                }
+            };
+        }
     }
 }

@@ -7,6 +7,7 @@ import java.util.List;
 import java.util.Locale;
 import java.util.concurrent.Callable;
 import org.kdtree.build.BuilderFault;
+import org.kdtree.build.BuilderSpec;
 import org.kdtree.build.Builders;
 import org.kdtree.build.KdTreeBuilder;
 import org.kdtree.check.Contract;
@@ -36,9 +37,12 @@ public final class GradeCommand implements Callable<Integer> {
     /** The built-ins a student's builder is measured against. */
     static final List<String> BUILT_INS = List.of("median-plane", "object-median", "sah");
 
-    @Option(names = {"-b", "--builder"}, paramLabel = "NAME",
-            description = "The builder to grade: a registered name (a jar on the class path, or --plugin my.jar).")
-    String builder;
+    @Mixin
+    BuilderOptions options = new BuilderOptions(null, "the one to grade: a jar on the class path, or --plugin my.jar; "
+            + "the settings given are its, the built-ins keep their defaults");
+
+    /** The graded builder, with the settings given. */
+    private BuilderSpec graded;
 
     /** {@code grade-class}'s child: the one student's jar, whose one builder is graded (no other jar is loaded). */
     @Option(names = "--student-jar", hidden = true, paramLabel = "JAR")
@@ -69,9 +73,10 @@ public final class GradeCommand implements Callable<Integer> {
     private String stopped;
 
     @Override public Integer call() throws IOException {
-        if (studentJar != null) builder = onlyBuilder(studentJar);
+        String builder = studentJar != null ? onlyBuilder(studentJar) : options.builder();
         if (builder == null) throw new IllegalArgumentException("grade needs --builder NAME (a folder of students' jars: grade-class FOLDER)");
-        Builders.create(builder); // an unknown name fails here, naming the known ones
+        graded = options.spec(builder);
+        graded.create(); // an unknown name, or a setting it does not take, fails here in one line
         if (output != null) {
             String n = output.getFileName().toString().toLowerCase(Locale.ROOT);
             if (!n.endsWith(".md") && !n.endsWith(".csv"))
@@ -115,7 +120,7 @@ public final class GradeCommand implements Callable<Integer> {
     private Check run(ContractCase c) {
         if (stopped != null) return new Check(c.name(), null, stopped);
         try {
-            c.run(() -> Builders.create(builder));
+            c.run(graded::create);
             return new Check(c.name(), null, null);
         } catch (AssertionError | RuntimeException e) {
             noteIfHaltedBy(e, c.name());
@@ -149,7 +154,7 @@ public final class GradeCommand implements Callable<Integer> {
         for (int s = 0; s < scenes.size(); s++) {
             CourseScenes.Named scene = scenes.get(s);
             bar.step(stepsBefore + s, scene.name());
-            KdTreeBuilder own = Builders.create(builder);
+            KdTreeBuilder own = graded.create();
             KdTree ownTree;
             try {
                 ownTree = timed(own, scene, rows);

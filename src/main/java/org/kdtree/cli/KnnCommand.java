@@ -4,20 +4,20 @@ import java.io.Writer;
 import java.nio.file.Path;
 import java.util.Locale;
 import java.util.concurrent.Callable;
-import org.kdtree.build.Builders;
 import org.kdtree.build.KdTreeBuilder;
 import org.kdtree.files.AtomicFile;
-import org.kdtree.io.PointCsv;
+import org.kdtree.io.PointCsvReader;
 import org.kdtree.limits.Limits;
 import org.kdtree.points.NearestQuery;
 import org.kdtree.points.PointTree;
 import org.kdtree.shape.PointsKd;
 import picocli.CommandLine.Command;
+import picocli.CommandLine.Mixin;
 import picocli.CommandLine.Option;
 import picocli.CommandLine.Parameters;
 
 /**
- * {@code knn POINTS.csv --queries QUERIES.csv --k K [--radius R] [--builder NAME] --out RESULT.csv}:
+ * {@code knn POINTS.csv --queries QUERIES.csv --k K [--radius R] [--builder NAME and its settings] --out RESULT.csv}:
  * the k nearest points of each query, exact. See docs/points.md for the formats.
  */
 @Command(name = "knn", mixinStandardHelpOptions = true,
@@ -41,9 +41,8 @@ final class KnnCommand implements Callable<Integer> {
     @Option(names = "--radius", paramLabel = "R", description = "Keep only neighbours at distance <= R (R >= 0).")
     Double radius;
 
-    @Option(names = {"-b", "--builder"}, defaultValue = "sliding-midpoint", paramLabel = "NAME",
-            description = "Builder: sliding-midpoint, median-plane, object-median, sah, or a registered name (default: ${DEFAULT-VALUE}).")
-    String builder;
+    @Mixin
+    BuilderOptions options = new BuilderOptions("sliding-midpoint");
 
     @Option(names = "--out", required = true, paramLabel = "FILE", description = "Where the neighbour lines go.")
     Path outFile;
@@ -52,12 +51,12 @@ final class KnnCommand implements Callable<Integer> {
         Limits.NEIGHBOURS.check("--k", k);
         if (radius != null && !(radius >= 0 && radius < Double.POSITIVE_INFINITY))
             throw new IllegalArgumentException("--radius must be a finite number >= 0, got " + radius);
-        KdTreeBuilder b = Builders.create(builder);
+        KdTreeBuilder b = options.spec().create();
         CommandFiles.requireFolder("--out", outFile);
         CommandFiles.requireNotInput("--out", outFile, "POINTS", pointsFile);
         CommandFiles.requireNotInput("--out", outFile, "--queries", queriesFile);
-        PointsKd points = PointCsv.read(pointsFile);
-        PointsKd queries = PointCsv.read(queriesFile);
+        PointsKd points = PointCsvReader.read(pointsFile);
+        PointsKd queries = PointCsvReader.read(queriesFile);
         if (queries.dimension() != points.dimension())
             throw new IllegalArgumentException(queriesFile + ": the queries are " + queries.dimension() + "-D, the points "
                     + points.dimension() + "-D (" + pointsFile + ")");

@@ -5,9 +5,8 @@ import java.util.ArrayList;
 import java.util.List;
 import java.util.Locale;
 import java.util.concurrent.Callable;
-import org.kdtree.build.Builders;
 import org.kdtree.build.KdTreeBuilder;
-import org.kdtree.io.PointCsv;
+import org.kdtree.io.PointCsvReader;
 import org.kdtree.limits.Limits;
 import org.kdtree.points.PointTree;
 import org.kdtree.shape.PointsKd;
@@ -48,9 +47,8 @@ final class KnnStudyCommand implements Callable<Integer> {
     @Option(names = "--k", required = true, paramLabel = "K", description = "Neighbours per query (see docs/limits.md).")
     int k;
 
-    @Option(names = {"-b", "--builder"}, defaultValue = "sliding-midpoint", paramLabel = "NAME",
-            description = "Builder: sliding-midpoint, median-plane, object-median, sah, or a registered name (default: ${DEFAULT-VALUE}).")
-    String builder;
+    @Mixin
+    BuilderOptions options = new BuilderOptions("sliding-midpoint");
 
     @Option(names = "--budgets", split = ",", paramLabel = "L", defaultValue = "1,2,4,8,16,32,64,128",
             description = "Best-bin-first budgets: leaves scanned per query (default: ${DEFAULT-VALUE}).")
@@ -92,10 +90,10 @@ final class KnnStudyCommand implements Callable<Integer> {
 
     @Override public Integer call() throws Exception {
         checkOptions();
-        KdTreeBuilder b = Builders.create(builder);
+        KdTreeBuilder b = options.spec().create();
         if (dimensions != null) return sweep(b);
-        PointsKd points = generate != null ? kind().points(n, dimension, seed) : PointCsv.read(pointsFile);
-        PointsKd queries = generate != null ? kind().queries(queryCount, dimension, seed) : PointCsv.read(queriesFile);
+        PointsKd points = generate != null ? kind().points(n, dimension, seed) : PointCsvReader.read(pointsFile);
+        PointsKd queries = generate != null ? kind().queries(queryCount, dimension, seed) : PointCsvReader.read(queriesFile);
         if (queries.dimension() != points.dimension())
             throw new IllegalArgumentException(queriesFile + ": the queries are " + queries.dimension() + "-D, the points "
                     + points.dimension() + "-D (" + pointsFile + ")");

@@ -9,7 +9,7 @@ import java.util.Locale;
 import java.util.concurrent.Callable;
 import org.kdtree.build.KdTreeBuilder;
 import org.kdtree.build.Supervisor;
-import org.kdtree.build.Setting;
+import org.kdtree.build.BuilderSpec;
 import org.kdtree.files.AtomicFile;
 import org.kdtree.limits.Limits;
 import org.kdtree.shape.ProceduralScenes;
@@ -43,15 +43,14 @@ final class RaycastCommand implements Callable<Integer> {
     Path mesh;
 
     @Mixin
-    BuilderOptions options;
+    BuilderOptions options = new BuilderOptions("sah");
 
     @Option(names = "--grid", defaultValue = "1", paramLabel = "N",
             description = "Repeat the mesh in an N x N grid on the x-z plane first (the SPEC's scaling scene uses 4).")
     int grid;
 
-    @Option(names = "--threads", defaultValue = "1", paramLabel = "T",
-            description = "Threads building the tree and tracing each ray set (default: ${DEFAULT-VALUE}).")
-    int threads;
+    /** The builder's threads (--threads), which trace each ray set too. */
+    private int threads;
 
     @Option(names = "--rays", paramLabel = "FILE", description = "Trace the rays of FILE instead of the benchmark sets.")
     Path raysFile;
@@ -80,14 +79,15 @@ final class RaycastCommand implements Callable<Integer> {
             throw new IllegalArgumentException("--rays and --hits go together");
         Limits.RUNS.check("--runs", runs);
         Limits.WARMUP.check("--warmup", warmup);
-        Limits.THREADS.check("--threads", threads);
         Limits.GRID.check("--grid", grid);
+        BuilderSpec spec = options.spec();
         if (hitsFile != null && !hitsFile.toString().equals("-")) {
             CommandFiles.requireNotInput("--hits", hitsFile, "MESH", mesh);
             CommandFiles.requireNotInput("--hits", hitsFile, "--rays", raysFile);
         }
         TriangleMesh scene = ProceduralScenes.grid(CommandFiles.readMesh(mesh, "raycast"), grid);
-        KdTreeBuilder builder = options.spec().with(Setting.THREADS, threads).create();
+        KdTreeBuilder builder = spec.create();
+        threads = builder.threads();
         if (raysFile != null) return traceFile(scene, builder);
         return benchmark(scene, builder);
     }

@@ -2,9 +2,10 @@ package org.kdtree.cli;
 
 import java.nio.file.Path;
 import java.util.concurrent.Callable;
-import org.kdtree.build.KdTreeBuilder;
+import org.kdtree.build.BuilderSpec;
+import org.kdtree.build.Setting;
 import org.kdtree.io.BundledScenes;
-import org.kdtree.io.SceneFile;
+import org.kdtree.io.SceneReader;
 import org.kdtree.render.RenderJob;
 import org.kdtree.limits.Limits;
 import org.kdtree.render.Renderer;
@@ -17,7 +18,8 @@ import picocli.CommandLine.Parameters;
 /** {@code render SCENE -o out.png}: build a kd-tree over a JSON scene, ray trace it, write a PNG. */
 @Command(name = "render", mixinStandardHelpOptions = true,
         description = "Ray trace a JSON scene (docs/scene-format.md) to a PNG, simulating only the effects it calls for, "
-                + "and print the effects, rays by kind, times and tree statistics.")
+                + "and print the effects, rays by kind, times and tree statistics. --threads also renders "
+                + "(without it: the tree on one thread, the image on all cores).")
 final class RenderCommand implements Callable<Integer> {
     @Parameters(paramLabel = "SCENE", description = "A JSON scene file, e.g. scenes/cornell-box.json, or a bundled "
             + "scene from any folder: scenes:cornell-box.")
@@ -27,10 +29,7 @@ final class RenderCommand implements Callable<Integer> {
     Path output;
 
     @Mixin
-    BuilderOptions options;
-
-    @Option(names = "--threads", description = "Render threads (default: all cores).")
-    Integer threads;
+    BuilderOptions options = new BuilderOptions("sah");
 
     @Option(names = "--spp", description = "Samples per pixel (default: the scene's).")
     Integer spp;
@@ -55,7 +54,7 @@ final class RenderCommand implements Callable<Integer> {
         checkOutput();
         Path sceneFile = BundledScenes.resolve(scene);
         CommandFiles.requireNotInput("-o", output, "SCENE", sceneFile);
-        Scene s = SceneFile.read(sceneFile);
+        Scene s = SceneReader.read(sceneFile);
         if (spp != null) s = s.withSamplesPerPixel(Limits.SAMPLES_PER_PIXEL.check("--spp", spp));
         if (rayDepth != null) s = s.withMaxDepth(Limits.RAY_DEPTH.check("--ray-depth", rayDepth));
         if (width != null || height != null) {
@@ -63,11 +62,12 @@ final class RenderCommand implements Callable<Integer> {
             int h = height != null ? Limits.IMAGE_SIDE.check("--height", height) : s.camera().height();
             s = s.withImageSize(w, h);
         }
+        BuilderSpec spec = options.spec();
         Renderer.Options o = Renderer.Options.defaults();
-        if (threads != null) o = o.withThreads(Limits.THREADS.check("--threads", threads));
+        if (spec.get(Setting.THREADS) != null) o = o.withThreads(spec.get(Setting.THREADS));
         RenderJob job;
         try (ProgressBar bar = progress.bar(1, "tiles")) {
-            job = RenderJob.run(s, options.create(), deadlines.supervisor(), o.withProgress((done, total, image) -> bar.update(done, total)));
+            job = RenderJob.run(s, spec.create(), deadlines.supervisor(), o.withProgress((done, total, image) -> bar.update(done, total)));
         }
         job.result().image().writePng(output);
         System.out.print(job.summary());

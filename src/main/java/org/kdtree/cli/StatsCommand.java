@@ -4,12 +4,12 @@ import java.nio.file.Path;
 import java.util.Arrays;
 import java.util.Locale;
 import java.util.concurrent.Callable;
+import org.kdtree.build.BuilderSpec;
 import org.kdtree.build.KdTreeBuilder;
-import org.kdtree.build.Setting;
 import org.kdtree.build.Supervisor;
 import org.kdtree.io.BundledScenes;
+import org.kdtree.io.PrimitivesReader;
 import org.kdtree.tradeoff.Timing;
-import org.kdtree.io.SceneLoader;
 import org.kdtree.limits.Limits;
 import org.kdtree.render.RenderJob;
 import org.kdtree.shape.Primitives;
@@ -30,16 +30,13 @@ final class StatsCommand implements Callable<Integer> {
     String scene;
 
     @Mixin
-    BuilderOptions options;
+    BuilderOptions options = new BuilderOptions("sah");
 
     @Option(names = "--runs", defaultValue = "1", description = "Timed builds; the median is reported (default: ${DEFAULT-VALUE}).")
     int runs;
 
     @Option(names = "--warmup", defaultValue = "0", description = "Untimed builds first, to warm up the JVM (default: ${DEFAULT-VALUE}).")
     int warmup;
-
-    @Option(names = "--threads", defaultValue = "1", description = "Threads for the build (default: ${DEFAULT-VALUE}; same tree).")
-    int threads;
 
     @Option(names = "--grid", defaultValue = "1", paramLabel = "N",
             description = "OBJ only: repeat the mesh in an N x N grid on the x-z plane first (the SPEC's scaling scene uses 4).")
@@ -54,14 +51,14 @@ final class StatsCommand implements Callable<Integer> {
     @Override public Integer call() throws Exception {
         Limits.RUNS.check("--runs", runs);
         Limits.WARMUP.check("--warmup", warmup);
-        Limits.THREADS.check("--threads", threads);
         Limits.GRID.check("--grid", grid);
-        Primitives prims = SceneLoader.load(BundledScenes.resolve(scene));
+        BuilderSpec spec = options.spec();
+        Primitives prims = PrimitivesReader.read(BundledScenes.resolve(scene));
         if (grid != 1) {
             if (!(prims instanceof TriangleMesh mesh)) throw new IllegalArgumentException("--grid applies to OBJ meshes only");
             prims = ProceduralScenes.grid(mesh, grid);
         }
-        KdTreeBuilder builder = options.spec().with(Setting.THREADS, threads).create();
+        KdTreeBuilder builder = spec.create();
         Primitives scenePrims = prims;
         Supervisor supervisor = deadlines.supervisor();
         Timing.Timed<KdTree> build;

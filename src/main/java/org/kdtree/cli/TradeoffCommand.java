@@ -1,9 +1,11 @@
 package org.kdtree.cli;
 
 import java.nio.file.Path;
+import java.util.ArrayList;
 import java.util.List;
 import java.util.Locale;
 import java.util.concurrent.Callable;
+import org.kdtree.build.Setting;
 import org.kdtree.limits.Limits;
 import org.kdtree.shape.ProceduralScenes;
 import org.kdtree.shape.TriangleMesh;
@@ -46,8 +48,9 @@ final class TradeoffCommand implements Callable<Integer> {
     @Option(names = "--runs", defaultValue = "3", description = "Timed runs per variant, after one warm-up; the median is kept (default: ${DEFAULT-VALUE}).")
     int runs;
 
-    @Option(names = "--threads", defaultValue = "1", description = "Build threads (tracing is single-threaded) (default: ${DEFAULT-VALUE}).")
-    int threads;
+    @Mixin
+    BuilderOptions options = new BuilderOptions(null, "with the settings given, one more variant; "
+            + "the settings given apply to every variant that takes them and does not set them itself");
 
     @Option(names = "--quick", description = "Only median-plane, exact SAH and binned B = 8, 32.")
     boolean quick;
@@ -70,12 +73,28 @@ final class TradeoffCommand implements Callable<Integer> {
     @Mixin
     DeadlineOptions deadlines;
 
+    /**
+     * The variants to measure: all, the quick ones or those named, plus the one given by {@code -b}
+     * (named by its options), each over the settings given.
+     */
+    private List<Variant> variants() {
+        List<Variant> known = new ArrayList<>(Variant.all()), chosen = new ArrayList<>(quick ? Variant.quick() : known);
+        if (options.builder() != null) {
+            Variant given = new Variant(options.spec().toString().replace(" --", " ").replace(' ', '-'), options.spec());
+            known.add(given);
+            chosen.add(given);
+        }
+        if (only != null) chosen = known.stream().filter(v -> only.contains(v.name())).toList();
+        if (chosen.isEmpty()) throw new IllegalArgumentException("no variant named " + only + "; known: "
+                + known.stream().map(Variant::name).toList());
+        return chosen.stream().map(v -> new Variant(v.name(), v.spec().over(options.spec(v.spec().builder())))).toList();
+    }
+
     @Override public Integer call() throws Exception {
         Limits.GRID.check("--grid", grid);
         Limits.RAY_COUNT.check("--ray-count", rayCount);
         Limits.RAY_COUNT.check("--counted-rays", countedRays);
         Limits.RUNS.check("--runs", runs);
-        Limits.THREADS.check("--threads", threads);
         Limits.RAYS_PER_TRIANGLE.check("--chart-rpt", chartRaysPerTriangle);
         String base = mesh.getFileName().toString().replaceFirst("\\.[^.]*$", "") + (grid > 1 ? "-grid" + grid : "");
         Path csvOut = csv != null ? csv : Path.of("tradeoff-" + base + ".csv");
@@ -92,12 +111,8 @@ final class TradeoffCommand implements Callable<Integer> {
             case "R" -> RaySet.random(m, rayCount);
             default -> throw new IllegalArgumentException("--rays must be P or R, got " + rays);
         };
-        List<Variant> variants = quick ? Variant.quick() : Variant.all();
-        if (only != null) {
-            variants = Variant.all().stream().filter(v -> only.contains(v.name())).toList();
-            if (variants.isEmpty()) throw new IllegalArgumentException("no variant named " + only + "; known: "
-                    + Variant.all().stream().map(Variant::name).toList());
-        }
+        List<Variant> variants = variants();
+        int threads = options.value(Setting.THREADS);   // checked with the variants' specs
         StudyFile table = new StudyFile(csvOut);
 
         System.out.printf(Locale.ROOT, "scene: %s (%d triangles), rays: %s x %d, %d run(s), %d build thread(s)%n",

@@ -1,12 +1,12 @@
 package org.kdtree.collide;
 
 import org.kdtree.geom.Tolerance;
-import org.kdtree.shape.Shapes2D;
+import org.kdtree.shape.Scene2D;
 import org.kdtree.tree.KdTree;
 
 /**
  * The talk's figure of balls bouncing in a fixed scene, headless: N balls fall under gravity in a
- * 2-D scene ({@link Shapes2D}) and bounce off its objects (not off each other). Each step moves
+ * 2-D scene ({@link Scene2D}) and bounce off its objects (not off each other). Each step moves
  * each ball with its swept query ({@link SweepQuery}): up to the first contact, reflect the velocity
  * about the contact normal (scaled by the restitution), go on with what is left of the step, up to
  * {@link #MAX_BOUNCES} contacts per ball and step.
@@ -38,7 +38,7 @@ public final class BallSimulation {
      * @param gy          gravity, y
      * @param restitution 0 (no bounce) to 1 (elastic)
      */
-    public BallSimulation(KdTree tree, Shapes2D scene, int capacity, double gx, double gy, double restitution) {
+    public BallSimulation(KdTree tree, Scene2D scene, int capacity, double gx, double gy, double restitution) {
         if (!(restitution >= 0 && restitution <= 1)) throw new IllegalArgumentException("restitution must be in [0, 1]: " + restitution);
         sweep = new SweepQuery(tree, new ShapeCollider(scene));
         primitives = scene.size();

@@ -7,9 +7,9 @@ import static org.kdtree.shape.ShapeKind.SEGMENT;
 import static org.kdtree.shape.ShapeKind.TRIANGLE;
 import static org.kdtree.shape.ShapeKind.orient;
 
+import org.kdtree.shape.Scene2D;
 import org.kdtree.shape.Shape2D;
 import org.kdtree.shape.ShapeKind;
-import org.kdtree.shape.Shapes2D;
 
 /**
  * Circle tests against the 2-D workbench shapes: points, segments, and filled rectangles and
@@ -32,7 +32,7 @@ public final class ShapeCollider implements Collider {
      *
      * @param shapes the shapes; primitive i is shape i
      */
-    public ShapeCollider(Shapes2D shapes) {
+    public ShapeCollider(Scene2D shapes) {
         int n = shapes.size();
         kind = new int[n];
         xy = new double[STRIDE * n];

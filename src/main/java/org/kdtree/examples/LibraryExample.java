@@ -26,7 +26,7 @@ public final class LibraryExample {
     public static void main(String[] args) throws Exception {
         Path file = BundledScenes.resolve(args.length > 0 ? args[0] : "scenes:clustered-spheres");  // any folder
         TriangleMesh mesh = ObjMeshReader.read(file);
-        KdTree tree = new SahBuilder().quality(Quality.EXACT).build(mesh);                 // Kt 15, Ki 20, lambda 0.8
+        KdTree tree = new SahBuilder().quality(Quality.EXACT).build(mesh);                 // the talk's Kt, Ki, lambda
         Traverser rays = new Traverser(tree, new TriangleIntersector(mesh));              // one per thread
         double[] aim = new double[3];                                                       // triangle 0's centre
         for (int a = 0; a < 3; a++) aim[a] = (mesh.corner(0, 0, a) + mesh.corner(0, 1, a) + mesh.corner(0, 2, a)) / 3;

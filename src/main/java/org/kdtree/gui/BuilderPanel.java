@@ -3,31 +3,38 @@ package org.kdtree.gui;
 import java.awt.GridBagConstraints;
 import java.awt.GridBagLayout;
 import java.awt.Insets;
+import java.util.LinkedHashMap;
+import java.util.Map;
+import java.util.Set;
 import javax.swing.BorderFactory;
-import javax.swing.JCheckBox;
 import javax.swing.JComboBox;
 import javax.swing.JComponent;
 import javax.swing.JLabel;
 import javax.swing.JPanel;
 import javax.swing.JSlider;
-import javax.swing.JSpinner;
 import org.kdtree.build.BuilderSpec;
 import org.kdtree.build.Builders;
 import org.kdtree.build.KdTreeBuilder;
 import org.kdtree.build.SahBuilder;
 import org.kdtree.build.Setting;
-import org.kdtree.build.SlidingMidpointBuilder;
-import org.kdtree.limits.Limits;
 
 /**
- * The builder controls, an editor of the model's {@link BuilderSpec}: which builder, Kt, Ki,
- * lambda (spinner and slider), the SAH's plane search and bins, perfect splits, Kmintri, the
- * leaf size and Kmaxdepth. Every change rebuilds the tree at once. Controls whose {@link Setting}
- * does not apply to the chosen builder are greyed out and left out of the spec (which would refuse
- * them); each spinner takes the range of {@link Limits}, states it in its tooltip and, for a typed
- * value outside it, says so below instead of reverting silently.
+ * The builder controls, an editor of the model's {@link BuilderSpec}: which builder, then one
+ * control per row of {@link Setting} (made by {@link SettingControl}), with lambda also as a
+ * slider and the automatic depth cap spelled out. Every change rebuilds the tree at once.
+ * Controls whose setting does not apply to the chosen builder are greyed out and left out of the
+ * spec (which would refuse them); each spinner takes its row's range, states it in its tooltip and,
+ * for a typed value outside it, says so below instead of reverting silently.
  */
 public final class BuilderPanel extends JPanel {
+    /**
+     * The settings the workbench does not offer: a preset (the controls set what it would, and
+     * would override it) and threads (its scenes build in milliseconds on one; the tree is the same).
+     */
+    private static final Set<Setting<?>> NOT_OFFERED = Set.of(Setting.QUALITY, Setting.THREADS);
+    /** The settings only the binned plane search uses: greyed out, and not given, under the exact ones. */
+    private static final Set<Setting<?>> BINNED_ONLY = Set.of(Setting.BINS, Setting.EXACT_BELOW);
+
     /** The model whose builder settings this panel edits. */
     private final WorkbenchModel model;
     /** The builder's name. */
@@ -36,27 +43,11 @@ public final class BuilderPanel extends JPanel {
     private final JLabel rejection = new JLabel(" ");
     /** The last build's fault, in the builder's own line (the tree shown is then stale), or blank. */
     private final JLabel fault = new JLabel(" ");
-    /** Kt, the cost of traversing a node. */
-    private final JSpinner kt = LimitedSpinner.of(Limits.KT, "Kt", 15, 1, this::reject);
-    /** Ki, the cost of intersecting an object. */
-    private final JSpinner ki = LimitedSpinner.of(Limits.KI, "Ki", 20, 1, this::reject);
-    /** lambda, the SAH's weight of a plane that leaves one child empty. */
-    private final JSpinner lambda = LimitedSpinner.of(Limits.LAMBDA, "lambda", 0.8, 0.05, this::reject);
+    /** One control per setting offered, in the table's order. */
+    private final Map<Setting<?>, SettingControl> controls = new LinkedHashMap<>();
     /** lambda as a slider, in hundredths. */
-    private final JSlider lambdaSlider = new JSlider((int) Math.round(Limits.LAMBDA.min() * 100), 100, 80);
-    /** The SAH's plane-search algorithm (NAIVE, O(N^2), is left out: too slow to be live). */
-    private final JComboBox<SahBuilder.Algorithm> algorithm = new JComboBox<>(java.util.Arrays.stream(SahBuilder.Algorithm.values())
-            .filter(a -> a != SahBuilder.Algorithm.NAIVE).toArray(SahBuilder.Algorithm[]::new)); // O(N^2): too slow to be live
-    /** Bins per axis of the binned SAH. */
-    private final JSpinner bins = LimitedSpinner.of(Limits.BINS, "bins", SahBuilder.DEFAULT_BINS, 1, this::reject);
-    /** Perfect splits (exact clipping) or bounding boxes only. */
-    private final JCheckBox perfectSplits = new JCheckBox("perfect splits", true);
-    /** The sliding-midpoint builder's largest leaf. */
-    private final JSpinner leafSize = LimitedSpinner.of(Limits.LEAF_SIZE, "leaf size", SlidingMidpointBuilder.DEFAULT_LEAF_SIZE, 1, this::reject);
-    /** Kmintri, for the axis-cycling builders. */
-    private final JSpinner minPrims = LimitedSpinner.of(Limits.MIN_PRIMITIVES, "Kmintri", 2, 1, this::reject);
-    /** Kmaxdepth, or -1 for the automatic depth cap. */
-    private final JSpinner maxDepth = LimitedSpinner.of(Limits.MAX_DEPTH, "Kmaxdepth", -1, 1, this::reject);
+    private final JSlider lambdaSlider = new JSlider((int) Math.round(Setting.LAMBDA.limit().min() * 100),
+            (int) Math.round(Setting.LAMBDA.limit().max() * 100), (int) Math.round(Setting.LAMBDA.defaultValue() * 100));
     /** The automatic depth cap the current scene gets. */
     private final JLabel autoDepth = new JLabel();
     /** True while the panel sets its own controls, so that their listeners do not write back. */
@@ -72,40 +63,27 @@ public final class BuilderPanel extends JPanel {
         this.model = model;
         setBorder(BorderFactory.createTitledBorder("Builder"));
         name(builder, "builder", "Builder (Alt+1, Alt+2, ...): median-plane splits the voxel in the middle, object-median at the median object; sah minimises the expected cost; others are registered builders");
-        name(kt, "kt", "Kt: cost of traversing one node (SAH); " + LimitedSpinner.allowed(Limits.KT));
-        name(ki, "ki", "Ki: cost of intersecting one object (SAH); " + LimitedSpinner.allowed(Limits.KI));
-        name(lambda, "lambda", "lambda: weight of a plane that cuts off empty space (1 = no bonus); SAH only; "
-                + LimitedSpinner.allowed(Limits.LAMBDA));
         name(lambdaSlider, "lambdaSlider", "lambda as a slider, in hundredths");
-        name(algorithm, "algorithm", "How the SAH searches for its planes: the exact searches build the same tree at different speeds (SAH only)");
-        name(bins, "bins", "Bins per axis of the binned SAH (SAH with the binned search only); " + LimitedSpinner.allowed(Limits.BINS));
-        name(perfectSplits, "perfectSplits", "Clip each straddling object to both children exactly (on) or keep bounding boxes (off)");
-        name(leafSize, "leafSize", "Largest leaf of the sliding-midpoint builder; " + LimitedSpinner.allowed(Limits.LEAF_SIZE));
-        name(minPrims, "kmintri", "Kmintri: a voxel with at most this many objects becomes a leaf (median builders); "
-                + LimitedSpinner.allowed(Limits.MIN_PRIMITIVES));
-        name(maxDepth, "kmaxdepth", "Kmaxdepth: maximum depth; " + LimitedSpinner.allowed(Limits.MAX_DEPTH));
         autoDepth.setName("autoDepth");
         rejection.setName("rejection");
         rejection.setForeground(new java.awt.Color(170, 0, 0));
-        row(0, "Builder", builder);
-        row(1, "Kt", kt);
-        row(2, "Ki", ki);
-        row(3, "lambda", lambda);
-        row(4, "", lambdaSlider);
-        row(5, "SAH search", algorithm);
-        row(6, "Bins", bins);
-        row(7, "", perfectSplits);
-        row(8, "Kmintri", minPrims);
-        row(9, "Leaf size", leafSize);
-        row(10, "Kmaxdepth", maxDepth);
-        row(11, "", autoDepth);
-        row(12, "", rejection);
+        int y = 0;
+        row(y++, "Builder", builder);
+        for (Setting<?> s : Setting.ALL) {
+            if (NOT_OFFERED.contains(s)) continue;
+            // the plane search's O(N^2) naive algorithm is too slow to be live
+            SettingControl c = SettingControl.of(s, this::reject, v -> v != SahBuilder.Algorithm.NAIVE);
+            controls.put(s, c);
+            row(y++, c.label(), c.component());
+            if (s == Setting.LAMBDA) row(y++, "", lambdaSlider);
+            if (s == Setting.MAX_DEPTH) row(y++, "", autoDepth);
+            c.onChange(this::apply);
+        }
+        row(y++, "", rejection);
         fault.setName("builder.fault");
         fault.setForeground(new java.awt.Color(170, 0, 0));
-        wideRow(13, fault);
+        wideRow(y, fault);
         builder.addActionListener(e -> apply());
-        algorithm.addActionListener(e -> apply());
-        perfectSplits.addActionListener(e -> apply());
         builder.setRenderer(new javax.swing.DefaultListCellRenderer() {
             @Override public java.awt.Component getListCellRendererComponent(javax.swing.JList<?> list, Object value, int index,
                                                                        boolean selected, boolean focus) {
@@ -113,16 +91,8 @@ public final class BuilderPanel extends JPanel {
                 return super.getListCellRendererComponent(list, model.hung(name) ? name + " (hung)" : name, index, selected, focus);
             }
         });
-        algorithm.setRenderer(new javax.swing.DefaultListCellRenderer() {
-            @Override public java.awt.Component getListCellRendererComponent(javax.swing.JList<?> list, Object value, int index,
-                                                                       boolean selected, boolean focus) {
-                String text = value == null ? "" : value.toString().toLowerCase(java.util.Locale.ROOT);
-                return super.getListCellRendererComponent(list, text, index, selected, focus);
-            }
-        });
-        for (JSpinner s : new JSpinner[] {kt, ki, lambda, bins, minPrims, leafSize, maxDepth}) s.addChangeListener(e -> apply());
         lambdaSlider.addChangeListener(e -> {
-            if (!updating) lambda.setValue(lambdaSlider.getValue() / 100.0);
+            if (!updating) controls.get(Setting.LAMBDA).show(lambdaSlider.getValue() / 100.0);
         });
         show(model.settings());
         model.addListener(c -> {
@@ -166,24 +136,16 @@ public final class BuilderPanel extends JPanel {
         if (updating) return;
         String name = (String) builder.getSelectedItem();
         KdTreeBuilder probe = Builders.create(name);
-        SahBuilder.Algorithm a = (SahBuilder.Algorithm) algorithm.getSelectedItem();
         BuilderSpec s = BuilderSpec.of(name);
-        s = give(s, probe, Setting.KT, ((Number) kt.getValue()).doubleValue());
-        s = give(s, probe, Setting.KI, ((Number) ki.getValue()).doubleValue());
-        s = give(s, probe, Setting.MAX_DEPTH, ((Number) maxDepth.getValue()).intValue());
-        s = give(s, probe, Setting.PERFECT_SPLITS, perfectSplits.isSelected());
-        s = give(s, probe, Setting.LAMBDA, ((Number) lambda.getValue()).doubleValue());
-        s = give(s, probe, Setting.ALGORITHM, a);
-        if (a == SahBuilder.Algorithm.BINNED) s = give(s, probe, Setting.BINS, ((Number) bins.getValue()).intValue());
-        s = give(s, probe, Setting.MIN_PRIMITIVES, ((Number) minPrims.getValue()).intValue());
-        s = give(s, probe, Setting.LEAF_SIZE, ((Number) leafSize.getValue()).intValue());
+        for (SettingControl c : controls.values()) if (live(c.setting(), probe)) s = c.giveTo(s);
         show(s);
         model.setSettings(s);
     }
 
-    /** {@code s} with {@code setting} given as {@code value} if the builder takes it (its control is greyed out otherwise). */
-    private static <T> BuilderSpec give(BuilderSpec s, KdTreeBuilder probe, Setting<T> setting, T value) {
-        return setting.appliesTo(probe) ? s.with(setting, value) : s;
+    /** Whether {@code setting} counts for {@code probe} as the controls are set (bins only under the binned search). */
+    private boolean live(Setting<?> setting, KdTreeBuilder probe) {
+        return setting.appliesTo(probe)
+                && (!BINNED_ONLY.contains(setting) || controls.get(Setting.ALGORITHM).value() == SahBuilder.Algorithm.BINNED);
     }
 
     private void show(BuilderSpec s) {
@@ -191,26 +153,13 @@ public final class BuilderPanel extends JPanel {
         try {
             KdTreeBuilder probe = Builders.create(s.builder());
             builder.setSelectedItem(s.builder());
-            showValue(s, probe, Setting.KT, kt);
-            showValue(s, probe, Setting.KI, ki);
-            showValue(s, probe, Setting.LAMBDA, lambda);
-            showValue(s, probe, Setting.BINS, bins);
-            showValue(s, probe, Setting.MIN_PRIMITIVES, minPrims);
-            showValue(s, probe, Setting.LEAF_SIZE, leafSize);
-            showValue(s, probe, Setting.MAX_DEPTH, maxDepth);
-            if (Setting.PERFECT_SPLITS.appliesTo(probe)) perfectSplits.setSelected(s.value(Setting.PERFECT_SPLITS));
-            if (Setting.ALGORITHM.appliesTo(probe)) algorithm.setSelectedItem(s.value(Setting.ALGORITHM));
-            lambdaSlider.setValue((int) Math.round(((Number) lambda.getValue()).doubleValue() * 100));
-            boolean sah = Setting.LAMBDA.appliesTo(probe);
-            lambda.setEnabled(sah);
-            lambdaSlider.setEnabled(sah);
-            algorithm.setEnabled(sah);
-            bins.setEnabled(sah && algorithm.getSelectedItem() == SahBuilder.Algorithm.BINNED);
-            perfectSplits.setEnabled(Setting.PERFECT_SPLITS.appliesTo(probe));
-            minPrims.setEnabled(Setting.MIN_PRIMITIVES.appliesTo(probe));
-            leafSize.setEnabled(Setting.LEAF_SIZE.appliesTo(probe));
+            for (SettingControl c : controls.values()) if (c.setting().appliesTo(probe)) c.show(s.value(c.setting()));
+            for (SettingControl c : controls.values()) c.component().setEnabled(live(c.setting(), probe));
+            SettingControl lambda = controls.get(Setting.LAMBDA);
+            lambdaSlider.setValue((int) Math.round((Double) lambda.value() * 100));
+            lambdaSlider.setEnabled(lambda.component().isEnabled());
             int n = model.scene().size();
-            int depth = ((Number) maxDepth.getValue()).intValue();
+            int depth = (Integer) controls.get(Setting.MAX_DEPTH).value();
             autoDepth.setText(depth >= 0 ? "fixed depth cap " + depth
                     : "-1 = auto: 8 + 1.3 log2 " + n + " = " + KdTreeBuilder.defaultMaxDepth(n));
         } finally {
@@ -218,18 +167,9 @@ public final class BuilderPanel extends JPanel {
         }
     }
 
-    /** Shows the spec's value of {@code setting} (given, or the builder's default) in {@code control}, if the builder takes it. */
-    private static void showValue(BuilderSpec s, KdTreeBuilder probe, Setting<?> setting, JSpinner control) {
-        if (setting.appliesTo(probe)) control.setValue(s.value(setting));
-    }
-
     private static void name(JComponent c, String name, String tip) {
         c.setName(name);
         c.setToolTipText(tip);
-        if (c instanceof JSpinner s) {
-            ((JSpinner.DefaultEditor) s.getEditor()).getTextField().setToolTipText(tip);
-            ((JSpinner.DefaultEditor) s.getEditor()).getTextField().setName(name + ".text");
-        }
     }
 
     /** A row of one component across both columns (a message as wide as the panel). */

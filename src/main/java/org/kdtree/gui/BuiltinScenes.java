@@ -9,7 +9,7 @@ import java.util.Map;
 import java.util.Random;
 import java.util.function.Supplier;
 import org.kdtree.io.BundledScenes;
-import org.kdtree.io.Scene2DFormat;
+import org.kdtree.io.Scene2DReader;
 import org.kdtree.shape.Shape2D;
 
 /**
@@ -36,7 +36,7 @@ public final class BuiltinScenes {
 
     private static List<Shape2D> bundled(String file) {
         try {
-            return Scene2DFormat.read(BundledScenes.path(file)).shapes();
+            return Scene2DReader.read(BundledScenes.path(file)).shapes();
         } catch (IOException e) {
             throw new UncheckedIOException(e);
         }

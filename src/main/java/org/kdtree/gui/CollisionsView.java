@@ -23,7 +23,7 @@ import javax.swing.Timer;
 import org.kdtree.collide.BallSimulation;
 import org.kdtree.geom.Box;
 import org.kdtree.limits.Limits;
-import org.kdtree.shape.Shapes2D;
+import org.kdtree.shape.Scene2D;
 import org.kdtree.tree.KdTree;
 
 /**
@@ -74,7 +74,7 @@ final class CollisionsView extends JPanel {
     /** The tree the balls were dropped into. */
     private KdTree simTree;
     /** The scene the balls were dropped into. */
-    private Shapes2D simScene;
+    private Scene2D simScene;
     /** The box the balls bounce in. */
     private Box simBox;
     /** The scene's extent, which ball sizes and speeds scale with. */

@@ -15,7 +15,7 @@ import javax.swing.JLabel;
 import javax.swing.JPanel;
 import org.kdtree.build.BuilderSpec;
 import org.kdtree.build.Builders;
-import org.kdtree.shape.Shapes2D;
+import org.kdtree.shape.Scene2D;
 import org.kdtree.tree.KdTree;
 import org.kdtree.tree.TreeStats;
 
@@ -31,7 +31,7 @@ public final class CompareView extends JPanel {
     /** The model whose scene, ray and settings the columns use. */
     private final WorkbenchModel model;
     /** Records a ray's traversal in each column's tree. */
-    private final StepperPanel.Tracer tracer;
+    private final StepperPanel.Recorder recorder;
     /** One column per compared builder. */
     private final Column[] columns = new Column[DEFAULT_BUILDERS.size()];
     /** True when scene, ray or settings changed while the view was hidden: it refreshes when shown. */
@@ -41,12 +41,12 @@ public final class CompareView extends JPanel {
      * A view comparing the builders on the scene and ray of {@code model}.
      *
      * @param model the workbench's model
-     * @param tracer records the ray's traversal in each tree
+     * @param recorder records the ray's traversal in each tree
      */
-    public CompareView(WorkbenchModel model, StepperPanel.Tracer tracer) {
+    public CompareView(WorkbenchModel model, StepperPanel.Recorder recorder) {
         super(new GridLayout(1, DEFAULT_BUILDERS.size(), 6, 0));
         this.model = model;
-        this.tracer = tracer;
+        this.recorder = recorder;
         for (int i = 0; i < columns.length; i++) {
             columns[i] = new Column(i, DEFAULT_BUILDERS.get(i));
             add(columns[i]);
@@ -65,7 +65,7 @@ public final class CompareView extends JPanel {
     /** Rebuilds the three trees and retraces the ray (done lazily, when the view is visible). */
     public void refresh() {
         stale = false;
-        Shapes2D scene = model.scene();
+        Scene2D scene = model.scene();
         double[] ray = model.ray();
         for (Column c : columns) c.update(scene, ray);
     }
@@ -126,13 +126,13 @@ public final class CompareView extends JPanel {
         }
 
         /** Builds this column's tree off the event thread (waiting for it briefly, as the model does), then shows it. */
-        void update(Shapes2D scene, double[] ray) {
+        void update(Scene2D scene, double[] ray) {
             BuilderSpec s = model.settings().forBuilder(builder);
             if (!builds.start(s.create(), scene, true, o -> show(scene, ray, o)))
                 stats.setText("<html>building ...</html>");
         }
 
-        private void show(Shapes2D scene, double[] ray, BackgroundBuild.Outcome o) {
+        private void show(Scene2D scene, double[] ray, BackgroundBuild.Outcome o) {
             if (o.fault() != null) {
                 stats.setText("<html><div style='width:300px; color:#aa0000'>" + o.fault().getMessage().replace("&", "&amp;")
                         .replace("<", "&lt;") + "<br><b>The tree shown is the previous one (stale).</b></div></html>");
@@ -140,7 +140,7 @@ public final class CompareView extends JPanel {
             }
             KdTree tree = o.tree();
             double ms = o.millis();
-            TraversalTrace trace = tracer.trace(tree, scene, ray);
+            TraversalTrace trace = recorder.record(tree, scene, ray);
             TreeStats st = tree.stats();
             StringBuilder b = new StringBuilder("<html>");
             b.append(String.format(Locale.ROOT, "build time: %.2f ms<br>nodes: %d, leaves: %d, empty: %d<br>"
@@ -161,7 +161,7 @@ public final class CompareView extends JPanel {
 
     /** A canvas without interaction, fitted to the scene. */
     private static final class Mini extends JComponent {
-        private Shapes2D scene;
+        private Scene2D scene;
         private KdTree tree;
         private double[] ray;
         private TraversalTrace trace;
@@ -171,7 +171,7 @@ public final class CompareView extends JPanel {
             setPreferredSize(new Dimension(360, 360));
         }
 
-        void set(Shapes2D s, KdTree t, double[] r, TraversalTrace tr) {
+        void set(Scene2D s, KdTree t, double[] r, TraversalTrace tr) {
             scene = s;
             tree = t;
             ray = r;

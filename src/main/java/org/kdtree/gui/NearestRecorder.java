@@ -5,7 +5,7 @@ import java.util.ArrayList;
 import java.util.List;
 import org.kdtree.collide.ShapeCollider;
 import org.kdtree.geom.Box;
-import org.kdtree.shape.Shapes2D;
+import org.kdtree.shape.Scene2D;
 import org.kdtree.tree.KdTree;
 
 /**
@@ -42,7 +42,7 @@ final class NearestRecorder {
     private List<NearestTrace.Neighbour> bestView = List.of();
     private long nodes, leaves, pruned, tests;
 
-    private NearestRecorder(KdTree tree, Shapes2D scene, double[] query, int k) {
+    private NearestRecorder(KdTree tree, Scene2D scene, double[] query, int k) {
         this.tree = tree;
         this.collider = new ShapeCollider(scene);
         this.qx = query[0];
@@ -66,7 +66,7 @@ final class NearestRecorder {
      * @param k the number of neighbours wanted
      * @return the recorded search
      */
-    public static NearestTrace record(KdTree tree, Shapes2D scene, double[] query, int k) {
+    public static NearestTrace record(KdTree tree, Scene2D scene, double[] query, int k) {
         if (query == null) return NearestTrace.EMPTY;
         if (k < 1) throw new IllegalArgumentException("k must be >= 1, got " + k);
         if (!Double.isFinite(query[0]) || !Double.isFinite(query[1]))

@@ -16,7 +16,7 @@ import javax.swing.JSpinner;
 import org.kdtree.collide.ShapeCollider;
 import org.kdtree.geom.Box;
 import org.kdtree.limits.Limits;
-import org.kdtree.shape.Shapes2D;
+import org.kdtree.shape.Scene2D;
 import org.kdtree.tree.KdTree;
 
 /**
@@ -63,7 +63,7 @@ final class NearestStepperPanel extends JPanel implements CanvasOverlay {
     /** Exact distances from the query to the objects of {@link #colliderOf}. */
     private ShapeCollider collider;
     /** The scene {@link #collider} measures. */
-    private Shapes2D colliderOf;
+    private Scene2D colliderOf;
     /** Scratch for the closest point of an object to the query. */
     private final double[] closest = new double[3];
     /** The step buttons and slider; they keep the step shown. */
@@ -249,7 +249,7 @@ final class NearestStepperPanel extends JPanel implements CanvasOverlay {
                 dot(g, v, bx, by, c, 4);
             }
         }
-        Shapes2D scene = model.scene();
+        Scene2D scene = model.scene();
         g.setStroke(THIN);
         for (NearestTrace.Neighbour n : s.best()) {   // each of the best, with a spoke to its point nearest the query
             if (n.object() >= scene.size() || colliderOf != scene) continue;

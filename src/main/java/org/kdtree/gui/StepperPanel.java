@@ -12,7 +12,7 @@ import javax.swing.BorderFactory;
 import javax.swing.JLabel;
 import javax.swing.JPanel;
 import org.kdtree.geom.Box;
-import org.kdtree.shape.Shapes2D;
+import org.kdtree.shape.Scene2D;
 import org.kdtree.tree.KdTree;
 
 /**
@@ -23,7 +23,7 @@ import org.kdtree.tree.KdTree;
  */
 final class StepperPanel extends JPanel implements CanvasOverlay {
     /** Records a ray's traversal of a tree: the library's traverser behind a listener. */
-    public interface Tracer {
+    public interface Recorder {
         /**
          * {@return the recorded traversal of {@code ray} through {@code tree}}
          *
@@ -31,13 +31,13 @@ final class StepperPanel extends JPanel implements CanvasOverlay {
          * @param scene the 2-D scene
          * @param ray the ray {ox, oy, dx, dy}, or null
          */
-        TraversalTrace trace(KdTree tree, Shapes2D scene, double[] ray);
+        TraversalTrace record(KdTree tree, Scene2D scene, double[] ray);
     }
 
     /** The model whose tree and ray are traced. */
     private final WorkbenchModel model;
     /** Records the ray's traversal. */
-    private final Tracer tracer;
+    private final Recorder recorder;
     /** Which event of the traversal is shown. */
     private final JLabel stepLabel = Widgets.label("step.label", "Which event of the traversal is shown");
     /** The node Algorithm 2 is at. */
@@ -65,12 +65,12 @@ final class StepperPanel extends JPanel implements CanvasOverlay {
      * A stepper for the ray of {@code model}, traced again on every change of tree or ray.
      *
      * @param model the workbench's model
-     * @param tracer records the ray's traversal
+     * @param recorder records the ray's traversal
      */
-    public StepperPanel(WorkbenchModel model, Tracer tracer) {
+    public StepperPanel(WorkbenchModel model, Recorder recorder) {
         super(new BorderLayout());
         this.model = model;
-        this.tracer = tracer;
+        this.recorder = recorder;
         setBorder(BorderFactory.createTitledBorder("Traversal stepper (Algorithm 2) - cast a ray with the Cast ray tool (F3)"));
         JPanel buttons = controls.bar();
         buttons.add(stepLabel);
@@ -103,7 +103,7 @@ final class StepperPanel extends JPanel implements CanvasOverlay {
 
     private void retrace() {
         KdTree tree = model.tree();
-        trace = tracer.trace(tree, model.scene(), model.ray());
+        trace = recorder.record(tree, model.scene(), model.ray());
         if (voxelsOf != tree) {
             voxels = voxelIndex(tree);
             voxelsOf = tree;
@@ -198,7 +198,7 @@ final class StepperPanel extends JPanel implements CanvasOverlay {
             if (b >= a) g.draw(TreeCanvas.line(v, ray[0] + a * ray[2], ray[1] + a * ray[3], ray[0] + b * ray[2], ray[1] + b * ray[3]));
         }
         if (Double.isFinite(s.tSplit())) dot(g, v, ray[0] + s.tSplit() * ray[2], ray[1] + s.tSplit() * ray[3], Palette.FAR_CHILD, 5);
-        Shapes2D scene = model.scene();
+        Scene2D scene = model.scene();
         BasicStroke thick = new BasicStroke(3f);
         for (int obj : s.tested())
             if (obj < scene.size()) TreePainter.paintShape(g, scene.get(obj), v, Palette.TESTED, null, thick);

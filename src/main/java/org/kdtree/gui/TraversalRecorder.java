@@ -3,7 +3,7 @@ package org.kdtree.gui;
 import java.util.ArrayList;
 import java.util.List;
 import org.kdtree.geom.Ray;
-import org.kdtree.shape.Shapes2D;
+import org.kdtree.shape.Scene2D;
 import org.kdtree.traverse.Hit;
 import org.kdtree.traverse.Shape2DIntersector;
 import org.kdtree.traverse.TraversalListener;
@@ -36,7 +36,7 @@ final class TraversalRecorder implements TraversalListener {
      * @param ray the ray {ox, oy, dx, dy}, or null
      * @return the recorded traversal ({@link TraversalTrace#EMPTY} without a ray)
      */
-    public static TraversalTrace record(KdTree tree, Shapes2D scene, double[] ray) {
+    public static TraversalTrace record(KdTree tree, Scene2D scene, double[] ray) {
         if (ray == null) return TraversalTrace.EMPTY;
         Traverser traverser = new Traverser(tree, new Shape2DIntersector(scene));
         TraversalRecorder rec = new TraversalRecorder();

@@ -11,8 +11,8 @@ import java.awt.geom.Path2D;
 import java.awt.geom.Rectangle2D;
 import java.util.BitSet;
 import org.kdtree.geom.Box;
+import org.kdtree.shape.Scene2D;
 import org.kdtree.shape.Shape2D;
-import org.kdtree.shape.Shapes2D;
 import org.kdtree.tree.KdTree;
 import org.kdtree.tree.TreeVisitor;
 
@@ -54,7 +54,7 @@ public final class TreePainter {
      * @param v maps scene coordinates to pixels
      * @param o what to draw besides scene and tree
      */
-    public static void paint(Graphics2D g, int width, int height, Shapes2D scene, KdTree tree, ViewTransform v,
+    public static void paint(Graphics2D g, int width, int height, Scene2D scene, KdTree tree, ViewTransform v,
                              Options o) {
         boolean aa = o.antialias() && scene.size() <= ANTIALIAS_LIMIT && tree.nodeCount() <= 4 * ANTIALIAS_LIMIT;
         g.setRenderingHint(RenderingHints.KEY_ANTIALIASING, aa ? RenderingHints.VALUE_ANTIALIAS_ON : RenderingHints.VALUE_ANTIALIAS_OFF);
@@ -88,7 +88,7 @@ public final class TreePainter {
      * @param selectedNode the selected node, or -1
      * @param selectedShape the selected shape, or -1
      */
-    public static void paintSelection(Graphics2D g, Shapes2D scene, KdTree tree, ViewTransform v, int selectedNode,
+    public static void paintSelection(Graphics2D g, Scene2D scene, KdTree tree, ViewTransform v, int selectedNode,
                                       int selectedShape) {
         g.setRenderingHint(RenderingHints.KEY_ANTIALIASING, RenderingHints.VALUE_ANTIALIAS_ON);
         if (selectedNode >= 0 && selectedNode < tree.nodeCount()) {
@@ -164,7 +164,7 @@ public final class TreePainter {
     }
 
     /** Draws the objects: all fills as one path, all outlines as another, then the highlighted ones on top. */
-    private static void paintObjects(Graphics2D g, Shapes2D scene, ViewTransform v, BitSet highlighted, int selected) {
+    private static void paintObjects(Graphics2D g, Scene2D scene, ViewTransform v, BitSet highlighted, int selected) {
         Path2D.Double fills = new Path2D.Double(Path2D.WIND_NON_ZERO, 8 * scene.size() + 8);
         Path2D.Double lines = new Path2D.Double(Path2D.WIND_NON_ZERO, 8 * scene.size() + 8);
         for (int i = 0; i < scene.size(); i++) {

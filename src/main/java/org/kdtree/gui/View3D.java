@@ -29,12 +29,12 @@ import javax.swing.SwingUtilities;
 import javax.swing.Timer;
 import org.kdtree.build.Builders;
 import org.kdtree.build.Supervisor;
+import org.kdtree.io.PrimitivesReader;
+import org.kdtree.io.SceneReader;
 import org.kdtree.limits.Deadlines;
 import org.kdtree.limits.Limits;
 import org.kdtree.build.KdTreeBuilder;
 import org.kdtree.io.BundledScenes;
-import org.kdtree.io.SceneFile;
-import org.kdtree.io.SceneLoader;
 import org.kdtree.render.Image;
 import org.kdtree.render.RenderJob;
 import org.kdtree.render.Renderer;
@@ -269,7 +269,7 @@ public final class View3D extends JPanel {
     }
 
     private String statistics(Path file, KdTreeBuilder b) throws IOException {
-        Primitives p = SceneLoader.load(file);
+        Primitives p = PrimitivesReader.read(file);
         long t0 = System.nanoTime();
         KdTree tree = SUPERVISOR.build(b, p);
         double ms = (System.nanoTime() - t0) / 1e6;
@@ -282,7 +282,7 @@ public final class View3D extends JPanel {
      * cores; the picture shows the image as tiles complete, and Stop ends it after the tiles under way.
      */
     private String render(Path file, KdTreeBuilder b, int w) throws IOException {
-        Scene s = SceneFile.read(file);
+        Scene s = SceneReader.read(file);
         int h = Math.max(1, (int) Math.round(w * (double) s.camera().height() / s.camera().width()));
         AtomicReference<Image> growing = new AtomicReference<>();
         AtomicInteger done = new AtomicInteger(), total = new AtomicInteger(1);

@@ -26,6 +26,7 @@ import javax.swing.JToolBar;
 import javax.swing.KeyStroke;
 import javax.swing.SwingUtilities;
 import javax.swing.filechooser.FileNameExtensionFilter;
+import org.kdtree.build.BuilderSpec;
 import org.kdtree.build.Builders;
 
 /**
@@ -69,16 +70,16 @@ public final class Workbench extends JFrame {
 
     /** Builds the window on the built-in talk-figures scene (call on the event thread). */
     public Workbench() {
-        this(TRACER);
+        this(RECORDER);
     }
 
     /** The library's traversal, recorded for the stepper. */
-    static final StepperPanel.Tracer TRACER = TraversalRecorder::record;
+    static final StepperPanel.Recorder RECORDER = TraversalRecorder::record;
 
-    /** Builds the window with a given tracer (tests may pass their own). */
-    Workbench(StepperPanel.Tracer tracer) {
+    /** Builds the window with a given recorder of traversals (tests may pass their own). */
+    Workbench(StepperPanel.Recorder recorder) {
         super("kdtree workbench");
-        stepper = new StepperPanel(model, tracer);
+        stepper = new StepperPanel(model, recorder);
         canvas.addOverlay(stepper);
         nearest = new NearestStepperPanel(model);
         canvas.addOverlay(nearest);
@@ -92,7 +93,7 @@ public final class Workbench extends JFrame {
         tabs.addTab("2-D build", buildTab());
         tabs.setMnemonicAt(0, KeyEvent.VK_B);
         tabs.setToolTipTextAt(0, "Watch a 2-D build and step through a traversal (Alt+B)");
-        compare = new CompareView(model, tracer);
+        compare = new CompareView(model, recorder);
         tabs.addTab("Compare builders", compare);
         tabs.setMnemonicAt(1, KeyEvent.VK_C);
         tabs.setToolTipTextAt(1, "The three builders side by side on the same scene, with the ray's cost in each (Alt+C)");
@@ -111,9 +112,17 @@ public final class Workbench extends JFrame {
         setLocationRelativeTo(null);
     }
 
-    /** Opens the workbench on the event thread and returns at once. */
-    public static void open() {
-        SwingUtilities.invokeLater(() -> new Workbench().setVisible(true));
+    /**
+     * Opens the workbench on the event thread and returns at once.
+     *
+     * @param settings the builder and settings it starts with
+     */
+    public static void open(BuilderSpec settings) {
+        SwingUtilities.invokeLater(() -> {
+            Workbench w = new Workbench();
+            w.model().setSettings(settings);
+            w.setVisible(true);
+        });
     }
 
     /** {@return the scene, settings, tree and selection every view shows} */

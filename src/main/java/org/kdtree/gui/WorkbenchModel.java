@@ -7,8 +7,8 @@ import java.util.List;
 import java.util.concurrent.CopyOnWriteArrayList;
 import org.kdtree.build.BuilderFault;
 import org.kdtree.build.BuilderSpec;
+import org.kdtree.shape.Scene2D;
 import org.kdtree.shape.Shape2D;
-import org.kdtree.shape.Shapes2D;
 import org.kdtree.tree.KdTree;
 
 /**
@@ -61,7 +61,7 @@ final class WorkbenchModel {
 
     private final List<Listener> listeners = new CopyOnWriteArrayList<>();
     private List<Shape2D> shapes = new ArrayList<>();
-    private Shapes2D scene = new Shapes2D(List.of());
+    private Scene2D scene = new Scene2D(List.of());
     private String sceneName = "";
     private BuilderSpec settings = BuilderSpec.of("sah");
     private KdTree tree;
@@ -90,7 +90,7 @@ final class WorkbenchModel {
     // ---- scene ----
 
     /** {@return the scene} */
-    public Shapes2D scene() { return scene; }
+    public Scene2D scene() { return scene; }
     /** {@return the scene's name} */
     public String sceneName() { return sceneName; }
 
@@ -115,7 +115,7 @@ final class WorkbenchModel {
      * @throws java.io.IOException if the file cannot be read or is malformed
      */
     public void load(java.nio.file.Path file) throws java.io.IOException {
-        setScene(file.getFileName().toString(), org.kdtree.io.Scene2DFormat.read(file).shapes());
+        setScene(file.getFileName().toString(), org.kdtree.io.Scene2DReader.read(file).shapes());
     }
 
     /**
@@ -125,7 +125,7 @@ final class WorkbenchModel {
      * @throws java.io.IOException if writing fails
      */
     public void save(java.nio.file.Path file) throws java.io.IOException {
-        org.kdtree.io.Scene2DFormat.write(scene, file);
+        org.kdtree.io.Scene2DWriter.write(scene, file);
     }
 
     /**
@@ -201,14 +201,14 @@ final class WorkbenchModel {
     public boolean hung(String name) { return hung.contains(name); }
 
     private void rebuild() {
-        Shapes2D next = new Shapes2D(shapes);
+        Scene2D next = new Scene2D(shapes);
         if (builds.start(settings.create(), next, next.size() <= BACKGROUND_ABOVE, o -> finish(next, o))) return;
         building = true;
         fire(Change.BUILDING);
     }
 
     /** Shows the newest build's outcome: its tree, or its builder's fault over the last tree, then stale. */
-    private void finish(Shapes2D builtScene, BackgroundBuild.Outcome o) {
+    private void finish(Scene2D builtScene, BackgroundBuild.Outcome o) {
         building = false;
         if (o.fault() == null) {
             fault = null;
@@ -222,7 +222,7 @@ final class WorkbenchModel {
     }
 
     /** Publishes a scene and its tree together, so that the views never pair a tree with another scene. */
-    private void install(Shapes2D builtScene, KdTree builtTree, double ms) {
+    private void install(Scene2D builtScene, KdTree builtTree, double ms) {
         scene = builtScene;
         tree = builtTree;
         buildMillis = ms;

@@ -46,7 +46,7 @@ final class JsonNode {
      * @return the document's root value
      * @throws SceneFormatException for a syntax error or a file that is not one JSON value
      */
-    public static JsonNode parse(Reader reader, String file) throws SceneFormatException {
+    public static JsonNode read(Reader reader, String file) throws SceneFormatException {
         String text;
         try {
             text = new java.io.BufferedReader(reader).lines().collect(java.util.stream.Collectors.joining("\n"));

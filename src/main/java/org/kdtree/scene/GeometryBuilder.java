@@ -3,13 +3,14 @@ package org.kdtree.scene;
 import java.util.Arrays;
 import org.joml.Matrix3d;
 import org.joml.Matrix4d;
-import org.joml.Matrix4dc;
 import org.joml.Vector3d;
 import org.kdtree.shape.TriangleMesh;
 
 /**
  * Collects the scene's triangles into flat arrays, applying the current object's transform to
- * every vertex (and its inverse transpose to normals).
+ * every vertex (and its inverse transpose to normals). The transform is built step by step
+ * ({@link #translate}, {@link #scale}, {@link #rotate}, each applied after the ones before);
+ * JOML's matrices hold it, inside this class only.
  */
 public final class GeometryBuilder {
     private double[] vertices = new double[3 * 1024];
@@ -20,18 +21,56 @@ public final class GeometryBuilder {
     private boolean[] smooth = new boolean[1024];
     private int triangleCount;
     private final Matrix4d transform = new Matrix4d();
+    private final Matrix4d step = new Matrix4d();
     private final Matrix3d normalTransform = new Matrix3d();
     private final Vector3d tmp = new Vector3d();
 
     /**
-     * Sets the transform applied to the vertices added from now on (identity to start).
+     * Applies no transform to the vertices added from now on (as at the start): a new object.
      *
-     * @param m the transform
      * @return this builder
      */
-    public GeometryBuilder transform(Matrix4dc m) {
-        transform.set(m);
-        m.normal(normalTransform);
+    public GeometryBuilder resetTransform() {
+        transform.identity();
+        transform.normal(normalTransform);
+        return this;
+    }
+
+    /**
+     * Moves the vertices added from now on by {@code by}, after the steps so far.
+     *
+     * @param by the translation
+     * @return this builder
+     */
+    public GeometryBuilder translate(Vec3 by) {
+        return then(step.translation(by.x(), by.y(), by.z()));
+    }
+
+    /**
+     * Scales the vertices added from now on by {@code factors} per axis, after the steps so far.
+     *
+     * @param factors the scale on x, y and z (none zero)
+     * @return this builder
+     */
+    public GeometryBuilder scale(Vec3 factors) {
+        return then(step.scaling(factors.x(), factors.y(), factors.z()));
+    }
+
+    /**
+     * Rotates the vertices added from now on about {@code unitAxis} through the origin, after the steps so far.
+     *
+     * @param degrees  the angle, counter-clockwise looking down the axis
+     * @param unitAxis the axis, of length 1
+     * @return this builder
+     */
+    public GeometryBuilder rotate(double degrees, Vec3 unitAxis) {
+        return then(step.rotation(Math.toRadians(degrees), unitAxis.x(), unitAxis.y(), unitAxis.z()));
+    }
+
+    /** The transform so far, then {@code s} (s times it: later steps apply after earlier ones). */
+    private GeometryBuilder then(Matrix4d s) {
+        transform.set(s.mul(transform));
+        transform.normal(normalTransform);
         return this;
     }
 

@@ -3,7 +3,7 @@ package org.kdtree.scene;
 /**
  * A surface: Lambertian colour, optional Phong highlight, optional mirror reflection and
  * optional glass (refraction with Fresnel). The scene format's material types are presets of
- * this one record; MTL {@code illum} models map onto it as well (see {@code io.MtlMaterials}).
+ * this one record; MTL {@code illum} models map onto it as well (see {@code io.MaterialReader}).
  *
  * @param name         for reports
  * @param diffuse      Lambertian reflectance (kd)

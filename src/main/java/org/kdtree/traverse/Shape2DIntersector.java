@@ -8,9 +8,9 @@ import static org.kdtree.shape.ShapeKind.TRIANGLE;
 import static org.kdtree.shape.ShapeKind.orient;
 
 import org.kdtree.geom.Ray;
+import org.kdtree.shape.Scene2D;
 import org.kdtree.shape.Shape2D;
 import org.kdtree.shape.ShapeKind;
-import org.kdtree.shape.Shapes2D;
 
 /**
  * Exact ray tests for the 2-D workbench shapes: segments, filled rectangles, filled
@@ -38,7 +38,7 @@ public final class Shape2DIntersector implements Intersector {
      *
      * @param shapes the 2-D scene
      */
-    public Shape2DIntersector(Shapes2D shapes) {
+    public Shape2DIntersector(Scene2D shapes) {
         int n = shapes.size();
         kind = new int[n];
         xy = new double[6 * n];

@@ -165,7 +165,7 @@ public final class KdTree {
 
     /** {@return the tree's statistics (computed once)} */
     public TreeStats stats() {
-        if (stats == null) stats = TreeStatistics.of(this);
+        if (stats == null) stats = TreeStats.of(this);
         return stats;
     }
 

@@ -18,14 +18,14 @@ class BuilderSpecTest {
         assertThat(median.minPrimitives()).isEqualTo(1);
         SlidingMidpointBuilder sliding = new SlidingMidpointBuilder().threads(2).perfectSplits(false).leafSize(4);
         assertThat(sliding.leafSize()).isEqualTo(4);
-        SahBuilder sah = new SahBuilder().costModel(new org.kdtree.tree.CostModel(10, 20)).emptyWeight(0.5);
-        assertThat(sah.emptyWeight()).isEqualTo(0.5);
+        SahBuilder sah = new SahBuilder().costModel(new org.kdtree.tree.CostModel(10, 20)).lambda(0.5);
+        assertThat(sah.lambda()).isEqualTo(0.5);
     }
 
     @Test void aSpecBuildsTheTreeOfTheSameFluentSettings() {
         BuilderSpec spec = BuilderSpec.of("sah").with(Setting.LAMBDA, 0.5).with(Setting.ALGORITHM, SahBuilder.Algorithm.BINNED)
                 .with(Setting.BINS, 8).with(Setting.KT, 10.0).with(Setting.PERFECT_SPLITS, false).with(Setting.MAX_DEPTH, 14);
-        KdTreeBuilder fluent = new SahBuilder().emptyWeight(0.5).algorithm(SahBuilder.Algorithm.BINNED).bins(8).costs(10, 20)
+        KdTreeBuilder fluent = new SahBuilder().lambda(0.5).algorithm(SahBuilder.Algorithm.BINNED).bins(8).costs(10, 20)
                 .perfectSplits(false).maxDepth(14);
         KdTreeBuilder made = spec.create();
         assertThat(made.describeSettings()).isEqualTo(fluent.describeSettings());

@@ -6,8 +6,8 @@ import java.util.ArrayList;
 import java.util.List;
 import java.util.Random;
 import org.junit.jupiter.api.Test;
+import org.kdtree.shape.Scene2D;
 import org.kdtree.shape.Shape2D;
-import org.kdtree.shape.Shapes2D;
 import org.kdtree.tree.KdTree;
 
 /**
@@ -32,7 +32,7 @@ class DegenerateObjectsTest {
                     default -> new Shape2D.Point(c(r), c(r));
                 });
             }
-            Shapes2D s = new Shapes2D(shapes);
+            Scene2D s = new Scene2D(shapes);
             for (String name : Builders.names()) {
                 KdTree tree = Builders.create(name).build(s);
                 assertThat(tree.nodeCount()).as("%s, scene %d", name, scene).isPositive();

@@ -55,7 +55,7 @@ class SahAlgorithmsTest {
     }
 
     static KdTree build(Primitives scene, SahBuilder.Algorithm a, boolean perfect, double lambda) {
-        return new SahBuilder().algorithm(a).perfectSplits(perfect).emptyWeight(lambda).build(scene);
+        return new SahBuilder().algorithm(a).perfectSplits(perfect).lambda(lambda).build(scene);
     }
 
     static void assertSameTree(KdTree actual, KdTree expected) {

@@ -124,8 +124,8 @@ class SahBuilderTest {
     }
 
     @Test void settingsAreChecked() {
-        assertThatThrownBy(() -> new SahBuilder().emptyWeight(0)).hasMessageContaining("emptyWeight (lambda) must be between 0.01 and 1");
-        assertThatThrownBy(() -> new SahBuilder().emptyWeight(1.5)).hasMessageContaining("got 1.5");
+        assertThatThrownBy(() -> new SahBuilder().lambda(0)).hasMessageContaining("lambda must be between 0.01 and 1");
+        assertThatThrownBy(() -> new SahBuilder().lambda(1.5)).hasMessageContaining("got 1.5");
         assertThatThrownBy(() -> new SahBuilder().maxDepth(65)).hasMessageContaining("maxDepth must be between -1 and 64");
         assertThatThrownBy(() -> new SahBuilder().costs(-1, 20)).hasMessageContaining("Kt");
     }

@@ -4,8 +4,8 @@ import java.util.ArrayList;
 import java.util.List;
 import java.util.Random;
 import org.kdtree.shape.ProceduralScenes;
+import org.kdtree.shape.Scene2D;
 import org.kdtree.shape.Shape2D;
-import org.kdtree.shape.Shapes2D;
 import org.kdtree.shape.TriangleMesh;
 
 /** Small generated scenes for builder tests (no test may depend on files outside the project). */
@@ -89,7 +89,7 @@ final class Scenes {
     }
 
     /** A random 2-D scene of triangles, segments (some axis-parallel), rectangles and points. */
-    static Shapes2D random2D(int n, long seed) {
+    static Scene2D random2D(int n, long seed) {
         Random r = new Random(seed);
         List<Shape2D> s = new ArrayList<>();
         for (int i = 0; i < n; i++) {
@@ -102,6 +102,6 @@ final class Scenes {
                 default -> s.add(new Shape2D.Point(x, Math.floor(y)));
             }
         }
-        return new Shapes2D(s);
+        return new Scene2D(s);
     }
 }

@@ -61,7 +61,7 @@ class SlidingMidpointBuilderTest {
         for (int i = 0; i < c.length; i++) c[i] = r.nextDouble();
         KdTree tree = new SlidingMidpointBuilder().build(new PointsKd(3, c));
         assertThat((double) tree.memoryBytes() / n).as("tree bytes per point (leaf size %d, %d leaves)",
-                SlidingMidpointBuilder.DEFAULT_LEAF_SIZE, tree.stats().leaves()).isLessThanOrEqualTo(8.0);
+                Setting.LEAF_SIZE.defaultValue(), tree.stats().leaves()).isLessThanOrEqualTo(8.0);
     }
 
     @Test void leafSizeIsChecked() {

@@ -9,7 +9,7 @@ import java.util.concurrent.atomic.AtomicReference;
 import org.junit.jupiter.api.Test;
 import org.kdtree.check.ContractScenes;
 import org.kdtree.limits.Deadlines;
-import org.kdtree.shape.Shapes2D;
+import org.kdtree.shape.Scene2D;
 import org.kdtree.testing.InfinitePlaneBuilder;
 import org.kdtree.testing.LoopingFindPlaneBuilder;
 import org.kdtree.testing.LoopingTerminateBuilder;
@@ -19,7 +19,7 @@ import org.kdtree.testing.ThrowingBuilder;
 
 /** A builder that throws, answers wrongly, hangs or crawls is stopped and named; its thread does not stay spinning. */
 class SupervisorTest {
-    private static final Shapes2D SCENE = ContractScenes.random2D(40, 3);
+    private static final Scene2D SCENE = ContractScenes.random2D(40, 3);
     private static final Supervisor QUICK = Supervisor.of(new Deadlines(0.5, 1.5));
 
     @Test void aBuilderThatThrowsIsNamedWithTheMethodAndTheNode() {

@@ -5,13 +5,13 @@ import static org.assertj.core.api.Assertions.assertThat;
 import org.junit.jupiter.api.Test;
 import org.kdtree.check.TreeInspector;
 import org.kdtree.geom.Box;
-import org.kdtree.shape.Shapes2D;
+import org.kdtree.shape.Scene2D;
 import org.kdtree.testing.TestScenes;
 import org.kdtree.tree.KdTree;
 
 /** The handful of 2-D objects of the talk's figures 2-5 give the splits the talk describes. */
 class TalkFiguresTest {
-    private final Shapes2D scene = TestScenes.talkFigures();
+    private final Scene2D scene = TestScenes.talkFigures();
 
     @Test void figure2MedianPlanesCutEveryVoxelInItsMiddleCyclingTheAxes() {
         KdTree tree = new MedianPlaneBuilder().minPrimitives(1).build(scene);
@@ -59,14 +59,14 @@ class TalkFiguresTest {
     }
 
     @Test void figure5FavouringEmptyVoxelsCutsOffMoreEmptySpace() {
-        KdTree plain = new SahBuilder().emptyWeight(1.0).build(scene);
-        KdTree favoured = new SahBuilder().emptyWeight(0.8).build(scene);
+        KdTree plain = new SahBuilder().lambda(1.0).build(scene);
+        KdTree favoured = new SahBuilder().lambda(0.8).build(scene);
         assertThat(favoured.stats().emptyLeaves()).isGreaterThan(plain.stats().emptyLeaves());
         assertThat(emptyArea(favoured)).isGreaterThan(emptyArea(plain));
     }
 
     @Test void sahStopsWhereNoSplitBeatsALeaf() {
-        KdTree tree = new SahBuilder().emptyWeight(1.0).build(scene);
+        KdTree tree = new SahBuilder().lambda(1.0).build(scene);
         // the two objects on the left share a leaf: separating them costs more than testing both
         TreeInspector in = new TreeInspector(tree);
         assertThat(in.leaves()).anySatisfy(l -> assertThat(l.refs()).containsExactlyInAnyOrder(0, 1));

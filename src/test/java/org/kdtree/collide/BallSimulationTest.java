@@ -7,8 +7,8 @@ import java.util.List;
 import java.util.Random;
 import org.junit.jupiter.api.Test;
 import org.kdtree.build.Builders;
+import org.kdtree.shape.Scene2D;
 import org.kdtree.shape.Shape2D;
-import org.kdtree.shape.Shapes2D;
 import org.kdtree.testing.TestScenes;
 import org.kdtree.tree.KdTree;
 
@@ -20,7 +20,7 @@ class BallSimulationTest {
         shapes.add(new Shape2D.Rect(-10, -10, -5, 130));  // walls
         shapes.add(new Shape2D.Rect(105, -10, 110, 130));
         shapes.add(new Shape2D.Rect(-10, 125, 110, 130)); // ceiling
-        Shapes2D scene = new Shapes2D(shapes);
+        Scene2D scene = new Scene2D(shapes);
         KdTree tree = Builders.create("sah").build(scene);
         BruteForceCollisions brute = new BruteForceCollisions(new ShapeCollider(scene));
         double restitution = 0.8;
@@ -54,7 +54,7 @@ class BallSimulationTest {
     }
 
     @Test void placeMovesABallAndKeepsItsRadius() {
-        Shapes2D scene = new Shapes2D(List.of(new Shape2D.Segment(0, 0, 10, 0)));
+        Scene2D scene = new Scene2D(List.of(new Shape2D.Segment(0, 0, 10, 0)));
         BallSimulation sim = new BallSimulation(Builders.create("sah").build(scene), scene, 2, 0, -10, 0.5);
         sim.addBall(1, 5, 0, 0, 0.25);
         sim.place(0, 3, 7, 1, -2);

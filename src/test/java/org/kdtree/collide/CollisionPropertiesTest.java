@@ -15,8 +15,8 @@ import net.jqwik.api.constraints.IntRange;
 import org.kdtree.build.Builders;
 import org.kdtree.geom.Ray;
 import org.kdtree.geom.Tolerance;
+import org.kdtree.shape.Scene2D;
 import org.kdtree.shape.Shape2D;
-import org.kdtree.shape.Shapes2D;
 import org.kdtree.shape.TriangleMesh;
 import org.kdtree.testing.TestScenes;
 import org.kdtree.traverse.Hit;
@@ -92,7 +92,7 @@ class CollisionPropertiesTest {
     void circleQueriesAgreeWithBruteForce2D(@ForAll("shapes2D") List<Shape2D> shapes, @ForAll("coord2") double x,
                                             @ForAll("coord2") double y, @ForAll("motion") double[] d,
                                             @ForAll("radius") double r, @ForAll @IntRange(max = 1000) int pick) {
-        Shapes2D scene = new Shapes2D(shapes);
+        Scene2D scene = new Scene2D(shapes);
         double[] c = {x, y}, d2 = {d[0], d[1]};
         double[] v = scene.get(pick % scene.size()).coords();
         double[] touching = {v[0] + 0.75, v[1] - 1}; // 3-4-5: at distance 1.25 from the shape's first point
@@ -131,7 +131,7 @@ class CollisionPropertiesTest {
 
     @Property(tries = 20)
     void radiusZeroIsTheSegmentsFirstHit2D(@ForAll @IntRange(max = 100000) int seed) {
-        Shapes2D scene = TestScenes.random2D(200, seed);
+        Scene2D scene = TestScenes.random2D(200, seed);
         Traverser rays = new Traverser(Builders.create("sah").build(scene), new Shape2DIntersector(scene));
         Random rnd = new Random(~seed); // not the scene's sequence: its first point is a vertex
         Hit hit = new Hit();

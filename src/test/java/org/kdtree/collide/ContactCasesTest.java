@@ -6,8 +6,8 @@ import static org.assertj.core.api.Assertions.within;
 import java.util.ArrayList;
 import java.util.List;
 import org.junit.jupiter.api.Test;
+import org.kdtree.shape.Scene2D;
 import org.kdtree.shape.Shape2D;
-import org.kdtree.shape.Shapes2D;
 import org.kdtree.shape.TriangleMesh;
 import org.kdtree.testing.TestScenes;
 
@@ -132,7 +132,7 @@ class ContactCasesTest {
     // ---- 2-D ----
 
     private static List<CollideOracle> oracles2() {
-        Shapes2D s = new Shapes2D(List.of(
+        Scene2D s = new Scene2D(List.of(
                 new Shape2D.Rect(0, 0, 4, 2),
                 new Shape2D.Triangle(6, 0, 10, 0, 6, 4),
                 new Shape2D.Segment(0, 6, 4, 6),
@@ -185,7 +185,7 @@ class ContactCasesTest {
             assertThat(c.firstContact(t, new double[] {-5, -5, -5}, new double[] {10, 10, 10}, 1, 1)).isInfinite();
         }
         assertThat(c.closestPoint(3, new double[] {0.5, 3, 0.5}, out)).isEqualTo(1); // the ordinary one, in y = 2
-        Shapes2D s = new Shapes2D(List.of(new Shape2D.Triangle(0, 0, 1, 1, 2, 2), new Shape2D.Rect(0, 0, 0, 3),
+        Scene2D s = new Scene2D(List.of(new Shape2D.Triangle(0, 0, 1, 1, 2, 2), new Shape2D.Rect(0, 0, 0, 3),
                 new Shape2D.Segment(1, 1, 1, 1)));
         ShapeCollider c2 = new ShapeCollider(s);
         assertThat(c2.closestPoint(0, new double[] {1, 1}, out)).isInfinite();

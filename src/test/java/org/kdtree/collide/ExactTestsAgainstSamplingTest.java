@@ -5,8 +5,8 @@ import static org.assertj.core.api.Assertions.assertThat;
 import java.util.List;
 import java.util.Random;
 import org.junit.jupiter.api.Test;
+import org.kdtree.shape.Scene2D;
 import org.kdtree.shape.Shape2D;
-import org.kdtree.shape.Shapes2D;
 import org.kdtree.testing.TestScenes;
 
 /**
@@ -44,7 +44,7 @@ class ExactTestsAgainstSamplingTest {
 
     @Test void shapeDistanceAndSweepAgreeWithSampling() {
         Random rnd = new Random(17);
-        Shapes2D scene = TestScenes.random2D(200, 5);
+        Scene2D scene = TestScenes.random2D(200, 5);
         ShapeCollider c = new ShapeCollider(scene);
         double[] out = new double[3];
         for (int i = 0; i < scene.size(); i++) {

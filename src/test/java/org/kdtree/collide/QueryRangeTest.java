@@ -6,12 +6,12 @@ import java.util.List;
 import org.junit.jupiter.api.Test;
 import org.kdtree.build.SahBuilder;
 import org.kdtree.shape.InvalidGeometryException;
+import org.kdtree.shape.Scene2D;
 import org.kdtree.shape.Shape2D;
-import org.kdtree.shape.Shapes2D;
 
 /** Beyond 1e100 squared distances overflow: queries and scenes out there are refused with the reason, not answered wrongly. */
 class QueryRangeTest {
-    private final Shapes2D scene = new Shapes2D(List.of(new Shape2D.Rect(0, 0, 1, 1), new Shape2D.Point(3, 3)));
+    private final Scene2D scene = new Scene2D(List.of(new Shape2D.Rect(0, 0, 1, 1), new Shape2D.Point(3, 3)));
     private final OverlapQuery overlap = new OverlapQuery(new SahBuilder().build(scene), new ShapeCollider(scene));
     private final SweepQuery sweep = new SweepQuery(new SahBuilder().build(scene), new ShapeCollider(scene));
 
@@ -24,7 +24,7 @@ class QueryRangeTest {
     }
 
     @Test void aSceneBeyondTheRangeIsRefused() {
-        assertThatThrownBy(() -> new Shapes2D(List.of(new Shape2D.Point(1e200, 0)))).isInstanceOf(InvalidGeometryException.class)
+        assertThatThrownBy(() -> new Scene2D(List.of(new Shape2D.Point(1e200, 0)))).isInstanceOf(InvalidGeometryException.class)
                 .hasMessageContaining("the supported range is -1e100 .. 1e100");
     }
 }

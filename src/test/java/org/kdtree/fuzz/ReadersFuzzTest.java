@@ -19,10 +19,10 @@ import net.jqwik.api.lifecycle.AfterContainer;
 import org.junit.jupiter.api.Assertions;
 import org.kdtree.build.SahBuilder;
 import org.kdtree.cli.RayFileAccess;
-import org.kdtree.io.MtlMaterials;
+import org.kdtree.io.MaterialReader;
 import org.kdtree.io.ObjMeshReader;
-import org.kdtree.io.Scene2DFormat;
-import org.kdtree.io.SceneFile;
+import org.kdtree.io.Scene2DReader;
+import org.kdtree.io.SceneReader;
 import org.kdtree.shape.InvalidGeometryException;
 
 /**
@@ -51,15 +51,15 @@ class ReadersFuzzTest {
     }
 
     @Property void mtl(@ForAll long seed) throws Exception {
-        read(seed, MTL, ".mtl", MtlMaterials::read);
+        read(seed, MTL, ".mtl", MaterialReader::read);
     }
 
     @Property void scene2d(@ForAll long seed) throws Exception {
-        read(seed, SCENE2D, ".scene2d", file -> new SahBuilder().build(Scene2DFormat.read(file)));
+        read(seed, SCENE2D, ".scene2d", file -> new SahBuilder().build(Scene2DReader.read(file)));
     }
 
     @Property void jsonScene(@ForAll long seed) throws Exception {
-        read(seed, Files.readString(Path.of("scenes/cornell-box.json")), ".json", SceneFile::read);
+        read(seed, Files.readString(Path.of("scenes/cornell-box.json")), ".json", SceneReader::read);
     }
 
     @Property void rayFile(@ForAll long seed) throws Exception {

@@ -4,7 +4,7 @@ import java.util.ArrayList;
 import java.util.Comparator;
 import java.util.List;
 import org.kdtree.collide.ShapeCollider;
-import org.kdtree.shape.Shapes2D;
+import org.kdtree.shape.Scene2D;
 
 /** The oracle of the nearest-neighbour stepper: every object's exact distance, sorted by (distance, index). */
 final class NearestBruteForce {
@@ -12,7 +12,7 @@ final class NearestBruteForce {
     }
 
     /** The k objects nearest to {@code q}, nearest first; zero-area shapes (infinitely far) left out. */
-    static List<NearestTrace.Neighbour> nearest(Shapes2D scene, double[] q, int k) {
+    static List<NearestTrace.Neighbour> nearest(Scene2D scene, double[] q, int k) {
         ShapeCollider c = new ShapeCollider(scene);
         List<double[]> all = new ArrayList<>();
         for (int i = 0; i < scene.size(); i++) {

@@ -6,8 +6,8 @@ import static org.assertj.core.api.Assertions.assertThat;
 import java.util.List;
 import java.util.Random;
 import org.junit.jupiter.api.Test;
+import org.kdtree.shape.Scene2D;
 import org.kdtree.shape.Shape2D;
-import org.kdtree.shape.Shapes2D;
 import org.kdtree.tree.KdTree;
 
 /** The nearest-neighbour stepper's recording: the brute-force answer, and pruning that never cuts inside the k-th distance. */
@@ -18,7 +18,7 @@ class NearestRecorderTest {
         for (String b : CompareView.DEFAULT_BUILDERS) {
             for (List<Shape2D> shapes : List.of(BuiltinScenes.clustered(300, 5), BuiltinScenes.uniform(250, 8),
                     BuiltinScenes.talkFigures(), mixed(200, r))) {
-                Shapes2D scene = new Shapes2D(shapes);
+                Scene2D scene = new Scene2D(shapes);
                 KdTree tree = BuilderSpec.of(b).create().build(scene);
                 for (int i = 0; i < 60; i++) {
                     double[] q = {r.nextDouble() * 14 - 2, r.nextDouble() * 14 - 2};
@@ -72,7 +72,7 @@ class NearestRecorderTest {
     }
 
     @Test void theSearchPrunesAndTestsFewerObjectsThanTheScene() {
-        Shapes2D scene = new Shapes2D(BuiltinScenes.uniform(400, 3));
+        Scene2D scene = new Scene2D(BuiltinScenes.uniform(400, 3));
         KdTree tree = BuilderSpec.of("sah").create().build(scene);
         NearestTrace t = NearestRecorder.record(tree, scene, new double[] {5, 5}, 3);
         assertThat(t.pruned()).isPositive();
@@ -85,7 +85,7 @@ class NearestRecorderTest {
     @Test void aQueryInsideAFilledShapeFindsItAtDistanceZeroAndFlatShapesAreNeverNeighbours() {
         List<Shape2D> shapes = List.of(new Shape2D.Rect(0, 0, 2, 2), new Shape2D.Rect(3, 3, 3, 5),
                 new Shape2D.Segment(4, 0, 4, 4), new Shape2D.Point(6, 1));
-        Shapes2D scene = new Shapes2D(shapes);
+        Scene2D scene = new Scene2D(shapes);
         KdTree tree = BuilderSpec.of("sah").create().build(scene);
         NearestTrace t = NearestRecorder.record(tree, scene, new double[] {1, 1}, 4);
         assertThat(t.result()).extracting(NearestTrace.Neighbour::object).containsExactly(0, 2, 3);

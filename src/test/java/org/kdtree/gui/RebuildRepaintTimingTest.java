@@ -7,7 +7,7 @@ import java.awt.image.BufferedImage;
 import java.util.Arrays;
 import java.util.Locale;
 import org.junit.jupiter.api.Test;
-import org.kdtree.shape.Shapes2D;
+import org.kdtree.shape.Scene2D;
 import org.kdtree.tree.KdTree;
 
 /**
@@ -17,7 +17,7 @@ import org.kdtree.tree.KdTree;
  */
 class RebuildRepaintTimingTest {
     @Test void rebuildAndRepaintTenThousandObjects() {
-        Shapes2D shapes = new Shapes2D(BuiltinScenes.uniform(10_000, 1));
+        Scene2D shapes = new Scene2D(BuiltinScenes.uniform(10_000, 1));
         BufferedImage image = new BufferedImage(1000, 800, BufferedImage.TYPE_INT_RGB);
         double[] build = new double[7], paint = new double[7];
         KdTree tree = null;

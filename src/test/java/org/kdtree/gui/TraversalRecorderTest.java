@@ -6,7 +6,7 @@ import static org.assertj.core.api.Assertions.assertThat;
 import java.util.Random;
 import org.junit.jupiter.api.Test;
 import org.kdtree.geom.Ray;
-import org.kdtree.shape.Shapes2D;
+import org.kdtree.shape.Scene2D;
 import org.kdtree.traverse.BruteForce;
 import org.kdtree.traverse.Hit;
 import org.kdtree.traverse.Shape2DIntersector;
@@ -15,7 +15,7 @@ import org.kdtree.tree.KdTree;
 /** The stepper's recording of the library's traversal: consistent steps, and the same hit as brute force. */
 class TraversalRecorderTest {
     @Test void recordedTracesEndWithTheBruteForceHit() {
-        Shapes2D scene = new Shapes2D(BuiltinScenes.clustered(300, 5));
+        Scene2D scene = new Scene2D(BuiltinScenes.clustered(300, 5));
         Random r = new Random(2);
         for (String b : CompareView.DEFAULT_BUILDERS) {
             KdTree tree = BuilderSpec.of(b).create().build(scene);
@@ -39,7 +39,7 @@ class TraversalRecorderTest {
     }
 
     @Test void theStackGrowsOnPushAndShrinksOnPop() {
-        Shapes2D scene = new Shapes2D(BuiltinScenes.uniform(200, 3));
+        Scene2D scene = new Scene2D(BuiltinScenes.uniform(200, 3));
         KdTree tree = BuilderSpec.of("sah").create().build(scene);
         TraversalTrace t = TraversalRecorder.record(tree, scene, new double[] {-1, 0.3, 1, 0.02});
         int pushes = 0;

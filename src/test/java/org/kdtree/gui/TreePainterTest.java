@@ -10,7 +10,7 @@ import java.util.ArrayList;
 import java.util.List;
 import org.junit.jupiter.api.Test;
 import org.kdtree.geom.Box;
-import org.kdtree.shape.Shapes2D;
+import org.kdtree.shape.Scene2D;
 import org.kdtree.tree.KdTree;
 import org.kdtree.tree.TreeVisitor;
 
@@ -24,7 +24,7 @@ class TreePainterTest {
         }
     }
 
-    private static Painted paint(Shapes2D scene, BuilderSpec settings, int selectedNode) {
+    private static Painted paint(Scene2D scene, BuilderSpec settings, int selectedNode) {
         KdTree tree = settings.create().build(scene);
         ViewTransform v = new ViewTransform().fit(tree.bounds(), W, H);
         BufferedImage img = new BufferedImage(W, H, BufferedImage.TYPE_INT_RGB);
@@ -34,8 +34,8 @@ class TreePainterTest {
         return new Painted(img, v, tree);
     }
 
-    private static Shapes2D talk() {
-        return new Shapes2D(BuiltinScenes.talkFigures());
+    private static Scene2D talk() {
+        return new Scene2D(BuiltinScenes.talkFigures());
     }
 
     @Test void splitLinesAreDrawnWhereTheTreeHasThem() {
@@ -109,7 +109,7 @@ class TreePainterTest {
     }
 
     @Test void theSelectedLeafAndItsObjectsAreHighlighted() {
-        Shapes2D scene = talk();
+        Scene2D scene = talk();
         KdTree tree = BuilderSpec.of("sah").create().build(scene);
         // the leaf holding the small rectangle at (1..2, 1..2)
         int leaf = TreePainter.leafAt(tree, 1.5, 1.5);

@@ -16,7 +16,7 @@ class BundledScenesTest {
                     files.filter(Files::isRegularFile).map(p -> p.getFileName().toString()).toList());
         }
         for (String f : BundledScenes.FILES)
-            if (!f.equals("sphereflake.json")) assertThat(SceneLoader.load(BundledScenes.path(f)).size()).as(f).isPositive();
+            if (!f.equals("sphereflake.json")) assertThat(PrimitivesReader.read(BundledScenes.path(f)).size()).as(f).isPositive();
     }
 
     @Test void aNameResolvesToTheBundledSceneUnlessSuchAFileExists() {
@@ -32,6 +32,6 @@ class BundledScenesTest {
     }
 
     @Test void aJsonSceneNamingAnObjBesideItLoads() throws Exception {
-        assertThat(SceneLoader.load(BundledScenes.path("obj-materials.json")).size()).isPositive();
+        assertThat(PrimitivesReader.read(BundledScenes.path("obj-materials.json")).size()).isPositive();
     }
 }

@@ -8,7 +8,7 @@ import org.junit.jupiter.api.Test;
 /** Malformed JSON is explained in a user's terms, never with gson's advice to programmers. */
 class JsonSyntaxTest {
     private static void refused(String json, String expected) {
-        assertThatThrownBy(() -> JsonNode.parse(new StringReader(json), "s.json")).isInstanceOf(SceneFormatException.class)
+        assertThatThrownBy(() -> JsonNode.read(new StringReader(json), "s.json")).isInstanceOf(SceneFormatException.class)
                 .hasMessage(expected);
     }
 

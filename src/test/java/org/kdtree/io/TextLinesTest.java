@@ -30,15 +30,15 @@ class TextLinesTest {
                 .hasMessage(obj + ":3: not UTF-8 text (column 6 holds a byte such as a Latin-1 accent); save the file as UTF-8");
         Path scene2d = dir.resolve("cafe.scene2d");
         Files.write(scene2d, "# caf\u00e9\nrect 0 0 1 1\n".getBytes(StandardCharsets.ISO_8859_1));
-        assertThatThrownBy(() -> Scene2DFormat.read(scene2d)).hasMessageStartingWith(scene2d + ":1: not UTF-8 text");
+        assertThatThrownBy(() -> Scene2DReader.read(scene2d)).hasMessageStartingWith(scene2d + ":1: not UTF-8 text");
     }
 
     @Test void aByteOrderMarkIsSkippedInEveryFormat() throws Exception {
         Path scene2d = dir.resolve("bom.scene2d");
         Files.writeString(scene2d, "\uFEFFrect 0 0 1 1\n", StandardCharsets.UTF_8);
-        assertThat(Scene2DFormat.read(scene2d).size()).isEqualTo(1);
+        assertThat(Scene2DReader.read(scene2d).size()).isEqualTo(1);
         Path json = dir.resolve("bom.json");
         Files.writeString(json, "\uFEFF" + Files.readString(Path.of("scenes/cornell-box.json")), StandardCharsets.UTF_8);
-        assertThat(SceneFile.read(json)).isNotNull();
+        assertThat(SceneReader.read(json)).isNotNull();
     }
 }

@@ -8,7 +8,7 @@ import java.nio.file.Path;
 import java.util.List;
 import org.junit.jupiter.api.Test;
 import org.kdtree.build.SahBuilder;
-import org.kdtree.io.SceneFile;
+import org.kdtree.io.SceneReader;
 import org.kdtree.scene.Tessellation;
 import org.kdtree.tree.CostModel;
 
@@ -35,7 +35,7 @@ class LimitsTest {
     @Test void theApiRefusesWhatTheCommandLineAndTheFilesRefuse() {
         assertThatThrownBy(() -> new SahBuilder().threads(257)).hasMessage("threads must be between 1 and 256, got 257");
         assertThatThrownBy(() -> new SahBuilder().maxDepth(65)).hasMessageStartingWith("maxDepth must be between -1 and 64");
-        assertThatThrownBy(() -> new SahBuilder().emptyWeight(0)).hasMessageContaining("must be between 0.01 and 1");
+        assertThatThrownBy(() -> new SahBuilder().lambda(0)).hasMessageContaining("must be between 0.01 and 1");
         assertThatThrownBy(() -> new SahBuilder().costModel(new CostModel(15, 1e9))).hasMessage("Ki must be between 0.001 and 10000, got 1000000000");
         assertThatThrownBy(() -> new SahBuilder().referenceBudget(0)).hasMessageStartingWith("referenceBudget must be between 1 and 65536");
         assertThatThrownBy(() -> Tessellation.sphere(null, null, 1, 2, 8, 0)).hasMessage("segments must be between 3 and 4096, got 2");
@@ -47,7 +47,7 @@ class LimitsTest {
                 {"camera": {"eye": [0, 0, 5], "lookAt": [0, 0, 0], "fov": 40, "width": 20000, "height": 10},
                  "objects": []}
                 """);
-        assertThatThrownBy(() -> SceneFile.read(f)).hasMessageEndingWith(
+        assertThatThrownBy(() -> SceneReader.read(f)).hasMessageEndingWith(
                 "$.camera.width: " + Limits.IMAGE_SIDE.requirement() + ", got 20000");
     }
 

@@ -5,7 +5,7 @@ import java.nio.file.Path;
 import java.util.Arrays;
 import java.util.Locale;
 import org.kdtree.build.Builders;
-import org.kdtree.io.SceneFile;
+import org.kdtree.io.SceneReader;
 import org.kdtree.traverse.Traverser;
 import org.kdtree.traverse.TriangleIntersector;
 import org.kdtree.tree.KdTree;
@@ -19,7 +19,7 @@ import org.kdtree.tree.KdTree;
  */
 public final class RenderScaling {
     public static void main(String[] args) throws Exception {
-        Scene scene = SceneFile.read(Path.of(args.length > 0 ? args[0] : "scenes/sphereflake.json"));
+        Scene scene = SceneReader.read(Path.of(args.length > 0 ? args[0] : "scenes/sphereflake.json"));
         int runs = args.length > 1 ? Integer.parseInt(args[1]) : 3;
         int[] counts = Arrays.stream((args.length > 2 ? args[2] : "1,2").split(",")).mapToInt(Integer::parseInt).toArray();
         if (args.length > 3) {

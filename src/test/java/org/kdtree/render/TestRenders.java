@@ -4,7 +4,7 @@ import org.kdtree.scene.Scene;
 import java.io.IOException;
 import java.io.StringReader;
 import java.nio.file.Path;
-import org.kdtree.io.SceneFile;
+import org.kdtree.io.SceneReader;
 import org.kdtree.traverse.BruteForce;
 import org.kdtree.traverse.TriangleIntersector;
 
@@ -14,11 +14,11 @@ final class TestRenders {
     }
 
     static Scene scene(String file, int w, int h, int spp) throws IOException {
-        return SceneFile.read(Path.of("scenes", file)).withImageSize(w, h).withSamplesPerPixel(spp);
+        return SceneReader.read(Path.of("scenes", file)).withImageSize(w, h).withSamplesPerPixel(spp);
     }
 
     static Scene json(String text) throws IOException {
-        return SceneFile.read(new StringReader(text), "test.json", Path.of("."));
+        return SceneReader.read(new StringReader(text), "test.json", Path.of("."));
     }
 
     /** Renders with brute force over the watertight triangle test (the oracle), recording per-pixel rays. */

@@ -30,7 +30,7 @@ class TriangleMeshTest {
     }
 
     @Test void shapes2DRejectNaNNamingTheShape() {
-        assertThatThrownBy(() -> new Shapes2D(java.util.List.of(new Shape2D.Point(0, 0), new Shape2D.Segment(0, 0, Double.NaN, 1))))
+        assertThatThrownBy(() -> new Scene2D(java.util.List.of(new Shape2D.Point(0, 0), new Shape2D.Segment(0, 0, Double.NaN, 1))))
                 .hasMessage("segment 1 has a non-finite coordinate (NaN)");
     }
 }

@@ -6,12 +6,12 @@ import java.util.ArrayList;
 import java.util.List;
 import org.junit.jupiter.api.Test;
 import org.kdtree.geom.Ray;
+import org.kdtree.shape.Scene2D;
 import org.kdtree.shape.Shape2D;
-import org.kdtree.shape.Shapes2D;
 
 /** The hard cases in 2-D (segments, filled rectangles and triangles, points), for every builder, against brute force. */
 class HardCases2DTest {
-    private static List<Oracle> oracles(Shapes2D scene) {
+    private static List<Oracle> oracles(Scene2D scene) {
         return Oracle.allBuilders(scene, new Shape2DIntersector(scene));
     }
 
@@ -30,7 +30,7 @@ class HardCases2DTest {
         return d;
     }
 
-    private static int shootLattice(Shapes2D scene, double scale) {
+    private static int shootLattice(Scene2D scene, double scale) {
         int hits = 0;
         Ray ray = new Ray(2);
         for (Oracle o : oracles(scene)) {
@@ -55,7 +55,7 @@ class HardCases2DTest {
         for (double s : new double[] {1e-6, 1e6}) {
             List<Shape2D> scaled = new ArrayList<>();
             for (Shape2D sh : Scenes.grid2D(6).shapes()) scaled.add(scale(sh, s));
-            assertThat(shootLattice(new Shapes2D(scaled), s)).isGreaterThan(1000);
+            assertThat(shootLattice(new Scene2D(scaled), s)).isGreaterThan(1000);
         }
     }
 
@@ -64,7 +64,7 @@ class HardCases2DTest {
         shapes.add(new Shape2D.Rect(1, 1, 1, 3));                  // zero width
         shapes.add(new Shape2D.Triangle(0, 0, 1, 1, 2, 2));        // collinear
         shapes.add(new Shape2D.Segment(2, 2, 2, 2));               // a point-like segment
-        Shapes2D scene = new Shapes2D(shapes);
+        Scene2D scene = new Scene2D(shapes);
         Ray ray = new Ray(2);
         int hits = 0;
         for (Oracle o : oracles(scene)) {

@@ -5,7 +5,7 @@ import static org.assertj.core.api.Assertions.assertThat;
 import java.util.Random;
 import org.junit.jupiter.api.Test;
 import org.kdtree.build.Builders;
-import org.kdtree.build.KdTreeBuilder;
+import org.kdtree.build.Setting;
 import org.kdtree.geom.Ray;
 import org.kdtree.shape.TriangleMesh;
 import org.kdtree.tree.KdTree;
@@ -24,7 +24,7 @@ class ReferenceBudgetTest {
         TriangleIntersector tris = new TriangleIntersector(FAN);
         for (String name : Builders.names()) {
             KdTree tree = Builders.create(name).build(FAN);
-            long budget = (long) KdTreeBuilder.DEFAULT_REFERENCE_BUDGET * FAN.size();
+            long budget = (long) Setting.REFERENCE_BUDGET.defaultValue() * FAN.size();
             assertThat((long) tree.refArray().length).as("%s: references", name).isLessThanOrEqualTo(budget);
             assertThat(tree.budgetLeaves()).as("%s: leaves made early", name).isPositive();
             Oracle oracle = new Oracle(tris, tree, name);

@@ -2,9 +2,9 @@ package org.kdtree.traverse;
 
 import java.util.ArrayList;
 import java.util.List;
+import org.kdtree.shape.Scene2D;
 import org.kdtree.shape.Shape2D;
 import org.kdtree.shape.ProceduralScenes;
-import org.kdtree.shape.Shapes2D;
 import org.kdtree.shape.TriangleMesh;
 
 /** Test scenes whose hard cases are known by construction. */
@@ -94,7 +94,7 @@ final class Scenes {
     }
 
     /** A 2-D grid of n x n unit rectangles and their outline segments, plus triangles and points. */
-    static Shapes2D grid2D(int n) {
+    static Scene2D grid2D(int n) {
         List<Shape2D> s = new ArrayList<>();
         for (int i = 0; i < n; i++) {
             for (int j = 0; j < n; j++) {
@@ -104,6 +104,6 @@ final class Scenes {
             }
             s.add(new Shape2D.Point(i + 0.5, n));
         }
-        return new Shapes2D(s);
+        return new Scene2D(s);
     }
 }

@@ -5,13 +5,13 @@ import static org.assertj.core.api.Assertions.assertThat;
 import java.util.List;
 import org.junit.jupiter.api.Test;
 import org.kdtree.geom.Ray;
+import org.kdtree.shape.Scene2D;
 import org.kdtree.shape.Shape2D;
-import org.kdtree.shape.Shapes2D;
 
 class Shape2DIntersectorTest {
     private static Hit shoot(Shape2D s, double ox, double oy, double dx, double dy) {
         Hit h = new Hit();
-        new Shape2DIntersector(new Shapes2D(List.of(s))).intersect(0, new Ray(2).set(ox, oy, dx, dy), 0,
+        new Shape2DIntersector(new Scene2D(List.of(s))).intersect(0, new Ray(2).set(ox, oy, dx, dy), 0,
                 Double.POSITIVE_INFINITY, h);
         return h;
     }

@@ -12,8 +12,8 @@ import net.jqwik.api.Property;
 import net.jqwik.api.Provide;
 import net.jqwik.api.constraints.IntRange;
 import org.kdtree.geom.Ray;
+import org.kdtree.shape.Scene2D;
 import org.kdtree.shape.Shape2D;
-import org.kdtree.shape.Shapes2D;
 import org.kdtree.shape.TriangleMesh;
 
 /**
@@ -79,7 +79,7 @@ class TraversalPropertiesTest {
                                                 @ForAll("coord2") double ox, @ForAll("coord2") double oy,
                                                 @ForAll("direction") double[] dir) {
         if (dir[0] == 0 && dir[1] == 0) return;
-        Shapes2D scene = new Shapes2D(shapes);
+        Scene2D scene = new Scene2D(shapes);
         Ray ray = new Ray(2).set(ox, oy, dir[0], dir[1]);
         for (Oracle o : Oracle.allBuilders(scene, new Shape2DIntersector(scene))) {
             o.check(ray);

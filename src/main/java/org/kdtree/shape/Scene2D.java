@@ -5,7 +5,7 @@ import java.util.List;
 import org.kdtree.geom.Box;
 
 /** A 2-D scene of points, segments, rectangles and triangles, as the workbench edits it. */
-public final class Shapes2D implements Primitives {
+public final class Scene2D implements Primitives {
     private final List<Shape2D> shapes;
 
     /**
@@ -15,7 +15,7 @@ public final class Shapes2D implements Primitives {
      * @throws InvalidGeometryException for a non-finite coordinate, or one beyond
      *         {@link Tolerance#MAX_COORDINATE} (the ray and circle tests' products would overflow)
      */
-    public Shapes2D(List<? extends Shape2D> shapes) {
+    public Scene2D(List<? extends Shape2D> shapes) {
         this.shapes = List.copyOf(shapes);
         for (int i = 0; i < this.shapes.size(); i++) {
             for (double c : this.shapes.get(i).coords()) {

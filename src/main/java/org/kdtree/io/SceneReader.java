@@ -9,7 +9,6 @@ import java.util.ArrayList;
 import java.util.LinkedHashMap;
 import java.util.List;
 import java.util.Map;
-import org.joml.Matrix4d;
 import org.kdtree.geom.Tolerance;
 import org.kdtree.scene.Camera;
 import org.kdtree.scene.GeometryBuilder;
@@ -24,7 +23,7 @@ import org.kdtree.scene.Vec3;
  * Reads a JSON scene (docs/scene-format.md) into a {@link Scene}: all triangles of all objects
  * in one mesh with a material per triangle. Every error names the file, the line and the field.
  */
-public final class SceneFile {
+public final class SceneReader {
     /** Generated triangles allowed in one scene (about 1.5 GB with the tree): a typo must not exhaust memory. */
     static final long MAX_TRIANGLES = 20_000_000;
     private final String file;
@@ -33,7 +32,7 @@ public final class SceneFile {
     private final Map<String, Integer> materialIndex = new LinkedHashMap<>();
     private final GeometryBuilder geometry = new GeometryBuilder();
 
-    private SceneFile(String file, Path dir) {
+    private SceneReader(String file, Path dir) {
         this.file = file;
         this.dir = dir;
     }
@@ -47,7 +46,7 @@ public final class SceneFile {
     public static Scene read(Path path) throws IOException {
         try (Reader r = new StringReader(TextLines.readAll(path))) {
             Path dir = path.toAbsolutePath().getParent();
-            return new SceneFile(path.toString(), dir).parse(JsonNode.parse(r, path.toString()),
+            return new SceneReader(path.toString(), dir).parse(JsonNode.read(r, path.toString()),
                     path.getFileName().toString());
         }
     }
@@ -61,7 +60,7 @@ public final class SceneFile {
      * @throws IOException if a file cannot be read or is malformed
      */
     public static Scene read(Reader reader, String name, Path dir) throws IOException {
-        return new SceneFile(name, dir).parse(JsonNode.parse(reader, name), name);
+        return new SceneReader(name, dir).parse(JsonNode.read(reader, name), name);
     }
 
     private Scene parse(JsonNode root, String name) throws IOException {
@@ -145,7 +144,8 @@ public final class SceneFile {
     /** Adds one object's triangles; returns whether it is a convex shape (cannot shadow itself). */
     private boolean object(JsonNode o) throws IOException {
         String type = o.get("type").string();
-        geometry.transform(o.has("transform") ? transform(o.get("transform")) : new Matrix4d());
+        geometry.resetTransform();
+        if (o.has("transform")) transform(o.get("transform"));
         switch (type) {
             case "sphere" -> {
                 o.allowOnly("type", "center", "radius", "segments", "rings", "material", "transform");
@@ -220,7 +220,7 @@ public final class SceneFile {
         for (Path lib : used.libraries()) {
             if (!Files.isRegularFile(lib))
                 throw new SceneFormatException(path.toString(), 0, "mtllib " + lib.getFileName() + ": no such file (" + lib + ")");
-            library.putAll(MtlMaterials.read(lib));
+            library.putAll(MaterialReader.read(lib));
         }
         int[] global = new int[used.names().size()];
         for (int i = 0; i < global.length; i++) {
@@ -252,27 +252,22 @@ public final class SceneFile {
     }
 
     /** A list of steps applied in order: {"translate": v}, {"scale": s or v}, {"rotate": {"axis": v, "degrees": a}}. */
-    private Matrix4d transform(JsonNode t) throws SceneFormatException {
-        Matrix4d m = new Matrix4d();
+    private void transform(JsonNode t) throws SceneFormatException {
         for (JsonNode step : t.array()) {
             step.allowOnly("translate", "scale", "rotate");
             if (step.fieldNames().size() != 1) throw step.error("each transform step has exactly one of translate, scale, rotate");
-            Matrix4d s = new Matrix4d();
             if (step.has("translate")) {
-                Vec3 v = vec(step.get("translate"));
-                s.translation(v.x(), v.y(), v.z());
+                geometry.translate(vec(step.get("translate")));
             } else if (step.has("scale")) {
                 Vec3 v = vec(step.get("scale"));
                 if (v.x() == 0 || v.y() == 0 || v.z() == 0) throw step.get("scale").error("a scale of 0 flattens the object");
-                s.scaling(v.x(), v.y(), v.z());
+                geometry.scale(v);
             } else {
                 JsonNode r = step.get("rotate").allowOnly("axis", "degrees");
                 Vec3 axis = unit(r.get("axis"));
-                s.rotation(Math.toRadians(r.get("degrees").number()), axis.x(), axis.y(), axis.z());
+                geometry.rotate(r.get("degrees").number(), axis);
             }
-            m = s.mul(m);   // later steps apply after earlier ones
         }
-        return m;
     }
 
     private static Vec3 vec(JsonNode n) throws SceneFormatException {

@@ -39,11 +39,11 @@ import org.kdtree.scene.Vec3;
  * <p>The library itself is parsed by de.javagl:obj's {@link MtlReader}; a line-by-line check of
  * our own runs first, because that reader does not report where a malformed value is.
  */
-public final class MtlMaterials {
+public final class MaterialReader {
     private static final Set<String> COLORS = Set.of("Ka", "Kd", "Ks", "Ke", "Tf");
     private static final Set<String> SCALARS = Set.of("Ns", "Ni", "d", "Tr", "sharpness");
 
-    private MtlMaterials() {
+    private MaterialReader() {
     }
 
     /**
@@ -111,7 +111,7 @@ public final class MtlMaterials {
      *
      * @param m the MTL material
      */
-    public static Material toMaterial(Mtl m) {
+    private static Material toMaterial(Mtl m) {
         Vec3 kd = color(m.getKd(), Vec3.ZERO), ks = color(m.getKs(), Vec3.ZERO), ke = color(m.getKe(), Vec3.ZERO);
         double ns = m.getNs() != null ? m.getNs() : 1;
         double ni = m.getNi() != null && m.getNi() > 0 ? m.getNi() : 1;

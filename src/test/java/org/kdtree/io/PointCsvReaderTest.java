@@ -10,11 +10,11 @@ import org.junit.jupiter.api.Test;
 import org.junit.jupiter.api.io.TempDir;
 import org.kdtree.shape.PointsKd;
 
-class PointCsvTest {
+class PointCsvReaderTest {
     @TempDir Path dir;
 
     private static PointsKd read(String text) throws Exception {
-        return PointCsv.read(new StringReader(text), "pts.csv");
+        return PointCsvReader.read(new StringReader(text), "pts.csv");
     }
 
     @Test void readsPointsSkippingBlankAndCommentLines() throws Exception {
@@ -63,7 +63,7 @@ class PointCsvTest {
     @Test void filesAreNamedInErrors() throws Exception {
         Path f = dir.resolve("q.csv");
         Files.writeString(f, "1,2\n3\n");
-        assertThatThrownBy(() -> PointCsv.read(f)).hasMessage(f + ":2: a point needs 2 coordinates, as on line 1, got 1");
-        assertThatThrownBy(() -> PointCsv.read(dir.resolve("missing.csv"))).hasMessageContaining("no such file");
+        assertThatThrownBy(() -> PointCsvReader.read(f)).hasMessage(f + ":2: a point needs 2 coordinates, as on line 1, got 1");
+        assertThatThrownBy(() -> PointCsvReader.read(dir.resolve("missing.csv"))).hasMessageContaining("no such file");
     }
 }

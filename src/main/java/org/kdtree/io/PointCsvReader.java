@@ -16,8 +16,8 @@ import org.kdtree.shape.PointsKd;
  * non-finite one) is an error naming the file and the line. Points are numbered from 0 in file
  * order. See docs/points.md.
  */
-public final class PointCsv {
-    private PointCsv() {
+public final class PointCsvReader {
+    private PointCsvReader() {
     }
 
     /**

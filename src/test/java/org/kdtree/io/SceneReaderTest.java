@@ -15,7 +15,7 @@ import org.kdtree.scene.Scene;
 import org.kdtree.shape.TriangleMesh;
 
 /** JSON scenes, OBJ with usemtl and MTL libraries: content read, and errors that name file, line and field. */
-class SceneFileTest {
+class SceneReaderTest {
     @TempDir Path dir;
 
     private static final String CAMERA = "\"camera\": {\"eye\": [0, 0, 5], \"lookAt\": [0, 0, 0], \"fov\": 40, \"width\": 8, \"height\": 8}";
@@ -37,7 +37,7 @@ class SceneFileTest {
                               "transform": [{"scale": 0.5}, {"rotate": {"axis": [0, 1, 0], "degrees": 45}}, {"translate": [2, 0, 0]}]},
                              {"type": "plane", "center": [0, -1, 0], "normal": [0, 1, 0], "size": [4, 2]}]}
                 """);
-        Scene s = SceneFile.read(f);
+        Scene s = SceneReader.read(f);
         assertThat(s.mesh().size()).isEqualTo(2 * 8 * 3 + 12 + 2);
         assertThat(s.samplesPerPixel()).isEqualTo(4);
         assertThat(s.maxDepth()).isEqualTo(3);
@@ -53,32 +53,32 @@ class SceneFileTest {
 
     @Test void malformedJsonNamesFileAndLine() throws Exception {
         Path f = write("bad.json", "{\n  \"camera\": {\n    \"eye\": [0, 0 5]\n  }\n}\n");
-        assertThatThrownBy(() -> SceneFile.read(f)).isInstanceOf(SceneFormatException.class)
+        assertThatThrownBy(() -> SceneReader.read(f)).isInstanceOf(SceneFormatException.class)
                 .hasMessageStartingWith(f + ":3: malformed JSON");
         Path empty = write("empty.json", "");
-        assertThatThrownBy(() -> SceneFile.read(empty)).hasMessageStartingWith(empty + ":1: unexpected end of file");
+        assertThatThrownBy(() -> SceneReader.read(empty)).hasMessageStartingWith(empty + ":1: unexpected end of file");
         Path array = write("array.json", "[1, 2]");
-        assertThatThrownBy(() -> SceneFile.read(array)).hasMessage(array + ":1: $: expected an object");
+        assertThatThrownBy(() -> SceneReader.read(array)).hasMessage(array + ":1: $: expected an object");
     }
 
     @Test void wrongFieldValueNamesFileLineAndField() throws Exception {
         Path f = write("bad.json", "{" + CAMERA + ",\n \"lights\": [\n  {\"type\": \"area\", \"center\": [0, 1, 0], \"normal\": [0, -1, 0],\n   \"size\": 1, \"samples\": -3}]}");
-        assertThatThrownBy(() -> SceneFile.read(f)).isInstanceOf(SceneFormatException.class)
+        assertThatThrownBy(() -> SceneReader.read(f)).isInstanceOf(SceneFormatException.class)
                 .hasMessage(f + ":4: $.lights[0].samples: must be between 1 and 1024, got -3");
     }
 
     @Test void typosAndUnknownReferencesAreErrorsNotSilence() throws Exception {
         Path typo = write("t.json", "{" + CAMERA + ",\n \"objects\": [{\"type\": \"sphere\", \"center\": [0,0,0], \"radius\": 1, \"segmnts\": 8}]}");
-        assertThatThrownBy(() -> SceneFile.read(typo)).hasMessageContaining(":2: $.objects[0].segmnts: unknown field 'segmnts'");
+        assertThatThrownBy(() -> SceneReader.read(typo)).hasMessageContaining(":2: $.objects[0].segmnts: unknown field 'segmnts'");
         Path ref = write("r.json", "{" + CAMERA + ",\n \"objects\": [{\"type\": \"box\", \"min\": [0,0,0], \"max\": [1,1,1],\n  \"material\": \"gold\"}]}");
-        assertThatThrownBy(() -> SceneFile.read(ref)).hasMessageContaining(":3: $.objects[0].material: no material named 'gold'");
+        assertThatThrownBy(() -> SceneReader.read(ref)).hasMessageContaining(":3: $.objects[0].material: no material named 'gold'");
         Path missing = write("m.json", "{\"camera\": {\"eye\": [0, 0, 5], \"fov\": 40, \"width\": 8, \"height\": 8}}");
-        assertThatThrownBy(() -> SceneFile.read(missing)).hasMessageContaining("$.camera: missing field 'lookAt'");
+        assertThatThrownBy(() -> SceneReader.read(missing)).hasMessageContaining("$.camera: missing field 'lookAt'");
     }
 
     @Test void hugeGeneratedObjectsAreRefusedBeforeTheyExhaustMemory() throws Exception {
         Path f = write("big.json", "{" + CAMERA + ",\n \"objects\": [{\"type\": \"sphereflake\", \"center\": [0,0,0], \"radius\": 1, \"levels\": 6, \"segments\": 64}]}");
-        assertThatThrownBy(() -> SceneFile.read(f)).hasMessageContaining(":2: $.objects[0]: would make")
+        assertThatThrownBy(() -> SceneReader.read(f)).hasMessageContaining(":2: $.objects[0]: would make")
                 .hasMessageContaining("a scene holds at most 20000000");
     }
 
@@ -87,7 +87,7 @@ class SceneFileTest {
         write("a.obj", "mtllib m.mtl\nv 0 0 0\nv 1 0 0\nv 1 1 0\nv 0 1 0\nf 1 2 3\nusemtl glass\nf 1 3 4\nusemtl red\nf 4 3 2\n");
         Path f = write("s.json", "{" + CAMERA + ", \"materials\": {\"grey\": {\"type\": \"diffuse\"}},"
                 + "\"objects\": [{\"type\": \"obj\", \"file\": \"a.obj\", \"material\": \"grey\"}]}");
-        Scene s = SceneFile.read(f);
+        Scene s = SceneReader.read(f);
         assertThat(s.mesh().size()).isEqualTo(3);
         assertThat(s.materials()).extracting(Material::name).containsExactly("grey", "glass", "red");
         assertThat(s.geometry().materialOf(0)).isZero();   // before any usemtl: the object's material
@@ -104,26 +104,26 @@ class SceneFileTest {
         write("bad.mtl", "newmtl a\nKd 1 0 0\nNs lots\n");
         write("a.obj", "mtllib bad.mtl\nv 0 0 0\nv 1 0 0\nv 1 1 0\nusemtl a\nf 1 2 3\n");
         Path f = write("s.json", "{" + CAMERA + ", \"objects\": [{\"type\": \"obj\", \"file\": \"a.obj\"}]}");
-        assertThatThrownBy(() -> SceneFile.read(f)).hasMessage(dir.resolve("bad.mtl") + ":3: Ns: 'lots' is not a non-negative number");
+        assertThatThrownBy(() -> SceneReader.read(f)).hasMessage(dir.resolve("bad.mtl") + ":3: Ns: 'lots' is not a non-negative number");
 
         write("good.mtl", "newmtl a\nKd 1 0 0\n");
         write("b.obj", "mtllib good.mtl\nv 0 0 0\nv 1 0 0\nv 1 1 0\nusemtl b\nf 1 2 3\n");
         Path g = write("t.json", "{" + CAMERA + ", \"objects\": [{\"type\": \"obj\", \"file\": \"b.obj\"}]}");
-        assertThatThrownBy(() -> SceneFile.read(g)).hasMessageStartingWith(dir.resolve("b.obj") + ":5: usemtl b: no such material");
+        assertThatThrownBy(() -> SceneReader.read(g)).hasMessageStartingWith(dir.resolve("b.obj") + ":5: usemtl b: no such material");
 
         Path none = write("n.json", "{" + CAMERA + ",\n \"objects\": [{\"type\": \"obj\", \"file\": \"nope.obj\"}]}");
-        assertThatThrownBy(() -> SceneFile.read(none)).hasMessageStartingWith(none + ":2: $.objects[0].file: no such file");
+        assertThatThrownBy(() -> SceneReader.read(none)).hasMessageStartingWith(none + ":2: $.objects[0].file: no such file");
 
         write("c.obj", "v 0 0 0\nv 1 0 0\nf 1 2 7\n");
         Path h = write("u.json", "{" + CAMERA + ", \"objects\": [{\"type\": \"obj\", \"file\": \"c.obj\"}]}");
-        assertThatThrownBy(() -> SceneFile.read(h)).hasMessageStartingWith(dir.resolve("c.obj") + ":3: vertex index 7 out of range");
+        assertThatThrownBy(() -> SceneReader.read(h)).hasMessageStartingWith(dir.resolve("c.obj") + ":3: vertex index 7 out of range");
     }
 
     @Test void mtlIllumModelsMapOntoTheEffectPlan() throws Exception {
         StringBuilder mtl = new StringBuilder();
         for (int i = 0; i <= 10; i++) mtl.append("newmtl i").append(i).append("\nKd 0.5 0.5 0.5\nKs 0.5 0.5 0.5\nNi 1.5\nillum ").append(i).append('\n');
         Path lib = write("all.mtl", mtl.toString());
-        var ms = MtlMaterials.read(lib);
+        var ms = MaterialReader.read(lib);
         String reflects = "", refracts = "", unlit = "";
         for (int i = 0; i <= 10; i++) {
             Material m = ms.get("i" + i);
@@ -139,14 +139,14 @@ class SceneFileTest {
         assertThat(ms.get("i4").ior()).isEqualTo(1.0);   // "glass": transparency without bending
         assertThat(ms.get("i2").specular().x()).isEqualTo(0.5);
         assertThat(ms.get("i1").specular().isZero()).isTrue();
-        assertThatThrownBy(() -> MtlMaterials.read(write("x.mtl", "newmtl a\nillum 12\n"))).hasMessageContaining("x.mtl:2: illum must be");
-        assertThatThrownBy(() -> MtlMaterials.read(write("y.mtl", "newmtl a\nKd 1 1 1\nillum 2.0\n")))
+        assertThatThrownBy(() -> MaterialReader.read(write("x.mtl", "newmtl a\nillum 12\n"))).hasMessageContaining("x.mtl:2: illum must be");
+        assertThatThrownBy(() -> MaterialReader.read(write("y.mtl", "newmtl a\nKd 1 1 1\nillum 2.0\n")))
                 .hasMessageEndingWith("y.mtl:3: illum must be a whole number from 0 to 10 (digits only), got 2.0");
     }
 
     @Test void aSceneReadsAnObjFileAsTheCommandsDoTriangleForTriangle() throws Exception {
         TriangleMesh mesh = ObjMeshReader.read(Path.of("scenes/meshes/mtl-demo.obj"));
-        TriangleMesh scene = SceneFile.read(Path.of("scenes/obj-materials.json")).mesh();
+        TriangleMesh scene = SceneReader.read(Path.of("scenes/obj-materials.json")).mesh();
         assertThat(scene.indices()).isEqualTo(mesh.indices());
         assertThat(scene.vertices()).isEqualTo(mesh.vertices());
     }

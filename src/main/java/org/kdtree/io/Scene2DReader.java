@@ -2,15 +2,12 @@ package org.kdtree.io;
 
 import java.io.IOException;
 import java.io.Reader;
-import java.io.StringReader;
-import java.io.Writer;
 import java.nio.file.Path;
 import java.util.ArrayList;
 import java.util.List;
 import java.util.Locale;
-import org.kdtree.files.AtomicFile;
+import org.kdtree.shape.Scene2D;
 import org.kdtree.shape.Shape2D;
-import org.kdtree.shape.Shapes2D;
 
 /**
  * The 2-D scene format of the workbench: one shape per line, {@code #} starts a comment.
@@ -20,10 +17,10 @@ import org.kdtree.shape.Shapes2D;
  * rect     x0 y0 x1 y1          (two opposite corners)
  * triangle ax ay bx by cx cy
  * </pre>
- * Files end in {@code .scene2d}. See docs/scene-format.md.
+ * Files end in {@code .scene2d} ({@link Scene2DWriter} writes them). See docs/scene-format.md.
  */
-public final class Scene2DFormat {
-    private Scene2DFormat() {
+public final class Scene2DReader {
+    private Scene2DReader() {
     }
 
     /**
@@ -32,26 +29,9 @@ public final class Scene2DFormat {
      * @param file the file
      * @throws IOException if the file cannot be read or is malformed
      */
-    public static Shapes2D read(Path file) throws IOException {
+    public static Scene2D read(Path file) throws IOException {
         try (TextLines lines = TextLines.open(file)) {
             return read(lines);
-        }
-    }
-
-    /**
-     * {@return the shapes of 2-D scene text}
-     *
-     * @param text the text
-     * @param name used in error messages
-     * @throws SceneFormatException if the text is malformed
-     */
-    public static Shapes2D parse(String text, String name) throws SceneFormatException {
-        try {
-            return read(new StringReader(text), name);
-        } catch (SceneFormatException e) {
-            throw e;
-        } catch (IOException e) {
-            throw new IllegalStateException(e);
         }
     }
 
@@ -62,11 +42,11 @@ public final class Scene2DFormat {
      * @param name used in error messages
      * @throws IOException if the text cannot be read or is malformed
      */
-    public static Shapes2D read(Reader reader, String name) throws IOException {
+    public static Scene2D read(Reader reader, String name) throws IOException {
         return read(TextLines.of(reader, name));
     }
 
-    private static Shapes2D read(TextLines in) throws IOException {
+    private static Scene2D read(TextLines in) throws IOException {
         String name = in.name();
         List<Shape2D> shapes = new ArrayList<>();
         for (String line = in.next(); line != null; line = in.next()) {
@@ -77,7 +57,7 @@ public final class Scene2DFormat {
             String[] t = s.split("\\s+");
             shapes.add(shape(t, name, lineNo));
         }
-        return new Shapes2D(shapes);
+        return new Scene2D(shapes);
     }
 
     private static Shape2D shape(String[] t, String name, int line) throws SceneFormatException {
@@ -108,34 +88,4 @@ public final class Scene2DFormat {
         };
     }
 
-    /**
-     * Writes the shapes in the format {@link #read} accepts.
-     *
-     * @param scene the shapes
-     * @param out receives the text
-     * @throws IOException if writing fails
-     */
-    public static void write(Shapes2D scene, Writer out) throws IOException {
-        for (Shape2D s : scene.shapes()) {
-            StringBuilder b = new StringBuilder(s.keyword());
-            for (double c : s.coords()) b.append(' ').append(format(c));
-            out.write(b.append('\n').toString());
-        }
-        out.flush();
-    }
-
-    /**
-     * Writes the shapes to a file in the format {@link #read} accepts.
-     *
-     * @param scene the shapes
-     * @param file the file, replaced whole if it exists ({@link AtomicFile})
-     * @throws IOException if writing fails; the file is then left as it was
-     */
-    public static void write(Shapes2D scene, Path file) throws IOException {
-        AtomicFile.writeText(file, w -> write(scene, w));
-    }
-
-    private static String format(double c) {
-        return c == Math.rint(c) && Math.abs(c) < 1e15 ? Long.toString((long) c) : Double.toString(c);
-    }
 }
