@@ -28,48 +28,76 @@ final class BinnedPlaneSearch implements PlaneSearch {
     }
 
     @Override public void search(BuildNode node, SahCost sah, SahSplit best) {
-        int n = node.size(), k = node.dimension();
+        NodeStore store = node.store();
+        int n = node.size(), k = node.dimension(), d = node.level(), c = node.child();
         if (n < exactBelow) {
             EventSweep.INSTANCE.search(node, sah, best);
             return;
         }
-        NodeStore store = node.store();
-        int d = node.level(), c = node.child();
-        int[] minBin = store.minBins(bins), maxBin = store.maxBins();
+        int[] minBin = store.minBins(k * bins), maxBin = store.maxBins();
         boolean flat = store.formOf(d, c) == NodeStore.BOUNDS;
         double[] bounds = flat ? store.bounds(d) : node.clippedBounds();
         int at = flat ? store.boundsMeta(d)[2 * c] : 0;
         double[] v = store.voxel(d);
-        for (int axis = 0; axis < k; axis++)
-            searchAxis(sah, best, axis, v[2 * k * c + axis], v[2 * k * c + k + axis], bins, minBin, maxBin, bounds, at, n, k);
+        histograms(v, 2 * k * c, k, bins, minBin, maxBin, bounds, at, n);
+        for (int axis = 0; axis < k; axis++) {
+            double lo = v[2 * k * c + axis], w = v[2 * k * c + k + axis] - lo;
+            if (!(w > 0)) continue;
+            int nl = 0, nr = n;
+            for (int b = 1; b < bins; b++) {
+                nl += minBin[axis * bins + b - 1];
+                nr -= maxBin[axis * bins + b - 1];
+                best.offer(sah, axis, lo + w * b / bins, nl, 0, nr);
+            }
+        }
     }
 
     /**
-     * One axis of the voxel {@code [lo, hi]}: histograms of the clipped minima and maxima of the
-     * {@code n} references whose bounds are at slots {@code at ..} of {@code bounds} ({@code 2k}
-     * values a slot), then the {@code bins - 1} boundaries offered in order.
+     * Histograms, on every axis, of the clipped minima
+     * and maxima of the {@code n} references at slots {@code at ..} of {@code bounds}, by bin of
+     * the voxel at {@code v[vAt ..]}: axis a's bins at {@code [a B, (a + 1) B)}.
      */
-    private static void searchAxis(SahCost sah, SahSplit best, int axis, double lo, double hi, int bins, int[] minBin, int[] maxBin,
-                           double[] bounds, int at, int n, int k) {
-        double w = hi - lo;
-        if (!(w > 0)) return;
-        double scale = bins / w;
-        java.util.Arrays.fill(minBin, 0, bins, 0);
-        java.util.Arrays.fill(maxBin, 0, bins, 0);
-        for (int j = 0, o = 2 * k * at + axis; j < n; j++, o += 2 * k) {
-            minBin[bin(bounds[o], lo, scale, bins)]++;
-            maxBin[bin(bounds[o + k], lo, scale, bins)]++;
+    private static void histograms(double[] v, int vAt, int k, int bins, int[] minBin, int[] maxBin, double[] bounds, int at, int n) {
+        java.util.Arrays.fill(minBin, 0, k * bins, 0);
+        java.util.Arrays.fill(maxBin, 0, k * bins, 0);
+        if (k == 3) {
+            histograms3D(v, vAt, bins, minBin, maxBin, bounds, at, n);
+            return;
         }
-        int nl = 0, nr = n;
-        for (int b = 1; b < bins; b++) {
-            nl += minBin[b - 1];
-            nr -= maxBin[b - 1];
-            best.offer(sah, axis, lo + w * b / bins, nl, 0, nr);
+        for (int axis = 0; axis < k; axis++) {
+            double lo = v[vAt + axis], w = v[vAt + k + axis] - lo;
+            if (!(w > 0)) continue;
+            double scale = bins / w;
+            int base = axis * bins;
+            for (int j = 0, o = 2 * k * at + axis; j < n; j++, o += 2 * k) {
+                minBin[base + bin(bounds[o], lo, scale, bins)]++;
+                maxBin[base + bin(bounds[o + k], lo, scale, bins)]++;
+            }
+        }
+    }
+
+    /**
+     * The loop above for k = 3, one pass over the references (their six bounds are adjacent), the
+     * same counts. An axis of zero width gets scale 0, so every reference lands in its bin 0,
+     * which {@link #search} never reads.
+     */
+    private static void histograms3D(double[] v, int vAt, int bins, int[] minBin, int[] maxBin, double[] bounds, int at, int n) {
+        double lo0 = v[vAt], lo1 = v[vAt + 1], lo2 = v[vAt + 2];
+        double w0 = v[vAt + 3] - lo0, w1 = v[vAt + 4] - lo1, w2 = v[vAt + 5] - lo2;
+        double s0 = w0 > 0 ? bins / w0 : 0, s1 = w1 > 0 ? bins / w1 : 0, s2 = w2 > 0 ? bins / w2 : 0;
+        int b1 = bins, b2 = 2 * bins;
+        for (int o = 6 * at, end = 6 * (at + n); o < end; o += 6) {
+            minBin[bin(bounds[o], lo0, s0, bins)]++;
+            minBin[b1 + bin(bounds[o + 1], lo1, s1, bins)]++;
+            minBin[b2 + bin(bounds[o + 2], lo2, s2, bins)]++;
+            maxBin[bin(bounds[o + 3], lo0, s0, bins)]++;
+            maxBin[b1 + bin(bounds[o + 4], lo1, s1, bins)]++;
+            maxBin[b2 + bin(bounds[o + 5], lo2, s2, bins)]++;
         }
     }
 
     private static int bin(double x, double lo, double scale, int bins) {
-        int b = (int) ((x - lo) * scale);
-        return b < 0 ? 0 : Math.min(b, bins - 1);
+        int b = (int) ((x - lo) * scale);   // NaN-free: bounds are finite; a cast saturates
+        return Math.max(0, Math.min(b, bins - 1));
     }
 }

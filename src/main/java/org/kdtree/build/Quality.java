@@ -2,37 +2,60 @@ package org.kdtree.build;
 
 /**
  * Named SAH settings along the measured trade-off between build time and tree quality
- * (docs/performance.md, "Quality presets"). On the meshes measured, capping the depth of the
- * exact event build was the cheapest way to give up a little quality: below the cap the SAH
- * tree goes on splitting small nodes that each save little, and they are most of the build.
- * Binned SAH did not buy as much time for the same loss (same document).
+ * (docs/performance.md, "Quality presets"). What they give up, measured on the meshes: near the
+ * leaves the greedy SAH goes on cutting a few triangles apart, each cut saving a little, and
+ * those nodes are most of the tree and most of the build. Stopping at a few references
+ * ({@link SahBuilder#leafBelow}) removes them for little loss; the binned search then cheapens
+ * the plane search of the big nodes that remain.
  */
 public enum Quality {
-    /** Depth cap {@code 8 + 0.8 log2 N}: about half the exact build time, within 15 % of its expected cost. */
-    FAST(0.8),
-    /** Depth cap {@code 8 + 1.0 log2 N}: about two thirds of the exact build time, within 3 % of its expected cost. */
-    BALANCED(1.0),
-    /** The exact SAH tree (event algorithm) under the default cap {@code 8 + 1.3 log2 N}. */
-    EXACT(KdTreeBuilder.DEFAULT_DEPTH_FACTOR);
+    /**
+     * Binned SAH (32 bins, the exact sweep below 32 references), leaves below 11 references: on the
+     * meshes measured, 15 to 35 % of the exact tree's nodes, within 25 % of its expected cost.
+     */
+    FAST(SahBuilder.Algorithm.BINNED, 32, 11),
+    /**
+     * The exact event algorithm, leaves below 6 references: on the meshes measured, 35 to 45 % of
+     * the exact tree's nodes, within 4 % of its expected cost.
+     */
+    BALANCED(SahBuilder.Algorithm.EVENT, 0, 6),
+    /** The exact SAH tree (event algorithm), every split that pays. */
+    EXACT(SahBuilder.Algorithm.EVENT, 0, 1);
 
-    private final double depthFactor;
+    private final SahBuilder.Algorithm algorithm;
+    /** The binned search's exact threshold (0 for an exact search: the setting's default is then applied). */
+    private final int exactBelow, leafBelow;
 
-    Quality(double depthFactor) {
-        this.depthFactor = depthFactor;
+    Quality(SahBuilder.Algorithm algorithm, int exactBelow, int leafBelow) {
+        this.algorithm = algorithm;
+        this.exactBelow = exactBelow;
+        this.leafBelow = leafBelow;
     }
 
-    /** {@return c in this preset's depth cap {@code 8 + c log2 N}} */
-    public double depthFactor() { return depthFactor; }
+    /** {@return the plane search of this preset} */
+    public SahBuilder.Algorithm algorithm() { return algorithm; }
+
+    /** {@return what the preset sets, in a few words}, e.g. for the command line's help */
+    public String describe() {
+        return (algorithm.exact() ? "exact " : "binned, exact below " + exactBelow + ", ") + "leaves below " + leafBelow + " references";
+    }
+
+    /** {@return the node size below which this preset makes leaves without a plane search} */
+    public int leafBelow() { return leafBelow; }
 
     /**
-     * Sets {@code sah}'s algorithm (event) and automatic depth cap to this preset's, clearing an
-     * explicit Kmaxdepth (set one after the preset to override it); other settings are left alone.
+     * Sets {@code sah}'s plane search (algorithm, bins, exact threshold) and leaf size to this
+     * preset's, with the default automatic depth cap (clearing an explicit Kmaxdepth or depth
+     * factor: set one after the preset to override it); Kt, Ki, lambda, perfect splits and threads
+     * are left alone.
+     *
      * @param sah the builder to set
      * @return {@code sah}
      */
     public SahBuilder applyTo(SahBuilder sah) {
-        sah.algorithm(SahBuilder.Algorithm.EVENT).maxDepth(-1);
-        sah.depthFactor(depthFactor);
+        sah.algorithm(algorithm).bins(Setting.BINS.defaultValue())
+                .exactBelow(exactBelow > 0 ? exactBelow : Setting.EXACT_BELOW.defaultValue()).leafBelow(leafBelow);
+        sah.maxDepth(-1).depthFactor(KdTreeBuilder.DEFAULT_DEPTH_FACTOR);
         return sah;
     }
 }

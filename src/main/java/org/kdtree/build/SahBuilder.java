@@ -55,23 +55,23 @@ public class SahBuilder extends KdTreeBuilder {
      */
     private static final int NODES_PER_PRIMITIVE = 10, REFS_PER_PRIMITIVE = 6;
 
-    /** lambda; named as SahCost names it, which terminate's search reads it into (renamed with the engine). */
-    private double emptyWeight = Setting.LAMBDA.defaultValue();
+    private double lambda = Setting.LAMBDA.defaultValue();
     private Algorithm algorithm = Setting.ALGORITHM.defaultValue();
     private int bins = Setting.BINS.defaultValue();
     private int exactBelow = Setting.EXACT_BELOW.defaultValue();
+    private int leafBelow = Setting.LEAF_BELOW.defaultValue();
     private PlaneSearch search = searchOf(algorithm);
 
     @Override public String name() { return "sah"; }
 
     /**
-     * A leaf if the node is empty, at the depth cap, or flat (no ray meets it with positive
+     * A leaf if the node is empty or smaller than {@link #leafBelow()}, at the depth cap, or flat (no ray meets it with positive
      * probability), or if no plane is cheaper than the leaf; else keeps the best plane found.
      */
     @Override protected boolean terminate(BuildContext context, BuildNode node) {
-        if (node.size() == 0 || node.depth() >= context.depthCap()) return true;
+        if (node.size() < leafBelow || node.size() == 0 || node.depth() >= context.depthCap()) return true;
         NodeStore store = node.store();
-        if (store.sahCost == null) store.sahCost = new SahCost(costModel(), emptyWeight, node.dimension());
+        if (store.sahCost == null) store.sahCost = new SahCost(costModel(), lambda, node.dimension());
         SahCost sah = store.sahCost.set(store.voxel(node.level()), 2 * node.dimension() * node.child());
         if (!(sah.halfArea() > 0)) return true;
         SahSplit best = store.best;
@@ -105,7 +105,7 @@ public class SahBuilder extends KdTreeBuilder {
     }
 
     /** {@return lambda, the weight of a plane that leaves one child empty} (1 disables the bonus; default: {@link Setting#LAMBDA}). */
-    public double lambda() { return emptyWeight; }
+    public double lambda() { return lambda; }
 
     /**
      * Sets lambda ({@link Limits#LAMBDA}: 0.01 .. 1).
@@ -114,7 +114,7 @@ public class SahBuilder extends KdTreeBuilder {
      * @return this builder
      */
     public SahBuilder lambda(double lambda) {
-        this.emptyWeight = Limits.LAMBDA.check("lambda", lambda);
+        this.lambda = Limits.LAMBDA.check("lambda", lambda);
         return this;
     }
 
@@ -166,6 +166,26 @@ public class SahBuilder extends KdTreeBuilder {
     }
 
     /**
+     * {@return the node size below which a node becomes a leaf without a plane search} (default 1:
+     * only empty nodes; the SAH alone decides the others).
+     */
+    public int leafBelow() { return leafBelow; }
+
+    /**
+     * Makes every node of fewer than {@code n} primitives a leaf ({@link Limits#LEAF_BELOW}: 1 ..
+     * 65,536). Near the leaves the greedy SAH goes on cutting a few triangles apart for small local
+     * savings that do not add up (docs/performance.md, "Quality presets"): stopping at a few
+     * primitives builds far fewer nodes for about the same expected cost.
+     *
+     * @param n the smallest node searched
+     * @return this builder
+     */
+    public SahBuilder leafBelow(int n) {
+        this.leafBelow = Limits.LEAF_BELOW.check("leafBelow", n);
+        return this;
+    }
+
+    /**
      * Sets Kt and Ki together.
      *
      * @param kt Kt, the cost of traversing a node
@@ -186,7 +206,7 @@ public class SahBuilder extends KdTreeBuilder {
     @Override public SahBuilder referenceBudget(int perPrimitive) { super.referenceBudget(perPrimitive); return this; }
 
     /**
-     * Applies a named preset ({@link Quality}): the event algorithm under that preset's depth cap.
+     * Applies a named preset ({@link Quality}): its plane search and leaf size.
      *
      * @param q the preset
      * @return this builder
@@ -198,7 +218,8 @@ public class SahBuilder extends KdTreeBuilder {
     @Override public SahBuilder threads(int n) { super.threads(n); return this; }
 
     @Override public String describeSettings() {
-        return "lambda=" + emptyWeight + " algorithm=" + algorithm.name().toLowerCase()
-                + (!algorithm.exact() ? " bins=" + bins + " exactBelow=" + exactBelow : "") + " " + super.describeSettings();
+        return "lambda=" + lambda + " algorithm=" + algorithm.name().toLowerCase()
+                + (!algorithm.exact() ? " bins=" + bins + " exactBelow=" + exactBelow : "")
+                + (leafBelow > 1 ? " leafBelow=" + leafBelow : "") + " " + super.describeSettings();
     }
 }

@@ -7,7 +7,7 @@ import org.kdtree.tree.CostModel;
  * The SAH cost of splitting one voxel (talk, section 3.3.2, with the empty-voxel weight of 3.3.4):
  * <pre>
  *   C_V(p) = lambda(p) * ( Kt + Ki * ( SA(V_L)/SA(V) |T_L| + SA(V_R)/SA(V) |T_R| ) )
- *   lambda(p) = emptyWeight if |T_L| = 0 or |T_R| = 0, else 1
+ *   lambda(p) = lambda if |T_L| = 0 or |T_R| = 0, else 1
  * </pre>
  * One instance serves one voxel. Every plane-search algorithm evaluates costs through this
  * class, so that they all compute the same numbers to the last bit and build the same tree.
@@ -18,7 +18,7 @@ import org.kdtree.tree.CostModel;
  */
 public final class SahCost {
     private final CostModel model;
-    private final double emptyWeight;
+    private final double lambda;
     private final int k;
     private double halfArea, inverseHalfArea;
     /** min, max, face and side per axis, packed in one array: {@code v[4 axis + 0..3]}. */
@@ -27,11 +27,11 @@ public final class SahCost {
     /**
      * The SAH cost of splitting {@code voxel}.
      * @param model Kt and Ki
-     * @param emptyWeight lambda, the weight of a plane that leaves one child empty
+     * @param lambda lambda, the weight of a plane that leaves one child empty
      * @param voxel the voxel V being split
      */
-    public SahCost(CostModel model, double emptyWeight, Box voxel) {
-        this(model, emptyWeight, voxel.dimension());
+    public SahCost(CostModel model, double lambda, Box voxel) {
+        this(model, lambda, voxel.dimension());
         for (int a = 0; a < k; a++) {
             v[4 * a] = voxel.min(a);
             v[4 * a + 1] = voxel.max(a);
@@ -40,9 +40,9 @@ public final class SahCost {
     }
 
     /** A cost to be pointed at one voxel after another with {@link #set} (each node store keeps one for the SAH). */
-    SahCost(CostModel model, double emptyWeight, int k) {
+    SahCost(CostModel model, double lambda, int k) {
         this.model = model;
-        this.emptyWeight = emptyWeight;
+        this.lambda = lambda;
         this.k = k;
         this.v = new double[4 * k];
     }
@@ -122,7 +122,7 @@ public final class SahCost {
         double pl = (face + (x - v[o]) * side) * inverseHalfArea;
         double pr = (face + (v[o + 1] - x) * side) * inverseHalfArea;
         double c = model.kt() + model.ki() * (pl * nl + pr * nr);
-        return (nl == 0 || nr == 0) ? c * emptyWeight : c;
+        return (nl == 0 || nr == 0) ? c * lambda : c;
     }
 
     /**

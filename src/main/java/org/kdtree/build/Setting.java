@@ -33,11 +33,11 @@ public final class Setting<T> {
     private static final Owner<CyclingAxisBuilder> MEDIAN = new Owner<>(CyclingAxisBuilder.class, "the median builders");
     private static final Owner<SlidingMidpointBuilder> SLIDING = new Owner<>(SlidingMidpointBuilder.class, "the sliding-midpoint builder");
 
-    /** A named SAH preset: the event algorithm under a depth cap; first in the table, so that the other settings override it. */
+    /** A named SAH preset (plane search and leaf size); first in the table, so that the other settings override it. */
     public static final Setting<Quality> QUALITY = new Setting<>("quality", "--quality", Quality.class, null, null, SAH,
             "a named SAH preset, " + Arrays.stream(Quality.values())
-                    .map(q -> q.name().toLowerCase(Locale.ROOT) + " (depth cap 8 + " + q.depthFactor() + " log2 N)")
-                    .collect(Collectors.joining(", ")) + "; an explicit plane search or Kmaxdepth overrides it",
+                    .map(q -> q.name().toLowerCase(Locale.ROOT) + " (" + q.describe() + ")")
+                    .collect(Collectors.joining(", ")) + "; the other settings, if given, override it",
             SahBuilder::quality, b -> null);
     /** Kt, the cost of one traversal step (Wald and Havran's, {@link CostModel#WALD_HAVRAN}, by default). */
     public static final Setting<Double> KT = new Setting<>("--kt", Limits.KT, CostModel.WALD_HAVRAN.kt(), EVERY,
@@ -78,6 +78,10 @@ public final class Setting<T> {
     /** The node size below which the binned SAH searches exactly. */
     public static final Setting<Integer> EXACT_BELOW = new Setting<>("--exact-below", Limits.EXACT_BELOW, 64, SAH,
             "the BINNED plane search sweeps nodes of fewer references exactly", SahBuilder::exactBelow, SahBuilder::exactBelow);
+    /** The SAH's smallest node it searches a plane for. */
+    public static final Setting<Integer> LEAF_BELOW = new Setting<>("--leaf-below", Limits.LEAF_BELOW, 1, SAH,
+            "nodes of fewer references become leaves without a plane search (1 = only empty ones)",
+            SahBuilder::leafBelow, SahBuilder::leafBelow);
     /** Kmintri, the median builders' smallest node worth splitting. */
     public static final Setting<Integer> MIN_PRIMITIVES = new Setting<>("--min-prims", Limits.MIN_PRIMITIVES, 2, MEDIAN,
             "a voxel with at most this many primitives becomes a leaf", CyclingAxisBuilder::minPrimitives,

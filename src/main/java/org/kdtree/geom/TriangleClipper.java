@@ -48,9 +48,9 @@ public final class TriangleClipper {
      */
     public Box clip(double[] vertices, int i0, int i1, int i2, Box box, Box dest) {
         int p0 = 3 * i0, p1 = 3 * i1, p2 = 3 * i2;
+        ownBounds(vertices, p0, p1, p2);
         int count = clipToBox(vertices, p0, p1, p2, box);
         if (count == 0) return dest.setEmpty();
-        ownBounds(vertices, p0, p1, p2);
         for (int axis = 0; axis < 3; axis++) bound(polygon, count, axis, box.min(axis), box.max(axis), dest);
         return dest;
     }
@@ -138,18 +138,27 @@ public final class TriangleClipper {
         }
     }
 
-    /** Clips the triangle at vertex offsets p0, p1, p2 to the box; the polygon is left in {@link #polygon}. */
+    /**
+     * Clips the triangle at vertex offsets p0, p1, p2 to the box; the polygon is left in
+     * {@link #polygon}. Needs {@link #ownBounds} first: a face the triangle's own bounds do not
+     * cross is passed over without computing distances (most faces, for the small triangles of a
+     * mesh), which is exact until a pass has cut the triangle.
+     */
     private int clipToBox(double[] vertices, int p0, int p1, int p2, Box box) {
         double[] src = a, dst = b;
         src[0] = vertices[p0]; src[1] = vertices[p0 + 1]; src[2] = vertices[p0 + 2];
         src[3] = vertices[p1]; src[4] = vertices[p1 + 1]; src[5] = vertices[p1 + 2];
         src[6] = vertices[p2]; src[7] = vertices[p2 + 1]; src[8] = vertices[p2 + 2];
         int count = 3;
+        boolean cut = false;
         for (int pass = 0; pass < 6 && count > 0; pass++) {
             int axis = pass >> 1;
             boolean keepAbove = (pass & 1) == 0;   // the lower face keeps x >= min, the upper x <= max
             double plane = keepAbove ? box.min(axis) : box.max(axis);
+            // while the polygon is still the triangle, its own bounds answer "all inside?" as its distances would
+            if (!cut && (keepAbove ? ownMin[axis] >= plane : ownMax[axis] <= plane)) continue;
             if (distances(src, count, axis, plane, keepAbove)) continue;   // all inside: the pass would copy src unchanged
+            cut = true;
             count = clipHalf(src, dst, count, axis, plane);
             double[] t = src; src = dst; dst = t;
         }

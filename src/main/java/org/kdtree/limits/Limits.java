@@ -31,6 +31,8 @@ public final class Limits {
     public static final Limit EXACT_BELOW = Limit.whole("exact below", 0, 1_000_000_000).noting("0 = never");
     /** The sliding-midpoint builder's largest leaf. */
     public static final Limit LEAF_SIZE = Limit.whole("leaf size", 1, 1 << 16);
+    /** The SAH's smallest node it searches a plane for: smaller ones become leaves. */
+    public static final Limit LEAF_BELOW = Limit.whole("leaf below", 1, 1 << 16).noting("1 = only empty nodes");
     /** How long one call of a supervised builder's terminate or findPlane may take before it is reported as hung ({@link Deadlines}). */
     public static final Limit CALL_DEADLINE = Limit.real("call deadline", 0.1, 3600).noting("seconds");
     /** How long one supervised build may take before it is reported as slow ({@link Deadlines}). */
@@ -104,7 +106,7 @@ public final class Limits {
 
     /** All of them, in the order of docs/limits.md. */
     public static final List<Limit> ALL = List.of(THREADS, MAX_DEPTH, DEPTH_FACTOR, REFERENCE_BUDGET, KT, KI, LAMBDA,
-            MIN_PRIMITIVES, BINS, EXACT_BELOW, LEAF_SIZE, CALL_DEADLINE, BUILD_DEADLINE, STUDENT_DEADLINE, STUDENT_HEAP, IMAGE_SIDE, SAMPLES_PER_PIXEL, RAY_DEPTH, LIGHT_SAMPLES, PREVIEW_WIDTH,
+            MIN_PRIMITIVES, BINS, EXACT_BELOW, LEAF_BELOW, LEAF_SIZE, CALL_DEADLINE, BUILD_DEADLINE, STUDENT_DEADLINE, STUDENT_HEAP, IMAGE_SIDE, SAMPLES_PER_PIXEL, RAY_DEPTH, LIGHT_SAMPLES, PREVIEW_WIDTH,
             SPHERE_SEGMENTS, SPHERE_RINGS, FLAKE_LEVELS,
             RUNS, WARMUP, GRID, RAY_COUNT, RAYS_PER_TRIANGLE,
             NEIGHBOURS, LEAF_BUDGET, EPSILON, POINT_COUNT, QUERY_COUNT, DIMENSION, SCENE_OBJECTS, STEPPER_K, BALLS);

@@ -26,7 +26,8 @@ public record Variant(String name, BuilderSpec spec) {
      * Every variant the study compares: the two median builders, exact SAH with lambda 1.0, 0.8
      * and 0.5 (and the sorted algorithm, same tree, for its build time), binned SAH with B = 8,
      * 32, 256 (and pure binning without the exact sweep of small nodes), SAH without perfect
-     * splits, SAH under depth caps 12, 16 and 20, the quality presets fast and balanced; then every
+     * splits, SAH under depth caps 12, 16 and 20, the quality presets fast (binned, leaves below 11
+     * references) and balanced (exact, leaves below 6); then every
      * other registered builder (a student's too) with its default settings.
      *
      * @return the variants, in that order

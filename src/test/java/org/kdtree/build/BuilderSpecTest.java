@@ -36,7 +36,7 @@ class BuilderSpecTest {
     @Test void aPresetComesFirstSoThatAnExplicitDepthOverridesIt() {
         KdTreeBuilder b = BuilderSpec.of("sah").with(Setting.MAX_DEPTH, 5).with(Setting.QUALITY, Quality.FAST).create();
         assertThat(b.maxDepth()).isEqualTo(5);
-        assertThat(b.depthFactor()).isEqualTo(Quality.FAST.depthFactor());
+        assertThat(((SahBuilder) b).leafBelow()).isEqualTo(Quality.FAST.leafBelow());
     }
 
     @Test void aValueOutOfRangeIsRefusedWhenGivenNamingTheOption() {

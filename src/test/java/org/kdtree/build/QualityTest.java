@@ -16,27 +16,45 @@ class QualityTest {
         SahAlgorithmsTest.assertSameTree(new SahBuilder().quality(Quality.EXACT).build(SPHERE), new SahBuilder().build(SPHERE));
     }
 
-    @Test void cheaperPresetsBuildShallowerSmallerTreesThatCostMore() {
+    @Test void cheaperPresetsBuildSmallerTreesThatCostALittleMore() {
         KdTree exact = new SahBuilder().build(SPHERE);
         KdTree balanced = new SahBuilder().quality(Quality.BALANCED).build(SPHERE);
         KdTree fast = new SahBuilder().quality(Quality.FAST).build(SPHERE);
-        int n = SPHERE.size();
-        assertThat(balanced.stats().maxDepth()).isLessThanOrEqualTo((int) Math.round(8 + 1.0 * Math.log(n) / Math.log(2)));
-        assertThat(fast.stats().maxDepth()).isLessThanOrEqualTo((int) Math.round(8 + 0.8 * Math.log(n) / Math.log(2)));
         assertThat(fast.nodeCount()).isLessThan(balanced.nodeCount());
-        assertThat(balanced.nodeCount()).isLessThan(exact.nodeCount());
+        assertThat(balanced.nodeCount()).isLessThan(exact.nodeCount() / 2);
         double cost = exact.stats().expectedCost();
-        assertThat(balanced.stats().expectedCost()).isBetween(cost, 1.15 * cost);
-        assertThat(fast.stats().expectedCost()).isBetween(balanced.stats().expectedCost(), 1.5 * cost);
+        assertThat(balanced.stats().expectedCost()).isLessThanOrEqualTo(1.05 * cost);
+        assertThat(fast.stats().expectedCost()).isLessThanOrEqualTo(1.30 * cost);
     }
 
-    @Test void aPresetIsADepthCapAndAnExplicitCapStillWins() {
-        SahBuilder b = new SahBuilder().quality(Quality.FAST);
-        assertThat(b.algorithm()).isEqualTo(SahBuilder.Algorithm.EVENT);
-        assertThat(b.depthCap(1 << 16)).isEqualTo(8 + 13);   // 8 + 0.8 * 16 = 20.8
-        assertThat(b.maxDepth(12).depthCap(1 << 16)).isEqualTo(12);
-        assertThat(b.describeSettings()).contains("maxDepth=12");
-        assertThat(new SahBuilder().quality(Quality.BALANCED).describeSettings()).contains("auto(8+1.0 log2 N)");
-        assertThatThrownBy(() -> new SahBuilder().depthFactor(-1)).isInstanceOf(IllegalArgumentException.class);
+    @Test void aPresetSetsTheSearchAndTheLeafSizeAndWhatFollowsItWins() {
+        SahBuilder b = new SahBuilder().maxDepth(12).quality(Quality.FAST);
+        assertThat(b.algorithm()).isEqualTo(SahBuilder.Algorithm.BINNED);
+        assertThat(b.leafBelow()).isEqualTo(11);
+        assertThat(b.maxDepth()).isEqualTo(-1);
+        assertThat(b.leafBelow(2).exactBelow(0).maxDepth(12).depthCap(1 << 16)).isEqualTo(12);
+        assertThat(b.describeSettings()).contains("maxDepth=12").contains("leafBelow=2").contains("algorithm=binned");
+        assertThat(new SahBuilder().quality(Quality.BALANCED).describeSettings()).contains("algorithm=event").contains("leafBelow=6");
+        assertThat(new SahBuilder().quality(Quality.EXACT).describeSettings()).doesNotContain("leafBelow");
+        assertThatThrownBy(() -> new SahBuilder().leafBelow(0)).isInstanceOf(IllegalArgumentException.class)
+                .hasMessageContaining("leafBelow");
+    }
+
+    @Test void noNodeBelowTheLeafSizeIsSplit() {
+        KdTree t = new SahBuilder().leafBelow(9).build(SPHERE);
+        assertThat(t.nodeCount()).isLessThan(new SahBuilder().build(SPHERE).nodeCount());
+        for (int node = 0; node < t.nodeCount(); node++)   // an inner node's T holds at least the primitives of its leaves
+            if (!t.isLeaf(node)) assertThat(primitivesBelow(t, node).size()).as("inner node %d", node).isGreaterThanOrEqualTo(9);
+    }
+
+    private static java.util.Set<Integer> primitivesBelow(KdTree t, int node) {
+        java.util.Set<Integer> s = new java.util.HashSet<>();
+        java.util.ArrayDeque<Integer> todo = new java.util.ArrayDeque<>(java.util.List.of(node));
+        while (!todo.isEmpty()) {
+            int n = todo.pop();
+            if (t.isLeaf(n)) for (int i = t.leafStart(n); i < t.leafEnd(n); i++) s.add(t.ref(i));
+            else { todo.push(t.leftChild(n)); todo.push(t.rightChild(n)); }
+        }
+        return s;
     }
 }

@@ -80,7 +80,7 @@ class SameTreesAsBeforeTest {
         b.put("sah budget 2", () -> new SahBuilder().referenceBudget(2));
         b.put("sah lambda 1 kt 1 ki 0.5", () -> new SahBuilder().lambda(1).costs(1, 0.5));
         b.put("sah maxDepth 6", () -> new SahBuilder().maxDepth(6));
-        b.put("sah fast", () -> new SahBuilder().quality(Quality.FAST));
+        b.put("sah fast", () -> new SahBuilder().depthFactor(0.8));   // the old preset FAST: a depth cap 8 + 0.8 log2 N
         b.put("sah sorted", () -> new SahBuilder().algorithm(SahBuilder.Algorithm.SORTED));
         b.put("sah naive", () -> new SahBuilder().algorithm(SahBuilder.Algorithm.NAIVE));
         b.put("sah binned", () -> new SahBuilder().algorithm(SahBuilder.Algorithm.BINNED));
