@@ -4,6 +4,7 @@ import org.kdtree.geom.Tolerance;
 import java.util.ArrayList;
 import java.util.Comparator;
 import java.util.List;
+import org.kdtree.geom.Box;
 import org.kdtree.geom.Ray;
 import org.kdtree.tree.KdTree;
 import org.kdtree.tree.Nodes;
@@ -29,14 +30,9 @@ import org.kdtree.tree.Nodes;
  *
  * <p>An instance keeps per-ray scratch state (stack, mailbox) and allocates nothing per ray in
  * {@link #closestHit} and {@link #anyHit}: use one instance per thread (the tree and the
- * intersector are shared).
- *
- * <p>Two loops run Algorithm 2, from the same pieces (the ray's check and clip in
- * {@link SceneBox}, the node layout's accessors in {@link Nodes}, {@link #decide}'s rule, the
- * watertight test): this class's loop, which reports each step to a {@link TraversalListener},
- * for any dimension and any intersector, and {@link MeshTraversal}'s silent loop, which answers
- * closest and any hit on a {@link TriangleIntersector} when nobody listens. Its class comment
- * says why they are two.
+ * intersector are shared). For a {@link TriangleIntersector} without a listener, the queries run
+ * a specialised 3-D loop with the triangle test inlined; every other case runs the generic
+ * k-dimensional loop, which reports each step to a {@link TraversalListener}.
  */
 public final class Traverser implements RayQuery {
     /** Relative slack on interval comparisons ({@link Tolerance#TRAVERSAL_SLACK}). */
@@ -51,13 +47,14 @@ public final class Traverser implements RayQuery {
     /** The tree's {@link KdTree#axisBits()}, which {@link Nodes} decodes a word with. */
     private final int bits;
     private final int[] refs;
-    private final SceneBox scene;
+    private final double[] lo, hi;
     private final Mailbox mailbox;
     private final int[] stackNode;
     private final double[] stackMin, stackMax;
-    /** The silent loop, for a triangle mesh; null for other primitives. */
-    private final MeshTraversal silent;
+    private final MeshTraversal fast;
     private final Hit scratch = new Hit();
+    /** The ray's range clipped to the scene box, from {@link #clipToScene}. */
+    private double enter, exit;
 
     /**
      * A traverser of {@code tree} over {@code prims}, the primitives it was built over.
@@ -73,13 +70,15 @@ public final class Traverser implements RayQuery {
         nodes = tree.nodeArray();
         bits = tree.axisBits();
         refs = tree.refArray();
-        scene = new SceneBox(tree.bounds());
+        Box b = tree.bounds();
+        lo = b.minCorner();
+        hi = b.maxCorner();
         mailbox = new Mailbox(prims.size());
         int depth = tree.stats().maxDepth() + 2;
         stackNode = new int[depth];
         stackMin = new double[depth];
         stackMax = new double[depth];
-        silent = prims instanceof TriangleIntersector t ? new MeshTraversal(tree, t, scene, mailbox, depth) : null;
+        fast = prims instanceof TriangleIntersector t ? new MeshTraversal(tree, t, mailbox, depth) : null;
     }
 
     /** {@return the tree} */
@@ -88,7 +87,7 @@ public final class Traverser implements RayQuery {
     public Intersector intersector() { return prims; }
 
     @Override public boolean closestHit(Ray ray, double tMin, double tMax, Hit hit) {
-        if (silent != null) return silent.closestHit(ray, tMin, tMax, hit);
+        if (fast != null) return fast.closestHit(ray, tMin, tMax, hit);
         return closestHit(ray, tMin, tMax, hit, TraversalListener.NONE);
     }
 
@@ -110,7 +109,7 @@ public final class Traverser implements RayQuery {
     }
 
     @Override public boolean anyHit(Ray ray, double tMin, double tMax) {
-        if (silent != null) return silent.anyHit(ray, tMin, tMax);
+        if (fast != null) return fast.anyHit(ray, tMin, tMax);
         return anyHit(ray, tMin, tMax, TraversalListener.NONE);
     }
 
@@ -159,17 +158,18 @@ public final class Traverser implements RayQuery {
         return all;
     }
 
-    /** The listening loop: Algorithm 2 over any dimension and any intersector, each step reported. */
+    /** The generic loop: Algorithm 2 over any dimension and any intersector. */
     private boolean trace(int mode, Ray ray, double tMin, double tMax, Hit hit, List<Hit> all, TraversalListener l) {
-        if (!scene.clip(ray, tMin, tMax)) {
+        checkRay(ray);
+        if (!clipToScene(ray, tMin, tMax)) {
             l.missedScene();
             return false;
         }
-        l.begin(scene.enter, scene.exit);
+        l.begin(enter, exit);
         int stamp = mailbox.next();
         boolean found = false;
         int sp = 0, node = 0;
-        double curMin = scene.enter, curMax = scene.exit;
+        double curMin = enter, curMax = exit;
         while (true) {
             int w = Nodes.word(nodes, node);
             while (!Nodes.isLeaf(w, bits)) {
@@ -207,9 +207,25 @@ public final class Traverser implements RayQuery {
     }
 
     /**
-     * Which children to visit: Algorithm 2's three cases, closed and with slack, plus the in-plane
-     * case. {@link MeshTraversal} writes the same comparisons out with the widened bounds kept.
+     * Clips {@code [tMin, tMax]} to the scene box into {@link #enter} and {@link #exit}, widened by
+     * the slack; false when nothing is left. A NaN slab bound (origin on a face of a flat slab,
+     * direction 0 on that axis) constrains nothing.
      */
+    private boolean clipToScene(Ray ray, double tMin, double tMax) {
+        double t0 = tMin, t1 = tMax;
+        for (int a = 0; a < lo.length; a++) {
+            double inv = ray.inverseDirection(a), o = ray.origin(a);
+            double tNear = (lo[a] - o) * inv, tFar = (hi[a] - o) * inv;
+            if (inv < 0) { double s = tNear; tNear = tFar; tFar = s; }
+            if (tNear > t0) t0 = tNear;
+            if (tFar < t1) t1 = tFar;
+        }
+        enter = Math.max(tMin, t0 - Math.abs(t0) * SLACK);
+        exit = Math.min(tMax, t1 + Math.abs(t1) * SLACK);
+        return enter <= exit;
+    }
+
+    /** Which children to visit: Algorithm 2's three cases, closed and with slack, plus the in-plane case. */
     static TraversalListener.Visit decide(double tSplit, double tMin, double tMax) {
         if (tSplit > tMax + Math.abs(tMax) * SLACK) return TraversalListener.Visit.NEAR;
         if (tSplit < tMin - Math.abs(tMin) * SLACK) return TraversalListener.Visit.FAR;
@@ -254,5 +270,19 @@ public final class Traverser implements RayQuery {
         c.u = h.u;
         c.v = h.v;
         return c;
+    }
+
+    /** Rejects rays that no query can answer: non-finite values or an all-zero direction. */
+    void checkRay(Ray ray) {
+        if (ray.dimension() != lo.length)
+            throw new IllegalArgumentException("a " + ray.dimension() + "-D ray in a " + lo.length + "-D tree");
+        boolean moving = false;
+        for (int a = 0; a < ray.dimension(); a++) {
+            double o = ray.origin(a), d = ray.direction(a);
+            if (!Double.isFinite(o) || !Double.isFinite(d))
+                throw new IllegalArgumentException("ray has a non-finite origin or direction: " + ray);
+            moving |= d != 0;
+        }
+        if (!moving) throw new IllegalArgumentException("ray direction is zero: " + ray);
     }
 }

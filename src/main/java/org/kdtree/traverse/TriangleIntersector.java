@@ -51,33 +51,26 @@ public final class TriangleIntersector implements Intersector {
     public boolean isDegenerate(int t) { return Double.isNaN(corners[9 * t]); }
 
     @Override public boolean intersect(int i, Ray ray, double tMin, double tMax, Hit hit) {
-        int f = frame(ray), kx = f & 3, ky = f >>> 2 & 3, kz = f >>> 4;
-        double sz = ray.inverseDirection(kz), sx = ray.direction(kx) * sz, sy = ray.direction(ky) * sz; // sz = 1 / dkz
+        double dx = ray.direction(0), dy = ray.direction(1), dz = ray.direction(2);
+        int kz = maxAxis(dx, dy, dz);
+        int kx = kz == 2 ? 0 : kz + 1, ky = kx == 2 ? 0 : kx + 1;
+        double dkz = ray.direction(kz);
+        if (dkz < 0) { int s = kx; kx = ky; ky = s; } // keep the winding: same sign of det on both sides
+        double sz = ray.inverseDirection(kz), sx = ray.direction(kx) * sz, sy = ray.direction(ky) * sz; // = 1 / dkz
         return test(corners, 9 * i, i, ray.origin(kx), ray.origin(ky), ray.origin(kz), kx, ky, kz, sx, sy, sz,
                 tMin, tMax, hit);
     }
 
-    /**
-     * The sheared frame of a ray, once per ray: kz is the axis of its largest direction component,
-     * kx and ky the other two in cyclic order, swapped when the direction along kz is negative so
-     * that the winding (the sign of det) is the same on both sides. Packed as
-     * {@code kx | ky << 2 | kz << 4}; the shear is {@code sz = 1 / d[kz]}, {@code sx = d[kx] sz},
-     * {@code sy = d[ky] sz}.
-     */
-    static int frame(Ray ray) {
-        double dx = ray.direction(0), dy = ray.direction(1), dz = ray.direction(2);
+    /** The axis of largest absolute direction component (the sheared frame's z). */
+    static int maxAxis(double dx, double dy, double dz) {
         double ax = Math.abs(dx), ay = Math.abs(dy), az = Math.abs(dz);
-        int kz = ax > ay ? (ax > az ? 0 : 2) : (ay > az ? 1 : 2);
-        int kx = kz == 2 ? 0 : kz + 1, ky = kx == 2 ? 0 : kx + 1;
-        if (ray.direction(kz) < 0) { int s = kx; kx = ky; ky = s; }
-        return kx | ky << 2 | kz << 4;
+        return ax > ay ? (ax > az ? 0 : 2) : (ay > az ? 1 : 2);
     }
 
     /**
      * The test proper, on corners {@code c[b .. b+9)}, with the origin's coordinates given in the
      * sheared frame's axis order and the per-ray shear constants. Records a hit with
-     * {@code tMin <= t <= tMax} and {@code t < hit.t} in {@code hit}. Small enough (under the JIT's
-     * 325 bytes of bytecode for a hot call) to be inlined into {@link MeshTraversal}'s loop: keep it so.
+     * {@code tMin <= t <= tMax} and {@code t < hit.t} in {@code hit}. (The fast path inlines a copy.)
      */
     static boolean test(double[] c, int b, int prim, double ox, double oy, double oz, int kx, int ky, int kz,
                         double sx, double sy, double sz, double tMin, double tMax, Hit hit) {
@@ -114,8 +107,12 @@ public final class TriangleIntersector implements Intersector {
      */
     public boolean closestHitAll(Ray ray, double tMin, double tMax, Hit hit) {
         hit.reset();
-        int f = frame(ray), kx = f & 3, ky = f >>> 2 & 3, kz = f >>> 4;
-        double sz = ray.inverseDirection(kz), sx = ray.direction(kx) * sz, sy = ray.direction(ky) * sz; // sz = 1 / dkz
+        double dx = ray.direction(0), dy = ray.direction(1), dz = ray.direction(2);
+        int kz = maxAxis(dx, dy, dz);
+        int kx = kz == 2 ? 0 : kz + 1, ky = kx == 2 ? 0 : kx + 1;
+        double dkz = ray.direction(kz);
+        if (dkz < 0) { int s = kx; kx = ky; ky = s; }
+        double sz = ray.inverseDirection(kz), sx = ray.direction(kx) * sz, sy = ray.direction(ky) * sz; // = 1 / dkz
         double ox = ray.origin(kx), oy = ray.origin(ky), oz = ray.origin(kz);
         boolean found = false;
         for (int i = 0; i < size; i++)
