@@ -45,6 +45,7 @@ public final class BuilderPanel extends JPanel {
     private final JLabel fault = new JLabel(" ");
     /** One control per setting offered, in the table's order. */
     private final Map<Setting<?>, SettingControl> controls = new LinkedHashMap<>();
+    private final Map<Setting<?>, JLabel> labels = new LinkedHashMap<>();
     /** lambda as a slider, in hundredths. */
     private final JSlider lambdaSlider = new JSlider((int) Math.round(Setting.LAMBDA.limit().min() * 100),
             (int) Math.round(Setting.LAMBDA.limit().max() * 100), (int) Math.round(Setting.LAMBDA.defaultValue() * 100));
@@ -74,7 +75,7 @@ public final class BuilderPanel extends JPanel {
             // the plane search's O(N^2) naive algorithm is too slow to be live
             SettingControl c = SettingControl.of(s, this::reject, v -> v != SahBuilder.Algorithm.NAIVE);
             controls.put(s, c);
-            row(y++, c.label(), c.component());
+            labels.put(s, row(y++, c.label(), c.component()));
             if (s == Setting.LAMBDA) row(y++, "", lambdaSlider);
             if (s == Setting.MAX_DEPTH) row(y++, "", autoDepth);
             c.onChange(this::apply);
@@ -83,6 +84,8 @@ public final class BuilderPanel extends JPanel {
         fault.setName("builder.fault");
         fault.setForeground(new java.awt.Color(170, 0, 0));
         wideRow(y, fault);
+        rejection.setVisible(false);
+        fault.setVisible(false);
         builder.addActionListener(e -> apply());
         builder.setRenderer(new javax.swing.DefaultListCellRenderer() {
             @Override public java.awt.Component getListCellRendererComponent(javax.swing.JList<?> list, Object value, int index,
@@ -107,6 +110,7 @@ public final class BuilderPanel extends JPanel {
         fault.setText(f == null ? " " : "<html><div style='width:230px'>" + escaped(f.getMessage())
                 + "<br><b>The tree shown is the previous one (stale).</b></div></html>");
         fault.setToolTipText(f == null ? null : f.getMessage());
+        fault.setVisible(f != null);   // no blank row: the tree list below keeps the room
         builder.repaint(); // its box marks a hung builder
     }
 
@@ -120,6 +124,7 @@ public final class BuilderPanel extends JPanel {
     /** Shows why the value just typed is not taken (null: the text is valid again). */
     private void reject(String why) {
         rejection.setText(why == null ? " " : why);
+        rejection.setVisible(why != null);
         rejection.setToolTipText(why);
     }
 
@@ -154,14 +159,23 @@ public final class BuilderPanel extends JPanel {
             KdTreeBuilder probe = Builders.create(s.builder());
             builder.setSelectedItem(s.builder());
             for (SettingControl c : controls.values()) if (c.setting().appliesTo(probe)) c.show(s.value(c.setting()));
-            for (SettingControl c : controls.values()) c.component().setEnabled(live(c.setting(), probe));
+            for (SettingControl c : controls.values()) {
+                c.component().setEnabled(live(c.setting(), probe));
+                // a setting of another builder, or of the binned search under an exact one, is not shown at all
+                boolean applies = c.setting().appliesTo(probe) && (!BINNED_ONLY.contains(c.setting()) || live(c.setting(), probe));
+                c.component().setVisible(applies);
+                labels.get(c.setting()).setVisible(applies);
+            }
             SettingControl lambda = controls.get(Setting.LAMBDA);
             lambdaSlider.setValue((int) Math.round((Double) lambda.value() * 100));
             lambdaSlider.setEnabled(lambda.component().isEnabled());
+            lambdaSlider.setVisible(lambda.component().isVisible());
             int n = model.scene().size();
             int depth = (Integer) controls.get(Setting.MAX_DEPTH).value();
             autoDepth.setText(depth >= 0 ? "fixed depth cap " + depth
-                    : "-1 = auto: 8 + 1.3 log2 " + n + " = " + KdTreeBuilder.defaultMaxDepth(n));
+                    : "-1 = auto: depth cap " + KdTreeBuilder.defaultMaxDepth(n));
+            autoDepth.setToolTipText("the automatic depth cap is 8 + 1.3 log2 N, here 8 + 1.3 log2 " + n + " = "
+                    + KdTreeBuilder.defaultMaxDepth(n));
         } finally {
             updating = false;
         }
@@ -183,7 +197,7 @@ public final class BuilderPanel extends JPanel {
         add(c, g);
     }
 
-    private void row(int y, String label, JComponent c) {
+    private JLabel row(int y, String label, JComponent c) {
         GridBagConstraints g = new GridBagConstraints();
         g.gridy = y;
         g.insets = new Insets(2, 4, 2, 4);
@@ -196,5 +210,6 @@ public final class BuilderPanel extends JPanel {
         g.fill = GridBagConstraints.HORIZONTAL;
         g.weightx = 1;
         add(c, g);
+        return l;
     }
 }

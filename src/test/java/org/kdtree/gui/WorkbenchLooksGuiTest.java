@@ -51,6 +51,21 @@ class WorkbenchLooksGuiTest {
         assertThat(shown).as("the statistics column shows the whole of \"%s\"", first).isGreaterThanOrEqualTo(needed);
     }
 
+    @Test void theTreeListKeepsRoomForItsNodesWhateverTheBuilder() {
+        for (String name : new String[] {"sah", "median-plane", "sliding-midpoint"}) {
+            window.comboBox("builder").selectItem(name);
+            int height = GuiActionRunner.execute(() -> treeView().getHeight());
+            assertThat(height).as("the tree list's height under %s (1280 x 880 window)", name).isGreaterThanOrEqualTo(150);
+        }
+    }
+
+    private java.awt.Component treeView() {
+        for (java.awt.Component c : org.assertj.swing.core.BasicComponentFinder.finderWithCurrentAwtHierarchy()
+                .findAll(bench, comp -> comp instanceof TreeNodeView))
+            return c;
+        throw new AssertionError("no tree list in the window");
+    }
+
     @Test void theBallsStayInsideTheirPanel() {
         window.menuItemWithPath("Scene", "Uniform (200)").click();
         window.tabbedPane("tabs").selectTab("Collisions");
