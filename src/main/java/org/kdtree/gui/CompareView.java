@@ -24,7 +24,7 @@ import org.kdtree.tree.TreeStats;
  * and Kmaxdepth: each tree drawn, its statistics, and the cast ray's traversal cost in it. Each
  * column chooses its builder among all registered ones (a student's too).
  */
-public final class CompareView extends JPanel {
+final class CompareView extends JPanel {
     /** The builders the columns show at first, in column order. */
     public static final List<String> DEFAULT_BUILDERS = List.of("median-plane", "object-median", "sah");
 

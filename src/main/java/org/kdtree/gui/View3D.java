@@ -51,7 +51,7 @@ import org.kdtree.tree.KdTree;
  * image shown as it fills in, then the render's statistics (rays by kind, times, the tree). An
  * OBJ mesh, which has no camera, gets its tree built and its statistics shown.
  */
-public final class View3D extends JPanel {
+final class View3D extends JPanel {
     /** Chooses the 3-D scene. */
     private final JComboBox<String> scene = new JComboBox<>();
     /** Chooses the builder. */

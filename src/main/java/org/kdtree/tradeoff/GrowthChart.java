@@ -21,7 +21,7 @@ import org.knowm.xchart.style.markers.SeriesMarkers;
  * java -cp target/kdtree.jar org.kdtree.tradeoff.GrowthChart growth.png surface naive.csv build.csv ...
  * </pre>
  */
-public final class GrowthChart {
+final class GrowthChart {
     private GrowthChart() {
     }
 
