@@ -14,7 +14,8 @@ import org.junit.jupiter.api.Test;
 
 /**
  * The package structure of docs/architecture.md, checked against the imports of src/main: no
- * cycle between packages, every package in a layer, every use pointing to a lower layer; the
+ * cycle between packages, every package in a layer, every use pointing to a lower layer, no room
+ * (library, rendering, course, applications: {@link Rooms}) using a higher one; the
  * precision rule of {@code geom.Tolerance}: no tolerance written as a literal anywhere else; one
  * way to write a file; and the node layout known only to {@code tree}.
  */
@@ -39,6 +40,31 @@ class ArchitectureTest {
                 wrong.add(from + " (layer " + (layer.get(from) + 1) + ") uses " + to + " (layer " + (layer.get(to) + 1) + ")");
         }));
         assertThat(wrong).as("uses against the layers of " + Layers.DOCUMENT).isEmpty();
+    }
+
+    @Test void everyPackageIsInOneRoom() {
+        assertThat(Rooms.indexOfPackage().keySet()).as("packages in the rooms of Rooms.ROOMS")
+                .containsExactlyInAnyOrderElementsOf(USES.keySet());
+    }
+
+    /** The library never uses rendering, the course or an application; rendering neither of the last two; the course no application. */
+    @Test void noRoomUsesAHigherRoom() {
+        assertThat(upwardUses(USES)).as("uses from a lower room into a higher one").isEmpty();
+    }
+
+    @Test void theRoomCheckFindsALibraryPackageUsingTheCourse() {
+        Map<String, Map<String, Integer>> graph = Map.of("build", Map.of("examples", 1), "cli", Map.of("build", 1));
+        assertThat(upwardUses(graph)).containsExactly("build (library) uses examples (course)");
+    }
+
+    private static List<String> upwardUses(Map<String, ? extends Map<String, Integer>> uses) {
+        Map<String, Integer> room = Rooms.indexOfPackage();
+        List<String> wrong = new ArrayList<>();
+        uses.forEach((from, targets) -> targets.keySet().forEach(to -> {
+            if (room.containsKey(from) && room.containsKey(to) && room.get(to) > room.get(from))
+                wrong.add(from + " (" + Rooms.name(room.get(from)) + ") uses " + to + " (" + Rooms.name(room.get(to)) + ")");
+        }));
+        return wrong;
     }
 
     /** Each package says what it holds and what it may use, with the layer the document gives it. */
