@@ -15,7 +15,6 @@ import javax.swing.JPanel;
 import javax.swing.JSpinner;
 import org.kdtree.collide.ShapeCollider;
 import org.kdtree.geom.Box;
-import org.kdtree.limits.Limits;
 import org.kdtree.shape.Scene2D;
 import org.kdtree.tree.KdTree;
 
@@ -51,7 +50,7 @@ final class NearestStepperPanel extends JPanel implements CanvasOverlay {
     /** Why a typed k is refused, or blank. */
     private final JLabel rejection = Widgets.label("knn.rejection", "Why a typed k is refused");
     /** The k searched for. */
-    private final JSpinner kSpinner = LimitedSpinner.of(Limits.STEPPER_K, "k", 3, 1, this::reject);
+    private final JSpinner kSpinner = LimitedSpinner.of(WorkbenchLimits.STEPPER_K, "k", 3, 1, this::reject);
     /** The recorded search of the current query. */
     private NearestTrace trace = NearestTrace.EMPTY;
     /** Nodes entered, and nodes pruned, up to the step shown. */
@@ -81,7 +80,7 @@ final class NearestStepperPanel extends JPanel implements CanvasOverlay {
         JPanel buttons = controls.bar();
         buttons.add(new JLabel("k"));
         kSpinner.setName("knn.k");
-        kSpinner.setToolTipText("How many nearest objects to search for; " + LimitedSpinner.allowed(Limits.STEPPER_K));
+        kSpinner.setToolTipText("How many nearest objects to search for; " + LimitedSpinner.allowed(WorkbenchLimits.STEPPER_K));
         kSpinner.addChangeListener(e -> retrace());
         buttons.add(kSpinner);
         buttons.add(Widgets.button("Clear", "knn.clear", "Remove the query point (Ctrl+Shift+K)", model::clearQuery));
@@ -109,11 +108,11 @@ final class NearestStepperPanel extends JPanel implements CanvasOverlay {
     public int k() { return ((Number) kSpinner.getValue()).intValue(); }
 
     /**
-     * Sets k (within {@link Limits#STEPPER_K}) and searches again.
+     * Sets k (within {@link WorkbenchLimits#STEPPER_K}) and searches again.
      *
      * @param k the number of neighbours
      */
-    public void setK(int k) { kSpinner.setValue(Limits.STEPPER_K.check("k", k)); }
+    public void setK(int k) { kSpinner.setValue(WorkbenchLimits.STEPPER_K.check("k", k)); }
 
     /** Shows the first step. */
     public void first() { controls.first(); }
