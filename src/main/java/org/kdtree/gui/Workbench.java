@@ -28,6 +28,7 @@ import javax.swing.SwingUtilities;
 import javax.swing.filechooser.FileNameExtensionFilter;
 import org.kdtree.build.BuilderSpec;
 import org.kdtree.build.Builders;
+import org.kdtree.examples.CentreMidpointBuilder;
 
 /**
  * The workbench window: the 2-D build canvas with its builder controls, statistics, tree view,
@@ -71,6 +72,11 @@ public final class Workbench extends JFrame {
     /** Builds the window on the built-in talk-figures scene (call on the event thread). */
     public Workbench() {
         this(RECORDER);
+    }
+
+    static {
+        // The course's worked example is offered by the applications, not listed by the library (see cli.Main).
+        Builders.register(new CentreMidpointBuilder().name(), CentreMidpointBuilder::new);
     }
 
     /** The library's traversal, recorded for the stepper. */

@@ -57,6 +57,21 @@ class ArchitectureTest {
         assertThat(upwardUses(graph)).containsExactly("build (library) uses examples (course)");
     }
 
+    /** A services file is a use no import shows: the library's may name only library classes (the course example is registered by the applications). */
+    @Test void theLibrarysServicesFilesNameNoHigherRoom() throws java.io.IOException {
+        Path services = Path.of("src/main/resources/META-INF/services");
+        Map<String, Integer> room = Rooms.indexOfPackage();
+        List<String> wrong = new ArrayList<>();
+        if (java.nio.file.Files.isDirectory(services)) try (var files = java.nio.file.Files.list(services)) {
+            for (Path f : files.toList())
+                for (String line : java.nio.file.Files.readAllLines(f)) {
+                    Matcher m = Pattern.compile("^org\\.kdtree\\.([a-z0-9]+)\\.").matcher(line.trim());
+                    if (m.find() && room.getOrDefault(m.group(1), 0) > 0) wrong.add(f.getFileName() + " names " + line.trim());
+                }
+        }
+        assertThat(wrong).as("services files of src/main naming course or application classes").isEmpty();
+    }
+
     private static List<String> upwardUses(Map<String, ? extends Map<String, Integer>> uses) {
         Map<String, Integer> room = Rooms.indexOfPackage();
         List<String> wrong = new ArrayList<>();
