@@ -22,9 +22,9 @@ import picocli.CommandLine.Command;
 import picocli.CommandLine.Mixin;
 import picocli.CommandLine.Option;
 import picocli.CommandLine.Parameters;
-import org.kdtree.tradeoff.RayBatch;
-import org.kdtree.tradeoff.RaySet;
-import org.kdtree.tradeoff.Timing;
+import org.kdtree.measure.RayBatch;
+import org.kdtree.measure.RaySet;
+import org.kdtree.measure.Timing;
 
 /**
  * {@code raycast MESH.obj}: the ray-casting benchmark of docs/benchmark-spec.md, or, with

@@ -9,7 +9,7 @@ import org.kdtree.build.KdTreeBuilder;
 import org.kdtree.build.Supervisor;
 import org.kdtree.io.BundledScenes;
 import org.kdtree.io.PrimitivesReader;
-import org.kdtree.tradeoff.Timing;
+import org.kdtree.measure.Timing;
 import org.kdtree.limits.Limits;
 import org.kdtree.render.RenderJob;
 import org.kdtree.shape.Primitives;

@@ -24,7 +24,7 @@ final class Rooms {
                 "points", "collide", "scene", "io"));
         rooms.put("rendering", List.of("render"));
         rooms.put("course", List.of("check", "examples"));
-        rooms.put("applications", List.of("tradeoff", "gui", "cli"));
+        rooms.put("applications", List.of("measure", "tradeoff", "gui", "cli"));
         return rooms;
     }
 

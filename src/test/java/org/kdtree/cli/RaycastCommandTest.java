@@ -19,7 +19,7 @@ import org.kdtree.shape.TriangleMesh;
 import org.kdtree.traverse.BruteForce;
 import org.kdtree.traverse.Hit;
 import org.kdtree.traverse.TriangleIntersector;
-import org.kdtree.tradeoff.RaySet;
+import org.kdtree.measure.RaySet;
 
 class RaycastCommandTest {
     @TempDir Path dir;

@@ -1,4 +1,4 @@
-package org.kdtree.tradeoff;
+package org.kdtree.measure;
 
 /** The benchmark's random numbers: splitmix64 (bench SPEC, ray set R), bit for bit. */
 final class SplitMix64 {

@@ -1,4 +1,4 @@
-package org.kdtree.tradeoff;
+package org.kdtree.measure;
 
 import static org.assertj.core.api.Assertions.assertThat;
 
