@@ -115,6 +115,9 @@ final class NearestStepperPanel extends JPanel implements CanvasOverlay {
     public void setK(int k) { kSpinner.setValue(WorkbenchLimits.STEPPER_K.check("k", k)); }
 
     /** Shows the first step. */
+    /** The stepping itself, for the workbench's menu. */
+    StepControls controls() { return controls; }
+
     public void first() { controls.first(); }
 
     /** Shows the step before the current one. */

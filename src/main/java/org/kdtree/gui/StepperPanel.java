@@ -90,6 +90,9 @@ final class StepperPanel extends JPanel implements CanvasOverlay {
     public int index() { return controls.index(); }
 
     /** Shows the first step. */
+    /** The stepping itself, for the workbench's menu. */
+    StepControls controls() { return controls; }
+
     public void first() { controls.first(); }
     /** Shows the step before. */
     public void back() { controls.back(); }
