@@ -114,23 +114,8 @@ final class NearestStepperPanel extends JPanel implements CanvasOverlay {
      */
     public void setK(int k) { kSpinner.setValue(WorkbenchLimits.STEPPER_K.check("k", k)); }
 
-    /** Shows the first step. */
-    /** The stepping itself, for the workbench's menu. */
+    /** The stepping itself (first, back, forward, last, play), for the workbench's menu and the panel's buttons. */
     StepControls controls() { return controls; }
-
-    public void first() { controls.first(); }
-
-    /** Shows the step before the current one. */
-    public void back() { controls.back(); }
-
-    /** Shows the step after the current one. */
-    public void forward() { controls.forward(); }
-
-    /** Shows the last step: the result. */
-    public void last() { controls.last(); }
-
-    /** Plays the search a step at a time, or pauses it. */
-    public void togglePlay() { controls.togglePlay(); }
 
     private void reject(String why) {
         rejection.setText(why == null ? " " : why);

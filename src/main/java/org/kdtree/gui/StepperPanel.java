@@ -89,20 +89,8 @@ final class StepperPanel extends JPanel implements CanvasOverlay {
     /** {@return the step shown} */
     public int index() { return controls.index(); }
 
-    /** Shows the first step. */
-    /** The stepping itself, for the workbench's menu. */
+    /** The stepping itself (first, back, forward, last, play), for the workbench's menu and the panel's buttons. */
     StepControls controls() { return controls; }
-
-    public void first() { controls.first(); }
-    /** Shows the step before. */
-    public void back() { controls.back(); }
-    /** Shows the step after. */
-    public void forward() { controls.forward(); }
-    /** Shows the last step. */
-    public void last() { controls.last(); }
-
-    /** Starts or stops playing through the steps. */
-    public void togglePlay() { controls.togglePlay(); }
 
     private void retrace() {
         KdTree tree = model.tree();
