@@ -13,7 +13,7 @@ import org.kdtree.traverse.TriangleIntersector;
 import org.kdtree.tree.KdTree;
 
 /** Loads a mesh (an OBJ file, or by default a bundled scene), builds a tree, traces a ray, prints the statistics. */
-final class LibraryExample {
+public final class LibraryExample {
     private LibraryExample() {
     }
 

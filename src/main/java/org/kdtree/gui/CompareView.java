@@ -176,7 +176,7 @@ final class CompareView extends JPanel {
             tree = t;
             ray = r;
             trace = tr;
-            voxels = r == null ? null : StepperPanel.voxelIndex(t);
+            voxels = r == null ? null : StepperVoxels.of(t);
             repaint();
         }
 
