@@ -2,8 +2,8 @@ package org.kdtree.bench;
 
 import java.util.concurrent.TimeUnit;
 import org.kdtree.shape.TriangleMesh;
-import org.kdtree.tradeoff.RaySet;
-import org.kdtree.tradeoff.RayBatch;
+import org.kdtree.measure.RaySet;
+import org.kdtree.measure.RayBatch;
 import org.kdtree.traverse.TriangleIntersector;
 import org.kdtree.traverse.Traverser;
 import org.openjdk.jmh.annotations.Benchmark;

@@ -7,7 +7,7 @@ import java.util.Arrays;
  * (the clipped bounds of every primitive on every axis), count the primitives on each side by
  * scanning all of them. O(|T|^2) per node: the reference the faster searches must match.
  */
-public final class NaivePlaneSearch implements PlaneSearch {
+final class NaivePlaneSearch implements PlaneSearch {
     @Override public void search(BuildNode node, SahCost sah, SahSplit best) {
         int n = node.size();
         for (int axis = 0; axis < node.dimension(); axis++) {

@@ -16,7 +16,7 @@ import org.kdtree.tree.CostModel;
  * area {@code 2 (face_n + w * side_n)}, where {@code face_n} is the product of the other extents
  * and {@code side_n} the sum of the products of all extents but n and one other.
  */
-public final class SahCost {
+final class SahCost {
     private final CostModel model;
     private final double lambda;
     private final int k;

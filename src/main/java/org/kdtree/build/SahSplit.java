@@ -7,7 +7,7 @@ import org.kdtree.geom.SplitPlane;
  * in the order axis 0, 1, ..., then increasing position, then planar-left before planar-right,
  * so that every algorithm picks the same plane among equal costs.
  */
-public final class SahSplit {
+final class SahSplit {
     private int axis = -1;
     private double position;
     private boolean planarLeft;

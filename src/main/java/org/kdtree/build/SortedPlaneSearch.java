@@ -10,7 +10,7 @@ import java.util.Arrays;
  * <p>The three event kinds are sorted as separate primitive arrays and merged during the sweep,
  * which keeps the order "ends, then planars, then starts" at equal positions.
  */
-public final class SortedPlaneSearch implements PlaneSearch {
+final class SortedPlaneSearch implements PlaneSearch {
     @Override public void search(BuildNode node, SahCost sah, SahSplit best) {
         int n = node.size();
         double[] starts = new double[n], ends = new double[n], planars = new double[n];

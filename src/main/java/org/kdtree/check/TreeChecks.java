@@ -12,7 +12,7 @@ import org.kdtree.tree.KdTree;
  * Coordinates are compared with a margin of {@link org.kdtree.geom.Tolerance#CHECK_MARGIN} of the scene's size, so that rounding in
  * the sample points never raises a false alarm.
  */
-public final class TreeChecks {
+final class TreeChecks {
     private TreeChecks() {
     }
 

@@ -7,7 +7,7 @@ import org.kdtree.tree.KdTree;
 import org.kdtree.tree.TreeVisitor;
 
 /** The nodes of a tree as plain objects, for checking its invariants (the contract, the grading). */
-public final class TreeInspector {
+final class TreeInspector {
     /**
      * A leaf.
      * @param node its node index

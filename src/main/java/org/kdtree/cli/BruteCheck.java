@@ -10,7 +10,7 @@ import org.kdtree.traverse.TriangleIntersector;
 import org.kdtree.traverse.Hit;
 import org.kdtree.traverse.RayQuery;
 import org.kdtree.traverse.Traverser;
-import org.kdtree.tradeoff.RaySet;
+import org.kdtree.measure.RaySet;
 
 /**
  * The hidden {@code raycast --verify STRIDE}: traces every STRIDE-th ray of a set both by brute

@@ -26,7 +26,7 @@ import picocli.CommandLine.Model.OptionSpec;
  * its own default builder; picocli's model transformer adds the options to the command.
  */
 @Command(modelTransformer = BuilderOptions.AddOptions.class)
-public final class BuilderOptions {
+final class BuilderOptions {
     private final String defaultBuilder;
     private final String role;
     private String builder;

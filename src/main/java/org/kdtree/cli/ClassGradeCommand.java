@@ -30,7 +30,7 @@ import picocli.CommandLine.Parameters;
                 + "unbounded allocation ends only that student's run), several at once, into one table (CSV and Markdown): "
                 + "one row per jar, failures first.",
                 "Exit code 0 once the table is written, whatever the verdicts."})
-public final class ClassGradeCommand implements Callable<Integer> {
+final class ClassGradeCommand implements Callable<Integer> {
     @Parameters(paramLabel = "FOLDER", description = "The students' jars (every .jar file in it; other files are not looked at).")
     Path folder;
 

@@ -33,7 +33,7 @@ import picocli.CommandLine.Option;
                 "Every builder runs under supervision: a call that does not return within --call-deadline is stopped "
                         + "and reported as hung, a build past --build-deadline as slow, and the checks after it are not run.",
                 "Exit code 0 if it honours the contract, 1 if not."})
-public final class GradeCommand implements Callable<Integer> {
+final class GradeCommand implements Callable<Integer> {
     /** The built-ins a student's builder is measured against. */
     static final List<String> BUILT_INS = List.of("median-plane", "object-median", "sah");
 

@@ -176,7 +176,7 @@ final class KnnStudyCommand implements Callable<Integer> {
         table.finish(NeighbourStudy.csv(results));
         String caption = ChartFile.caption(String.format(Locale.ROOT, "%s: %,d points, %d-D, %,d queries, k %d, builder %s; median of %d run%s",
                 dataName(), tree.size(), tree.dimension(), queries.size(), k, b.name(), runs, runs == 1 ? "" : "s"), 1);
-        NeighbourChart.write(results, dataName() + ": recall at k = " + k + " against queries per second", caption, chartFile());
+        ChartFile.write(NeighbourChart.chart(results, dataName() + ": recall at k = " + k + " against queries per second"), caption, chartFile());
         System.out.println("wrote " + csvFile() + " and " + chartFile());
         return 0;
     }
@@ -212,8 +212,8 @@ final class KnnStudyCommand implements Callable<Integer> {
         table.finish(DimensionSweep.csv(results));
         String caption = ChartFile.caption(String.format(Locale.ROOT, "%s points: %,d, %,d queries, k %d, builder %s; median of %d run%s",
                 kind().label(), n, queryCount, k, b.name(), runs, runs == 1 ? "" : "s"), 1);
-        DimensionChart.write(results, "Where kd-trees stop helping: exact search against brute force (" + kind().label() + ")",
-                caption, chartFile());
+        ChartFile.write(DimensionChart.chart(results, "Where kd-trees stop helping: exact search against brute force ("
+                + kind().label() + ")"), caption, chartFile());
         System.out.println("wrote " + csvFile() + " and " + chartFile());
         return 0;
     }

@@ -4,6 +4,7 @@ import java.nio.file.Path;
 import java.util.ArrayList;
 import java.util.List;
 import org.kdtree.build.Builders;
+import org.kdtree.examples.CentreMidpointBuilder;
 import picocli.CommandLine;
 import picocli.CommandLine.Command;
 import picocli.CommandLine.Option;
@@ -26,6 +27,15 @@ public final class Main implements Runnable {
     List<Path> plugins;
 
     /**
+     * Offers the course's worked example ({@code -b centre-midpoint}, {@code grade}, the workbench,
+     * the trade-off study) here, in the application, rather than in the library's services file: a
+     * library user's {@code Builders.names()} lists the library's builders and plug-ins only.
+     */
+    static void registerTheCourseExample() {
+        Builders.register(new CentreMidpointBuilder().name(), CentreMidpointBuilder::new);
+    }
+
+    /**
      * Runs the command line and exits with its code, unless it opened the workbench and succeeded
      * (then the window keeps the JVM running).
      *
@@ -43,6 +53,7 @@ public final class Main implements Runnable {
      * @return the exit code: 0 on success, nonzero on failure
      */
     public static int run(String... args) {
+        registerTheCourseExample();
         CommandLine cl = new CommandLine(new Main());
         try {
             args = loadPlugins(args);

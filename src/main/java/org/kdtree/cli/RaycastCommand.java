@@ -22,9 +22,9 @@ import picocli.CommandLine.Command;
 import picocli.CommandLine.Mixin;
 import picocli.CommandLine.Option;
 import picocli.CommandLine.Parameters;
-import org.kdtree.tradeoff.RayBatch;
-import org.kdtree.tradeoff.RaySet;
-import org.kdtree.tradeoff.Timing;
+import org.kdtree.measure.RayBatch;
+import org.kdtree.measure.RaySet;
+import org.kdtree.measure.Timing;
 
 /**
  * {@code raycast MESH.obj}: the ray-casting benchmark of docs/benchmark-spec.md, or, with
@@ -58,11 +58,8 @@ final class RaycastCommand implements Callable<Integer> {
     @Option(names = "--hits", paramLabel = "FILE", description = "Where --rays writes its hits ('-' for standard output).")
     Path hitsFile;
 
-    @Option(names = "--runs", defaultValue = "5", description = "Timed runs; the median is reported (default: ${DEFAULT-VALUE}).")
-    int runs;
-
-    @Option(names = "--warmup", defaultValue = "2", description = "Untimed runs first (default: ${DEFAULT-VALUE}).")
-    int warmup;
+    @Mixin
+    TimedRunsOptions timed = new TimedRunsOptions(5, 2);
 
     @Option(names = "--verify", paramLabel = "STRIDE",
             description = "Also trace every STRIDE-th ray of each set by brute force and compare (stderr; slow by design).")
@@ -77,8 +74,7 @@ final class RaycastCommand implements Callable<Integer> {
     @Override public Integer call() throws Exception {
         if ((raysFile == null) != (hitsFile == null))
             throw new IllegalArgumentException("--rays and --hits go together");
-        Limits.RUNS.check("--runs", runs);
-        Limits.WARMUP.check("--warmup", warmup);
+        timed.check();
         Limits.GRID.check("--grid", grid);
         BuilderSpec spec = options.spec();
         if (hitsFile != null && !hitsFile.toString().equals("-")) {
@@ -109,20 +105,20 @@ final class RaycastCommand implements Callable<Integer> {
     }
 
     private int benchmark(TriangleMesh scene, KdTreeBuilder builder) throws Exception {
-        int passes = warmup + runs;
+        int passes = timed.warmup + timed.runs;
         Timing.Timed<KdTree> build;
         Timing.Timed<RayBatch.Checksum> pr, rr;
         RaySet p, r;
         TriangleIntersector tris = new TriangleIntersector(scene);
         Supervisor supervisor = deadlines.supervisor();
         try (ProgressBar bar = progress.bar(3 * passes, "steps")) {
-            build = Timing.median(warmup, runs, steps(bar, 0, "build"), () -> supervisor.build(builder, scene));
+            build = Timing.median(timed.warmup, timed.runs, steps(bar, 0, "build"), () -> supervisor.build(builder, scene));
             p = RaySet.primary(scene, RaySet.SPEC_IMAGE);
             r = RaySet.random(scene, RaySet.SPEC_RANDOM_RAYS);
             KdTree built = build.value();
             try (RayBatch batch = new RayBatch(threads, () -> new Traverser(built, tris))) {
-                pr = Timing.median(warmup, runs, steps(bar, passes, "P rays"), () -> batch.trace(p));
-                rr = Timing.median(warmup, runs, steps(bar, 2 * passes, "R rays"), () -> batch.trace(r));
+                pr = Timing.median(timed.warmup, timed.runs, steps(bar, passes, "P rays"), () -> batch.trace(p));
+                rr = Timing.median(timed.warmup, timed.runs, steps(bar, 2 * passes, "R rays"), () -> batch.trace(r));
             }
         }
         KdTree tree = build.value();

@@ -9,7 +9,7 @@ import org.kdtree.build.KdTreeBuilder;
 import org.kdtree.build.Supervisor;
 import org.kdtree.io.BundledScenes;
 import org.kdtree.io.PrimitivesReader;
-import org.kdtree.tradeoff.Timing;
+import org.kdtree.measure.Timing;
 import org.kdtree.limits.Limits;
 import org.kdtree.render.RenderJob;
 import org.kdtree.shape.Primitives;
@@ -32,11 +32,8 @@ final class StatsCommand implements Callable<Integer> {
     @Mixin
     BuilderOptions options = new BuilderOptions("sah");
 
-    @Option(names = "--runs", defaultValue = "1", description = "Timed builds; the median is reported (default: ${DEFAULT-VALUE}).")
-    int runs;
-
-    @Option(names = "--warmup", defaultValue = "0", description = "Untimed builds first, to warm up the JVM (default: ${DEFAULT-VALUE}).")
-    int warmup;
+    @Mixin
+    TimedRunsOptions timed = new TimedRunsOptions(1, 0);
 
     @Option(names = "--grid", defaultValue = "1", paramLabel = "N",
             description = "OBJ only: repeat the mesh in an N x N grid on the x-z plane first (the SPEC's scaling scene uses 4).")
@@ -49,8 +46,7 @@ final class StatsCommand implements Callable<Integer> {
     DeadlineOptions deadlines;
 
     @Override public Integer call() throws Exception {
-        Limits.RUNS.check("--runs", runs);
-        Limits.WARMUP.check("--warmup", warmup);
+        timed.check();
         Limits.GRID.check("--grid", grid);
         BuilderSpec spec = options.spec();
         Primitives prims = PrimitivesReader.read(BundledScenes.resolve(scene));
@@ -62,15 +58,15 @@ final class StatsCommand implements Callable<Integer> {
         Primitives scenePrims = prims;
         Supervisor supervisor = deadlines.supervisor();
         Timing.Timed<KdTree> build;
-        try (ProgressBar bar = progress.bar(warmup + runs, "builds")) {
-            build = Timing.median(warmup, runs, (i, warmUp) -> bar.step(i, warmUp ? "warm-up build" : "timed build"),
+        try (ProgressBar bar = progress.bar(timed.warmup + timed.runs, "builds")) {
+            build = Timing.median(timed.warmup, timed.runs, (i, warmUp) -> bar.step(i, warmUp ? "warm-up build" : "timed build"),
                     () -> supervisor.build(builder, scenePrims));
         }
         KdTree tree = build.value();
         System.out.printf(Locale.ROOT, "scene: %s (%s, %d-D)%n", scene, RenderJob.count(prims.size(), "primitive"), prims.dimension());
         System.out.printf(Locale.ROOT, "builder: %s (%s)%n", builder.name(), builder.describeSettings());
         System.out.printf(Locale.ROOT, "build time: %.1f ms%s%n", build.millis(),
-                runs > 1 ? " (median of " + runs + ", after " + warmup + " warm-up)" : "");
+                timed.runs > 1 ? " (median of " + timed.runs + ", after " + timed.warmup + " warm-up)" : "");
         System.out.println(tree.stats().describe());
         if (tree.budgetLeaves() > 0)
             System.out.printf(Locale.ROOT, "note: the reference budget (%d per primitive, --reference-budget) made %d %s early%n",

@@ -10,7 +10,7 @@ import org.kdtree.limits.Limits;
 import org.kdtree.generate.MeshGrid;
 import org.kdtree.shape.TriangleMesh;
 import org.kdtree.tradeoff.ChartFile;
-import org.kdtree.tradeoff.RaySet;
+import org.kdtree.measure.RaySet;
 import org.kdtree.tradeoff.Tradeoff;
 import org.kdtree.tradeoff.TradeoffChart;
 import org.kdtree.tradeoff.TradeoffResult;

@@ -26,7 +26,7 @@ import org.kdtree.build.Setting;
  * spec (which would refuse them); each spinner takes its row's range, states it in its tooltip and,
  * for a typed value outside it, says so below instead of reverting silently.
  */
-public final class BuilderPanel extends JPanel {
+final class BuilderPanel extends JPanel {
     /**
      * The settings the workbench does not offer: a preset (the controls set what it would, and
      * would override it) and threads (its scenes build in milliseconds on one; the tree is the same).

@@ -22,7 +22,6 @@ import javax.swing.JSpinner;
 import javax.swing.Timer;
 import org.kdtree.collide.BallSimulation;
 import org.kdtree.geom.Box;
-import org.kdtree.limits.Limits;
 import org.kdtree.shape.Scene2D;
 import org.kdtree.tree.KdTree;
 
@@ -52,7 +51,7 @@ final class CollisionsView extends JPanel {
     /** The panel the balls and objects are drawn in. */
     private final Arena arena = new Arena();
     /** The number of balls to drop. */
-    private final JSpinner count = LimitedSpinner.of(Limits.BALLS, "balls", 300, 50, this::reject);
+    private final JSpinner count = LimitedSpinner.of(WorkbenchLimits.BALLS, "balls", 300, 50, this::reject);
     /** Starts or stops the balls. */
     private final JButton start = Widgets.button("Start", "collide.start", "Start or stop the balls (Ctrl+Shift+B)", this::toggle);
     /** Frames simulated since the balls were dropped. */
@@ -98,7 +97,7 @@ final class CollisionsView extends JPanel {
         controls.add(Widgets.button("Reset", "collide.reset", "Drop the balls again from above the scene (Ctrl+Shift+R)", this::reset));
         controls.add(new JLabel("balls"));
         count.setName("collide.balls");
-        count.setToolTipText("How many balls fall (a change drops them again); " + LimitedSpinner.allowed(Limits.BALLS));
+        count.setToolTipText("How many balls fall (a change drops them again); " + LimitedSpinner.allowed(WorkbenchLimits.BALLS));
         count.addChangeListener(e -> reset());
         controls.add(count);
         for (JLabel l : new JLabel[] {frameLabel, testsLabel, bruteLabel, ratioLabel}) controls.add(l);

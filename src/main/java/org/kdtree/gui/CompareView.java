@@ -24,7 +24,7 @@ import org.kdtree.tree.TreeStats;
  * and Kmaxdepth: each tree drawn, its statistics, and the cast ray's traversal cost in it. Each
  * column chooses its builder among all registered ones (a student's too).
  */
-public final class CompareView extends JPanel {
+final class CompareView extends JPanel {
     /** The builders the columns show at first, in column order. */
     public static final List<String> DEFAULT_BUILDERS = List.of("median-plane", "object-median", "sah");
 
@@ -176,7 +176,7 @@ public final class CompareView extends JPanel {
             tree = t;
             ray = r;
             trace = tr;
-            voxels = r == null ? null : StepperPanel.voxelIndex(t);
+            voxels = r == null ? null : StepperVoxels.of(t);
             repaint();
         }
 

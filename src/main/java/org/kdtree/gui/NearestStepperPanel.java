@@ -15,7 +15,6 @@ import javax.swing.JPanel;
 import javax.swing.JSpinner;
 import org.kdtree.collide.ShapeCollider;
 import org.kdtree.geom.Box;
-import org.kdtree.limits.Limits;
 import org.kdtree.shape.Scene2D;
 import org.kdtree.tree.KdTree;
 
@@ -51,15 +50,13 @@ final class NearestStepperPanel extends JPanel implements CanvasOverlay {
     /** Why a typed k is refused, or blank. */
     private final JLabel rejection = Widgets.label("knn.rejection", "Why a typed k is refused");
     /** The k searched for. */
-    private final JSpinner kSpinner = LimitedSpinner.of(Limits.STEPPER_K, "k", 3, 1, this::reject);
+    private final JSpinner kSpinner = LimitedSpinner.of(WorkbenchLimits.STEPPER_K, "k", 3, 1, this::reject);
     /** The recorded search of the current query. */
     private NearestTrace trace = NearestTrace.EMPTY;
     /** Nodes entered, and nodes pruned, up to the step shown. */
     private BitSet entered = new BitSet(), pruned = new BitSet();
-    /** The voxel of each node of {@link #voxelsOf}. */
-    private Box[] voxels = new Box[0];
-    /** The tree {@link #voxels} belong to. */
-    private KdTree voxelsOf;
+    /** The voxels of the tree searched. */
+    private final StepperVoxels voxels = new StepperVoxels();
     /** Exact distances from the query to the objects of {@link #colliderOf}. */
     private ShapeCollider collider;
     /** The scene {@link #collider} measures. */
@@ -81,7 +78,7 @@ final class NearestStepperPanel extends JPanel implements CanvasOverlay {
         JPanel buttons = controls.bar();
         buttons.add(new JLabel("k"));
         kSpinner.setName("knn.k");
-        kSpinner.setToolTipText("How many nearest objects to search for; " + LimitedSpinner.allowed(Limits.STEPPER_K));
+        kSpinner.setToolTipText("How many nearest objects to search for; " + LimitedSpinner.allowed(WorkbenchLimits.STEPPER_K));
         kSpinner.addChangeListener(e -> retrace());
         buttons.add(kSpinner);
         buttons.add(Widgets.button("Clear", "knn.clear", "Remove the query point (Ctrl+Shift+K)", model::clearQuery));
@@ -109,26 +106,14 @@ final class NearestStepperPanel extends JPanel implements CanvasOverlay {
     public int k() { return ((Number) kSpinner.getValue()).intValue(); }
 
     /**
-     * Sets k (within {@link Limits#STEPPER_K}) and searches again.
+     * Sets k (within {@link WorkbenchLimits#STEPPER_K}) and searches again.
      *
      * @param k the number of neighbours
      */
-    public void setK(int k) { kSpinner.setValue(Limits.STEPPER_K.check("k", k)); }
+    public void setK(int k) { kSpinner.setValue(WorkbenchLimits.STEPPER_K.check("k", k)); }
 
-    /** Shows the first step. */
-    public void first() { controls.first(); }
-
-    /** Shows the step before the current one. */
-    public void back() { controls.back(); }
-
-    /** Shows the step after the current one. */
-    public void forward() { controls.forward(); }
-
-    /** Shows the last step: the result. */
-    public void last() { controls.last(); }
-
-    /** Plays the search a step at a time, or pauses it. */
-    public void togglePlay() { controls.togglePlay(); }
+    /** The stepping itself (first, back, forward, last, play), for the workbench's menu and the panel's buttons. */
+    StepControls controls() { return controls; }
 
     private void reject(String why) {
         rejection.setText(why == null ? " " : why);
@@ -141,9 +126,8 @@ final class NearestStepperPanel extends JPanel implements CanvasOverlay {
             colliderOf = model.scene();
             collider = new ShapeCollider(colliderOf);
         }
-        if (trace.size() > 0 && voxelsOf != tree) {   // only with a query: a large tree's index is not free
-            voxels = StepperPanel.voxelIndex(tree);
-            voxelsOf = tree;
+        if (trace.size() > 0 && !voxels.isOf(tree)) {   // only with a query: a large tree's index is not free
+            voxels.index(tree);
         }
         controls.reset(trace.size());
         resultLabel.setText(resultText());
@@ -219,34 +203,33 @@ final class NearestStepperPanel extends JPanel implements CanvasOverlay {
         };
     }
 
-
     // ---- drawing on the canvas ----
 
     @Override public void paint(Graphics2D g, ViewTransform v) {
         double[] q = model.query();
-        if (q == null || !isVisible() || trace.size() == 0 || voxelsOf != model.tree()) return;   // hidden tab: not drawn
+        if (q == null || !isVisible() || trace.size() == 0 || !voxels.isOf(model.tree())) return;   // hidden tab: not drawn
         NearestTrace.Step s = trace.step(controls.index());
         for (int n = entered.nextSetBit(0); n >= 0; n = entered.nextSetBit(n + 1))
-            if (model.tree().isLeaf(n)) fill(g, v, n, ENTERED);
+            if (model.tree().isLeaf(n)) voxels.fill(g, v, n, ENTERED);
         g.setStroke(DASHED);
         for (int n = pruned.nextSetBit(0); n >= 0; n = pruned.nextSetBit(n + 1)) {
-            fill(g, v, n, PRUNED_FILL);
-            outline(g, v, n, Palette.PRUNED, DASHED);
+            voxels.fill(g, v, n, PRUNED_FILL);
+            voxels.outline(g, v, n, Palette.PRUNED, DASHED);
         }
         if (s.near() >= 0) {
-            fill(g, v, s.near(), NEAR_TINT);
-            fill(g, v, s.far(), FAR_TINT);
+            voxels.fill(g, v, s.near(), NEAR_TINT);
+            voxels.fill(g, v, s.far(), FAR_TINT);
         }
         if (s.node() >= 0) {
             Color c = s.kind() == NearestTrace.Kind.PRUNE ? Palette.PRUNED : Palette.CURRENT_NODE;
-            outline(g, v, s.node(), c, THICK);
-            if (!Double.isNaN(s.bound()) && s.node() < voxels.length && voxels[s.node()] != null) {
-                Box b = voxels[s.node()];   // the voxel's point nearest the query: its distance is the bound
+            voxels.outline(g, v, s.node(), c, THICK);
+            if (!Double.isNaN(s.bound()) && voxels.voxel(s.node()) != null) {
+                Box b = voxels.voxel(s.node());   // the voxel's point nearest the query: its distance is the bound
                 double bx = Math.min(Math.max(q[0], b.min(0)), b.max(0)), by = Math.min(Math.max(q[1], b.min(1)), b.max(1));
                 g.setColor(c);
                 g.setStroke(THIN);
                 g.draw(TreeCanvas.line(v, q[0], q[1], bx, by));
-                dot(g, v, bx, by, c, 4);
+                StepperVoxels.dot(g, v, bx, by, c, 4);
             }
         }
         Scene2D scene = model.scene();
@@ -265,7 +248,7 @@ final class NearestStepperPanel extends JPanel implements CanvasOverlay {
                 g.setColor(Palette.TESTED);
                 g.setStroke(THIN);
                 g.draw(TreeCanvas.line(v, q[0], q[1], s.closestX(), s.closestY()));
-                dot(g, v, s.closestX(), s.closestY(), Palette.TESTED, 4);
+                StepperVoxels.dot(g, v, s.closestX(), s.closestY(), Palette.TESTED, 4);
             }
         }
         if (Double.isFinite(s.kth())) {
@@ -274,26 +257,6 @@ final class NearestStepperPanel extends JPanel implements CanvasOverlay {
             g.setStroke(DASHED);
             g.draw(new Ellipse2D.Double(v.screenX(q[0]) - r, v.screenY(q[1]) - r, 2 * r, 2 * r));
         }
-        dot(g, v, q[0], q[1], Palette.QUERY, 5);
+        StepperVoxels.dot(g, v, q[0], q[1], Palette.QUERY, 5);
     }
-
-    private void fill(Graphics2D g, ViewTransform v, int node, Color c) {
-        if (node < 0 || node >= voxels.length || voxels[node] == null) return;
-        g.setColor(c);
-        g.fill(TreePainter.rect(v, voxels[node]));
-    }
-
-    private void outline(Graphics2D g, ViewTransform v, int node, Color c, BasicStroke stroke) {
-        if (node < 0 || node >= voxels.length || voxels[node] == null) return;
-        g.setColor(c);
-        g.setStroke(stroke);
-        g.draw(TreePainter.rect(v, voxels[node]));
-    }
-
-    private static void dot(Graphics2D g, ViewTransform v, double x, double y, Color c, double r) {
-        g.setColor(c);
-        g.fill(new Ellipse2D.Double(v.screenX(x) - r, v.screenY(y) - r, 2 * r, 2 * r));
-    }
-
-
 }

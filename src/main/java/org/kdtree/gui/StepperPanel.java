@@ -5,7 +5,6 @@ import java.awt.BorderLayout;
 import java.awt.Color;
 import java.awt.Graphics2D;
 import java.awt.GridLayout;
-import java.awt.geom.Ellipse2D;
 import java.util.Locale;
 import java.util.stream.Collectors;
 import javax.swing.BorderFactory;
@@ -54,10 +53,8 @@ final class StepperPanel extends JPanel implements CanvasOverlay {
     private final JLabel resultLabel = Widgets.label("step.result", "The closest hit and the ray's traversal cost");
     /** The recorded traversal of the current ray. */
     private TraversalTrace trace = TraversalTrace.EMPTY;
-    /** The voxel of each node of {@link #voxelsOf}. */
-    private Box[] voxels = new Box[0];
-    /** The tree {@link #voxels} belong to. */
-    private KdTree voxelsOf;
+    /** The voxels of the tree shown. */
+    private final StepperVoxels voxels = new StepperVoxels();
     /** The step buttons and slider; they keep the step shown. */
     private final StepControls controls = new StepControls("step", "traversal", "Ctrl", this::showStep);
 
@@ -89,24 +86,14 @@ final class StepperPanel extends JPanel implements CanvasOverlay {
     /** {@return the step shown} */
     public int index() { return controls.index(); }
 
-    /** Shows the first step. */
-    public void first() { controls.first(); }
-    /** Shows the step before. */
-    public void back() { controls.back(); }
-    /** Shows the step after. */
-    public void forward() { controls.forward(); }
-    /** Shows the last step. */
-    public void last() { controls.last(); }
-
-    /** Starts or stops playing through the steps. */
-    public void togglePlay() { controls.togglePlay(); }
+    /** The stepping itself (first, back, forward, last, play), for the workbench's menu and the panel's buttons. */
+    StepControls controls() { return controls; }
 
     private void retrace() {
         KdTree tree = model.tree();
         trace = recorder.record(tree, model.scene(), model.ray());
-        if (voxelsOf != tree) {
-            voxels = voxelIndex(tree);
-            voxelsOf = tree;
+        if (!voxels.isOf(tree)) {
+            voxels.index(tree);
         }
         controls.reset(trace.size());
         resultLabel.setText(resultText());
@@ -170,7 +157,6 @@ final class StepperPanel extends JPanel implements CanvasOverlay {
         };
     }
 
-
     // ---- drawing on the canvas ----
 
     @Override public void paint(Graphics2D g, ViewTransform v) {
@@ -181,49 +167,35 @@ final class StepperPanel extends JPanel implements CanvasOverlay {
         g.setColor(Palette.RAY);
         g.setStroke(new BasicStroke(1.5f));
         g.draw(TreeCanvas.line(v, ray[0], ray[1], ray[0] + tEnd * ray[2], ray[1] + tEnd * ray[3]));
-        dot(g, v, ray[0], ray[1], Palette.RAY, 4);
-        if (trace.size() == 0 || voxelsOf != tree) return;
+        StepperVoxels.dot(g, v, ray[0], ray[1], Palette.RAY, 4);
+        if (trace.size() == 0 || !voxels.isOf(tree)) return;
         TraversalTrace.Step s = trace.step(controls.index());
         BasicStroke dashed = new BasicStroke(2f, BasicStroke.CAP_BUTT, BasicStroke.JOIN_MITER, 10, new float[] {6, 4}, 0);
-        for (TraversalTrace.Entry e : s.stack()) outline(g, v, e.node(), Palette.STACKED, dashed);
+        for (TraversalTrace.Entry e : s.stack()) voxels.outline(g, v, e.node(), Palette.STACKED, dashed);
         if (s.near() >= 0) {
             tint(g, v, s.near(), Palette.NEAR_CHILD);
             tint(g, v, s.far(), Palette.FAR_CHILD);
         }
-        if (s.node() >= 0) outline(g, v, s.node(), Palette.CURRENT_NODE, new BasicStroke(3f));
+        if (s.node() >= 0) voxels.outline(g, v, s.node(), Palette.CURRENT_NODE, new BasicStroke(3f));
         if (!Double.isNaN(s.tMin()) && !Double.isNaN(s.tMax())) {
             double a = Math.max(0, s.tMin()), b = Math.min(s.tMax(), tEnd);
             g.setColor(Palette.CURRENT_NODE);
             g.setStroke(new BasicStroke(5f, BasicStroke.CAP_ROUND, BasicStroke.JOIN_ROUND));
             if (b >= a) g.draw(TreeCanvas.line(v, ray[0] + a * ray[2], ray[1] + a * ray[3], ray[0] + b * ray[2], ray[1] + b * ray[3]));
         }
-        if (Double.isFinite(s.tSplit())) dot(g, v, ray[0] + s.tSplit() * ray[2], ray[1] + s.tSplit() * ray[3], Palette.FAR_CHILD, 5);
+        if (Double.isFinite(s.tSplit())) StepperVoxels.dot(g, v, ray[0] + s.tSplit() * ray[2], ray[1] + s.tSplit() * ray[3], Palette.FAR_CHILD, 5);
         Scene2D scene = model.scene();
         BasicStroke thick = new BasicStroke(3f);
         for (int obj : s.tested())
             if (obj < scene.size()) TreePainter.paintShape(g, scene.get(obj), v, Palette.TESTED, null, thick);
         if (s.bestObject() >= 0 && s.bestObject() < scene.size()) {
             TreePainter.paintShape(g, scene.get(s.bestObject()), v, Palette.HIT, null, thick);
-            dot(g, v, ray[0] + s.bestT() * ray[2], ray[1] + s.bestT() * ray[3], Palette.HIT, 5);
+            StepperVoxels.dot(g, v, ray[0] + s.bestT() * ray[2], ray[1] + s.bestT() * ray[3], Palette.HIT, 5);
         }
     }
 
     private void tint(Graphics2D g, ViewTransform v, int node, Color c) {
-        if (node < 0 || node >= voxels.length || voxels[node] == null) return;
-        g.setColor(new Color(c.getRed(), c.getGreen(), c.getBlue(), 70));
-        g.fill(TreePainter.rect(v, voxels[node]));
-    }
-
-    private void outline(Graphics2D g, ViewTransform v, int node, Color c, BasicStroke stroke) {
-        if (node < 0 || node >= voxels.length || voxels[node] == null) return;
-        g.setColor(c);
-        g.setStroke(stroke);
-        g.draw(TreePainter.rect(v, voxels[node]));
-    }
-
-    private static void dot(Graphics2D g, ViewTransform v, double x, double y, Color c, double r) {
-        g.setColor(c);
-        g.fill(new Ellipse2D.Double(v.screenX(x) - r, v.screenY(y) - r, 2 * r, 2 * r));
+        voxels.fill(g, v, node, new Color(c.getRed(), c.getGreen(), c.getBlue(), 70));
     }
 
     /** Where to stop drawing the ray: past the scene box, or at the drag's end if farther. */
@@ -237,16 +209,4 @@ final class StepperPanel extends JPanel implements CanvasOverlay {
             }
         return t;
     }
-
-    /** The voxel of every node, indexed by node. */
-    static Box[] voxelIndex(KdTree tree) {
-        Box[] out = new Box[tree.nodeCount()];
-        tree.walk(new org.kdtree.tree.TreeVisitor() {
-            @Override public void interior(int node, int depth, Box voxel, int axis, double split) { out[node] = voxel.copy(); }
-            @Override public void leaf(int node, int depth, Box voxel, int[] refs, int from, int to) { out[node] = voxel.copy(); }
-        });
-        return out;
-    }
-
-
 }

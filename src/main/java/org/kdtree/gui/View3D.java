@@ -32,7 +32,6 @@ import org.kdtree.build.Supervisor;
 import org.kdtree.io.PrimitivesReader;
 import org.kdtree.io.SceneReader;
 import org.kdtree.limits.Deadlines;
-import org.kdtree.limits.Limits;
 import org.kdtree.build.KdTreeBuilder;
 import org.kdtree.io.BundledScenes;
 import org.kdtree.render.Image;
@@ -51,7 +50,7 @@ import org.kdtree.tree.KdTree;
  * image shown as it fills in, then the render's statistics (rays by kind, times, the tree). An
  * OBJ mesh, which has no camera, gets its tree built and its statistics shown.
  */
-public final class View3D extends JPanel {
+final class View3D extends JPanel {
     /** Chooses the 3-D scene. */
     private final JComboBox<String> scene = new JComboBox<>();
     /** Chooses the builder. */
@@ -61,7 +60,7 @@ public final class View3D extends JPanel {
     /** What the view is doing, or blank. */
     private final JLabel status = new JLabel(" ");
     /** The image width in pixels. */
-    private final JSpinner width = LimitedSpinner.of(Limits.PREVIEW_WIDTH, "Width", 480, 16, this::reject);
+    private final JSpinner width = LimitedSpinner.of(WorkbenchLimits.PREVIEW_WIDTH, "Width", 480, 16, this::reject);
     /** Stops a build or render under way. */
     private final JButton stop = new JButton("Stop");
     /** The statistics of the last build or render. */
@@ -102,7 +101,7 @@ public final class View3D extends JPanel {
         builder.setToolTipText("The builder (with the Kt, Ki, lambda, Kmintri, Kmaxdepth of the 2-D view)");
         width.setName("view3d.width");
         width.setToolTipText("Image width in pixels (the height follows the scene's aspect ratio); "
-                + LimitedSpinner.allowed(Limits.PREVIEW_WIDTH));
+                + LimitedSpinner.allowed(WorkbenchLimits.PREVIEW_WIDTH));
         ((JSpinner.DefaultEditor) width.getEditor()).getTextField().setToolTipText(width.getToolTipText());
         fit.setName("view3d.fit");
         fit.setToolTipText("Scale the image to the panel (off: 1:1, with scroll bars)");

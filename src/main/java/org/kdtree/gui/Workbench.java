@@ -28,6 +28,7 @@ import javax.swing.SwingUtilities;
 import javax.swing.filechooser.FileNameExtensionFilter;
 import org.kdtree.build.BuilderSpec;
 import org.kdtree.build.Builders;
+import org.kdtree.examples.CentreMidpointBuilder;
 
 /**
  * The workbench window: the 2-D build canvas with its builder controls, statistics, tree view,
@@ -71,6 +72,11 @@ public final class Workbench extends JFrame {
     /** Builds the window on the built-in talk-figures scene (call on the event thread). */
     public Workbench() {
         this(RECORDER);
+    }
+
+    static {
+        // The course's worked example is offered by the applications, not listed by the library (see cli.Main).
+        Builders.register(new CentreMidpointBuilder().name(), CentreMidpointBuilder::new);
     }
 
     /** The library's traversal, recorded for the stepper. */
@@ -234,25 +240,11 @@ public final class Workbench extends JFrame {
         toolsMenu.setMnemonic('T');
         bar.add(toolsMenu);
 
-        JMenu trav = new JMenu("Traversal");
-        trav.setMnemonic('R');
-        trav.add(action("First step", ctrl(KeyEvent.VK_HOME), "Go to the first step", stepper::first));
-        trav.add(action("Step back", ctrl(KeyEvent.VK_LEFT), "Go one step back", stepper::back));
-        trav.add(action("Step forward", ctrl(KeyEvent.VK_RIGHT), "Go one step forward", stepper::forward));
-        trav.add(action("Last step", ctrl(KeyEvent.VK_END), "Go to the result", stepper::last));
-        trav.add(action("Play / pause", ctrl(KeyEvent.VK_P), "Play the traversal step by step", stepper::togglePlay));
-        trav.add(action("Clear ray", ctrl(KeyEvent.VK_K), "Remove the cast ray", model::clearRay));
-        bar.add(trav);
-
-        JMenu knn = new JMenu("Nearest");
-        knn.setMnemonic('N');
-        knn.add(action("First step", ctrlShift(KeyEvent.VK_HOME), "Go to the first step of the k-NN search", nearest::first));
-        knn.add(action("Step back", ctrlShift(KeyEvent.VK_LEFT), "Go one step back", nearest::back));
-        knn.add(action("Step forward", ctrlShift(KeyEvent.VK_RIGHT), "Go one step forward", nearest::forward));
-        knn.add(action("Last step", ctrlShift(KeyEvent.VK_END), "Go to the k nearest objects", nearest::last));
-        knn.add(action("Play / pause", ctrlShift(KeyEvent.VK_P), "Play the search step by step", nearest::togglePlay));
-        knn.add(action("Clear query", ctrlShift(KeyEvent.VK_K), "Remove the query point", model::clearQuery));
-        bar.add(knn);
+        bar.add(stepperMenu(new StepperWords("Traversal", 'R', "Go to the first step", "Go to the result",
+                "Play the traversal step by step", "Clear ray", "Remove the cast ray"), Workbench::ctrl, stepper.controls(), model::clearRay));
+        bar.add(stepperMenu(new StepperWords("Nearest", 'N', "Go to the first step of the k-NN search", "Go to the k nearest objects",
+                "Play the search step by step", "Clear query", "Remove the query point"), Workbench::ctrlShift, nearest.controls(),
+                model::clearQuery));
 
         JMenu balls = new JMenu("Collisions");
         balls.setMnemonic('O');
@@ -281,6 +273,24 @@ public final class Workbench extends JFrame {
         a.putValue(Action.ACCELERATOR_KEY, key);
         a.putValue(Action.SHORT_DESCRIPTION, tip);
         return a;
+    }
+
+    /** The words of a stepper's menu: the traversal's and the k-NN search's differ only in these and their keys. */
+    private record StepperWords(String title, char mnemonic, String firstTip, String lastTip, String playTip,
+            String clearName, String clearTip) {
+    }
+
+    /** A stepper's menu: first, back, forward, last, play / pause, and clearing what it steps through. */
+    private JMenu stepperMenu(StepperWords w, java.util.function.IntFunction<KeyStroke> key, StepControls steps, Runnable clear) {
+        JMenu menu = new JMenu(w.title());
+        menu.setMnemonic(w.mnemonic());
+        menu.add(action("First step", key.apply(KeyEvent.VK_HOME), w.firstTip(), steps::first));
+        menu.add(action("Step back", key.apply(KeyEvent.VK_LEFT), "Go one step back", steps::back));
+        menu.add(action("Step forward", key.apply(KeyEvent.VK_RIGHT), "Go one step forward", steps::forward));
+        menu.add(action("Last step", key.apply(KeyEvent.VK_END), w.lastTip(), steps::last));
+        menu.add(action("Play / pause", key.apply(KeyEvent.VK_P), w.playTip(), steps::togglePlay));
+        menu.add(action(w.clearName(), key.apply(KeyEvent.VK_K), w.clearTip(), clear));
+        return menu;
     }
 
     static KeyStroke ctrl(int key) {

@@ -65,9 +65,7 @@ public final class ObjMeshReader {
      * @throws IOException if the file cannot be read or is malformed
      */
     public static TriangleMesh read(Path file) throws IOException {
-        try (TextLines lines = TextLines.open(file)) {
-            return mesh(lines);
-        }
+        return TextLines.read(file, ObjMeshReader::mesh);
     }
 
     /**
@@ -90,9 +88,7 @@ public final class ObjMeshReader {
      * @throws IOException if the file cannot be read or is malformed
      */
     public static Materials read(Path file, Sink sink) throws IOException {
-        try (TextLines lines = TextLines.open(file)) {
-            return stream(lines, file.toAbsolutePath().getParent(), sink);
-        }
+        return TextLines.read(file, lines -> stream(lines, file.toAbsolutePath().getParent(), sink));
     }
 
     private static TriangleMesh mesh(TextLines in) throws IOException {

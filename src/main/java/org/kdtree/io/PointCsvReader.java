@@ -27,9 +27,7 @@ public final class PointCsvReader {
      * @throws IOException if the file cannot be read or is malformed
      */
     public static PointsKd read(Path file) throws IOException {
-        try (TextLines lines = TextLines.open(file)) {
-            return read(lines);
-        }
+        return TextLines.read(file, PointCsvReader::read);
     }
 
     /**

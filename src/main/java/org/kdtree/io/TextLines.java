@@ -47,6 +47,24 @@ final class TextLines implements Closeable {
                 .onMalformedInput(CodingErrorAction.REPLACE).onUnmappableCharacter(CodingErrorAction.REPLACE)), file.toString());
     }
 
+    /** What a reader makes of a file's lines (a mesh, points, shapes). */
+    interface Parser<T> {
+        T parse(TextLines lines) throws IOException;
+    }
+
+    /**
+     * {@return what {@code parser} makes of the lines of {@code file}}, the file closed after.
+     *
+     * @param file the file
+     * @param parser reads the lines
+     * @throws IOException if the file is missing, cannot be read or is malformed
+     */
+    static <T> T read(Path file, Parser<T> parser) throws IOException {
+        try (TextLines lines = open(file)) {
+            return parser.parse(lines);
+        }
+    }
+
     /**
      * {@return lines of text already decoded}
      *

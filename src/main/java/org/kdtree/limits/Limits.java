@@ -58,8 +58,6 @@ public final class Limits {
     public static final Limit RAY_DEPTH = Limit.whole("ray depth", 0, 64);
     /** Shadow-ray samples of one area light. */
     public static final Limit LIGHT_SAMPLES = Limit.whole("light samples", 1, 1024);
-    /** The workbench's 3-D preview width, in pixels (it renders on every change). */
-    public static final Limit PREVIEW_WIDTH = Limit.whole("preview width", 16, 4096);
 
     /** Slices around a tessellated sphere (or each sphere of a sphereflake). */
     public static final Limit SPHERE_SEGMENTS = Limit.whole("sphere segments", 3, 4096);
@@ -98,18 +96,12 @@ public final class Limits {
     /** Objects in a generated 2-D scene. */
     public static final Limit SCENE_OBJECTS = Limit.whole("objects", 1, 100_000);
 
-    // Workbench queries.
-    /** k of the workbench's nearest-neighbour stepper (each step shows the whole list of the k best). */
-    public static final Limit STEPPER_K = Limit.whole("stepper k", 1, 64);
-    /** Balls of the workbench's collisions view (stepped and drawn every frame). */
-    public static final Limit BALLS = Limit.whole("balls", 1, 5_000);
-
-    /** All of them, in the order of docs/limits.md. */
+    /** All of them, in the order of docs/limits.md (the workbench's own are in {@code gui.WorkbenchLimits}). */
     public static final List<Limit> ALL = List.of(THREADS, MAX_DEPTH, DEPTH_FACTOR, REFERENCE_BUDGET, KT, KI, LAMBDA,
-            MIN_PRIMITIVES, BINS, EXACT_BELOW, LEAF_BELOW, LEAF_SIZE, CALL_DEADLINE, BUILD_DEADLINE, STUDENT_DEADLINE, STUDENT_HEAP, IMAGE_SIDE, SAMPLES_PER_PIXEL, RAY_DEPTH, LIGHT_SAMPLES, PREVIEW_WIDTH,
+            MIN_PRIMITIVES, BINS, EXACT_BELOW, LEAF_BELOW, LEAF_SIZE, CALL_DEADLINE, BUILD_DEADLINE, STUDENT_DEADLINE, STUDENT_HEAP, IMAGE_SIDE, SAMPLES_PER_PIXEL, RAY_DEPTH, LIGHT_SAMPLES,
             SPHERE_SEGMENTS, SPHERE_RINGS, FLAKE_LEVELS,
             RUNS, WARMUP, GRID, RAY_COUNT, RAYS_PER_TRIANGLE,
-            NEIGHBOURS, LEAF_BUDGET, EPSILON, POINT_COUNT, QUERY_COUNT, DIMENSION, SCENE_OBJECTS, STEPPER_K, BALLS);
+            NEIGHBOURS, LEAF_BUDGET, EPSILON, POINT_COUNT, QUERY_COUNT, DIMENSION, SCENE_OBJECTS);
 
     private Limits() {
     }

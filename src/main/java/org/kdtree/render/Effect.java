@@ -1,7 +1,7 @@
 package org.kdtree.render;
 
 /** The optical effects a render may simulate; the {@link EffectPlan} picks those a scene calls for. */
-public enum Effect {
+enum Effect {
     /** Light from the scene's lights (diffuse and Phong terms). */
     DIRECT_LIGHT,
     /** Phong highlights. */

@@ -3,7 +3,7 @@ package org.kdtree.render;
 import java.util.Arrays;
 
 /** Rays cast by kind. Not thread-safe: one per thread, merged at the end. */
-public final class RayCounts {
+final class RayCounts {
     private final long[] counts = new long[RayKind.values().length];
 
     /**

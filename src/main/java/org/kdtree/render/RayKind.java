@@ -1,7 +1,7 @@
 package org.kdtree.render;
 
 /** The kinds of rays a render casts, counted separately. */
-public enum RayKind {
+enum RayKind {
     /** From the eye through a pixel sample. */
     CAMERA,
     /** From a surface point toward a light (any-hit query). */

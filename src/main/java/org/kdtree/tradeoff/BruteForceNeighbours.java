@@ -10,7 +10,7 @@ import org.kdtree.shape.PointsKd;
  * fair. Squared distances are summed axis 0 first, as {@code Metric.EUCLIDEAN} sums them, so
  * the two agree to the last bit. One instance per thread.
  */
-public final class BruteForceNeighbours {
+final class BruteForceNeighbours {
     private final double[] coords;
     private final int n;
     private final int dim;

@@ -131,6 +131,22 @@ public final class ChartFile {
     }
 
     /**
+     * A new chart with a logarithmic y axis, large markers and the legend outside on the right:
+     * the nearest-neighbour studies' charts.
+     *
+     * @param title  the chart's title
+     * @param xTitle the x axis's title
+     * @param yTitle the y axis's title
+     * @return the chart, without series
+     */
+    public static XYChart newLogYChart(String title, String xTitle, String yTitle) {
+        XYChart chart = newChart(title, xTitle, yTitle);
+        chart.getStyler().setMarkerSize(9).setLegendPosition(org.knowm.xchart.style.Styler.LegendPosition.OutsideE);
+        logYAxis(chart);
+        return chart;
+    }
+
+    /**
      * Log scale on the y axis only, for charts whose x is a fraction or a small count (recall,
      * dimension), which a log scale would only distort; labelled as {@link #logAxes} labels.
      *

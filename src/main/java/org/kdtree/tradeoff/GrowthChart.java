@@ -17,41 +17,22 @@ import org.knowm.xchart.style.markers.SeriesMarkers;
  * scene, with the curves N^2, N log^2 N and N log N drawn through the first point of the naive,
  * sorted and event builds, so that a slope can be read against its prediction.
  *
- * <pre>
- * java -cp target/kdtree.jar org.kdtree.tradeoff.GrowthChart growth.png surface naive.csv build.csv ...
- * </pre>
+ * The program that reads the files and writes the chart is {@code bench.GrowthChartFromCsv}
+ * (src/jmh, beside the benchmarks whose output it reads).
  */
 public final class GrowthChart {
     private GrowthChart() {
     }
 
     /**
-     * Reads the CSV files and writes the chart for one scene, exiting with 2 on a usage error and
-     * 1 if no row is for the scene.
+     * Adds the rows of one JMH CSV whose scene is {@code scene}: builder -> (N -> ms per build).
      *
-     * @param args the chart to write (PNG or SVG), the scene, then one or more JMH CSV files
-     * @throws IOException if a CSV file cannot be read or is not a build benchmark's, or the chart cannot be written
+     * @param csv a JMH CSV of a build benchmark
+     * @param scene the scene whose rows are read
+     * @param series where the rows go, by builder then N
+     * @throws IOException if the file cannot be read or is not a build benchmark's
      */
-    public static void main(String[] args) throws IOException {
-        if (args.length < 3) {
-            System.err.println("usage: GrowthChart OUT.png SCENE JMH.csv...");
-            System.exit(2);
-        }
-        String scene = args[1];
-        Map<String, TreeMap<Integer, Double>> series = new TreeMap<>();
-        for (int i = 2; i < args.length; i++) read(Path.of(args[i]), scene, series);
-        if (series.isEmpty()) {
-            System.err.println("no rows for scene " + scene + " in " + String.join(", ", List.of(args).subList(2, args.length)));
-            System.exit(1);
-        }
-        String caption = "JMH averages from " + String.join(", ", List.of(args).subList(2, args.length))
-                + " · one build thread · drawn " + java.time.LocalDate.now();
-        write(series, scene, caption, Path.of(args[0]));
-        System.out.println("wrote " + args[0]);
-    }
-
-    /** Adds the rows of one JMH CSV whose scene is {@code scene}: builder -> (N -> ms per build). */
-    static void read(Path csv, String scene, Map<String, TreeMap<Integer, Double>> series) throws IOException {
+    public static void read(Path csv, String scene, Map<String, TreeMap<Integer, Double>> series) throws IOException {
         List<String> lines = Files.readAllLines(csv);
         if (lines.isEmpty()) return;
         List<String> header = cells(lines.get(0));
@@ -73,7 +54,16 @@ public final class GrowthChart {
         return out;
     }
 
-    static void write(Map<String, TreeMap<Integer, Double>> series, String scene, String caption, Path png) throws IOException {
+    /**
+     * Writes the chart of {@code series} for one scene.
+     *
+     * @param series ms per build by builder then N, as {@link #read} fills it
+     * @param scene the scene, for the title
+     * @param caption the line under the chart
+     * @param png the file to write (PNG or SVG)
+     * @throws IOException if the chart cannot be written
+     */
+    public static void write(Map<String, TreeMap<Integer, Double>> series, String scene, String caption, Path png) throws IOException {
         ChartFile.write(chart(series, scene), caption, png);
     }
 

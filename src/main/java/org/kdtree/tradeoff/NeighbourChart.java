@@ -1,12 +1,9 @@
 package org.kdtree.tradeoff;
 
-import java.io.IOException;
-import java.nio.file.Path;
 import java.util.ArrayList;
 import java.util.List;
 import org.knowm.xchart.XYChart;
 import org.knowm.xchart.XYSeries;
-import org.knowm.xchart.style.Styler;
 
 /**
  * The accuracy chart of a nearest-neighbour study: recall at k (x) against queries per second
@@ -18,23 +15,14 @@ public final class NeighbourChart {
     }
 
     /**
-     * Writes the chart as PNG or SVG with {@code caption} under it ({@link ChartFile}).
+     * The chart itself, for {@link ChartFile#write} (tests read its series and axes).
      *
      * @param results the measurements to draw
      * @param title   the chart's title
-     * @param caption the text under the chart
-     * @param png     the chart file, PNG or SVG ({@link ChartFile#write})
-     * @throws IOException if a file cannot be written
+     * @return the chart
      */
-    public static void write(List<NeighbourResult> results, String title, String caption, Path png) throws IOException {
-        ChartFile.write(chart(results, title), caption, png);
-    }
-
-    /** The chart itself (tests read its series and axes). */
-    static XYChart chart(List<NeighbourResult> results, String title) {
-        XYChart chart = ChartFile.newChart(title, "recall at k (fraction of the true k nearest found)", "queries per second");
-        chart.getStyler().setMarkerSize(9).setLegendPosition(Styler.LegendPosition.OutsideE);
-        ChartFile.logYAxis(chart);
+    public static XYChart chart(List<NeighbourResult> results, String title) {
+        XYChart chart = ChartFile.newLogYChart(title, "recall at k (fraction of the true k nearest found)", "queries per second");
         double left = leftEdge(results);
         chart.getStyler().setXAxisMin(left).setXAxisMax(1.0);
         List<XYSeries> series = new ArrayList<>();

@@ -1,7 +1,7 @@
 package org.kdtree.tradeoff;
 
 /** The ways a nearest-neighbour study answers its queries: one series of its chart each. */
-public enum NeighbourSearch {
+enum NeighbourSearch {
     /** Every point scanned: the baseline, always exact. */
     BRUTE_FORCE("brute force"),
     /** The kd-tree's exact search. */

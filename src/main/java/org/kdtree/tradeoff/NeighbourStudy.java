@@ -1,6 +1,7 @@
 package org.kdtree.tradeoff;
 
 import java.util.List;
+import org.kdtree.measure.Timing;
 import org.kdtree.points.NearestQuery;
 import org.kdtree.points.PointTree;
 import org.kdtree.shape.PointsKd;

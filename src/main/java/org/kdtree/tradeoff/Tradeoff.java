@@ -2,6 +2,9 @@ package org.kdtree.tradeoff;
 
 import java.util.ArrayList;
 import java.util.List;
+import org.kdtree.measure.RayBatch;
+import org.kdtree.measure.RaySet;
+import org.kdtree.measure.Timing;
 import org.kdtree.build.KdTreeBuilder;
 import org.kdtree.build.Setting;
 import org.kdtree.build.Supervisor;

@@ -14,7 +14,8 @@ import org.junit.jupiter.api.Test;
 
 /**
  * The package structure of docs/architecture.md, checked against the imports of src/main: no
- * cycle between packages, every package in a layer, every use pointing to a lower layer; the
+ * cycle between packages, every package in a layer, every use pointing to a lower layer, no room
+ * (library, rendering, course, applications: {@link Rooms}) using a higher one; the
  * precision rule of {@code geom.Tolerance}: no tolerance written as a literal anywhere else; one
  * way to write a file; and the node layout known only to {@code tree}.
  */
@@ -39,6 +40,46 @@ class ArchitectureTest {
                 wrong.add(from + " (layer " + (layer.get(from) + 1) + ") uses " + to + " (layer " + (layer.get(to) + 1) + ")");
         }));
         assertThat(wrong).as("uses against the layers of " + Layers.DOCUMENT).isEmpty();
+    }
+
+    @Test void everyPackageIsInOneRoom() {
+        assertThat(Rooms.indexOfPackage().keySet()).as("packages in the rooms of Rooms.ROOMS")
+                .containsExactlyInAnyOrderElementsOf(USES.keySet());
+    }
+
+    /** The library never uses rendering, the course or an application; rendering neither of the last two; the course no application. */
+    @Test void noRoomUsesAHigherRoom() {
+        assertThat(upwardUses(USES)).as("uses from a lower room into a higher one").isEmpty();
+    }
+
+    @Test void theRoomCheckFindsALibraryPackageUsingTheCourse() {
+        Map<String, Map<String, Integer>> graph = Map.of("build", Map.of("examples", 1), "cli", Map.of("build", 1));
+        assertThat(upwardUses(graph)).containsExactly("build (library) uses examples (course)");
+    }
+
+    /** A services file is a use no import shows: the library's may name only library classes (the course example is registered by the applications). */
+    @Test void theLibrarysServicesFilesNameNoHigherRoom() throws java.io.IOException {
+        Path services = Path.of("src/main/resources/META-INF/services");
+        Map<String, Integer> room = Rooms.indexOfPackage();
+        List<String> wrong = new ArrayList<>();
+        if (java.nio.file.Files.isDirectory(services)) try (var files = java.nio.file.Files.list(services)) {
+            for (Path f : files.toList())
+                for (String line : java.nio.file.Files.readAllLines(f)) {
+                    Matcher m = Pattern.compile("^org\\.kdtree\\.([a-z0-9]+)\\.").matcher(line.trim());
+                    if (m.find() && room.getOrDefault(m.group(1), 0) > 0) wrong.add(f.getFileName() + " names " + line.trim());
+                }
+        }
+        assertThat(wrong).as("services files of src/main naming course or application classes").isEmpty();
+    }
+
+    private static List<String> upwardUses(Map<String, ? extends Map<String, Integer>> uses) {
+        Map<String, Integer> room = Rooms.indexOfPackage();
+        List<String> wrong = new ArrayList<>();
+        uses.forEach((from, targets) -> targets.keySet().forEach(to -> {
+            if (room.containsKey(from) && room.containsKey(to) && room.get(to) > room.get(from))
+                wrong.add(from + " (" + Rooms.name(room.get(from)) + ") uses " + to + " (" + Rooms.name(room.get(to)) + ")");
+        }));
+        return wrong;
     }
 
     /** Each package says what it holds and what it may use, with the layer the document gives it. */

@@ -9,6 +9,8 @@ import java.util.List;
 import java.util.Locale;
 import org.junit.jupiter.api.Test;
 import org.junit.jupiter.api.io.TempDir;
+import org.kdtree.measure.RayBatch;
+import org.kdtree.measure.RaySet;
 import org.kdtree.cli.Main;
 import org.kdtree.shape.TriangleMesh;
 import org.kdtree.traverse.BruteForce;

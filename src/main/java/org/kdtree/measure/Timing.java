@@ -1,4 +1,4 @@
-package org.kdtree.tradeoff;
+package org.kdtree.measure;
 
 import java.util.Arrays;
 import java.util.Comparator;

@@ -1,7 +1,7 @@
-package org.kdtree.tradeoff;
+package org.kdtree.measure;
 
 /** The benchmark's random numbers: splitmix64 (bench SPEC, ray set R), bit for bit. */
-public final class SplitMix64 {
+final class SplitMix64 {
     private long state;
 
     /**

@@ -1,4 +1,4 @@
-package org.kdtree.tradeoff;
+package org.kdtree.measure;
 
 import org.kdtree.geom.Box;
 import org.kdtree.generate.MeshGrid;
