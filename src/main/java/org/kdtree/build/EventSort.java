@@ -65,10 +65,7 @@ final class EventSort {
             int[] u = sc; sc = dc; dc = u;
             int v = sAt; sAt = dAt; dAt = v;
         }
-        if (sp != pos) {
-            System.arraycopy(sp, sAt, pos, from, n);
-            System.arraycopy(sc, sAt, code, from, n);
-        }
+        copyBack(sp, sc, sAt, pos, code, from, n);
     }
 
     /** Merges the sorted runs {@code [ia, mid)} and {@code [mid, end)} of one array into {@code d} from {@code at}. */
@@ -113,13 +110,17 @@ final class EventSort {
             int[] u = sc; sc = dc; dc = u;
             int v = sAt; sAt = dAt; dAt = v;
         }
-        if (sp != pos) {
-            System.arraycopy(sp, sAt, pos, from, n);
-            System.arraycopy(sc, sAt, code, from, n);
-        }
+        copyBack(sp, sc, sAt, pos, code, from, n);
     }
 
     private static int digit(double x, int shift) {
         return (int) (key(x) >>> shift) & (BUCKETS - 1);
+    }
+
+    /** Copies the sorted run {@code [sAt, sAt + n)} of {@code sp, sc} back to {@code pos, code} at {@code from}, unless it is already there. */
+    private static void copyBack(double[] sp, int[] sc, int sAt, double[] pos, int[] code, int from, int n) {
+        if (sp == pos) return;
+        System.arraycopy(sp, sAt, pos, from, n);
+        System.arraycopy(sc, sAt, code, from, n);
     }
 }

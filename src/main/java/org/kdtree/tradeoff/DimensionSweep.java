@@ -9,34 +9,16 @@ import org.kdtree.points.PointTree;
  * same count at growing dimension. In few dimensions the tree scans a handful of leaves; as the
  * dimension grows, a query's ball reaches more and more cells, until the tree scans nearly
  * every leaf and its bookkeeping makes it slower than the plain scan.
+ *
+ * @param kind       the data
+ * @param n          points per dimension measured
+ * @param queryCount query points, drawn as the data
+ * @param k          neighbours per query
+ * @param runs       timed passes per measurement (the median is kept)
+ * @param seed       the data's seed (the same for every dimension)
+ * @param builder    builds each tree
  */
-public final class DimensionSweep {
-    private final GeneratedPoints kind;
-    private final int n;
-    private final int queryCount;
-    private final int k;
-    private final int runs;
-    private final long seed;
-    private final KdTreeBuilder builder;
-
-    /**
-     * @param kind       the data
-     * @param n          points per dimension measured
-     * @param queryCount query points, drawn as the data
-     * @param k          neighbours per query
-     * @param runs       timed passes per measurement (the median is kept)
-     * @param seed       the data's seed (the same for every dimension)
-     * @param builder    builds each tree
-     */
-    public DimensionSweep(GeneratedPoints kind, int n, int queryCount, int k, int runs, long seed, KdTreeBuilder builder) {
-        this.kind = kind;
-        this.n = n;
-        this.queryCount = queryCount;
-        this.k = k;
-        this.runs = runs;
-        this.seed = seed;
-        this.builder = builder;
-    }
+public record DimensionSweep(GeneratedPoints kind, int n, int queryCount, int k, int runs, long seed, KdTreeBuilder builder) {
 
     /**
      * Builds the tree at {@code dimension} and times its exact search and brute force.
