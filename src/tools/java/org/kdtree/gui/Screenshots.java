@@ -62,8 +62,8 @@ public final class Screenshots {
                     if (st.kind() == TraversalTrace.Kind.TEST && st.stack().size() >= 2) { target = i; break; }
                 }
             }
-            s.first();
-            for (int i = 0; i < target; i++) s.forward();
+            s.controls().first();
+            for (int i = 0; i < target; i++) s.controls().forward();
         });
         shot(out, "stepper.png");
 
@@ -80,8 +80,8 @@ public final class Screenshots {
                 NearestTrace.Step st = s.trace().step(i);
                 if (st.kind() == NearestTrace.Kind.PRUNE && Double.isFinite(st.kth()) && ++seen == 2) { target = i; break; }
             }
-            s.first();
-            for (int i = 0; i < target; i++) s.forward();
+            s.controls().first();
+            for (int i = 0; i < target; i++) s.controls().forward();
         });
         shot(out, "knn.png");
 
