@@ -53,17 +53,13 @@ final class BinnedPlaneSearch implements PlaneSearch {
     }
 
     /**
-     * Histograms, on every axis, of the clipped minima
-     * and maxima of the {@code n} references at slots {@code at ..} of {@code bounds}, by bin of
-     * the voxel at {@code v[vAt ..]}: axis a's bins at {@code [a B, (a + 1) B)}.
+     * Histograms, on every axis, of the clipped minima and maxima of the {@code n} references at
+     * slots {@code at ..} of {@code bounds}, by bin of the voxel at {@code v[vAt ..]}: axis a's bins
+     * at {@code [a B, (a + 1) B)}.
      */
     private static void histograms(double[] v, int vAt, int k, int bins, int[] minBin, int[] maxBin, double[] bounds, int at, int n) {
         java.util.Arrays.fill(minBin, 0, k * bins, 0);
         java.util.Arrays.fill(maxBin, 0, k * bins, 0);
-        if (k == 3) {
-            histograms3D(v, vAt, bins, minBin, maxBin, bounds, at, n);
-            return;
-        }
         for (int axis = 0; axis < k; axis++) {
             double lo = v[vAt + axis], w = v[vAt + k + axis] - lo;
             if (!(w > 0)) continue;
@@ -73,26 +69,6 @@ final class BinnedPlaneSearch implements PlaneSearch {
                 minBin[base + bin(bounds[o], lo, scale, bins)]++;
                 maxBin[base + bin(bounds[o + k], lo, scale, bins)]++;
             }
-        }
-    }
-
-    /**
-     * The loop above for k = 3, one pass over the references (their six bounds are adjacent), the
-     * same counts. An axis of zero width gets scale 0, so every reference lands in its bin 0,
-     * which {@link #search} never reads.
-     */
-    private static void histograms3D(double[] v, int vAt, int bins, int[] minBin, int[] maxBin, double[] bounds, int at, int n) {
-        double lo0 = v[vAt], lo1 = v[vAt + 1], lo2 = v[vAt + 2];
-        double w0 = v[vAt + 3] - lo0, w1 = v[vAt + 4] - lo1, w2 = v[vAt + 5] - lo2;
-        double s0 = w0 > 0 ? bins / w0 : 0, s1 = w1 > 0 ? bins / w1 : 0, s2 = w2 > 0 ? bins / w2 : 0;
-        int b1 = bins, b2 = 2 * bins;
-        for (int o = 6 * at, end = 6 * (at + n); o < end; o += 6) {
-            minBin[bin(bounds[o], lo0, s0, bins)]++;
-            minBin[b1 + bin(bounds[o + 1], lo1, s1, bins)]++;
-            minBin[b2 + bin(bounds[o + 2], lo2, s2, bins)]++;
-            maxBin[bin(bounds[o + 3], lo0, s0, bins)]++;
-            maxBin[b1 + bin(bounds[o + 4], lo1, s1, bins)]++;
-            maxBin[b2 + bin(bounds[o + 5], lo2, s2, bins)]++;
         }
     }
 
