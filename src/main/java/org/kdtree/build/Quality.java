@@ -18,12 +18,12 @@ public enum Quality {
      * The exact event algorithm, leaves below 6 references: on the meshes measured, 35 to 45 % of
      * the exact tree's nodes, within 4 % of its expected cost.
      */
-    BALANCED(SahBuilder.Algorithm.EVENT, 0, 6),
+    BALANCED(SahBuilder.Algorithm.EVENT, -1, 6),
     /** The exact SAH tree (event algorithm), every split that pays. */
-    EXACT(SahBuilder.Algorithm.EVENT, 0, 1);
+    EXACT(SahBuilder.Algorithm.EVENT, -1, 1);
 
     private final SahBuilder.Algorithm algorithm;
-    /** The binned search's exact threshold (0 for an exact search: the setting's default is then applied). */
+    /** The binned search's exact threshold; -1 (an exact search, which does not read it) restores the setting's default. */
     private final int exactBelow, leafBelow;
 
     Quality(SahBuilder.Algorithm algorithm, int exactBelow, int leafBelow) {
@@ -54,7 +54,7 @@ public enum Quality {
      */
     public SahBuilder applyTo(SahBuilder sah) {
         sah.algorithm(algorithm).bins(Setting.BINS.defaultValue())
-                .exactBelow(exactBelow > 0 ? exactBelow : Setting.EXACT_BELOW.defaultValue()).leafBelow(leafBelow);
+                .exactBelow(exactBelow >= 0 ? exactBelow : Setting.EXACT_BELOW.defaultValue()).leafBelow(leafBelow);
         sah.maxDepth(-1).depthFactor(KdTreeBuilder.DEFAULT_DEPTH_FACTOR);
         return sah;
     }

@@ -69,7 +69,7 @@ public class SahBuilder extends KdTreeBuilder {
      * probability), or if no plane is cheaper than the leaf; else keeps the best plane found.
      */
     @Override protected boolean terminate(BuildContext context, BuildNode node) {
-        if (node.size() < leafBelow || node.size() == 0 || node.depth() >= context.depthCap()) return true;
+        if (node.size() < leafBelow || node.depth() >= context.depthCap()) return true;
         NodeStore store = node.store();
         if (store.sahCost == null) store.sahCost = new SahCost(costModel(), lambda, node.dimension());
         SahCost sah = store.sahCost.set(store.voxel(node.level()), 2 * node.dimension() * node.child());

@@ -159,12 +159,11 @@ final class BuilderPanel extends JPanel {
             KdTreeBuilder probe = Builders.create(s.builder());
             builder.setSelectedItem(s.builder());
             for (SettingControl c : controls.values()) if (c.setting().appliesTo(probe)) c.show(s.value(c.setting()));
-            for (SettingControl c : controls.values()) {
-                c.component().setEnabled(live(c.setting(), probe));
-                // a setting of another builder, or of the binned search under an exact one, is not shown at all
-                boolean applies = c.setting().appliesTo(probe) && (!BINNED_ONLY.contains(c.setting()) || live(c.setting(), probe));
-                c.component().setVisible(applies);
-                labels.get(c.setting()).setVisible(applies);
+            for (SettingControl c : controls.values()) {   // another builder's setting, or bins under an exact search: not shown
+                boolean live = live(c.setting(), probe);
+                c.component().setEnabled(live);
+                c.component().setVisible(live);
+                labels.get(c.setting()).setVisible(live);
             }
             SettingControl lambda = controls.get(Setting.LAMBDA);
             lambdaSlider.setValue((int) Math.round((Double) lambda.value() * 100));
