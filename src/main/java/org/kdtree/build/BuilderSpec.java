@@ -1,10 +1,15 @@
 package org.kdtree.build;
 
+import java.util.ArrayList;
 import java.util.Collections;
+import java.util.List;
 import java.util.LinkedHashMap;
 import java.util.Map;
 import java.util.Objects;
 import java.util.stream.Collectors;
+import org.kdtree.bvh.BvhBuilder;
+import org.kdtree.shape.Primitives;
+import org.kdtree.traverse.AccelerationStructure;
 
 /**
  * What a tree is to be built with: a builder's name (as {@link Builders} knows it) and the
@@ -17,6 +22,10 @@ import java.util.stream.Collectors;
  * entry when given ({@link #with}), and {@link #create()} refuses a setting that does not apply
  * to the builder, with a line naming it, rather than ignoring it.
  * {@link #forBuilder} is the explicit way to carry settings over to another builder.
+ *
+ * <p>The name {@value BvhBuilder#NAME} is the bounding volume hierarchy's builder
+ * ({@link BvhBuilder}), with its rows of the same table: {@link #build} makes either structure,
+ * {@link #create()} the kd-tree builders only.
  */
 public final class BuilderSpec {
     private final String builder;
@@ -38,6 +47,21 @@ public final class BuilderSpec {
 
     /** {@return the builder's name} */
     public String builder() { return builder; }
+
+    /** {@return whether it builds a bounding volume hierarchy rather than a kd-tree} */
+    public boolean buildsBvh() { return builder.equals(BvhBuilder.NAME); }
+
+    /** {@return every name a spec can take: the kd-tree builders ({@link Builders#names()}), then the BVH's} */
+    public static List<String> names() {
+        List<String> all = new ArrayList<>(Builders.names());
+        all.add(BvhBuilder.NAME);
+        return List.copyOf(all);
+    }
+
+    /** A new builder of {@code name} with its defaults: a {@link KdTreeBuilder} or a {@link BvhBuilder}. */
+    private static Object newBuilder(String name) {
+        return name.equals(BvhBuilder.NAME) ? new BvhBuilder() : Builders.create(name);
+    }
 
     /**
      * {@return this spec with {@code setting} given as {@code value}, or no longer given if {@code value} is null}
@@ -73,7 +97,7 @@ public final class BuilderSpec {
     public <T> T value(Setting<T> setting) {
         T v = get(setting);
         if (v != null) return v;
-        KdTreeBuilder b = Builders.create(builder);
+        Object b = newBuilder(builder);
         return setting.appliesTo(b) ? setting.read(b) : null;
     }
 
@@ -83,7 +107,7 @@ public final class BuilderSpec {
      * @param name another builder's name
      */
     public BuilderSpec forBuilder(String name) {
-        KdTreeBuilder b = Builders.create(name);
+        Object b = newBuilder(name);
         Map<Setting<?>, Object> m = new LinkedHashMap<>();
         given.forEach((s, v) -> {
             if (s.appliesTo(b)) m.put(s, v);
@@ -110,18 +134,56 @@ public final class BuilderSpec {
      * @param name    a registered builder's name
      */
     public static boolean applies(Setting<?> setting, String name) {
-        return setting.appliesTo(Builders.create(name));
+        return setting.appliesTo(newBuilder(name));
     }
 
     /**
-     * A new builder of this spec's name, with every given setting applied (presets first).
+     * A new kd-tree builder of this spec's name, with every given setting applied (presets first).
      *
      * @return the builder
-     * @throws IllegalArgumentException if no builder has that name, or a given setting does not
-     *         apply to it (the message names every such setting and whom it applies to)
+     * @throws IllegalArgumentException if no builder has that name, if it is the BVH's (which
+     *         makes no kd-tree), or if a given setting does not apply to it (the message names
+     *         every such setting and whom it applies to)
      */
     public KdTreeBuilder create() {
-        KdTreeBuilder b = Builders.create(builder);
+        if (buildsBvh())
+            throw new IllegalArgumentException("-b " + builder + " builds a bounding volume hierarchy, which answers ray queries"
+                    + " only (raycast, stats, render, tradeoff); this needs a kd-tree builder: " + String.join(", ", Builders.names()));
+        return applied(Builders.create(builder));
+    }
+
+    /**
+     * A new BVH builder with every given setting applied.
+     *
+     * @return the builder
+     * @throws IllegalArgumentException if this spec names a kd-tree builder, or a given setting does not apply
+     */
+    public BvhBuilder createBvh() {
+        if (!buildsBvh()) throw new IllegalArgumentException(builder + " builds a kd-tree, not a bounding volume hierarchy");
+        return applied(new BvhBuilder());
+    }
+
+    /**
+     * Builds the structure this spec names over {@code prims}: a kd-tree (under {@code supervisor},
+     * which watches a builder that is not the library's) or a bounding volume hierarchy.
+     *
+     * @param prims      the primitives
+     * @param supervisor runs a kd-tree builder
+     * @return the structure
+     * @throws IllegalArgumentException as {@link #create()} and {@link #createBvh()}
+     * @throws BuilderFault if a supervised kd-tree builder failed
+     */
+    public AccelerationStructure build(Primitives prims, Supervisor supervisor) {
+        if (buildsBvh()) return createBvh().build(prims);
+        return AccelerationStructure.of(supervisor.build(create(), prims));
+    }
+
+    /** {@return the builder's settings in one line} (its {@code describeSettings}) */
+    public String describe() {
+        return buildsBvh() ? createBvh().describeSettings() : create().describeSettings();
+    }
+
+    private <B> B applied(B b) {
         refuseWhatDoesNotApply(b);
         for (Setting<?> s : Setting.ALL) {
             Object v = given.get(s);
@@ -130,7 +192,7 @@ public final class BuilderSpec {
         return b;
     }
 
-    private void refuseWhatDoesNotApply(KdTreeBuilder b) {
+    private void refuseWhatDoesNotApply(Object b) {
         for (Setting<?> s : Setting.ALL) {
             if (!given.containsKey(s) || s.appliesTo(b)) continue;
             String others = Setting.ALL.stream().filter(o -> o.ownerName().equals(s.ownerName()) && given.containsKey(o))

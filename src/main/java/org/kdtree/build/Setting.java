@@ -7,6 +7,7 @@ import java.util.Locale;
 import java.util.function.BiConsumer;
 import java.util.function.Function;
 import java.util.stream.Collectors;
+import org.kdtree.bvh.BvhBuilder;
 import org.kdtree.limits.Limit;
 import org.kdtree.limits.Limits;
 import org.kdtree.tree.CostModel;
@@ -18,6 +19,9 @@ import org.kdtree.tree.CostModel;
  * start from these defaults, {@link BuilderSpec} checks and applies them, and the command line's
  * options, the workbench's controls and the table in docs/limits.md are made from them.
  *
+ * <p>A row names the kd-tree builders it applies to, and, when the bounding volume hierarchy's
+ * builder ({@link BvhBuilder}) takes it too, how it is given to that one ({@code andBvh}).
+ *
  * <p>Adding a setting is one row here (with the builder's own getter and setter that the row
  * names): the row's declaration adds it to {@link #ALL}, and with it to every command that
  * builds a tree, to the workbench and, once regenerated, to docs/limits.md.
@@ -28,7 +32,8 @@ public final class Setting<T> {
     /** The rows, in the order they are declared: each constructor call appends its own. */
     private static final List<Setting<?>> TABLE = new ArrayList<>();
 
-    private static final Owner<KdTreeBuilder> EVERY = new Owner<>(KdTreeBuilder.class, "every builder");
+    private static final Owner<KdTreeBuilder> EVERY = new Owner<>(KdTreeBuilder.class, "the kd-tree builders");
+    private static final Owner<BvhBuilder> BVH = new Owner<>(BvhBuilder.class, "the bvh builder");
     private static final Owner<SahBuilder> SAH = new Owner<>(SahBuilder.class, "the sah builder");
     private static final Owner<CyclingAxisBuilder> MEDIAN = new Owner<>(CyclingAxisBuilder.class, "the median builders");
     private static final Owner<SlidingMidpointBuilder> SLIDING = new Owner<>(SlidingMidpointBuilder.class, "the sliding-midpoint builder");
@@ -42,14 +47,17 @@ public final class Setting<T> {
     /** Kt, the cost of one traversal step (Wald and Havran's, {@link CostModel#WALD_HAVRAN}, by default). */
     public static final Setting<Double> KT = new Setting<>("--kt", Limits.KT, CostModel.WALD_HAVRAN.kt(), EVERY,
             "cost of traversing one node (the SAH's, and every tree's expected cost)",
-            (b, v) -> b.costModel(new CostModel(v, b.costModel().ki())), b -> b.costModel().kt());
+            (b, v) -> b.costModel(new CostModel(v, b.costModel().ki())), b -> b.costModel().kt())
+            .andBvh("every builder", (h, v) -> h.costModel(new CostModel(v, h.costModel().ki())), h -> h.costModel().kt());
     /** Ki, the cost of one primitive test. */
     public static final Setting<Double> KI = new Setting<>("--ki", Limits.KI, CostModel.WALD_HAVRAN.ki(), EVERY,
             "cost of intersecting one primitive (the SAH's, and every tree's expected cost)",
-            (b, v) -> b.costModel(new CostModel(b.costModel().kt(), v)), b -> b.costModel().ki());
+            (b, v) -> b.costModel(new CostModel(b.costModel().kt(), v)), b -> b.costModel().ki())
+            .andBvh("every builder", (h, v) -> h.costModel(new CostModel(h.costModel().kt(), v)), h -> h.costModel().ki());
     /** Kmaxdepth, or -1 for the automatic depth cap. */
     public static final Setting<Integer> MAX_DEPTH = new Setting<>("--max-depth", Limits.MAX_DEPTH, -1, EVERY,
-            "the depth cap: no node deeper is split", KdTreeBuilder::maxDepth, KdTreeBuilder::maxDepth);
+            "the depth cap: no node deeper is split", KdTreeBuilder::maxDepth, KdTreeBuilder::maxDepth)
+            .andBvh("every builder", BvhBuilder::maxDepth, BvhBuilder::maxDepth);
     /** B, the references per input primitive the tree may hold. */
     public static final Setting<Integer> REFERENCE_BUDGET = new Setting<>("--reference-budget", Limits.REFERENCE_BUDGET, 256, EVERY,
             "references per primitive the tree may hold: where overlapping geometry would need more, "
@@ -62,7 +70,8 @@ public final class Setting<T> {
     /** Threads building the tree. */
     public static final Setting<Integer> THREADS = new Setting<>("--threads", Limits.THREADS, 1, EVERY,
             "threads building the tree (the same tree at any count)",
-            KdTreeBuilder::threads, KdTreeBuilder::threads);
+            KdTreeBuilder::threads, KdTreeBuilder::threads)
+            .andBvh("every builder", BvhBuilder::threads, BvhBuilder::threads);
     /** lambda, the SAH's weight of a plane that leaves one child empty. */
     public static final Setting<Double> LAMBDA = new Setting<>("--lambda", Limits.LAMBDA, 0.8, SAH,
             "the SAH's weight of a plane that cuts off empty space (1 = no bonus)", SahBuilder::lambda, SahBuilder::lambda);
@@ -72,9 +81,10 @@ public final class Setting<T> {
             "how the SAH searches for its planes (NAIVE, SORTED and EVENT build the same tree in different times; "
                     + "BINNED builds another, with planes at bin boundaries only)",
             SahBuilder::algorithm, SahBuilder::algorithm);
-    /** Bins per axis of the binned SAH (the exact algorithms take it and do not use it). */
+    /** Bins per axis of the binned SAH (the exact algorithms take it and do not use it) and of the BVH's. */
     public static final Setting<Integer> BINS = new Setting<>("--bins", Limits.BINS, 32, SAH,
-            "bins per axis of the BINNED plane search", SahBuilder::bins, SahBuilder::bins);
+            "bins per axis of the BINNED plane search and of the bvh builder's SAH", SahBuilder::bins, SahBuilder::bins)
+            .andBvh("the sah and bvh builders", BvhBuilder::bins, BvhBuilder::bins);
     /** The node size below which the binned SAH searches exactly. */
     public static final Setting<Integer> EXACT_BELOW = new Setting<>("--exact-below", Limits.EXACT_BELOW, 64, SAH,
             "the BINNED plane search sweeps nodes of fewer references exactly", SahBuilder::exactBelow, SahBuilder::exactBelow);
@@ -89,13 +99,18 @@ public final class Setting<T> {
     /** The sliding-midpoint builder's largest leaf. */
     public static final Setting<Integer> LEAF_SIZE = new Setting<>("--leaf-size", Limits.LEAF_SIZE, 16, SLIDING,
             "the largest leaf, unless its primitives coincide or the depth cap is reached",
-            SlidingMidpointBuilder::leafSize, SlidingMidpointBuilder::leafSize);
+            SlidingMidpointBuilder::leafSize, SlidingMidpointBuilder::leafSize)
+            .andBvh("the sliding-midpoint and bvh builders", BvhBuilder::leafSize, BvhBuilder::leafSize);
+    /** Children per node of the BVH's wide layout, the one rays traverse. */
+    public static final Setting<Integer> BVH_WIDTH = new Setting<>("--bvh-width", Limits.BVH_WIDTH, 4, BVH,
+            "children per node of the collapsed layout that rays traverse (the binary tree is built first)",
+            BvhBuilder::width, BvhBuilder::width);
 
     /** Every setting, in the order a spec applies them (the preset first, so that what follows overrides it). */
     public static final List<Setting<?>> ALL = List.copyOf(TABLE);
 
     /** The builders a setting applies to: a class and its subclasses, and how a message names them. */
-    private record Owner<B extends KdTreeBuilder>(Class<B> type, String name) {
+    private record Owner<B>(Class<B> type, String name) {
     }
 
     private final String name;
@@ -105,18 +120,22 @@ public final class Setting<T> {
     private final Limit limit;
     private final Owner<?> owner;
     private final String help;
-    private final BiConsumer<KdTreeBuilder, T> give;
-    private final Function<KdTreeBuilder, T> read;
+    private final BiConsumer<Object, T> give;
+    private final Function<Object, T> read;
+    /** How the BVH's builder takes it, when it does (else null); and the name of all the builders that take it. */
+    private BiConsumer<BvhBuilder, T> giveBvh;
+    private Function<BvhBuilder, T> readBvh;
+    private String ownerName;
 
     /** A number in the range of {@code limit}, named by the limit's title. */
     @SuppressWarnings("unchecked")
-    private <B extends KdTreeBuilder> Setting(String option, Limit limit, T defaultValue, Owner<B> owner, String help,
+    private <B> Setting(String option, Limit limit, T defaultValue, Owner<B> owner, String help,
                                               BiConsumer<B, T> give, Function<B, T> read) {
         this(limit.title(), option, (Class<T>) defaultValue.getClass(), defaultValue, limit, owner, help, give, read);
     }
 
     @SuppressWarnings("unchecked")
-    private <B extends KdTreeBuilder> Setting(String name, String option, Class<T> type, T defaultValue, Limit limit,
+    private <B> Setting(String name, String option, Class<T> type, T defaultValue, Limit limit,
                                               Owner<B> owner, String help, BiConsumer<B, T> give, Function<B, T> read) {
         this.name = name;
         this.option = option;
@@ -127,8 +146,17 @@ public final class Setting<T> {
         this.help = help;
         this.give = (b, v) -> give.accept((B) b, v);
         this.read = b -> read.apply((B) b);
+        this.ownerName = owner.name();
         if (limit != null) check(defaultValue);
         TABLE.add(this);
+    }
+
+    /** The BVH's builder takes this kd-tree setting too, as {@code give} and {@code read} say; {@code owners} names all who take it. */
+    private Setting<T> andBvh(String owners, BiConsumer<BvhBuilder, T> give, Function<BvhBuilder, T> read) {
+        this.giveBvh = give;
+        this.readBvh = read;
+        this.ownerName = owners;
+        return this;
     }
 
     /** {@return what the setting is called, in the talk's words where it has one}, e.g. "lambda", "Kmaxdepth" */
@@ -153,17 +181,20 @@ public final class Setting<T> {
     public String help() { return help; }
 
     /** {@return the builders it applies to, as a message says it}, e.g. "the sah builder", "every builder" */
-    public String ownerName() { return owner.name(); }
+    public String ownerName() { return ownerName; }
 
-    /** {@return whether every builder takes it} */
-    public boolean appliesToEvery() { return owner == EVERY; }
+    /** {@return whether every builder takes it, the BVH's too} */
+    public boolean appliesToEvery() { return owner == EVERY && giveBvh != null; }
 
     /**
-     * {@return whether {@code builder} takes this setting} (a builder of the owning class or a subclass of it).
+     * {@return whether {@code builder} takes this setting} (a builder of the owning class or a
+     * subclass of it, or the BVH's builder when the row says so).
      *
-     * @param builder a builder
+     * @param builder a {@link KdTreeBuilder} or a {@link BvhBuilder}
      */
-    public boolean appliesTo(KdTreeBuilder builder) { return owner.type().isInstance(builder); }
+    public boolean appliesTo(Object builder) {
+        return owner.type().isInstance(builder) || giveBvh != null && builder instanceof BvhBuilder;
+    }
 
     /**
      * {@code value}, checked against this setting's {@link Limits} entry (the error names {@link #option()}).
@@ -178,14 +209,20 @@ public final class Setting<T> {
     }
 
     /** Gives {@code value} to {@code builder}, which this setting applies to. */
-    void give(KdTreeBuilder builder, Object value) { give.accept(builder, type.cast(value)); }
+    void give(Object builder, Object value) {
+        if (giveBvh != null && builder instanceof BvhBuilder h) giveBvh.accept(h, type.cast(value));
+        else give.accept(builder, type.cast(value));
+    }
 
     /**
      * {@return the value {@code builder} has}, null for a preset (which is not a value a builder keeps).
      *
      * @param builder a builder this setting applies to
      */
-    public T read(KdTreeBuilder builder) { return read.apply(builder); }
+    public T read(Object builder) {
+        if (readBvh != null && builder instanceof BvhBuilder h) return readBvh.apply(h);
+        return read.apply(builder);
+    }
 
     /**
      * {@return {@code value} as people write it}: whole numbers without a decimal point, on/off for a switch, an enum's name

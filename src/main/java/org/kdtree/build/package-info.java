@@ -8,7 +8,7 @@
  * student's) builder on a thread of its own within deadlines, and names its faults
  * ({@link org.kdtree.build.BuilderFault}).
  *
- * <p>Layer 3: it may use {@code limits}, {@code geom}, {@code shape} and {@code tree}; never a
+ * <p>Layer 5: it may use {@code limits}, {@code geom}, {@code shape}, {@code tree}, {@code traverse} and {@code bvh} (whose builder the one specification names); never a
  * package above it, so a builder of a student's jar joins without a change here.
  */
 package org.kdtree.build;

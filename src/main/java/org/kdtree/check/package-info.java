@@ -8,6 +8,6 @@
  * {@code shape}, {@code geom}, {@code limits} (the deadlines), {@code generate} (the generated
  * scenes) and {@code io} (the bundled scenes); used by {@code cli}.
  *
- * <p>Layer 6: it may use the library below it; only {@code cli} uses it.
+ * <p>Layer 8: it may use the library below it; only {@code cli} uses it.
  */
 package org.kdtree.check;

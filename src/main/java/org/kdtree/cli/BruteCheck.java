@@ -8,22 +8,21 @@ import org.kdtree.geom.Ray;
 import org.kdtree.geom.Tolerance;
 import org.kdtree.traverse.TriangleIntersector;
 import org.kdtree.traverse.Hit;
-import org.kdtree.traverse.RayQuery;
-import org.kdtree.traverse.Traverser;
+import org.kdtree.traverse.AccelerationStructure;
 import org.kdtree.measure.RaySet;
 
 /**
  * The hidden {@code raycast --verify STRIDE}: traces every STRIDE-th ray of a set both by brute
- * force (double precision, every triangle, {@link TriangleIntersector#closestHitAll}) and through the tree, and counts disagreements: hit
+ * force (double precision, every triangle, {@link TriangleIntersector#closestHitAll}) and through the structure (kd-tree or BVH), and counts disagreements: hit
  * versus miss, or closest t differing by more than 1e-9 relative. Slow by design (N rays times
  * all triangles); only the brute force runs on several threads, each with its own tree query.
  */
 final class BruteCheck {
     private final TriangleIntersector tris;
-    private final Traverser tree;
+    private final AccelerationStructure tree;
     private final int stride, threads;
 
-    BruteCheck(TriangleIntersector tris, Traverser tree, int stride, int threads) {
+    BruteCheck(TriangleIntersector tris, AccelerationStructure tree, int stride, int threads) {
         this.tris = tris;
         this.tree = tree;
         this.stride = stride;
@@ -40,7 +39,7 @@ final class BruteCheck {
             Future<?>[] f = new Future<?>[threads];
             for (int th = 0; th < threads; th++) {
                 int id = th;
-                Traverser own = new Traverser(tree.tree(), tree.intersector());
+                var own = tree.query(tris);
                 f[th] = pool.submit(() -> {
                     Ray ray = new Ray(3);
                     Hit a = new Hit(), b = new Hit();

@@ -7,16 +7,15 @@ import java.nio.file.Files;
 import java.nio.file.Path;
 import java.util.Locale;
 import java.util.concurrent.Callable;
-import org.kdtree.build.KdTreeBuilder;
 import org.kdtree.build.Supervisor;
 import org.kdtree.build.BuilderSpec;
 import org.kdtree.files.AtomicFile;
 import org.kdtree.limits.Limits;
 import org.kdtree.generate.MeshGrid;
 import org.kdtree.shape.TriangleMesh;
-import org.kdtree.traverse.Traverser;
+import org.kdtree.traverse.AccelerationStructure;
+import org.kdtree.traverse.RayQuery;
 import org.kdtree.traverse.TriangleIntersector;
-import org.kdtree.tree.KdTree;
 import org.kdtree.tree.TreeStats;
 import picocli.CommandLine.Command;
 import picocli.CommandLine.Mixin;
@@ -81,20 +80,20 @@ final class RaycastCommand implements Callable<Integer> {
             CommandFiles.requireNotInput("--hits", hitsFile, "MESH", mesh);
             CommandFiles.requireNotInput("--hits", hitsFile, "--rays", raysFile);
         }
+        String settings = spec.describe();        // also refuses settings the builder does not take, before the mesh is read
         TriangleMesh scene = MeshGrid.grid(CommandFiles.readMesh(mesh, "raycast"), grid);
-        KdTreeBuilder builder = spec.create();
-        threads = builder.threads();
-        if (raysFile != null) return traceFile(scene, builder);
-        return benchmark(scene, builder);
+        threads = spec.value(org.kdtree.build.Setting.THREADS);
+        if (raysFile != null) return traceFile(scene, spec);
+        return benchmark(scene, spec, settings);
     }
 
-    private int traceFile(TriangleMesh scene, KdTreeBuilder builder) throws Exception {
-        KdTree tree;
+    private int traceFile(TriangleMesh scene, BuilderSpec spec) throws Exception {
+        AccelerationStructure tree;
         try (ProgressBar bar = progress.bar(1, "builds")) {
             bar.step(0, "build");
-            tree = deadlines.supervisor().build(builder, scene);
+            tree = spec.build(scene, deadlines.supervisor());
         }
-        Traverser traverser = new Traverser(tree, new TriangleIntersector(scene));
+        RayQuery traverser = tree.query(new TriangleIntersector(scene));
         if (!Files.isRegularFile(raysFile)) throw new java.io.IOException(raysFile + ": no such file");
         if (!hitsFile.toString().equals("-")) CommandFiles.requireFolder("--hits", hitsFile);
         try (BufferedReader in = Files.newBufferedReader(raysFile, StandardCharsets.UTF_8)) {
@@ -104,35 +103,35 @@ final class RaycastCommand implements Callable<Integer> {
         return 0;
     }
 
-    private int benchmark(TriangleMesh scene, KdTreeBuilder builder) throws Exception {
+    private int benchmark(TriangleMesh scene, BuilderSpec spec, String settings) throws Exception {
         int passes = timed.warmup + timed.runs;
-        Timing.Timed<KdTree> build;
+        Timing.Timed<AccelerationStructure> build;
         Timing.Timed<RayBatch.Checksum> pr, rr;
         RaySet p, r;
         TriangleIntersector tris = new TriangleIntersector(scene);
         Supervisor supervisor = deadlines.supervisor();
         try (ProgressBar bar = progress.bar(3 * passes, "steps")) {
-            build = Timing.median(timed.warmup, timed.runs, steps(bar, 0, "build"), () -> supervisor.build(builder, scene));
+            build = Timing.median(timed.warmup, timed.runs, steps(bar, 0, "build"), () -> spec.build(scene, supervisor));
             p = RaySet.primary(scene, RaySet.SPEC_IMAGE);
             r = RaySet.random(scene, RaySet.SPEC_RANDOM_RAYS);
-            KdTree built = build.value();
-            try (RayBatch batch = new RayBatch(threads, () -> new Traverser(built, tris))) {
+            AccelerationStructure built = build.value();
+            try (RayBatch batch = new RayBatch(threads, () -> built.query(tris))) {
                 pr = Timing.median(timed.warmup, timed.runs, steps(bar, passes, "P rays"), () -> batch.trace(p));
                 rr = Timing.median(timed.warmup, timed.runs, steps(bar, 2 * passes, "R rays"), () -> batch.trace(r));
             }
         }
-        KdTree tree = build.value();
+        AccelerationStructure tree = build.value();
         TreeStats st = tree.stats();
         String meshName = mesh.getFileName().toString().replaceFirst("\\.[oO][bB][jJ]$", "")
                 + (grid > 1 ? "-grid" + grid : "");
         System.out.println(String.format(Locale.ROOT, "kdtree-%s %s %d %.1f %d %d %d %d %.6f %.3f %d %.6f %.3f",
-                builder.name(), meshName, scene.size(), build.millis(), st.nodes(), st.leaves(), st.maxDepth(),
+                spec.builder(), meshName, scene.size(), build.millis(), st.nodes(), st.leaves(), st.maxDepth(),
                 pr.value().hits(), pr.value().tSum(), p.size() / pr.seconds() / 1e6,
                 rr.value().hits(), rr.value().tSum(), r.size() / rr.seconds() / 1e6));
         System.err.println(String.format(Locale.ROOT, "# %s, %d thread(s); references per non-empty leaf %.2f",
-                builder.describeSettings(), threads, st.averageRefsPerLeaf()));
+                settings, threads, st.averageRefsPerLeaf()));
         if (verifyStride > 0) {
-            BruteCheck check = new BruteCheck(tris, new Traverser(tree, tris), verifyStride, threads);
+            BruteCheck check = new BruteCheck(tris, tree, verifyStride, threads);
             System.err.println("# verify P: " + check.compare(p));
             System.err.println("# verify R: " + check.compare(r));
         }

@@ -3,6 +3,6 @@
  * {@code render}, {@code tradeoff}, {@code knn}; {@link org.kdtree.cli.Main} is the jar's entry
  * point, and every failure ends as one line.
  *
- * <p>Layer 8, the top: it may use every package.
+ * <p>Layer 10, the top: it may use every package.
  */
 package org.kdtree.cli;

@@ -3,6 +3,6 @@
  * first contact of a moving sphere, exact tests per primitive kind, brute force as the oracle,
  * and a small ball simulation for the workbench.
  *
- * <p>Layer 4: it may use the packages of layers 1 to 3.
+ * <p>Layer 6: it may use the packages of layers 1 to 5.
  */
 package org.kdtree.collide;

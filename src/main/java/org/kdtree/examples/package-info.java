@@ -3,7 +3,7 @@
  * INF/services}, found as a student's builder is, named by no other package) and the README's
  * library example.
  *
- * <p>Layer 6: it may use the library below it (it reads files with {@code io}); nothing uses
+ * <p>Layer 8: it may use the library below it (it reads files with {@code io}); nothing uses
  * it.
  */
 package org.kdtree.examples;

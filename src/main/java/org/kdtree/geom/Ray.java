@@ -113,6 +113,26 @@ public final class Ray {
      */
     public double at(double t, int axis) { return origin[axis] + t * direction[axis]; }
 
+    /**
+     * Checks that the ray can be traced through a {@code k}-D structure: of that dimension,
+     * with a finite origin and a finite, non-zero direction.
+     *
+     * @param k         the structure's dimension
+     * @param structure what it is, for the message, e.g. "tree"
+     * @throws IllegalArgumentException naming what is wrong
+     */
+    public void requireTraceable(int k, String structure) {
+        if (dimension() != k)
+            throw new IllegalArgumentException("a " + dimension() + "-D ray in a " + k + "-D " + structure);
+        boolean moving = false;
+        for (int a = 0; a < k; a++) {
+            if (!Double.isFinite(origin[a]) || !Double.isFinite(direction[a]))
+                throw new IllegalArgumentException("ray has a non-finite origin or direction: " + this);
+            moving |= direction[a] != 0;
+        }
+        if (!moving) throw new IllegalArgumentException("ray direction is zero: " + this);
+    }
+
     @Override public String toString() {
         return "Ray[o=" + java.util.Arrays.toString(origin) + ", d=" + java.util.Arrays.toString(direction) + "]";
     }

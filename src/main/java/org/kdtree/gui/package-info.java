@@ -4,6 +4,6 @@
  * with {@code render}). Only {@link org.kdtree.gui.Workbench} and what the benchmarks measure
  * are public.
  *
- * <p>Layer 7: it may use every package but {@code cli}.
+ * <p>Layer 9: it may use every package but {@code cli}.
  */
 package org.kdtree.gui;

@@ -4,6 +4,6 @@
  * scenes, point CSV files, loading by extension, and JSON render scenes with OBJ/MTL into
  * {@code scene} types.
  *
- * <p>Layer 5: it may use the packages of layers 1 to 4; not {@code render}.
+ * <p>Layer 7: it may use the packages of layers 1 to 6; not {@code render}.
  */
 package org.kdtree.io;

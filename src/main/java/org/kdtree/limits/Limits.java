@@ -12,7 +12,7 @@ public final class Limits {
     /** Threads building a tree, tracing a ray set or rendering an image. */
     public static final Limit THREADS = Limit.whole("threads", 1, 256);
     /** Kmaxdepth, the depth cap of a tree; -1 lets the builder choose from the primitive count. */
-    public static final Limit MAX_DEPTH = Limit.whole("Kmaxdepth", -1, 64).noting("-1 = auto, 8 + 1.3 log2 N");
+    public static final Limit MAX_DEPTH = Limit.whole("Kmaxdepth", -1, 64).noting("-1 = auto: 8 + 1.3 log2 N for a kd-tree, 64 for a BVH");
     /** The factor c of an automatic depth cap 8 + c log2 N. */
     public static final Limit DEPTH_FACTOR = Limit.real("depth factor c", 0, 4);
     /** References the tree may hold per input primitive before nodes become leaves early. */
@@ -29,8 +29,10 @@ public final class Limits {
     public static final Limit BINS = Limit.whole("bins", 2, 1_000_000);
     /** Reference count below which the binned SAH switches to the exact sweep. */
     public static final Limit EXACT_BELOW = Limit.whole("exact below", 0, 1_000_000_000).noting("0 = never");
-    /** The sliding-midpoint builder's largest leaf. */
+    /** The largest leaf of the sliding-midpoint builder and of a bounding volume hierarchy. */
     public static final Limit LEAF_SIZE = Limit.whole("leaf size", 1, 1 << 16);
+    /** Children per node of a bounding volume hierarchy's collapsed (wide) layout. */
+    public static final Limit BVH_WIDTH = Limit.whole("BVH width", 2, 8);
     /** The SAH's smallest node it searches a plane for: smaller ones become leaves. */
     public static final Limit LEAF_BELOW = Limit.whole("leaf below", 1, 1 << 16).noting("1 = only empty nodes");
     /** How long one call of a supervised builder's terminate or findPlane may take before it is reported as hung ({@link Deadlines}). */
@@ -98,7 +100,7 @@ public final class Limits {
 
     /** All of them, in the order of docs/limits.md (the workbench's own are in {@code gui.WorkbenchLimits}). */
     public static final List<Limit> ALL = List.of(THREADS, MAX_DEPTH, DEPTH_FACTOR, REFERENCE_BUDGET, KT, KI, LAMBDA,
-            MIN_PRIMITIVES, BINS, EXACT_BELOW, LEAF_BELOW, LEAF_SIZE, CALL_DEADLINE, BUILD_DEADLINE, STUDENT_DEADLINE, STUDENT_HEAP, IMAGE_SIDE, SAMPLES_PER_PIXEL, RAY_DEPTH, LIGHT_SAMPLES,
+            MIN_PRIMITIVES, BINS, EXACT_BELOW, LEAF_BELOW, LEAF_SIZE, BVH_WIDTH, CALL_DEADLINE, BUILD_DEADLINE, STUDENT_DEADLINE, STUDENT_HEAP, IMAGE_SIDE, SAMPLES_PER_PIXEL, RAY_DEPTH, LIGHT_SAMPLES,
             SPHERE_SEGMENTS, SPHERE_RINGS, FLAKE_LEVELS,
             RUNS, WARMUP, GRID, RAY_COUNT, RAYS_PER_TRIANGLE,
             NEIGHBOURS, LEAF_BUDGET, EPSILON, POINT_COUNT, QUERY_COUNT, DIMENSION, SCENE_OBJECTS);

@@ -5,6 +5,6 @@
  * {@code raycast} and {@code stats}, the trade-off study and the benchmarks. In the applications'
  * room: no package of the library uses it.
  *
- * <p>Layer 4: it may use the packages of layers 1 to 3.
+ * <p>Layer 6: it may use the packages of layers 1 to 5.
  */
 package org.kdtree.measure;

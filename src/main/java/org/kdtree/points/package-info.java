@@ -3,7 +3,7 @@
  * eps), radius and box search, under any Minkowski metric; one query object per thread, results
  * into the caller's arrays.
  *
- * <p>Layer 4: it may use the packages of layers 1 to 3 (its default builder comes from
+ * <p>Layer 6: it may use the packages of layers 1 to 5 (its default builder comes from
  * {@code build}).
  */
 package org.kdtree.points;

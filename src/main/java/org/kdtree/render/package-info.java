@@ -3,7 +3,7 @@
  * first ray), the Whitted tracer (allocation-free per ray), the tiled multi-threaded renderer
  * with progress and stop, and PNG output.
  *
- * <p>Layer 5: it may use the packages of layers 1 to 4; not {@code io}, which is the caller's
+ * <p>Layer 7: it may use the packages of layers 1 to 6; not {@code io}, which is the caller's
  * business.
  */
 package org.kdtree.render;

@@ -6,7 +6,7 @@
  * describes positions and colours; {@link org.kdtree.scene.Vectors} is the tracer's
  * allocation-free arithmetic on arrays.
  *
- * <p>Layer 4: it may use {@code limits}, {@code geom} and {@code shape}. {@code io} fills it
+ * <p>Layer 6: it may use {@code limits}, {@code geom} and {@code shape}. {@code io} fills it
  * and {@code render} reads it, and neither of those two knows the other.
  */
 package org.kdtree.scene;

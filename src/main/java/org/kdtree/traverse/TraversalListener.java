@@ -19,6 +19,9 @@ package org.kdtree.traverse;
  * {@code skipped = true} when it cannot hold anything closer than the hit found so far;</li>
  * <li>{@link #end} with the final result.</li>
  * </ol>
+ * A bounding volume hierarchy's traversal ({@code org.kdtree.bvh}) reports {@link #boxTest} for
+ * each child box it tests and {@link #boxNode} for each interior node it enters, in place of
+ * {@link #interior}; {@link #leaf}, {@link #primitive}, {@link #pop} and {@link #end} mean the same.
  * To replay a traversal, record the events into a list (they carry plain values, so a recorder
  * can copy them) and step through it. Methods default to doing nothing; listeners must not
  * modify the hit they are given.
@@ -65,6 +68,27 @@ public interface TraversalListener {
      */
     default void interior(int node, int axis, double split, double tMin, double tMax, double tSplit,
                           int near, int far, Visit visit) { }
+
+    /**
+     * A bounding volume hierarchy's child box was tested against the ray: entered over
+     * {@code [tMin, tMax]}, or missed (then the interval is empty or lies beyond the closest hit).
+     *
+     * @param node    the child's index
+     * @param entered whether the ray enters the box within its interval
+     * @param tMin    where the ray enters the box
+     * @param tMax    where it leaves
+     */
+    default void boxTest(int node, boolean entered, double tMin, double tMax) { }
+
+    /**
+     * A bounding volume hierarchy's interior node is visited over {@code [tMin, tMax]}: its
+     * children's boxes are tested next.
+     *
+     * @param node the node's index
+     * @param tMin where the ray enters its box
+     * @param tMax where it leaves
+     */
+    default void boxNode(int node, double tMin, double tMax) { }
 
     /**
      * The far child is saved on the stack, to be visited over {@code [tMin, tMax]}.

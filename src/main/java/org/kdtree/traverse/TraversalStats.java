@@ -16,6 +16,8 @@ public final class TraversalStats implements TraversalListener {
     public long hits;
     /** Repeated references skipped by mailboxing. */
     public long mailboxed;
+    /** Bounding boxes tested (a bounding volume hierarchy's; a kd-tree tests none). */
+    public long boxTests;
     /** Rays traced. */
     public long rays;
 
@@ -25,7 +27,7 @@ public final class TraversalStats implements TraversalListener {
      * @return these statistics
      */
     public TraversalStats reset() {
-        nodes = leaves = primitiveTests = hits = mailboxed = rays = 0;
+        nodes = leaves = primitiveTests = hits = mailboxed = boxTests = rays = 0;
         return this;
     }
 
@@ -37,7 +39,7 @@ public final class TraversalStats implements TraversalListener {
      */
     public TraversalStats add(TraversalStats o) {
         nodes += o.nodes; leaves += o.leaves; primitiveTests += o.primitiveTests;
-        hits += o.hits; mailboxed += o.mailboxed; rays += o.rays;
+        hits += o.hits; mailboxed += o.mailboxed; boxTests += o.boxTests; rays += o.rays;
         return this;
     }
 
@@ -45,6 +47,8 @@ public final class TraversalStats implements TraversalListener {
     @Override public void missedScene() { rays++; }
     @Override public void interior(int node, int axis, double split, double tMin, double tMax, double tSplit,
                                    int near, int far, Visit visit) { nodes++; }
+    @Override public void boxNode(int node, double tMin, double tMax) { nodes++; }
+    @Override public void boxTest(int node, boolean entered, double tMin, double tMax) { boxTests++; }
     @Override public void leaf(int node, double tMin, double tMax, int count) { nodes++; leaves++; }
     @Override public void primitive(int primitive, boolean hit, double t) {
         primitiveTests++;
@@ -54,7 +58,7 @@ public final class TraversalStats implements TraversalListener {
 
     @Override public String toString() {
         return String.format(java.util.Locale.ROOT,
-                "rays=%d nodes=%d leaves=%d primitiveTests=%d hits=%d mailboxed=%d", rays, nodes, leaves,
-                primitiveTests, hits, mailboxed);
+                "rays=%d nodes=%d leaves=%d primitiveTests=%d hits=%d mailboxed=%d boxTests=%d", rays, nodes, leaves,
+                primitiveTests, hits, mailboxed, boxTests);
     }
 }

@@ -274,15 +274,6 @@ public final class Traverser implements RayQuery {
 
     /** Rejects rays that no query can answer: non-finite values or an all-zero direction. */
     void checkRay(Ray ray) {
-        if (ray.dimension() != lo.length)
-            throw new IllegalArgumentException("a " + ray.dimension() + "-D ray in a " + lo.length + "-D tree");
-        boolean moving = false;
-        for (int a = 0; a < ray.dimension(); a++) {
-            double o = ray.origin(a), d = ray.direction(a);
-            if (!Double.isFinite(o) || !Double.isFinite(d))
-                throw new IllegalArgumentException("ray has a non-finite origin or direction: " + ray);
-            moving |= d != 0;
-        }
-        if (!moving) throw new IllegalArgumentException("ray direction is zero: " + ray);
+        ray.requireTraceable(lo.length, "tree");
     }
 }

@@ -61,8 +61,14 @@ public final class TriangleIntersector implements Intersector {
                 tMin, tMax, hit);
     }
 
-    /** The axis of largest absolute direction component (the sheared frame's z). */
-    static int maxAxis(double dx, double dy, double dz) {
+    /**
+     * {@return the axis of largest absolute direction component (the sheared frame's z)}
+     *
+     * @param dx the direction's x
+     * @param dy its y
+     * @param dz its z
+     */
+    public static int maxAxis(double dx, double dy, double dz) {
         double ax = Math.abs(dx), ay = Math.abs(dy), az = Math.abs(dz);
         return ax > ay ? (ax > az ? 0 : 2) : (ay > az ? 1 : 2);
     }
@@ -70,9 +76,27 @@ public final class TriangleIntersector implements Intersector {
     /**
      * The test proper, on corners {@code c[b .. b+9)}, with the origin's coordinates given in the
      * sheared frame's axis order and the per-ray shear constants. Records a hit with
-     * {@code tMin <= t <= tMax} and {@code t < hit.t} in {@code hit}. (The fast path inlines a copy.)
+     * {@code tMin <= t <= tMax} and {@code t < hit.t} in {@code hit}. (The kd-tree's fast path
+     * inlines a copy; the BVH's wide traversal calls this.)
+     *
+     * @param c    corner coordinates, 9 per triangle
+     * @param b    where this triangle's 9 start
+     * @param prim the triangle's index, recorded in {@code hit}
+     * @param ox   the ray origin's coordinate on the sheared frame's x axis ({@code kx})
+     * @param oy   on its y axis
+     * @param oz   on its z axis
+     * @param kx   the sheared frame's x axis
+     * @param ky   its y axis
+     * @param kz   its z axis, {@link #maxAxis} of the direction
+     * @param sx   the shear {@code d[kx] / d[kz]}
+     * @param sy   the shear {@code d[ky] / d[kz]}
+     * @param sz   {@code 1 / d[kz]}
+     * @param tMin the start of the ray's range
+     * @param tMax the end of the ray's range
+     * @param hit  the closest hit so far; updated on a closer hit
+     * @return whether a closer hit was recorded
      */
-    static boolean test(double[] c, int b, int prim, double ox, double oy, double oz, int kx, int ky, int kz,
+    public static boolean test(double[] c, int b, int prim, double ox, double oy, double oz, int kx, int ky, int kz,
                         double sx, double sy, double sz, double tMin, double tMax, Hit hit) {
         double az = c[b + kz] - oz, bz = c[b + 3 + kz] - oz, cz = c[b + 6 + kz] - oz;
         double ax = c[b + kx] - ox - sx * az, ay = c[b + ky] - oy - sy * az;

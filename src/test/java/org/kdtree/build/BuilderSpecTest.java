@@ -49,11 +49,19 @@ class BuilderSpecTest {
     @Test void aSettingThatDoesNotApplyIsRefusedNotIgnored() {
         assertThatThrownBy(() -> BuilderSpec.of("median-plane").with(Setting.LAMBDA, 0.5).with(Setting.BINS, 8).create())
                 .isInstanceOf(IllegalArgumentException.class)
-                .hasMessage("--lambda, --bins apply to the sah builder only, not to median-plane");
+                .hasMessage("--lambda applies to the sah builder only, not to median-plane");
+        assertThatThrownBy(() -> BuilderSpec.of("median-plane").with(Setting.BINS, 8).create())
+                .hasMessage("--bins applies to the sah and bvh builders only, not to median-plane");
+        assertThatThrownBy(() -> BuilderSpec.of("bvh").with(Setting.LAMBDA, 0.5).createBvh())
+                .hasMessage("--lambda applies to the sah builder only, not to bvh");
+        assertThatThrownBy(() -> BuilderSpec.of("bvh").with(Setting.PERFECT_SPLITS, false).createBvh())
+                .hasMessage("--no-perfect-splits applies to the kd-tree builders only, not to bvh");
+        assertThatThrownBy(() -> BuilderSpec.of("sah").with(Setting.BVH_WIDTH, 8).create())
+                .hasMessage("--bvh-width applies to the bvh builder only, not to sah");
         assertThatThrownBy(() -> BuilderSpec.of("sah").with(Setting.MIN_PRIMITIVES, 1).create())
                 .hasMessage("--min-prims applies to the median builders only, not to sah");
         assertThatThrownBy(() -> BuilderSpec.of("sah").with(Setting.LEAF_SIZE, 4).create())
-                .hasMessage("--leaf-size applies to the sliding-midpoint builder only, not to sah");
+                .hasMessage("--leaf-size applies to the sliding-midpoint and bvh builders only, not to sah");
     }
 
     @Test void carryingSettingsToAnotherBuilderKeepsThoseThatApply() {
@@ -84,6 +92,6 @@ class BuilderSpecTest {
         assertThat(b.maxDepth()).isEqualTo(9);
         assertThatThrownBy(() -> BuilderSpec.of("centre-midpoint").with(Setting.LAMBDA, 0.5).create())
                 .hasMessage("--lambda applies to the sah builder only, not to centre-midpoint");
-        assertThatThrownBy(() -> BuilderSpec.of("bvh").create()).hasMessageStartingWith("unknown builder 'bvh'");
+        assertThatThrownBy(() -> BuilderSpec.of("nothing").create()).hasMessageStartingWith("unknown builder 'nothing'");
     }
 }

@@ -85,7 +85,7 @@ class FailureTest {
                 {"tradeoff", "scenes/clustered-spheres.obj", "--chart-rpt", "-5"}, {"--chart-rpt must be between 0.001 and 1000000, got -5"},
                 {"stats", "scenes/clustered-spheres.obj", "--warmup", "-1"}, {"--warmup must be between 0 and 1000, got -1"},
                 {"stats", "scenes/clustered-spheres.obj", "--max-depth", "1000"},
-                {"--max-depth must be between -1 and 64 (-1 = auto, 8 + 1.3 log2 N), got 1000"},
+                {"--max-depth must be between -1 and 64 (-1 = auto: 8 + 1.3 log2 N for a kd-tree, 64 for a BVH), got 1000"},
                 {"stats", "scenes/clustered-spheres.obj", "--kt", "-1"}, {"--kt must be between 0 and 10000, got -1"},
                 {"stats", "scenes/clustered-spheres.obj", "--lambda", "0"}, {"--lambda must be between 0.01 and 1, got 0"},
                 {"raycast", "scenes/clustered-spheres.obj", "--threads", "100000"}, {"--threads must be between 1 and 256, got 100000"},

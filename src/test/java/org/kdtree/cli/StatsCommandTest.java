@@ -41,9 +41,9 @@ class StatsCommandTest {
     }
 
     @Test void unknownBuildersAndMisplacedOptionsAreExplained() {
-        CliRun r = run("stats", "scenes/talk-figures.scene2d", "--builder", "bvh");
+        CliRun r = run("stats", "scenes/talk-figures.scene2d", "--builder", "octree");
         assertThat(r.code()).isEqualTo(2);
-        assertThat(r.err()).contains("unknown builder 'bvh'").doesNotContain("Exception");
+        assertThat(r.err()).contains("unknown builder 'octree'").doesNotContain("Exception");
         r = run("stats", "scenes/talk-figures.scene2d", "--builder", "median-plane", "--lambda", "0.5");
         assertThat(r.err()).contains("--lambda applies to the sah builder only, not to median-plane");
     }

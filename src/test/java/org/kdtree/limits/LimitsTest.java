@@ -28,7 +28,7 @@ class LimitsTest {
 
     @Test void aRejectionNamesWhereTheRangeTheNoteAndTheValue() {
         assertThatThrownBy(() -> Limits.MAX_DEPTH.check("--max-depth", 65))
-                .hasMessage("--max-depth must be between -1 and 64 (-1 = auto, 8 + 1.3 log2 N), got 65");
+                .hasMessage("--max-depth must be between -1 and 64 (-1 = auto: 8 + 1.3 log2 N for a kd-tree, 64 for a BVH), got 65");
         assertThatThrownBy(() -> Limits.LAMBDA.check("lambda", 0.0)).hasMessage("lambda must be between 0.01 and 1, got 0");
     }
 

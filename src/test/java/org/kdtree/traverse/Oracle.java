@@ -3,14 +3,16 @@ package org.kdtree.traverse;
 import static org.assertj.core.api.Assertions.assertThat;
 
 import java.util.List;
+import org.kdtree.build.BuilderSpec;
 import org.kdtree.build.Builders;
+import org.kdtree.bvh.BvhBuilder;
 import org.kdtree.geom.Ray;
 import org.kdtree.geom.Tolerance;
 import org.kdtree.shape.Primitives;
 import org.kdtree.tree.KdTree;
 
 /**
- * The test oracle: a kd-tree query must agree with brute force over all primitives. Same hit or
+ * The test oracle: a kd-tree's or a BVH's query must agree with brute force over all primitives. Same hit or
  * miss; the same closest t within {@link #TOLERANCE} (relative 1e-9); the same primitive, or
  * another that the ray meets equally close.
  */
@@ -19,36 +21,45 @@ final class Oracle {
 
     final Intersector prims;
     final BruteForce brute;
+    /** The kd-tree's traverser (null for a BVH), for the queries only a kd-tree answers. */
     final Traverser traverser;
+    final RayQuery fast, listened;
     final String name;
     private final Hit expected = new Hit(), actual = new Hit(), probe = new Hit();
     final TraversalStats stats = new TraversalStats();
 
     Oracle(Primitives scene, Intersector prims, String builder) {
-        this(prims, Builders.create(builder).build(scene), builder);
+        this(prims, builder.equals(BvhBuilder.NAME) ? new BvhBuilder().build(scene)
+                : AccelerationStructure.of(Builders.create(builder).build(scene)), builder);
     }
 
     Oracle(Intersector prims, KdTree tree, String name) {
+        this(prims, AccelerationStructure.of(tree), name);
+    }
+
+    Oracle(Intersector prims, AccelerationStructure structure, String name) {
         this.prims = prims;
         this.brute = new BruteForce(prims);
-        this.traverser = new Traverser(tree, prims);
+        this.traverser = structure instanceof KdTreeStructure kd ? new Traverser(kd.tree(), prims) : null;
+        this.fast = structure.query(prims);
+        this.listened = structure.query(prims, stats);
         this.name = name;
     }
 
-    /** One oracle per registered builder. */
+    /** One oracle per registered builder, and one for the BVH. */
     static List<Oracle> allBuilders(Primitives scene, Intersector prims) {
-        return Builders.names().stream().map(b -> new Oracle(scene, prims, b)).toList();
+        return BuilderSpec.names().stream().map(b -> new Oracle(scene, prims, b)).toList();
     }
 
     /** Checks closest hit (fast and generic paths), any hit and all hits; returns whether it hit. */
     boolean check(Ray ray, double tMin, double tMax) {
         boolean want = brute.closestHit(ray, tMin, tMax, expected);
-        boolean got = traverser.closestHit(ray, tMin, tMax, actual);
+        boolean got = fast.closestHit(ray, tMin, tMax, actual);
         compare(ray, want, got, "closestHit", tMin, tMax);
-        boolean gotGeneric = traverser.closestHit(ray, tMin, tMax, actual, stats);
+        boolean gotGeneric = listened.closestHit(ray, tMin, tMax, actual);
         compare(ray, want, gotGeneric, "closestHit(listener)", tMin, tMax);
-        assertThat(traverser.anyHit(ray, tMin, tMax)).as(context(ray, "anyHit", tMin, tMax)).isEqualTo(want);
-        assertThat(traverser.anyHit(ray, tMin, tMax, stats)).as(context(ray, "anyHit(listener)", tMin, tMax))
+        assertThat(fast.anyHit(ray, tMin, tMax)).as(context(ray, "anyHit", tMin, tMax)).isEqualTo(want);
+        assertThat(listened.anyHit(ray, tMin, tMax)).as(context(ray, "anyHit(listener)", tMin, tMax))
                 .isEqualTo(want);
         return want;
     }
@@ -60,7 +71,7 @@ final class Oracle {
     /** The closest hit of the tree (fast path), after checking it. */
     Hit closest(Ray ray) {
         check(ray);
-        traverser.closestHit(ray, 0, Double.POSITIVE_INFINITY, actual);
+        fast.closestHit(ray, 0, Double.POSITIVE_INFINITY, actual);
         return actual;
     }
 

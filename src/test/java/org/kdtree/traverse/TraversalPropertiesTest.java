@@ -53,6 +53,7 @@ class TraversalPropertiesTest {
             if (dx != 0 || dy != 0 || dz != 0) {
                 ray.set(origin[0], origin[1], origin[2], dx, dy, dz);
                 o.check(ray);
+                if (o.traverser == null) continue;      // all hits: a kd-tree's query only
                 List<Hit> all = o.traverser.allHits(ray, 0, Double.POSITIVE_INFINITY);
                 int expected = 0;
                 for (int p = 0; p < x.size(); p++) if (x.intersect(p, ray, 0, Double.POSITIVE_INFINITY, new Hit())) expected++;

@@ -1,0 +1,196 @@
+package org.kdtree.bvh;
+
+import java.util.Objects;
+import org.kdtree.geom.Box;
+import org.kdtree.traverse.AccelerationStructure;
+import org.kdtree.traverse.Intersector;
+import org.kdtree.traverse.RayQuery;
+import org.kdtree.traverse.TraversalListener;
+import org.kdtree.traverse.TriangleIntersector;
+import org.kdtree.tree.CostModel;
+import org.kdtree.tree.TreeStats;
+
+/**
+ * A bounding volume hierarchy, immutable, in two layouts of flat arrays:
+ * <ul>
+ * <li>the binary tree the builder found, for reading (the workbench draws it, the listening
+ * traversal steps through it): node 0 is the root, an interior node's children are
+ * {@link #left} and {@link #right}, a leaf holds a stretch of {@link #primitive}s; each node has
+ * its box, which bounds its primitives whole (a primitive is in exactly one leaf);</li>
+ * <li>the same tree collapsed to {@link #width()} children per node, which the fast 3-D
+ * traversal reads: fewer, wider nodes whose child boxes are tested together.</li>
+ * </ul>
+ * Unlike a kd-tree's voxels, sibling boxes may overlap and need not cover the scene, so a
+ * traversal visits children by their entry distance and stops at none before its closest hit.
+ */
+public final class Bvh implements AccelerationStructure {
+    private final int k;
+    /** Per binary node, k minima then k maxima. */
+    private final double[] box;
+    /** Per binary node: an interior node's left child (its right one follows), or {@code ~first} for a leaf. */
+    private final int[] link;
+    /** Per binary node: a leaf's primitive count, 0 for an interior node. */
+    private final int[] size;
+    /** The primitives in leaf order. */
+    private final int[] primitives;
+    private final int maxDepth;
+    private final CostModel costModel;
+    private final WideNodes wide;
+    private TreeStats stats;
+
+    private Bvh(int k, int nodes, int[] primitives, CostModel costModel, BuildNode root, int width) {
+        this.k = k;
+        this.box = new double[2 * k * nodes];
+        this.link = new int[nodes];
+        this.size = new int[nodes];
+        this.primitives = primitives;
+        this.costModel = costModel;
+        this.maxDepth = layOut(root, 0, 1, 0);
+        this.wide = new WideNodes(k, width, root);
+    }
+
+    static Bvh of(int k, BuildNode root, int[] primitives, BvhBuilder settings) {
+        return new Bvh(k, root.size(), primitives, settings.costModel(), root, settings.width());
+    }
+
+    /** Writes {@code n} at {@code index}, its children at {@code next}; returns the subtree's depth. */
+    private int layOut(BuildNode n, int index, int next, int depth) {
+        System.arraycopy(n.box, 0, box, 2 * k * index, 2 * k);
+        if (n.isLeaf()) {
+            link[index] = ~n.first;
+            size[index] = n.count;
+            return depth;
+        }
+        link[index] = next;
+        // The left child's descendants come first, after the pair; the right child's follow them.
+        int dl = layOut(n.left, next, next + 2, depth + 1);
+        int dr = layOut(n.right, next + 1, next + 1 + n.left.size(), depth + 1);
+        return Math.max(dl, dr);
+    }
+
+    @Override public String kind() { return BvhBuilder.NAME; }
+    @Override public int dimension() { return k; }
+
+    @Override public Box bounds() { return nodeBounds(0); }
+
+    /** {@return the number of nodes of the binary tree} */
+    public int nodeCount() { return link.length; }
+
+    /** {@return children per node of the wide layout} */
+    public int width() { return wide.width; }
+
+    /** {@return the depth of the deepest leaf of the binary tree (the root's is 0)} */
+    public int maxDepth() { return maxDepth; }
+
+    /** {@return Kt and Ki, with which it was built and its expected cost is counted} */
+    public CostModel costModel() { return costModel; }
+
+    /**
+     * {@return whether {@code node} is a leaf}
+     *
+     * @param node a node of the binary tree
+     */
+    public boolean isLeaf(int node) { return link[node] < 0; }
+
+    /**
+     * {@return the left child of an interior node}
+     *
+     * @param node an interior node
+     */
+    public int left(int node) { return link[node]; }
+
+    /**
+     * {@return the right child of an interior node}
+     *
+     * @param node an interior node
+     */
+    public int right(int node) { return link[node] + 1; }
+
+    /**
+     * {@return where a leaf's primitives start in the leaf order ({@link #primitive})}
+     *
+     * @param node a leaf
+     */
+    public int leafStart(int node) { return ~link[node]; }
+
+    /**
+     * {@return how many primitives a leaf holds}
+     *
+     * @param node a leaf
+     */
+    public int leafSize(int node) { return size[node]; }
+
+    /**
+     * {@return the primitive at position {@code r} of the leaf order}
+     *
+     * @param r a position from {@link #leafStart} on
+     */
+    public int primitive(int r) { return primitives[r]; }
+
+    /** {@return how many primitives it holds} (those of empty bounds are left out) */
+    public int primitiveCount() { return primitives.length; }
+
+    /**
+     * {@return a node's box: min on {@code axis}}
+     *
+     * @param node a node
+     * @param axis an axis
+     */
+    public double min(int node, int axis) { return box[2 * k * node + axis]; }
+
+    /**
+     * {@return a node's box: max on {@code axis}}
+     *
+     * @param node a node
+     * @param axis an axis
+     */
+    public double max(int node, int axis) { return box[2 * k * node + k + axis]; }
+
+    /**
+     * {@return a node's box, as a new box}
+     *
+     * @param node a node
+     */
+    public Box nodeBounds(int node) {
+        Box b = new Box(k);
+        for (int a = 0; a < k; a++) b.setMin(a, min(node, a)).setMax(a, max(node, a));
+        return b;
+    }
+
+    /** The binary layout's arrays, for the traversals of this package. */
+    double[] boxArray() { return box; }
+    int[] linkArray() { return link; }
+    int[] sizeArray() { return size; }
+    int[] primitiveArray() { return primitives; }
+    WideNodes wide() { return wide; }
+
+    /** {@return the bytes its arrays hold, both layouts} */
+    public long memoryBytes() {
+        return 8L * box.length + 4L * (link.length + size.length + primitives.length) + wide.memoryBytes();
+    }
+
+    @Override public synchronized TreeStats stats() {
+        if (stats == null) stats = BvhStats.of(this);
+        return stats;
+    }
+
+    /**
+     * The fastest query: over a triangle mesh, the wide layout's traversal with the triangle
+     * test inlined; otherwise the binary layout's, with any {@link Intersector}.
+     */
+    @Override public RayQuery query(Intersector prims) {
+        requireDimension(prims);
+        if (prims instanceof TriangleIntersector t) return new WideTraversal(this, t);
+        return new BvhTraverser(this, prims, TraversalListener.NONE);
+    }
+
+    @Override public RayQuery query(Intersector prims, TraversalListener listener) {
+        requireDimension(prims);
+        return new BvhTraverser(this, prims, Objects.requireNonNull(listener, "listener"));
+    }
+
+    private void requireDimension(Intersector prims) {
+        if (prims.dimension() != k)
+            throw new IllegalArgumentException("a " + k + "-D hierarchy cannot trace " + prims.dimension() + "-D primitives");
+    }
+}

@@ -1,0 +1,144 @@
+package org.kdtree.bvh;
+
+import org.kdtree.geom.Ray;
+import org.kdtree.geom.Tolerance;
+import org.kdtree.traverse.Hit;
+import org.kdtree.traverse.Intersector;
+import org.kdtree.traverse.RayQuery;
+import org.kdtree.traverse.TraversalListener;
+
+/**
+ * The readable traversal of a {@link Bvh}'s binary tree, in any dimension and over any
+ * {@link Intersector}, reporting each step to a listener: at an interior node both children's
+ * boxes are tested; the nearer one entered is visited first, the other saved with its entry
+ * distance; a saved node that starts beyond the closest hit found so far is dropped. Box tests
+ * are widened by the kd-tree traversal's slack ({@link Tolerance#TRAVERSAL_SLACK}), so rounding
+ * never skips a box that holds the hit. Not thread safe: one per thread.
+ */
+final class BvhTraverser implements RayQuery {
+    private static final double SLACK = Tolerance.TRAVERSAL_SLACK;
+
+    private final Bvh bvh;
+    private final Intersector prims;
+    private final TraversalListener listener;
+    private final int k;
+    private final double[] box;
+    private final int[] prim;
+    private final int[] stackNode;
+    private final double[] stackMin, stackMax;
+    private final Hit scratch = new Hit();
+    /** The interval of the last {@link #enters} test. */
+    private double enter, exit;
+
+    BvhTraverser(Bvh bvh, Intersector prims, TraversalListener listener) {
+        this.bvh = bvh;
+        this.prims = prims;
+        this.listener = listener;
+        this.k = bvh.dimension();
+        this.box = bvh.boxArray();
+        this.prim = bvh.primitiveArray();
+        int depth = bvh.maxDepth() + 2;
+        stackNode = new int[depth];
+        stackMin = new double[depth];
+        stackMax = new double[depth];
+    }
+
+    @Override public boolean closestHit(Ray ray, double tMin, double tMax, Hit hit) {
+        hit.reset();
+        boolean found = trace(ray, tMin, tMax, hit, false);
+        listener.end(found, hit);
+        return found;
+    }
+
+    @Override public boolean anyHit(Ray ray, double tMin, double tMax) {
+        boolean found = trace(ray, tMin, tMax, scratch.reset(), true);
+        listener.end(found, scratch);
+        return found;
+    }
+
+    private boolean trace(Ray ray, double tMin, double tMax, Hit hit, boolean any) {
+        ray.requireTraceable(k, "hierarchy");
+        TraversalListener l = listener;
+        if (bvh.primitiveCount() == 0 || !enters(ray, 0, tMin, tMax)) {
+            l.missedScene();
+            return false;
+        }
+        l.begin(enter, exit);
+        boolean found = false;
+        int sp = 0, node = 0;
+        double curMin = enter, curMax = exit;
+        while (true) {
+            while (!bvh.isLeaf(node)) {
+                l.boxNode(node, curMin, curMax);
+                int a = bvh.left(node), b = bvh.right(node);
+                double limit = Math.min(tMax, hit.t);
+                boolean inA = enters(ray, a, tMin, limit);
+                double aMin = enter, aMax = exit;
+                l.boxTest(a, inA, aMin, aMax);
+                boolean inB = enters(ray, b, tMin, limit);
+                double bMin = enter, bMax = exit;
+                l.boxTest(b, inB, bMin, bMax);
+                if (inA && inB) {
+                    boolean aFirst = aMin <= bMin;
+                    int far = aFirst ? b : a;
+                    double farMin = aFirst ? bMin : aMin, farMax = aFirst ? bMax : aMax;
+                    stackNode[sp] = far;
+                    stackMin[sp] = farMin;
+                    stackMax[sp++] = farMax;
+                    l.pushFar(far, farMin, farMax);
+                    node = aFirst ? a : b;
+                    curMin = aFirst ? aMin : bMin;
+                    curMax = aFirst ? aMax : bMax;
+                } else if (inA || inB) {
+                    node = inA ? a : b;
+                    curMin = inA ? aMin : bMin;
+                    curMax = inA ? aMax : bMax;
+                } else {
+                    node = -1;
+                    break;
+                }
+            }
+            if (node >= 0) {
+                int count = bvh.leafSize(node), first = bvh.leafStart(node);
+                l.leaf(node, curMin, curMax, count);
+                for (int r = first; r < first + count; r++) {
+                    int p = prim[r];
+                    boolean h = prims.intersect(p, ray, tMin, tMax, hit);
+                    l.primitive(p, h, h ? hit.t : Double.NaN);
+                    if (h && any) return true;
+                    found |= h;
+                }
+            }
+            while (true) {
+                if (sp == 0) return found;
+                sp--;
+                node = stackNode[sp];
+                curMin = stackMin[sp];
+                curMax = stackMax[sp];
+                boolean skip = curMin > hit.t + Math.abs(hit.t) * SLACK;
+                l.pop(node, curMin, curMax, skip);
+                if (!skip) break;
+            }
+        }
+    }
+
+    /**
+     * Whether the ray meets {@code node}'s box within {@code [tMin, tMax]}, the interval met left
+     * in {@link #enter} and {@link #exit}, widened by the slack. A NaN slab bound (origin on a
+     * face of a flat box, direction 0 on that axis) constrains nothing.
+     */
+    private boolean enters(Ray ray, int node, double tMin, double tMax) {
+        double t0 = tMin, t1 = tMax;
+        int o = 2 * k * node;
+        for (int a = 0; a < k; a++) {
+            double inv = ray.inverseDirection(a), org = ray.origin(a);
+            double tNear = (box[o + a] - org) * inv, tFar = (box[o + k + a] - org) * inv;
+            if (inv < 0) { double s = tNear; tNear = tFar; tFar = s; }
+            if (tNear > t0) t0 = tNear;
+            if (tFar < t1) t1 = tFar;
+        }
+        enter = Math.max(tMin, t0 - Math.abs(t0) * SLACK);
+        exit = Math.min(tMax, t1 + Math.abs(t1) * SLACK);
+        return enter <= exit;
+    }
+}
