@@ -14,28 +14,26 @@ import org.kdtree.tree.CostModel;
  * node that cannot be cut by centroids, or that would go past the depth cap, is cut at its
  * median. Large subtrees are built in parallel; the hierarchy is the same at any thread count.
  *
- * <p>The inner loops run on flat arrays of bounds and centroids with per-task scratch, and
- * allocate nothing per primitive.
+ * <p>The primitives' bounds are kept in the order being partitioned (a reference per primitive:
+ * its k minima, its k maxima, and its index beside), so that each node reads its stretch in
+ * sequence, and one pass bins every axis. The inner loops allocate nothing.
  */
 final class BinnedBuild {
     /** Nodes of at least this many primitives are built as tasks of their own when threads build. */
     private static final int FORK_ABOVE = 4096;
 
     private final int k;
-    /** Per primitive, k minima then k maxima. */
+    /** Per reference, in partition order: k minima then k maxima; twice a centroid is min + max. */
     private final double[] bounds;
-    /** Per primitive, twice its centroid (min + max), k values. */
-    private final double[] centre;
-    /** The primitive order, partitioned in place: each node owns one stretch of it. */
+    /** The primitive of each reference, partitioned in place with it: each node owns one stretch. */
     private final int[] order;
     private final CostModel cost;
     private final int bins, leafSize, depthCap;
     private final boolean parallel;
 
-    private BinnedBuild(int k, double[] bounds, double[] centre, int[] order, BvhBuilder settings) {
+    private BinnedBuild(int k, double[] bounds, int[] order, BvhBuilder settings) {
         this.k = k;
         this.bounds = bounds;
-        this.centre = centre;
         this.order = order;
         this.cost = settings.costModel();
         this.bins = settings.bins();
@@ -46,7 +44,7 @@ final class BinnedBuild {
 
     static Bvh build(Primitives prims, BvhBuilder settings) {
         int k = prims.dimension(), n = prims.size();
-        double[] bounds = new double[2 * k * n], centre = new double[k * n];
+        double[] bounds = new double[2 * k * n];
         int[] order = new int[n];
         Box b = new Box(k);
         int m = 0;
@@ -54,14 +52,12 @@ final class BinnedBuild {
             prims.bounds(i, b);
             if (b.isEmpty()) continue;          // nothing of it can be hit
             for (int a = 0; a < k; a++) {
-                double lo = b.min(a), hi = b.max(a);
-                bounds[2 * k * i + a] = lo;
-                bounds[2 * k * i + k + a] = hi;
-                centre[k * i + a] = lo + hi;
+                bounds[2 * k * m + a] = b.min(a);
+                bounds[2 * k * m + k + a] = b.max(a);
             }
             order[m++] = i;
         }
-        BinnedBuild run = new BinnedBuild(k, bounds, centre, java.util.Arrays.copyOf(order, m), settings);
+        BinnedBuild run = new BinnedBuild(k, bounds, java.util.Arrays.copyOf(order, m), settings);
         BuildNode root;
         if (run.parallel && m >= FORK_ABOVE) {
             ForkJoinPool pool = new ForkJoinPool(settings.threads());
@@ -79,7 +75,10 @@ final class BinnedBuild {
     /** The scratch of one task: bin counts and boxes per axis, the sweep's suffix areas. */
     private final class Scratch {
         final int[] count = new int[k * bins];
+        /** Per axis and bin, the bin's box: k minima, k maxima. */
         final double[] box = new double[2 * k * k * bins];
+        /** Per axis, bins per unit of (doubled) centroid; 0 where the centroids do not spread. */
+        final double[] scale = new double[k];
         final double[] suffixArea = new double[bins];
         final int[] suffixCount = new int[bins];
         final double[] acc = new double[2 * k];
@@ -116,21 +115,43 @@ final class BinnedBuild {
         return node.interior(left, node(mid, to, depth + 1, s));
     }
 
-    /** The bounds of the stretch's primitives into {@code box}, and of their centroids. */
+    /** The bounds of the stretch's primitives into {@code box}, and of their centroids (doubled). */
     private void enclose(int from, int to, double[] box, double[] cmin, double[] cmax) {
         for (int a = 0; a < k; a++) {
             box[a] = cmin[a] = Double.POSITIVE_INFINITY;
             box[k + a] = cmax[a] = Double.NEGATIVE_INFINITY;
         }
-        for (int i = from; i < to; i++) {
-            int p = order[i], o = 2 * k * p, c = k * p;
+        double[] r = bounds;
+        if (k == 3) {
+            enclose3(from, to, box, cmin, cmax);
+            return;
+        }
+        for (int o = 2 * k * from, end = 2 * k * to; o < end; o += 2 * k) {
             for (int a = 0; a < k; a++) {
-                box[a] = Math.min(box[a], bounds[o + a]);
-                box[k + a] = Math.max(box[k + a], bounds[o + k + a]);
-                cmin[a] = Math.min(cmin[a], centre[c + a]);
-                cmax[a] = Math.max(cmax[a], centre[c + a]);
+                double lo = r[o + a], hi = r[o + k + a], c = lo + hi;
+                if (lo < box[a]) box[a] = lo;
+                if (hi > box[k + a]) box[k + a] = hi;
+                if (c < cmin[a]) cmin[a] = c;
+                if (c > cmax[a]) cmax[a] = c;
             }
         }
+    }
+
+    /** {@link #enclose} in 3-D, unrolled, with the running bounds in locals. */
+    private void enclose3(int from, int to, double[] box, double[] cmin, double[] cmax) {
+        double[] r = bounds;
+        double bx0 = box[0], by0 = box[1], bz0 = box[2], bx1 = box[3], by1 = box[4], bz1 = box[5];
+        double cx0 = cmin[0], cy0 = cmin[1], cz0 = cmin[2], cx1 = cmax[0], cy1 = cmax[1], cz1 = cmax[2];
+        for (int o = 6 * from, end = 6 * to; o < end; o += 6) {
+            double x0 = r[o], y0 = r[o + 1], z0 = r[o + 2], x1 = r[o + 3], y1 = r[o + 4], z1 = r[o + 5];
+            bx0 = Math.min(bx0, x0); by0 = Math.min(by0, y0); bz0 = Math.min(bz0, z0);
+            bx1 = Math.max(bx1, x1); by1 = Math.max(by1, y1); bz1 = Math.max(bz1, z1);
+            double cx = x0 + x1, cy = y0 + y1, cz = z0 + z1;
+            cx0 = Math.min(cx0, cx); cy0 = Math.min(cy0, cy); cz0 = Math.min(cz0, cz);
+            cx1 = Math.max(cx1, cx); cy1 = Math.max(cy1, cy); cz1 = Math.max(cz1, cz);
+        }
+        box[0] = bx0; box[1] = by0; box[2] = bz0; box[3] = bx1; box[4] = by1; box[5] = bz1;
+        cmin[0] = cx0; cmin[1] = cy0; cmin[2] = cz0; cmax[0] = cx1; cmax[1] = cy1; cmax[2] = cz1;
     }
 
     /**
@@ -142,12 +163,12 @@ final class BinnedBuild {
         // Past this depth only halving reaches leaves of leafSize before the cap: halve.
         if (depthCap - depth <= ceilLog2((n + leafSize - 1) / leafSize)) return median(from, to, cmin, cmax);
         int nb = Math.min(bins, n);
+        bin(from, to, nb, cmin, cmax, s);
         double area = BoxArea.of(box, 0, k);
         double best = Double.POSITIVE_INFINITY;
         int bestAxis = -1, bestBin = 0;
         for (int a = 0; a < k; a++) {
             if (!(cmax[a] > cmin[a])) continue;
-            bin(from, to, a, nb, cmin[a], cmax[a], s);
             double c = sweep(a, nb, s, area);
             if (c < best) {
                 best = c;
@@ -157,46 +178,79 @@ final class BinnedBuild {
         }
         if (bestAxis < 0) return n > leafSize ? median(from, to, cmin, cmax) : -1;
         if (n <= leafSize && best >= cost.ki() * n) return -1;
-        double scale = scale(nb, cmin[bestAxis], cmax[bestAxis]);
-        return partition(from, to, bestAxis, nb, cmin[bestAxis], scale, bestBin);
+        return partition(from, to, bestAxis, nb, cmin[bestAxis], s.scale[bestAxis], bestBin);
     }
 
     private static int ceilLog2(int n) {
         return n <= 1 ? 0 : 32 - Integer.numberOfLeadingZeros(n - 1);
     }
 
-    private static double scale(int nb, double lo, double hi) {
-        return nb / (hi - lo);
-    }
-
-    private int binOf(double c, double lo, double scale, int nb) {
+    /** The bin of a (doubled) centroid coordinate {@code c}: the same expression for binning and partitioning. */
+    private static int binOf(double c, double lo, double scale, int nb) {
         int b = (int) ((c - lo) * scale);
         return b < 0 ? 0 : b >= nb ? nb - 1 : b;
     }
 
-    /** Counts the stretch's centroids into {@code nb} bins on {@code axis} and grows each bin's box. */
-    private void bin(int from, int to, int axis, int nb, double lo, double hi, Scratch s) {
+    /**
+     * One pass over the stretch: counts each reference into its bin on every axis where the
+     * centroids spread, and grows that bin's box.
+     */
+    private void bin(int from, int to, int nb, double[] cmin, double[] cmax, Scratch s) {
         int[] count = s.count;
-        double[] box = s.box;
-        int cb = axis * bins, bb = 2 * k * axis * bins;
-        for (int b = 0; b < nb; b++) {
-            count[cb + b] = 0;
-            for (int a = 0; a < k; a++) {
-                box[bb + 2 * k * b + a] = Double.POSITIVE_INFINITY;
-                box[bb + 2 * k * b + k + a] = Double.NEGATIVE_INFINITY;
+        double[] box = s.box, scale = s.scale, r = bounds;
+        int kk = 2 * k;
+        for (int a = 0; a < k; a++) {
+            scale[a] = cmax[a] > cmin[a] ? nb / (cmax[a] - cmin[a]) : 0;
+            for (int b = 0; b < nb; b++) {
+                count[a * bins + b] = 0;
+                int d = kk * (a * bins + b);
+                for (int x = 0; x < k; x++) {
+                    box[d + x] = Double.POSITIVE_INFINITY;
+                    box[d + k + x] = Double.NEGATIVE_INFINITY;
+                }
             }
         }
-        double scale = scale(nb, lo, hi);
-        for (int i = from; i < to; i++) {
-            int p = order[i];
-            int b = binOf(centre[k * p + axis], lo, scale, nb);
-            count[cb + b]++;
-            int o = 2 * k * p, d = bb + 2 * k * b;
+        if (k == 3) {
+            bin3(from, to, nb, cmin, s);
+            return;
+        }
+        for (int o = kk * from, end = kk * to; o < end; o += kk) {
             for (int a = 0; a < k; a++) {
-                if (bounds[o + a] < box[d + a]) box[d + a] = bounds[o + a];
-                if (bounds[o + k + a] > box[d + k + a]) box[d + k + a] = bounds[o + k + a];
+                if (scale[a] == 0) continue;
+                int b = binOf(r[o + a] + r[o + k + a], cmin[a], scale[a], nb);
+                count[a * bins + b]++;
+                int d = kk * (a * bins + b);
+                for (int x = 0; x < kk; x += 1) {
+                    double v = r[o + x];
+                    if (x < k ? v < box[d + x] : v > box[d + x]) box[d + x] = v;
+                }
             }
         }
+    }
+
+    /** {@link #bin}'s pass in 3-D, unrolled: the build's hottest loop. */
+    private void bin3(int from, int to, int nb, double[] cmin, Scratch s) {
+        int[] count = s.count;
+        double[] box = s.box, r = bounds;
+        double sx = s.scale[0], sy = s.scale[1], sz = s.scale[2], lx = cmin[0], ly = cmin[1], lz = cmin[2];
+        int by = bins, bz = 2 * bins;
+        for (int o = 6 * from, end = 6 * to; o < end; o += 6) {
+            double x0 = r[o], y0 = r[o + 1], z0 = r[o + 2], x1 = r[o + 3], y1 = r[o + 4], z1 = r[o + 5];
+            if (sx != 0) grow3(box, count, binOf(x0 + x1, lx, sx, nb), x0, y0, z0, x1, y1, z1);
+            if (sy != 0) grow3(box, count, by + binOf(y0 + y1, ly, sy, nb), x0, y0, z0, x1, y1, z1);
+            if (sz != 0) grow3(box, count, bz + binOf(z0 + z1, lz, sz, nb), x0, y0, z0, x1, y1, z1);
+        }
+    }
+
+    private static void grow3(double[] box, int[] count, int b, double x0, double y0, double z0, double x1, double y1, double z1) {
+        count[b]++;
+        int d = 6 * b;
+        box[d] = Math.min(box[d], x0);
+        box[d + 1] = Math.min(box[d + 1], y0);
+        box[d + 2] = Math.min(box[d + 2], z0);
+        box[d + 3] = Math.max(box[d + 3], x1);
+        box[d + 4] = Math.max(box[d + 4], y1);
+        box[d + 5] = Math.max(box[d + 5], z1);
     }
 
     /**
@@ -207,11 +261,11 @@ final class BinnedBuild {
     private double sweep(int axis, int nb, Scratch s, double area) {
         int[] count = s.count;
         double[] box = s.box, acc = s.acc;
-        int cb = axis * bins, bb = 2 * k * axis * bins;
+        int cb = axis * bins, kk = 2 * k;
         clear(acc);
         int n = 0;
         for (int b = nb - 1; b > 0; b--) {
-            grow(acc, box, bb + 2 * k * b);
+            grow(acc, box, kk * (cb + b));
             n += count[cb + b];
             s.suffixCount[b] = n;
             s.suffixArea[b] = n == 0 ? 0 : BoxArea.of(acc, 0, k);
@@ -220,7 +274,7 @@ final class BinnedBuild {
         double best = Double.POSITIVE_INFINITY, norm = area > 0 ? 1 / area : 0;
         n = 0;
         for (int b = 1; b < nb; b++) {
-            grow(acc, box, bb + 2 * k * (b - 1));
+            grow(acc, box, kk * (cb + b - 1));
             n += count[cb + b - 1];
             int right = s.suffixCount[b];
             if (n == 0 || right == 0) continue;
@@ -248,16 +302,19 @@ final class BinnedBuild {
         }
     }
 
-    /** Moves the primitives whose centroid bin on {@code axis} is below {@code bin} first; returns where the rest start. */
+    /** Twice the centroid of reference {@code i} on {@code axis}. */
+    private double centre(int i, int axis) {
+        return bounds[2 * k * i + axis] + bounds[2 * k * i + k + axis];
+    }
+
+    /** Moves the references whose centroid bin on {@code axis} is below {@code bin} first; returns where the rest start. */
     private int partition(int from, int to, int axis, int nb, double lo, double scale, int bin) {
         int i = from, j = to - 1;
         while (true) {
-            while (i <= j && binOf(centre[k * order[i] + axis], lo, scale, nb) < bin) i++;
-            while (i <= j && binOf(centre[k * order[j] + axis], lo, scale, nb) >= bin) j--;
+            while (i <= j && binOf(centre(i, axis), lo, scale, nb) < bin) i++;
+            while (i <= j && binOf(centre(j, axis), lo, scale, nb) >= bin) j--;
             if (i >= j) return i;
-            int t = order[i];
-            order[i] = order[j];
-            order[j] = t;
+            swap(i, j);
         }
     }
 
@@ -272,14 +329,14 @@ final class BinnedBuild {
         return mid;
     }
 
-    /** Quickselect: puts the primitive of rank {@code nth} (by centroid on {@code axis}) at {@code nth}, smaller before, larger after. */
+    /** Quickselect: puts the reference of rank {@code nth} (by centroid on {@code axis}) at {@code nth}, smaller before, larger after. */
     private void select(int lo, int hi, int nth, int axis) {
         while (hi > lo) {
-            double pivot = median3(centre[k * order[lo] + axis], centre[k * order[(lo + hi) >>> 1] + axis], centre[k * order[hi] + axis]);
+            double pivot = median3(centre(lo, axis), centre((lo + hi) >>> 1, axis), centre(hi, axis));
             // Three-way partition: < pivot, == pivot, > pivot (many equal centroids stay linear).
             int lt = lo, gt = hi, i = lo;
             while (i <= gt) {
-                double c = centre[k * order[i] + axis];
+                double c = centre(i, axis);
                 if (c < pivot) swap(lt++, i++);
                 else if (c > pivot) swap(i, gt--);
                 else i++;
@@ -294,9 +351,16 @@ final class BinnedBuild {
         return Math.max(Math.min(a, b), Math.min(Math.max(a, b), c));
     }
 
+    /** Swaps two references: their bounds and their primitives. */
     private void swap(int i, int j) {
         int t = order[i];
         order[i] = order[j];
         order[j] = t;
+        int kk = 2 * k;
+        for (int x = 0, a = kk * i, b = kk * j; x < kk; x++) {
+            double v = bounds[a + x];
+            bounds[a + x] = bounds[b + x];
+            bounds[b + x] = v;
+        }
     }
 }

@@ -37,6 +37,8 @@ public final class Bvh implements AccelerationStructure {
     private final CostModel costModel;
     private final WideNodes wide;
     private TreeStats stats;
+    /** The corner array last copied into leaf order, and its copy ({@link #leafOrderedCorners}). */
+    private double[] cornerSource, leafCorners;
 
     private Bvh(int k, int nodes, int[] primitives, CostModel costModel, BuildNode root, int width) {
         this.k = k;
@@ -164,7 +166,22 @@ public final class Bvh implements AccelerationStructure {
     int[] primitiveArray() { return primitives; }
     WideNodes wide() { return wide; }
 
-    /** {@return the bytes its arrays hold, both layouts} */
+    /**
+     * The triangles' corners (9 per triangle, as {@link TriangleIntersector#cornerArray()}) copied
+     * into leaf order, so that the wide traversal reads a leaf's triangles from one stretch of
+     * memory; made once per corner array and shared by every query over it.
+     */
+    synchronized double[] leafOrderedCorners(double[] corners) {
+        if (cornerSource != corners) {
+            double[] c = new double[9 * primitives.length];
+            for (int r = 0; r < primitives.length; r++) System.arraycopy(corners, 9 * primitives[r], c, 9 * r, 9);
+            leafCorners = c;
+            cornerSource = corners;
+        }
+        return leafCorners;
+    }
+
+    /** {@return the bytes its arrays hold, both layouts} (not the leaf-ordered corners a triangle query adds) */
     public long memoryBytes() {
         return 8L * box.length + 4L * (link.length + size.length + primitives.length) + wide.memoryBytes();
     }

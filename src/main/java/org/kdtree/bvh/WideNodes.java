@@ -7,31 +7,32 @@ import java.util.Arrays;
  * multi-branching BVH of Embree and of Wald, Benthin and Boulos 2008): each node keeps its
  * children's boxes side by side, one axis at a time, so a traversal tests them together.
  *
- * <p>Per node, {@code box} holds for each axis {@code width} minima then {@code width} maxima;
- * per child slot, {@code count} is a leaf's primitive count (its primitives start at
- * {@code ref} in the leaf order), 0 for an interior child (the wide node {@code ref}), or -1 for
- * an unused slot (always after the used ones).
+ * <p>One {@code int} array holds every node, {@link #stride} words each, so that a node is one
+ * stretch of memory: for each axis {@code width} minima then {@code width} maxima, as floats
+ * rounded outwards (a float box contains the double one: it only admits more rays, never
+ * fewer, and halves the bytes a ray reads); then per child slot its reference, then its count.
+ * A count is a leaf's primitive count (its primitives start at the reference in the leaf order),
+ * 0 for an interior child (the reference is its wide node), or -1 for an unused slot (always
+ * after the used ones).
  */
 final class WideNodes {
     final int width, k;
+    /** Words per node: 2 k width floats, width references, width counts. */
+    final int stride;
+    /** Offset of the references within a node (the counts follow them). */
+    final int refs;
     /** Filled while the tree is laid out, then trimmed to the nodes made; not modified after. */
-    double[] box;
-    int[] ref, count;
+    int[] words;
     private int nodes;
 
     WideNodes(int k, int width, BuildNode root) {
         this.k = k;
         this.width = width;
-        int capacity = Math.max(1, root.size());  // a wide tree has fewer nodes than the binary one
-        double[] b = new double[2 * k * width * capacity];
-        int[] r = new int[width * capacity], c = new int[width * capacity];
-        this.box = b;
-        this.ref = r;
-        this.count = c;
+        this.refs = 2 * k * width;
+        this.stride = refs + 2 * width;
+        words = new int[stride * Math.max(1, root.size())];  // a wide tree has fewer nodes than the binary one
         add(root);
-        box = Arrays.copyOf(box, 2 * k * width * nodes);
-        ref = Arrays.copyOf(ref, width * nodes);
-        count = Arrays.copyOf(count, width * nodes);
+        words = Arrays.copyOf(words, stride * nodes);
     }
 
     /** Lays out the wide node whose children are those of {@code n}'s collapsed subtree; returns its index. */
@@ -39,30 +40,37 @@ final class WideNodes {
         int id = nodes++;
         BuildNode[] kids = new BuildNode[width];
         int m = collapse(n, kids);
-        int slot = id * width, base = 2 * k * width * id;
+        int base = stride * id;
         for (int i = 0; i < width; i++) {
-            if (i >= m || kids[i].isLeaf() && kids[i].count == 0) {
-                count[slot + i] = -1;
-                for (int a = 0; a < k; a++) {
-                    box[base + 2 * width * a + i] = Double.POSITIVE_INFINITY;
-                    box[base + 2 * width * a + width + i] = Double.NEGATIVE_INFINITY;
-                }
-                continue;
-            }
-            BuildNode c = kids[i];
+            boolean unused = i >= m || kids[i].isLeaf() && kids[i].count == 0;
             for (int a = 0; a < k; a++) {
-                box[base + 2 * width * a + i] = c.box[a];
-                box[base + 2 * width * a + width + i] = c.box[k + a];
+                words[base + 2 * width * a + i] = Float.floatToRawIntBits(unused ? Float.POSITIVE_INFINITY : down(kids[i].box[a]));
+                words[base + 2 * width * a + width + i] = Float.floatToRawIntBits(unused ? Float.NEGATIVE_INFINITY : up(kids[i].box[k + a]));
             }
-            if (c.isLeaf()) {
-                count[slot + i] = c.count;
-                ref[slot + i] = c.first;
+            int ref = base + refs + i, count = ref + width;
+            if (unused) {
+                words[count] = -1;
+            } else if (kids[i].isLeaf()) {
+                words[ref] = kids[i].first;
+                words[count] = kids[i].count;
             } else {
-                count[slot + i] = 0;
-                ref[slot + i] = add(c);
+                words[ref] = add(kids[i]);
+                words[count] = 0;
             }
         }
         return id;
+    }
+
+    /** The largest float at most {@code v}. */
+    static float down(double v) {
+        float f = (float) v;
+        return f > v ? Math.nextDown(f) : f;
+    }
+
+    /** The smallest float at least {@code v}. */
+    static float up(double v) {
+        float f = (float) v;
+        return f < v ? Math.nextUp(f) : f;
     }
 
     /**
@@ -100,6 +108,6 @@ final class WideNodes {
     int nodeCount() { return nodes; }
 
     long memoryBytes() {
-        return 8L * box.length + 4L * (ref.length + count.length);
+        return 4L * words.length;
     }
 }

@@ -11,19 +11,19 @@ import org.kdtree.traverse.TriangleIntersector;
  * one node's child boxes tested in one loop with the ray's near and far planes chosen once per
  * ray, the children entered pushed farthest first so that the nearest is taken next, a saved
  * entry dropped when it starts beyond the closest hit, and the one watertight triangle test
- * ({@link TriangleIntersector#test}). Box intervals are widened by
+ * ({@link TriangleIntersector#test}) on the corners in leaf order. Box intervals are widened by
  * {@link Tolerance#TRAVERSAL_SLACK}, as in every traversal of the project. Allocation-free per
  * ray; not thread safe: one per thread.
  */
 final class WideTraversal implements RayQuery {
     private static final double SLACK = Tolerance.TRAVERSAL_SLACK;
 
-    private final int width;
-    private final double[] box;
-    private final int[] ref, count, prim;
+    private final int width, stride, refs;
+    private final int[] words, prim;
+    /** The triangles' corners in leaf order ({@link Bvh#leafOrderedCorners}). */
     private final double[] corners;
     private final boolean empty;
-    /** Saved entries: a wide node's index, or {@code -1 - slot} for a leaf child; and where the ray enters it. */
+    /** Saved entries: a wide node's index, or {@code -1 - word} for a leaf child (the word of its reference); where the ray enters it. */
     private final int[] stackEntry;
     private final double[] stackT;
     /** One node's children entered, sorted by entry distance before they are pushed. */
@@ -34,11 +34,11 @@ final class WideTraversal implements RayQuery {
     WideTraversal(Bvh bvh, TriangleIntersector tris) {
         WideNodes w = bvh.wide();
         width = w.width;
-        box = w.box;
-        ref = w.ref;
-        count = w.count;
+        stride = w.stride;
+        refs = w.refs;
+        words = w.words;
         prim = bvh.primitiveArray();
-        corners = tris.cornerArray();
+        corners = bvh.leafOrderedCorners(tris.cornerArray());
         empty = bvh.primitiveCount() == 0;
         int stack = (bvh.maxDepth() + 1) * (width - 1) + 2;
         stackEntry = new int[stack];
@@ -49,20 +49,33 @@ final class WideTraversal implements RayQuery {
 
     @Override public boolean closestHit(Ray ray, double tMin, double tMax, Hit hit) {
         hit.reset();
-        return trace(ray, tMin, tMax, hit, false);
+        int r = trace(ray, tMin, tMax, hit, false);
+        if (r < 0) return false;
+        hit.primitive = prim[r];     // the test recorded the position in leaf order
+        return true;
     }
 
     @Override public boolean anyHit(Ray ray, double tMin, double tMax) {
-        return trace(ray, tMin, tMax, scratch.reset(), true);
+        return trace(ray, tMin, tMax, scratch.reset(), true) >= 0;
     }
 
-    private boolean trace(Ray ray, double tMin, double tMax, Hit hit, boolean any) {
+    /**
+     * Where box intervals start: {@code tMin}, or a little before it when it is subnormal (the
+     * benchmark's tMin is {@link Double#MIN_VALUE}): arithmetic on subnormal numbers takes the
+     * processor a hundred cycles per operation, and starting earlier only admits more boxes.
+     */
+    static double boxStart(double tMin) {
+        return Math.abs(tMin) >= Double.MIN_NORMAL ? tMin : tMin > 0 ? 0 : -Double.MIN_NORMAL;
+    }
+
+    /** Returns the leaf-order position of the closest (or, for {@code any}, the first) hit, or -1. */
+    private int trace(Ray ray, double tMin, double tMax, Hit hit, boolean any) {
         ray.requireTraceable(3, "hierarchy");
-        if (empty || !(tMin <= tMax)) return false;
+        if (empty || !(tMin <= tMax)) return -1;
         double ox = ray.origin(0), oy = ray.origin(1), oz = ray.origin(2);
         double ix = ray.inverseDirection(0), iy = ray.inverseDirection(1), iz = ray.inverseDirection(2);
         int w = width;
-        // Offsets of the near and far planes within a node's block of one axis: minima first, then maxima.
+        // Offsets of the near and far planes within a node: per axis, minima first, then maxima.
         int nx = ix < 0 ? w : 0, ny = (iy < 0 ? w : 0) + 2 * w, nz = (iz < 0 ? w : 0) + 4 * w;
         int fx = w - nx, fy = 5 * w - ny, fz = 9 * w - nz;
 
@@ -73,54 +86,69 @@ final class WideTraversal implements RayQuery {
         double sz = ray.inverseDirection(kz), sx = ray.direction(kx) * sz, sy = ray.direction(ky) * sz;
         double okx = ray.origin(kx), oky = ray.origin(ky), okz = ray.origin(kz);
 
-        double[] b = box, c = corners;
-        int[] cnt = count, rf = ref, pr = prim, se = stackEntry, he = hitEntry;
-        double[] st = stackT, ht = hitT;
-        boolean found = false;
-        double best = tMax;
-        int sp = 1;
-        se[0] = 0;
-        st[0] = tMin;
-        while (sp > 0) {
-            sp--;
-            if (st[sp] > best + Math.abs(best) * SLACK) continue;
-            int e = se[sp];
-            if (e < 0) {
-                int slot = -1 - e;
-                for (int r = rf[slot], end = r + cnt[slot]; r < end; r++) {
-                    int p = pr[r];
-                    if (TriangleIntersector.test(c, 9 * p, p, okx, oky, okz, kx, ky, kz, sx, sy, sz, tMin, best, hit)) {
-                        if (any) return true;
-                        found = true;
+        int[] nd = words, se = stackEntry, he = hitEntry;
+        double[] c = corners, st = stackT, ht = hitT;
+        int found = -1, sp = 0, e = 0;
+        double best = tMax, start = boxStart(tMin);
+        while (true) {
+            if (e >= 0) {
+                // An interior node: test its children's boxes; go on with the nearest entered, save the others.
+                int base = stride * e, m = 0;
+                double limit = best + Math.abs(best) * SLACK;
+                for (int i = 0; i < w; i++) {
+                    int count = nd[base + refs + w + i];
+                    if (count < 0) break;
+                    // Branch-free slabs (Math.max and min compile to single instructions); a NaN bound
+                    // (origin in a face's plane, direction 0 on that axis) constrains nothing.
+                    double a = (Float.intBitsToFloat(nd[base + nx + i]) - ox) * ix, b = (Float.intBitsToFloat(nd[base + fx + i]) - ox) * ix;
+                    double t0 = Math.max(start, a == a ? a : start), t1 = Math.min(limit, b == b ? b : limit);
+                    a = (Float.intBitsToFloat(nd[base + ny + i]) - oy) * iy;
+                    b = (Float.intBitsToFloat(nd[base + fy + i]) - oy) * iy;
+                    t0 = Math.max(t0, a == a ? a : t0);
+                    t1 = Math.min(t1, b == b ? b : t1);
+                    a = (Float.intBitsToFloat(nd[base + nz + i]) - oz) * iz;
+                    b = (Float.intBitsToFloat(nd[base + fz + i]) - oz) * iz;
+                    t0 = Math.max(t0, a == a ? a : t0);
+                    t1 = Math.min(t1, b == b ? b : t1);
+                    // Appended always, kept only if entered: no branch to mispredict. (NaN: an infinite bound, missed.)
+                    he[m] = count > 0 ? -1 - (base + refs + i) : nd[base + refs + i];
+                    ht[m] = t0;
+                    m += t0 - Math.abs(t0) * SLACK <= t1 + Math.abs(t1) * SLACK ? 1 : 0;
+                }
+                // Farthest first, so that the nearest is taken next.
+                for (int i = 1; i < m; i++) {
+                    int hi = he[i];
+                    double ti = ht[i];
+                    int j = i;
+                    for (; j > 0 && ht[j - 1] < ti; j--) { he[j] = he[j - 1]; ht[j] = ht[j - 1]; }
+                    he[j] = hi;
+                    ht[j] = ti;
+                }
+                if (m > 0) {
+                    m--;
+                    for (int j = 0; j < m; j++) {
+                        se[sp] = he[j];
+                        st[sp++] = ht[j];
+                    }
+                    e = he[m];
+                    continue;
+                }
+            } else {
+                int word = -1 - e;
+                for (int r = nd[word], end = r + nd[word + w]; r < end; r++) {
+                    if (TriangleIntersector.test(c, 9 * r, r, okx, oky, okz, kx, ky, kz, sx, sy, sz, tMin, best, hit)) {
+                        if (any) return r;
+                        found = r;
                         best = hit.t;
                     }
                 }
-                continue;
             }
-            int base = 6 * w * e, slot0 = w * e, m = 0;
-            double limit = best + Math.abs(best) * SLACK;
-            for (int i = 0; i < w; i++) {
-                int n = cnt[slot0 + i];
-                if (n < 0) break;
-                double t0 = tMin, t1 = limit, a;
-                a = (b[base + nx + i] - ox) * ix; if (a > t0) t0 = a;
-                a = (b[base + fx + i] - ox) * ix; if (a < t1) t1 = a;
-                a = (b[base + ny + i] - oy) * iy; if (a > t0) t0 = a;
-                a = (b[base + fy + i] - oy) * iy; if (a < t1) t1 = a;
-                a = (b[base + nz + i] - oz) * iz; if (a > t0) t0 = a;
-                a = (b[base + fz + i] - oz) * iz; if (a < t1) t1 = a;
-                if (!(t0 - Math.abs(t0) * SLACK <= t1 + Math.abs(t1) * SLACK)) continue; // NaN: an infinite bound, missed
-                // Insert by entry distance, farthest first.
-                int j = m++;
-                while (j > 0 && ht[j - 1] < t0) { he[j] = he[j - 1]; ht[j] = ht[j - 1]; j--; }
-                he[j] = n > 0 ? -1 - (slot0 + i) : rf[slot0 + i];
-                ht[j] = t0;
-            }
-            for (int j = 0; j < m; j++) {
-                se[sp] = he[j];
-                st[sp++] = ht[j];
-            }
+            // The next saved entry that can still hold something closer.
+            do {
+                if (sp == 0) return found;
+                sp--;
+            } while (st[sp] > best + Math.abs(best) * SLACK);
+            e = se[sp];
         }
-        return found;
     }
 }
