@@ -58,16 +58,17 @@ final class BinnedBuild {
             order[m++] = i;
         }
         BinnedBuild run = new BinnedBuild(k, bounds, java.util.Arrays.copyOf(order, m), settings);
-        BuildNode root;
+        BuildNode root = new BuildNode(k);
+        run.enclose(0, m, root);
         if (run.parallel && m >= FORK_ABOVE) {
             ForkJoinPool pool = new ForkJoinPool(settings.threads());
             try {
-                root = pool.invoke(run.task(0, m, 0));
+                pool.invoke(run.task(root, 0, m, 0));
             } finally {
                 pool.shutdownNow();
             }
         } else {
-            root = run.node(0, m, 0, run.new Scratch());
+            run.node(root, 0, m, 0, run.new Scratch());
         }
         return Bvh.of(k, root, run.order, settings);
     }
@@ -82,103 +83,94 @@ final class BinnedBuild {
         final double[] suffixArea = new double[bins];
         final int[] suffixCount = new int[bins];
         final double[] acc = new double[2 * k];
-        final double[] cmin = new double[k], cmax = new double[k];
         /** The boundary {@link #sweep} chose last (bins below it go left). */
         int sweepBin;
     }
 
-    private RecursiveTask<BuildNode> task(int from, int to, int depth) {
+    private RecursiveTask<BuildNode> task(BuildNode node, int from, int to, int depth) {
         return new RecursiveTask<>() {
             @Override protected BuildNode compute() {
-                return node(from, to, depth, new Scratch());
+                return node(node, from, to, depth, new Scratch());
             }
         };
     }
 
-    /** The node over {@code order[from, to)}: a leaf, or a split with its two subtrees. */
-    BuildNode node(int from, int to, int depth, Scratch s) {
+    /**
+     * Makes {@code node}, over {@code order[from, to)}, a leaf or a split with its two subtrees.
+     * Its box and its centroids' bounds were found by its parent (by the partition that made it).
+     */
+    BuildNode node(BuildNode node, int from, int to, int depth, Scratch s) {
         if (Thread.currentThread().isInterrupted()) throw new CancellationException("BVH build interrupted");
         int n = to - from;
-        BuildNode node = new BuildNode(k);
-        double[] cmin = s.cmin, cmax = s.cmax;
-        enclose(from, to, node.box, cmin, cmax);
+        double[] centroids = node.centroids;
+        node.centroids = null;                  // needed no more: let it go
         if (n <= 1 || depth >= depthCap) return node.leaf(from, n);
-        int mid = split(from, to, depth, node.box, cmin, cmax, s);
+        BuildNode left = new BuildNode(k), right = new BuildNode(k);
+        int mid = split(from, to, depth, node.box, centroids, left, right, s);
         if (mid < 0) return node.leaf(from, n);
         if (parallel && n >= FORK_ABOVE) {
-            RecursiveTask<BuildNode> right = task(mid, to, depth + 1);
-            right.fork();
-            BuildNode left = node(from, mid, depth + 1, s);
-            return node.interior(left, right.join());
+            RecursiveTask<BuildNode> r = task(right, mid, to, depth + 1);
+            r.fork();
+            node(left, from, mid, depth + 1, s);
+            r.join();
+        } else {
+            node(left, from, mid, depth + 1, s);
+            node(right, mid, to, depth + 1, s);
         }
-        BuildNode left = node(from, mid, depth + 1, s);
-        return node.interior(left, node(mid, to, depth + 1, s));
+        return node.interior(left, right);      // after the subtrees, which it counts
     }
 
-    /** The bounds of the stretch's primitives into {@code box}, and of their centroids (doubled). */
-    private void enclose(int from, int to, double[] box, double[] cmin, double[] cmax) {
-        for (int a = 0; a < k; a++) {
-            box[a] = cmin[a] = Double.POSITIVE_INFINITY;
-            box[k + a] = cmax[a] = Double.NEGATIVE_INFINITY;
-        }
+    /** Sets {@code node}'s box to the bounds of the stretch's primitives, and its centroids' bounds (doubled). */
+    private void enclose(int from, int to, BuildNode node) {
+        double[] box = node.box, c = node.centroids = new double[2 * k];
+        clear(box);
+        clear(c);
         double[] r = bounds;
-        if (k == 3) {
-            enclose3(from, to, box, cmin, cmax);
-            return;
-        }
         for (int o = 2 * k * from, end = 2 * k * to; o < end; o += 2 * k) {
             for (int a = 0; a < k; a++) {
-                double lo = r[o + a], hi = r[o + k + a], c = lo + hi;
+                double lo = r[o + a], hi = r[o + k + a], x = lo + hi;
                 if (lo < box[a]) box[a] = lo;
                 if (hi > box[k + a]) box[k + a] = hi;
-                if (c < cmin[a]) cmin[a] = c;
-                if (c > cmax[a]) cmax[a] = c;
+                if (x < c[a]) c[a] = x;
+                if (x > c[k + a]) c[k + a] = x;
             }
         }
-    }
-
-    /** {@link #enclose} in 3-D, unrolled, with the running bounds in locals. */
-    private void enclose3(int from, int to, double[] box, double[] cmin, double[] cmax) {
-        double[] r = bounds;
-        double bx0 = box[0], by0 = box[1], bz0 = box[2], bx1 = box[3], by1 = box[4], bz1 = box[5];
-        double cx0 = cmin[0], cy0 = cmin[1], cz0 = cmin[2], cx1 = cmax[0], cy1 = cmax[1], cz1 = cmax[2];
-        for (int o = 6 * from, end = 6 * to; o < end; o += 6) {
-            double x0 = r[o], y0 = r[o + 1], z0 = r[o + 2], x1 = r[o + 3], y1 = r[o + 4], z1 = r[o + 5];
-            bx0 = Math.min(bx0, x0); by0 = Math.min(by0, y0); bz0 = Math.min(bz0, z0);
-            bx1 = Math.max(bx1, x1); by1 = Math.max(by1, y1); bz1 = Math.max(bz1, z1);
-            double cx = x0 + x1, cy = y0 + y1, cz = z0 + z1;
-            cx0 = Math.min(cx0, cx); cy0 = Math.min(cy0, cy); cz0 = Math.min(cz0, cz);
-            cx1 = Math.max(cx1, cx); cy1 = Math.max(cy1, cy); cz1 = Math.max(cz1, cz);
-        }
-        box[0] = bx0; box[1] = by0; box[2] = bz0; box[3] = bx1; box[4] = by1; box[5] = bz1;
-        cmin[0] = cx0; cmin[1] = cy0; cmin[2] = cz0; cmax[0] = cx1; cmax[1] = cy1; cmax[2] = cz1;
     }
 
     /**
      * Where the stretch is cut: the partition point of the cheapest binned plane, or of the
-     * median, or -1 when a leaf is cheaper and allowed.
+     * median, or -1 when a leaf is cheaper and allowed. Sets the two children's boxes and centroid bounds.
      */
-    private int split(int from, int to, int depth, double[] box, double[] cmin, double[] cmax, Scratch s) {
+    private int split(int from, int to, int depth, double[] box, double[] centroids, BuildNode left, BuildNode right, Scratch s) {
         int n = to - from;
+        double[] c = centroids;                 // k minima, then k maxima
         // Past this depth only halving reaches leaves of leafSize before the cap: halve.
-        if (depthCap - depth <= ceilLog2((n + leafSize - 1) / leafSize)) return median(from, to, cmin, cmax);
+        if (depthCap - depth <= ceilLog2((n + leafSize - 1) / leafSize)) return children(from, median(from, to, c), to, left, right);
         int nb = Math.min(bins, n);
-        bin(from, to, nb, cmin, cmax, s);
+        bin(from, to, nb, c, s);
         double area = BoxArea.of(box, 0, k);
         double best = Double.POSITIVE_INFINITY;
         int bestAxis = -1, bestBin = 0;
         for (int a = 0; a < k; a++) {
-            if (!(cmax[a] > cmin[a])) continue;
-            double c = sweep(a, nb, s, area);
-            if (c < best) {
-                best = c;
+            if (!(c[k + a] > c[a])) continue;
+            double cost = sweep(a, nb, s, area);
+            if (cost < best) {
+                best = cost;
                 bestAxis = a;
                 bestBin = s.sweepBin;
             }
         }
-        if (bestAxis < 0) return n > leafSize ? median(from, to, cmin, cmax) : -1;
-        if (n <= leafSize && best >= cost.ki() * n) return -1;
-        return partition(from, to, bestAxis, nb, cmin[bestAxis], s.scale[bestAxis], bestBin);
+        if (bestAxis < 0) return n > leafSize ? children(from, median(from, to, c), to, left, right) : -1;
+        if (n <= leafSize && best >= this.cost.ki() * n) return -1;
+        if (k == 3) return partition3(from, to, bestAxis, nb, c[bestAxis], s.scale[bestAxis], bestBin, left, right);
+        return children(from, partition(from, to, bestAxis, nb, c[bestAxis], s.scale[bestAxis], bestBin), to, left, right);
+    }
+
+    /** Bounds the two children of a cut at {@code mid}; returns {@code mid}. */
+    private int children(int from, int mid, int to, BuildNode left, BuildNode right) {
+        enclose(from, mid, left);
+        enclose(mid, to, right);
+        return mid;
     }
 
     private static int ceilLog2(int n) {
@@ -195,12 +187,16 @@ final class BinnedBuild {
      * One pass over the stretch: counts each reference into its bin on every axis where the
      * centroids spread, and grows that bin's box.
      */
-    private void bin(int from, int to, int nb, double[] cmin, double[] cmax, Scratch s) {
+    private void bin(int from, int to, int nb, double[] c, Scratch s) {
         int[] count = s.count;
         double[] box = s.box, scale = s.scale, r = bounds;
         int kk = 2 * k;
+        for (int a = 0; a < k; a++) scale[a] = c[k + a] > c[a] ? nb / (c[k + a] - c[a]) : 0;
+        if (k == 3) {
+            bin3(from, to, nb, c, s);
+            return;
+        }
         for (int a = 0; a < k; a++) {
-            scale[a] = cmax[a] > cmin[a] ? nb / (cmax[a] - cmin[a]) : 0;
             for (int b = 0; b < nb; b++) {
                 count[a * bins + b] = 0;
                 int d = kk * (a * bins + b);
@@ -210,14 +206,10 @@ final class BinnedBuild {
                 }
             }
         }
-        if (k == 3) {
-            bin3(from, to, nb, cmin, s);
-            return;
-        }
         for (int o = kk * from, end = kk * to; o < end; o += kk) {
             for (int a = 0; a < k; a++) {
                 if (scale[a] == 0) continue;
-                int b = binOf(r[o + a] + r[o + k + a], cmin[a], scale[a], nb);
+                int b = binOf(r[o + a] + r[o + k + a], c[a], scale[a], nb);
                 count[a * bins + b]++;
                 int d = kk * (a * bins + b);
                 for (int x = 0; x < kk; x += 1) {
@@ -229,11 +221,19 @@ final class BinnedBuild {
     }
 
     /** {@link #bin}'s pass in 3-D, unrolled: the build's hottest loop. */
-    private void bin3(int from, int to, int nb, double[] cmin, Scratch s) {
+    private void bin3(int from, int to, int nb, double[] c, Scratch s) {
         int[] count = s.count;
         double[] box = s.box, r = bounds;
-        double sx = s.scale[0], sy = s.scale[1], sz = s.scale[2], lx = cmin[0], ly = cmin[1], lz = cmin[2];
+        double sx = s.scale[0], sy = s.scale[1], sz = s.scale[2], lx = c[0], ly = c[1], lz = c[2];
         int by = bins, bz = 2 * bins;
+        for (int a = 0; a < 3; a++) {
+            for (int b = a * bins, end = b + nb; b < end; b++) {
+                count[b] = 0;
+                int d = 6 * b;
+                box[d] = box[d + 1] = box[d + 2] = Double.POSITIVE_INFINITY;
+                box[d + 3] = box[d + 4] = box[d + 5] = Double.NEGATIVE_INFINITY;
+            }
+        }
         for (int o = 6 * from, end = 6 * to; o < end; o += 6) {
             double x0 = r[o], y0 = r[o + 1], z0 = r[o + 2], x1 = r[o + 3], y1 = r[o + 4], z1 = r[o + 5];
             if (sx != 0) grow3(box, count, binOf(x0 + x1, lx, sx, nb), x0, y0, z0, x1, y1, z1);
@@ -259,6 +259,7 @@ final class BinnedBuild {
      * zero area (all its primitives at one point or on one line in 3-D) weighs each side by its count.
      */
     private double sweep(int axis, int nb, Scratch s, double area) {
+        if (k == 3 && area > 0) return sweep3(axis, nb, s, area);
         int[] count = s.count;
         double[] box = s.box, acc = s.acc;
         int cb = axis * bins, kk = 2 * k;
@@ -280,6 +281,43 @@ final class BinnedBuild {
             if (n == 0 || right == 0) continue;
             double c = area > 0 ? cost.kt() + cost.ki() * (BoxArea.of(acc, 0, k) * n + s.suffixArea[b] * right) * norm
                     : cost.kt() + cost.ki() * Math.max(n, right);
+            if (c < best) {
+                best = c;
+                s.sweepBin = b;
+            }
+        }
+        return best;
+    }
+
+    /** {@link #sweep} in 3-D, with the running boxes in locals. */
+    private double sweep3(int axis, int nb, Scratch s, double area) {
+        int[] count = s.count, suffixCount = s.suffixCount;
+        double[] box = s.box, suffixArea = s.suffixArea;
+        int cb = axis * bins, n = 0;
+        double x0 = Double.POSITIVE_INFINITY, y0 = x0, z0 = x0, x1 = Double.NEGATIVE_INFINITY, y1 = x1, z1 = x1;
+        for (int b = nb - 1; b > 0; b--) {
+            int d = 6 * (cb + b);
+            x0 = Math.min(x0, box[d]); y0 = Math.min(y0, box[d + 1]); z0 = Math.min(z0, box[d + 2]);
+            x1 = Math.max(x1, box[d + 3]); y1 = Math.max(y1, box[d + 4]); z1 = Math.max(z1, box[d + 5]);
+            n += count[cb + b];
+            suffixCount[b] = n;
+            double dx = x1 - x0, dy = y1 - y0, dz = z1 - z0;
+            suffixArea[b] = n == 0 ? 0 : dx * dy + dy * dz + dz * dx;
+        }
+        // Half areas on both sides: the ratio to the node's is the same.
+        double best = Double.POSITIVE_INFINITY, kt = cost.kt(), norm = cost.ki() * 2 / area;
+        x0 = y0 = z0 = Double.POSITIVE_INFINITY;
+        x1 = y1 = z1 = Double.NEGATIVE_INFINITY;
+        n = 0;
+        for (int b = 1; b < nb; b++) {
+            int d = 6 * (cb + b - 1);
+            x0 = Math.min(x0, box[d]); y0 = Math.min(y0, box[d + 1]); z0 = Math.min(z0, box[d + 2]);
+            x1 = Math.max(x1, box[d + 3]); y1 = Math.max(y1, box[d + 4]); z1 = Math.max(z1, box[d + 5]);
+            n += count[cb + b - 1];
+            int right = suffixCount[b];
+            if (n == 0 || right == 0) continue;
+            double dx = x1 - x0, dy = y1 - y0, dz = z1 - z0;
+            double c = kt + ((dx * dy + dy * dz + dz * dx) * n + suffixArea[b] * right) * norm;
             if (c < best) {
                 best = c;
                 s.sweepBin = b;
@@ -319,13 +357,44 @@ final class BinnedBuild {
     }
 
     /**
+     * {@link #partition} in 3-D, bounding each child as its references are classified: each
+     * reference is read once, and growing a box twice by the same reference changes nothing.
+     */
+    private int partition3(int from, int to, int axis, int nb, double lo, double scale, int bin, BuildNode left, BuildNode right) {
+        double[] lb = left.box, lc = left.centroids = new double[6], rb = right.box, rc = right.centroids = new double[6];
+        clear(lb);
+        clear(lc);
+        clear(rb);
+        clear(rc);
+        int i = from, j = to - 1;
+        while (true) {
+            while (i <= j && binOf(centre(i, axis), lo, scale, nb) < bin) grow3(lb, lc, i++);
+            while (i <= j && binOf(centre(j, axis), lo, scale, nb) >= bin) grow3(rb, rc, j--);
+            if (i >= j) return i;
+            swap(i, j);
+        }
+    }
+
+    /** Grows a box and a centroid box by reference {@code i}. */
+    private void grow3(double[] box, double[] c, int i) {
+        double[] r = bounds;
+        int o = 6 * i;
+        double x0 = r[o], y0 = r[o + 1], z0 = r[o + 2], x1 = r[o + 3], y1 = r[o + 4], z1 = r[o + 5];
+        box[0] = Math.min(box[0], x0); box[1] = Math.min(box[1], y0); box[2] = Math.min(box[2], z0);
+        box[3] = Math.max(box[3], x1); box[4] = Math.max(box[4], y1); box[5] = Math.max(box[5], z1);
+        double cx = x0 + x1, cy = y0 + y1, cz = z0 + z1;
+        c[0] = Math.min(c[0], cx); c[1] = Math.min(c[1], cy); c[2] = Math.min(c[2], cz);
+        c[3] = Math.max(c[3], cx); c[4] = Math.max(c[4], cy); c[5] = Math.max(c[5], cz);
+    }
+
+    /**
      * Halves the stretch at the median centroid on the axis where centroids spread most (or
      * anywhere when they coincide): the cut that keeps any build within the depth cap.
      */
-    private int median(int from, int to, double[] cmin, double[] cmax) {
+    private int median(int from, int to, double[] c) {
         int mid = (from + to) >>> 1, axis = 0;
-        for (int a = 1; a < k; a++) if (cmax[a] - cmin[a] > cmax[axis] - cmin[axis]) axis = a;
-        if (cmax[axis] > cmin[axis]) select(from, to - 1, mid, axis);
+        for (int a = 1; a < k; a++) if (c[k + a] - c[a] > c[k + axis] - c[axis]) axis = a;
+        if (c[k + axis] > c[axis]) select(from, to - 1, mid, axis);
         return mid;
     }
 

@@ -8,6 +8,8 @@ final class BuildNode {
     /** k minima, then k maxima. */
     final double[] box;
     BuildNode left, right;
+    /** Its centroids' bounds (doubled: min + max), k minima then k maxima, while it waits to be split. */
+    double[] centroids;
     int first, count;
     private int nodes = 1;
 
