@@ -1,6 +1,7 @@
 package org.kdtree.cli;
 
 import static org.assertj.core.api.Assertions.assertThat;
+import static org.assertj.core.api.Assertions.within;
 
 import java.awt.image.BufferedImage;
 import java.nio.file.Files;
@@ -30,6 +31,26 @@ class BvhCommandsTest {
         assertThat(r.code()).as(r.err()).isZero();
         assertThat(r.out()).contains("builder: bvh (width=8 bins=8 leafSize=1 maxDepth=12").contains("max depth: 12");
         assertThat(references(r.out())).as("a BVH holds each triangle once").isEqualTo(10_370);
+    }
+
+    /** The benchmark line of docs/raycast.md, system kdtree-bvh, with the kd-tree's hit counts and distance sums. */
+    @Test void raycastPrintsTheBenchmarkLineOfTheBvh() {
+        String[] sah = line(CliRun.of("raycast", "scenes/meshes/mtl-demo.obj", "--runs", "1", "--warmup", "0"));
+        String[] bvh = line(CliRun.of("raycast", "scenes/meshes/mtl-demo.obj", "--runs", "1", "--warmup", "0", "-b", "bvh",
+                "--bvh-width", "8", "--threads", "2"));
+        assertThat(bvh[0]).isEqualTo("kdtree-bvh");
+        assertThat(bvh[1]).isEqualTo("mtl-demo");
+        for (int f : new int[] {7, 10}) assertThat(bvh[f]).as("hits").isEqualTo(sah[f]);
+        for (int f : new int[] {8, 11})
+            assertThat(Double.parseDouble(bvh[f])).as("t sum").isCloseTo(Double.parseDouble(sah[f]), within(1e-9 * Double.parseDouble(sah[f])));
+        assertThat(Long.parseLong(sah[10])).as("a workload that hits").isPositive();
+    }
+
+    private static String[] line(CliRun r) {
+        assertThat(r.code()).as(r.err()).isZero();
+        String[] f = r.out().strip().split(" ");
+        assertThat(f).hasSize(13);
+        return f;
     }
 
     @Test void theBvhsSettingsAreCheckedAndTheKdTreesRefused() {
