@@ -57,7 +57,7 @@ public record RenderJob(Scene scene, AccelerationStructure structure, String bui
      *
      * @param scene the scene
      * @param spec the builder and its settings
-     * @param supervisor runs a kd-tree builder
+     * @param supervisor runs a kd-tree builder; null to build on this thread, unsupervised
      * @param options threads, tiles and progress
      * @return the finished job
      * @throws IllegalArgumentException if the spec names no builder or a setting its builder does not take
