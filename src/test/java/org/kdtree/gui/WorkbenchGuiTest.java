@@ -183,7 +183,7 @@ class WorkbenchGuiTest {
         assertThat(bench.model().tree().nodeCount()).isEqualTo(nodes);
 
         window.textBox("kmaxdepth.text").setText("").enterText("12x");
-        window.label("rejection").requireText("Kmaxdepth: '12x' is not a number, allowed: -1..64 (-1 = auto, 8 + 1.3 log2 N)");
+        window.label("rejection").requireText("Kmaxdepth: '12x' is not a number, allowed: -1..64 (-1 = auto: 8 + 1.3 log2 N for a kd-tree, 64 for a BVH)");
         window.textBox("kmaxdepth.text").setText("").enterText("3\n");
         assertThat(window.robot().finder().findAll(bench, c -> "rejection".equals(c.getName()) && c.isShowing()))
                 .as("a valid value again: the rejection's row is gone").isEmpty();
