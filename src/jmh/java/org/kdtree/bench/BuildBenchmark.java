@@ -3,14 +3,16 @@ package org.kdtree.bench;
 import java.util.concurrent.TimeUnit;
 import java.util.LinkedHashMap;
 import java.util.Map;
+import java.util.function.Function;
 import org.kdtree.build.BuilderSpec;
 import org.kdtree.build.Builders;
 import org.kdtree.build.KdTreeBuilder;
 import org.kdtree.build.Quality;
 import org.kdtree.build.SahBuilder;
 import org.kdtree.build.Setting;
+import org.kdtree.bvh.BvhBuilder;
 import org.kdtree.shape.TriangleMesh;
-import org.kdtree.tree.KdTree;
+import org.kdtree.traverse.AccelerationStructure;
 import org.openjdk.jmh.annotations.Benchmark;
 import org.openjdk.jmh.annotations.BenchmarkMode;
 import org.openjdk.jmh.annotations.Fork;
@@ -25,7 +27,8 @@ import org.openjdk.jmh.annotations.State;
 import org.openjdk.jmh.annotations.Warmup;
 
 /**
- * Construction time of every builder and SAH algorithm over N = 1K .. 1M on three kinds of
+ * Construction time of every builder and SAH algorithm, and of the bounding volume hierarchy
+ * ({@code bvh}, also {@code bvh-width2} and {@code bvh-width8}), over N = 1K .. 1M on three kinds of
  * scene. One operation = one whole build, single thread (set {@code -p threads=2} for the
  * parallel build). The naive O(N^2) SAH is in {@link NaiveBuildBenchmark}, with smaller N.
  */
@@ -42,24 +45,32 @@ public class BuildBenchmark {
     @Param({"1000", "10000", "100000", "1000000"})
     public int n;
 
-    @Param({"sah-event", "sah-sorted", "sah-binned", "median-plane", "object-median"})
+    @Param({"sah-event", "sah-sorted", "sah-binned", "median-plane", "object-median", "bvh"})
     public String builder;
 
     @Param({"1"})
     public int threads;
 
     private TriangleMesh mesh;
-    private KdTreeBuilder kd;
+    /** One whole build with a builder made up front: a kd-tree builder's or the BVH's. */
+    private Function<TriangleMesh, Object> build;
 
     @Setup(Level.Trial)
     public void setUp() {
         mesh = BenchScenes.make(scene, n);
-        kd = spec(builder).with(Setting.THREADS, threads).create();
+        BuilderSpec s = spec(builder).with(Setting.THREADS, threads);
+        if (s.buildsBvh()) {
+            BvhBuilder bvh = s.createBvh();
+            build = bvh::build;
+        } else {
+            KdTreeBuilder kd = s.create();
+            build = kd::build;
+        }
     }
 
     @Benchmark
-    public KdTree build() {
-        return kd.build(mesh);
+    public Object build() {
+        return build.apply(mesh);
     }
 
     /** The builders the benchmarks measure, by their parameter name: each a {@link BuilderSpec}. */
@@ -75,6 +86,9 @@ public class BuildBenchmark {
         m.put("sah-balanced", sah.with(Setting.QUALITY, Quality.BALANCED));
         m.put("sah-fast", sah.with(Setting.QUALITY, Quality.FAST));
         for (String name : Builders.names()) m.putIfAbsent(name, BuilderSpec.of(name));
+        m.put(BvhBuilder.NAME, BuilderSpec.of(BvhBuilder.NAME));
+        m.put("bvh-width2", BuilderSpec.of(BvhBuilder.NAME).with(Setting.BVH_WIDTH, 2));
+        m.put("bvh-width8", BuilderSpec.of(BvhBuilder.NAME).with(Setting.BVH_WIDTH, 8));
         return m;
     }
 
@@ -85,8 +99,13 @@ public class BuildBenchmark {
         return spec;
     }
 
-    /** A new builder of the benchmark parameter {@code name} ({@link #spec}). */
+    /** A new kd-tree builder of the benchmark parameter {@code name} ({@link #spec}); "bvh" is refused in one line. */
     static KdTreeBuilder builder(String name) {
         return spec(name).create();
+    }
+
+    /** The structure the benchmark parameter {@code name} builds over {@code mesh}: a kd-tree or a BVH ({@link #spec}). */
+    static AccelerationStructure structure(String name, TriangleMesh mesh) {
+        return spec(name).build(mesh, null);
     }
 }

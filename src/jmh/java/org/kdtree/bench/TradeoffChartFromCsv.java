@@ -5,6 +5,7 @@ import java.nio.file.Files;
 import java.nio.file.Path;
 import java.util.ArrayList;
 import java.util.List;
+import java.util.function.ToDoubleFunction;
 import org.kdtree.tradeoff.TradeoffChart;
 import org.kdtree.tradeoff.TradeoffResult;
 
@@ -32,11 +33,15 @@ public final class TradeoffChartFromCsv {
         int triangles = Integer.parseInt(args[1]);
         List<TradeoffResult> results = new ArrayList<>();
         List<String> lines = Files.readAllLines(Path.of(args[0]));
+        // Columns by name: files written before boxes_per_ray was added have none (a kd-tree's 0).
+        List<String> header = List.of(lines.get(0).split(","));
         for (String line : lines.subList(1, lines.size())) {
-            String[] f = line.split(",", 14);   // the last field, the settings, is quoted and may hold commas
-            results.add(new TradeoffResult(f[0], f[13], Double.parseDouble(f[1]), Double.parseDouble(f[2]),
-                    Integer.parseInt(f[3]), Integer.parseInt(f[4]), Long.parseLong(f[5]), Double.parseDouble(f[6]),
-                    Double.parseDouble(f[7]), Double.parseDouble(f[8]) * 1e6, triangles));
+            String[] f = line.split(",", header.size());   // the last field, the settings, is quoted and may hold commas
+            ToDoubleFunction<String> col = name -> header.contains(name) ? Double.parseDouble(f[header.indexOf(name)]) : 0;
+            results.add(new TradeoffResult(f[0], f[header.size() - 1], col.applyAsDouble("build_ms"), col.applyAsDouble("expected_cost"),
+                    (int) col.applyAsDouble("nodes"), (int) col.applyAsDouble("leaves"), (long) col.applyAsDouble("memory_bytes"),
+                    col.applyAsDouble("nodes_per_ray"), col.applyAsDouble("tests_per_ray"), col.applyAsDouble("boxes_per_ray"),
+                    col.applyAsDouble("mrays_per_s") * 1e6, triangles));
         }
         TradeoffChart.write(results, args[2], 10, args[3] + " · data: " + Path.of(args[0]).getFileName(), Path.of(args[4]));
     }

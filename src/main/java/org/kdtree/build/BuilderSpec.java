@@ -168,14 +168,15 @@ public final class BuilderSpec {
      * which watches a builder that is not the library's) or a bounding volume hierarchy.
      *
      * @param prims      the primitives
-     * @param supervisor runs a kd-tree builder
+     * @param supervisor runs a kd-tree builder; null to build on the calling thread, unsupervised
      * @return the structure
      * @throws IllegalArgumentException as {@link #create()} and {@link #createBvh()}
      * @throws BuilderFault if a supervised kd-tree builder failed
      */
     public AccelerationStructure build(Primitives prims, Supervisor supervisor) {
         if (buildsBvh()) return createBvh().build(prims);
-        return AccelerationStructure.of(supervisor.build(create(), prims));
+        KdTreeBuilder b = create();
+        return AccelerationStructure.of(supervisor == null ? b.build(prims) : supervisor.build(b, prims));
     }
 
     /** {@return the builder's settings in one line} (its {@code describeSettings}) */

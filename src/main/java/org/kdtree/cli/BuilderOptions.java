@@ -17,7 +17,8 @@ import picocli.CommandLine.Model.OptionSpec;
 
 /**
  * The builder options of every command that builds a tree (a picocli mixin): {@code -b NAME}
- * and one option per row of {@link Setting}, made from the row (its option, help, range,
+ * (a kd-tree builder, or {@code bvh} where ray queries are all the command needs; the others
+ * refuse it in one line) and one option per row of {@link Setting}, made from the row (its option, help, range,
  * default and builders), so that a setting added there is an option of every such command.
  * The values are kept as typed and checked when {@link #spec()} makes the {@link BuilderSpec},
  * whose errors name the option in one line.
@@ -110,7 +111,8 @@ final class BuilderOptions {
             BuilderOptions o = command.mixins().values().stream().map(CommandSpec::userObject)
                     .filter(BuilderOptions.class::isInstance).map(BuilderOptions.class::cast).findFirst().orElseThrow();
             command.addOption(OptionSpec.builder("-b", "--builder").type(String.class).paramLabel("NAME")
-                    .description("Builder: sah, median-plane, object-median, sliding-midpoint, or a registered name "
+                    .description("Builder: sah, median-plane, object-median, sliding-midpoint, a registered name, or bvh "
+                            + "(a bounding volume hierarchy: ray queries only) "
                             + (o.role != null ? "(" + o.role + ")." : "(default: " + o.defaultBuilder + ")."))
                     .setter(setter(v -> o.builder = (String) v)).build());
             for (Setting<?> s : Setting.ALL) command.addOption(option(s, o));

@@ -15,7 +15,7 @@ import picocli.CommandLine.Mixin;
 import picocli.CommandLine.Option;
 import picocli.CommandLine.Parameters;
 
-/** {@code render SCENE -o out.png}: build a kd-tree over a JSON scene, ray trace it, write a PNG. */
+/** {@code render SCENE -o out.png}: build a kd-tree (or a BVH) over a JSON scene, ray trace it, write a PNG. */
 @Command(name = "render", mixinStandardHelpOptions = true,
         description = "Ray trace a JSON scene (docs/scene-format.md) to a PNG, simulating only the effects it calls for, "
                 + "and print the effects, rays by kind, times and tree statistics. --threads also renders "
@@ -67,7 +67,7 @@ final class RenderCommand implements Callable<Integer> {
         if (spec.get(Setting.THREADS) != null) o = o.withThreads(spec.get(Setting.THREADS));
         RenderJob job;
         try (ProgressBar bar = progress.bar(1, "tiles")) {
-            job = RenderJob.run(s, spec.create(), deadlines.supervisor(), o.withProgress((done, total, image) -> bar.update(done, total)));
+            job = RenderJob.run(s, spec, deadlines.supervisor(), o.withProgress((done, total, image) -> bar.update(done, total)));
         }
         job.result().image().writePng(output);
         System.out.print(job.summary());

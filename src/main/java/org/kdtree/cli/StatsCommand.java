@@ -1,11 +1,10 @@
 package org.kdtree.cli;
 
 import java.nio.file.Path;
-import java.util.Arrays;
 import java.util.Locale;
 import java.util.concurrent.Callable;
 import org.kdtree.build.BuilderSpec;
-import org.kdtree.build.KdTreeBuilder;
+import org.kdtree.build.Setting;
 import org.kdtree.build.Supervisor;
 import org.kdtree.io.BundledScenes;
 import org.kdtree.io.PrimitivesReader;
@@ -15,15 +14,17 @@ import org.kdtree.render.RenderJob;
 import org.kdtree.shape.Primitives;
 import org.kdtree.generate.MeshGrid;
 import org.kdtree.shape.TriangleMesh;
-import org.kdtree.tree.KdTree;
+import org.kdtree.traverse.AccelerationStructure;
+import org.kdtree.traverse.KdTreeStructure;
 import picocli.CommandLine.Command;
 import picocli.CommandLine.Mixin;
 import picocli.CommandLine.Option;
 import picocli.CommandLine.Parameters;
 
-/** {@code stats SCENE}: build a tree and print its statistics and build time. */
+/** {@code stats SCENE}: build a kd-tree or a bounding volume hierarchy and print its statistics and build time. */
 @Command(name = "stats", mixinStandardHelpOptions = true,
-        description = "Build a kd-tree over a scene (.obj, .scene2d or .json) and print its statistics and build time.")
+        description = "Build a kd-tree, or with -b bvh a bounding volume hierarchy, over a scene (an OBJ, 2-D or JSON scene file) "
+                + "and print its statistics and build time.")
 final class StatsCommand implements Callable<Integer> {
     @Parameters(paramLabel = "SCENE", description = "An OBJ mesh, a .scene2d or a JSON scene file, or a bundled scene: "
             + "scenes:cornell-box (or plain cornell-box where no such file exists).")
@@ -54,23 +55,25 @@ final class StatsCommand implements Callable<Integer> {
             if (!(prims instanceof TriangleMesh mesh)) throw new IllegalArgumentException("--grid applies to OBJ meshes only");
             prims = MeshGrid.grid(mesh, grid);
         }
-        KdTreeBuilder builder = spec.create();
+        String settings = spec.describe();       // also refuses settings the builder does not take, before building
         Primitives scenePrims = prims;
         Supervisor supervisor = deadlines.supervisor();
-        Timing.Timed<KdTree> build;
+        Timing.Timed<AccelerationStructure> build;
         try (ProgressBar bar = progress.bar(timed.warmup + timed.runs, "builds")) {
             build = Timing.median(timed.warmup, timed.runs, (i, warmUp) -> bar.step(i, warmUp ? "warm-up build" : "timed build"),
-                    () -> supervisor.build(builder, scenePrims));
+                    () -> spec.build(scenePrims, supervisor));
         }
-        KdTree tree = build.value();
+        AccelerationStructure built = build.value();
         System.out.printf(Locale.ROOT, "scene: %s (%s, %d-D)%n", scene, RenderJob.count(prims.size(), "primitive"), prims.dimension());
-        System.out.printf(Locale.ROOT, "builder: %s (%s)%n", builder.name(), builder.describeSettings());
+        System.out.printf(Locale.ROOT, "builder: %s (%s)%n", spec.builder(), settings);
         System.out.printf(Locale.ROOT, "build time: %.1f ms%s%n", build.millis(),
                 timed.runs > 1 ? " (median of " + timed.runs + ", after " + timed.warmup + " warm-up)" : "");
-        System.out.println(tree.stats().describe());
-        if (tree.budgetLeaves() > 0)
+        System.out.println(built.stats().describe());
+        if (built instanceof KdTreeStructure kd && kd.tree().budgetLeaves() > 0) {
+            int leaves = kd.tree().budgetLeaves();
             System.out.printf(Locale.ROOT, "note: the reference budget (%d per primitive, --reference-budget) made %d %s early%n",
-                    builder.referenceBudget(), tree.budgetLeaves(), tree.budgetLeaves() == 1 ? "leaf" : "leaves");
+                    spec.value(Setting.REFERENCE_BUDGET), leaves, leaves == 1 ? "leaf" : "leaves");
+        }
         return 0;
     }
 }

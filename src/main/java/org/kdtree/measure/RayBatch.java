@@ -8,10 +8,11 @@ import java.util.concurrent.atomic.AtomicInteger;
 import java.util.function.Supplier;
 import org.kdtree.geom.Ray;
 import org.kdtree.limits.Limits;
+import org.kdtree.traverse.AccelerationStructure;
 import org.kdtree.traverse.Hit;
+import org.kdtree.traverse.Intersector;
 import org.kdtree.traverse.RayQuery;
 import org.kdtree.traverse.TraversalStats;
-import org.kdtree.traverse.Traverser;
 
 /**
  * The one ray-batch tracer: traces a {@link RaySet} (closest hit of every ray) on one or more
@@ -118,14 +119,15 @@ public final class RayBatch implements AutoCloseable {
 
     /**
      * Traces about {@code limit} rays spread over the whole set with a listener that counts nodes
-     * visited and primitive tests (same interval as {@link #trace}).
+     * visited, primitive tests and box tests (same interval as {@link #trace}).
      *
-     * @param traverser finds each ray's closest hit
+     * @param structure the kd-tree or bounding volume hierarchy that finds each ray's closest hit
+     * @param prims     the intersector of the primitives it was built over
      * @param set       the rays to sample, every {@code size / limit}-th one
      * @param limit     about how many rays to trace
      * @return the counts summed over the rays traced
      */
-    public static TraversalStats count(Traverser traverser, RaySet set, int limit) {
+    public static TraversalStats count(AccelerationStructure structure, Intersector prims, RaySet set, int limit) {
         double[] r = set.rays();
         int n = set.size();
         // Every stride-th ray, so the sample spans the whole set: the first rows of the primary
@@ -134,10 +136,11 @@ public final class RayBatch implements AutoCloseable {
         Ray ray = new Ray(3);
         Hit hit = new Hit();
         TraversalStats stats = new TraversalStats();
+        RayQuery counting = structure.query(prims, stats);
         for (int i = 0; i < n; i += stride) {
             int o = 6 * i;
             ray.set(r[o], r[o + 1], r[o + 2], r[o + 3], r[o + 4], r[o + 5]);
-            traverser.closestHit(ray, T_MIN, Double.POSITIVE_INFINITY, hit, stats);
+            counting.closestHit(ray, T_MIN, Double.POSITIVE_INFINITY, hit);
         }
         return stats;
     }

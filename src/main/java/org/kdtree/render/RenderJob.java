@@ -3,22 +3,25 @@ package org.kdtree.render;
 import org.kdtree.scene.Camera;
 import org.kdtree.scene.Scene;
 import java.util.Locale;
+import java.util.function.Supplier;
+import org.kdtree.build.BuilderSpec;
 import org.kdtree.build.KdTreeBuilder;
 import org.kdtree.build.Supervisor;
-import org.kdtree.traverse.Traverser;
+import org.kdtree.traverse.AccelerationStructure;
 import org.kdtree.traverse.TriangleIntersector;
-import org.kdtree.tree.KdTree;
 
 /**
- * A whole render: build the kd-tree over the scene's mesh with the given builder, then trace it
- * with one {@link Traverser} per thread over a shared {@link TriangleIntersector}.
+ * A whole render: build the acceleration structure over the scene's mesh (a kd-tree with the
+ * given builder, or what a {@link BuilderSpec} names: a kd-tree or a bounding volume hierarchy),
+ * then trace it with one query per thread over a shared {@link TriangleIntersector}.
  *
- * @param scene      the scene rendered
- * @param tree       the tree built
- * @param buildNanos wall-clock build time
- * @param result     the image, the plan and the rays cast
+ * @param scene       the scene rendered
+ * @param structure   the structure built
+ * @param builderName the name of the builder that built it
+ * @param buildNanos  wall-clock build time
+ * @param result      the image, the plan and the rays cast
  */
-public record RenderJob(Scene scene, KdTree tree, long buildNanos, RenderResult result) {
+public record RenderJob(Scene scene, AccelerationStructure structure, String builderName, long buildNanos, RenderResult result) {
 
     /**
      * Builds the tree and renders.
@@ -44,12 +47,33 @@ public record RenderJob(Scene scene, KdTree tree, long buildNanos, RenderResult 
      * @throws org.kdtree.build.BuilderFault if the builder failed under supervision
      */
     public static RenderJob run(Scene scene, KdTreeBuilder builder, Supervisor supervisor, Renderer.Options options) {
+        return run(scene, builder.name(), () -> AccelerationStructure.of(
+                supervisor == null ? builder.build(scene.mesh()) : supervisor.build(builder, scene.mesh())), options);
+    }
+
+    /**
+     * Builds the structure {@code spec} names (a kd-tree under {@code supervisor}, or a bounding
+     * volume hierarchy), then renders: the same image whichever it is.
+     *
+     * @param scene the scene
+     * @param spec the builder and its settings
+     * @param supervisor runs a kd-tree builder; null to build on this thread, unsupervised
+     * @param options threads, tiles and progress
+     * @return the finished job
+     * @throws IllegalArgumentException if the spec names no builder or a setting its builder does not take
+     * @throws org.kdtree.build.BuilderFault if a kd-tree builder failed under supervision
+     */
+    public static RenderJob run(Scene scene, BuilderSpec spec, Supervisor supervisor, Renderer.Options options) {
+        return run(scene, spec.builder(), () -> spec.build(scene.mesh(), supervisor), options);
+    }
+
+    private static RenderJob run(Scene scene, String builderName, Supplier<AccelerationStructure> build, Renderer.Options options) {
         long t0 = System.nanoTime();
-        KdTree tree = supervisor == null ? builder.build(scene.mesh()) : supervisor.build(builder, scene.mesh());
+        AccelerationStructure structure = build.get();
         long buildNanos = System.nanoTime() - t0;
         TriangleIntersector triangles = new TriangleIntersector(scene.mesh());
-        RenderResult result = Renderer.render(scene, () -> new Traverser(tree, triangles), options);
-        return new RenderJob(scene, tree, buildNanos, result);
+        RenderResult result = Renderer.render(scene, () -> structure.query(triangles), options);
+        return new RenderJob(scene, structure, builderName, buildNanos, result);
     }
 
     /**
@@ -63,7 +87,7 @@ public record RenderJob(Scene scene, KdTree tree, long buildNanos, RenderResult 
     }
 
     /**
-     * {@return the summary printed after a render}: scene, plan, times, rays by kind and per second, tree statistics.
+     * {@return the summary printed after a render}: scene, plan, times, rays by kind and per second, the structure's statistics.
      */
     public String summary() {
         StringBuilder s = new StringBuilder();
@@ -73,12 +97,12 @@ public record RenderJob(Scene scene, KdTree tree, long buildNanos, RenderResult 
         s.append(String.format(Locale.ROOT, "image: %d x %d, %s per pixel, %s%n", c.width(), c.height(),
                 count(scene.samplesPerPixel(), "sample"), count(result.threads(), "thread")));
         s.append(result.plan().describe()).append(System.lineSeparator());
-        s.append(String.format(Locale.ROOT, "build time: %.1f ms (%s)%n", buildNanos / 1e6, tree.builderName()));
+        s.append(String.format(Locale.ROOT, "build time: %.1f ms (%s)%n", buildNanos / 1e6, builderName));
         s.append(String.format(Locale.ROOT, "render time: %.1f ms%s%n", result.renderNanos() / 1e6,
                 result.stopped() ? " (stopped before the last tile)" : ""));
         s.append(rayLines(result.rays(), result.renderNanos()));
-        s.append("tree:").append(System.lineSeparator());
-        for (String line : tree.stats().describe().split("\\R")) s.append("  ").append(line).append(System.lineSeparator());
+        s.append(structure.kind().equals("kd-tree") ? "tree" : structure.kind()).append(':').append(System.lineSeparator());
+        for (String line : structure.stats().describe().split("\\R")) s.append("  ").append(line).append(System.lineSeparator());
         return s.toString();
     }
 

@@ -5,19 +5,20 @@ import java.util.List;
 import org.kdtree.measure.RayBatch;
 import org.kdtree.measure.RaySet;
 import org.kdtree.measure.Timing;
-import org.kdtree.build.KdTreeBuilder;
+import org.kdtree.build.BuilderSpec;
 import org.kdtree.build.Setting;
 import org.kdtree.build.Supervisor;
 import org.kdtree.shape.TriangleMesh;
+import org.kdtree.traverse.AccelerationStructure;
+import org.kdtree.traverse.RayQuery;
 import org.kdtree.traverse.TraversalStats;
 import org.kdtree.traverse.TriangleIntersector;
-import org.kdtree.traverse.Traverser;
-import org.kdtree.tree.KdTree;
 import org.kdtree.tree.TreeStats;
 
 /**
- * "What accuracy costs in time": builds the scene with each variant, then traces the ray
- * workload, and reports build time, tree quality (expected SAH cost) and trace speed side by side.
+ * "What accuracy costs in time": builds the scene with each variant (a kd-tree or a bounding
+ * volume hierarchy), then traces the ray workload, and reports build time, tree quality
+ * (expected SAH cost) and trace speed side by side.
  */
 public final class Tradeoff {
     private final TriangleMesh mesh;
@@ -58,25 +59,27 @@ public final class Tradeoff {
     }
 
     /**
-     * Measures one variant.
+     * Measures one variant, a kd-tree's or a bounding volume hierarchy's, by the same rays and counts.
      *
      * @param v the variant
      * @return its build time, tree quality and trace speed
      */
     public TradeoffResult run(Variant v) {
-        KdTreeBuilder builder = v.spec().with(Setting.THREADS, threads).create();
-        Timing.Timed<KdTree> build = Timing.median(1, runs, Timing.QUIET, () -> supervisor == null ? builder.build(mesh) : supervisor.build(builder, mesh));
-        KdTree tree = build.value();
-        TreeStats s = tree.stats();
-        Traverser traverser = new Traverser(tree, new TriangleIntersector(mesh));
+        BuilderSpec spec = v.spec().with(Setting.THREADS, threads);
+        String settings = spec.describe();
+        Timing.Timed<AccelerationStructure> build = Timing.median(1, runs, Timing.QUIET, () -> spec.build(mesh, supervisor));
+        AccelerationStructure structure = build.value();
+        TreeStats s = structure.stats();
+        TriangleIntersector triangles = new TriangleIntersector(mesh);
+        RayQuery query = structure.query(triangles);
         double traceSeconds;
-        try (RayBatch batch = new RayBatch(1, () -> traverser)) {
+        try (RayBatch batch = new RayBatch(1, () -> query)) {
             traceSeconds = Timing.median(1, runs, Timing.QUIET, () -> batch.trace(rays)).seconds();
         }
-        TraversalStats counts = RayBatch.count(traverser, rays, countedRays);
+        TraversalStats counts = RayBatch.count(structure, triangles, rays, countedRays);
         double perRay = Math.max(1, counts.rays);
-        return new TradeoffResult(v.name(), builder.describeSettings(), build.millis(), s.expectedCost(), s.nodes(),
-                s.leaves(), s.memoryBytes(), counts.nodes / perRay, counts.primitiveTests / perRay,
+        return new TradeoffResult(v.name(), settings, build.millis(), s.expectedCost(), s.nodes(),
+                s.leaves(), s.memoryBytes(), counts.nodes / perRay, counts.primitiveTests / perRay, counts.boxTests / perRay,
                 rays.size() / traceSeconds, mesh.size());
     }
 

@@ -14,11 +14,12 @@ import java.util.Locale;
  * @param memoryBytes   bytes held by the tree's arrays
  * @param nodesPerRay   average nodes visited per ray
  * @param testsPerRay   average ray/triangle tests per ray
+ * @param boxesPerRay   average bounding boxes tested per ray (a BVH's; a kd-tree tests none)
  * @param raysPerSecond closest-hit rays traced per second, one thread
  * @param triangles     triangles of the scene, for the totals
  */
 public record TradeoffResult(String variant, String settings, double buildMs, double expectedCost, int nodes, int leaves,
-                             long memoryBytes, double nodesPerRay, double testsPerRay, double raysPerSecond,
+                             long memoryBytes, double nodesPerRay, double testsPerRay, double boxesPerRay, double raysPerSecond,
                              int triangles) {
 
     /**
@@ -42,13 +43,13 @@ public record TradeoffResult(String variant, String settings, double buildMs, do
     }
 
     static String csvHeader() {
-        return "variant,build_ms,expected_cost,nodes,leaves,memory_bytes,nodes_per_ray,tests_per_ray,mrays_per_s,"
+        return "variant,build_ms,expected_cost,nodes,leaves,memory_bytes,nodes_per_ray,tests_per_ray,boxes_per_ray,mrays_per_s,"
                 + "total_ms_1rpt,total_ms_10rpt,total_ms_100rpt,pareto,settings";
     }
 
     String csvRow(boolean pareto) {
-        return String.format(Locale.ROOT, "%s,%.2f,%.3f,%d,%d,%d,%.2f,%.2f,%.4f,%.1f,%.1f,%.1f,%s,\"%s\"",
+        return String.format(Locale.ROOT, "%s,%.2f,%.3f,%d,%d,%d,%.2f,%.2f,%.2f,%.4f,%.1f,%.1f,%.1f,%s,\"%s\"",
                 variant, buildMs, expectedCost, nodes, leaves, memoryBytes, nodesPerRay, testsPerRay,
-                raysPerSecond / 1e6, totalMs(1), totalMs(10), totalMs(100), pareto, settings);
+                boxesPerRay, raysPerSecond / 1e6, totalMs(1), totalMs(10), totalMs(100), pareto, settings);
     }
 }

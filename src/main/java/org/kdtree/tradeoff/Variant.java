@@ -4,23 +4,19 @@ import java.util.ArrayList;
 import java.util.List;
 import org.kdtree.build.BuilderSpec;
 import org.kdtree.build.Builders;
-import org.kdtree.build.KdTreeBuilder;
 import org.kdtree.build.Quality;
 import org.kdtree.build.SahBuilder.Algorithm;
 import org.kdtree.build.Setting;
+import org.kdtree.bvh.BvhBuilder;
 
 /**
- * One builder configuration of the trade-off study: a short name and its builder specification.
+ * One builder configuration of the trade-off study: a short name and its builder specification,
+ * of a kd-tree or of a bounding volume hierarchy (whose names start with "bvh").
  *
  * @param name how the study's table and chart name it
  * @param spec the builder and its settings
  */
 public record Variant(String name, BuilderSpec spec) {
-
-    /** {@return a new builder with this variant's settings} */
-    public KdTreeBuilder create() {
-        return spec.create();
-    }
 
     /**
      * Every variant the study compares: the two median builders, exact SAH with lambda 1.0, 0.8
@@ -28,7 +24,10 @@ public record Variant(String name, BuilderSpec spec) {
      * 32, 256 (and pure binning without the exact sweep of small nodes), SAH without perfect
      * splits, SAH under depth caps 12, 16 and 20, the quality presets fast (binned, leaves below 11
      * references) and balanced (exact, leaves below 6); then every
-     * other registered builder (a student's too) with its default settings.
+     * other registered builder (a student's too) with its default settings; then the bounding
+     * volume hierarchy: by default (4 children per node, 32 bins, leaves up to 16), collapsed to 2
+     * and to 8 children (the same binary tree, traced in another layout), with 8 bins (a cheaper,
+     * coarser build) and with leaves of one primitive (the deepest tree).
      *
      * @return the variants, in that order
      */
@@ -51,12 +50,23 @@ public record Variant(String name, BuilderSpec spec) {
         v.add(new Variant("sah-balanced", sah.with(Setting.QUALITY, Quality.BALANCED)));
         for (String name : Builders.names())
             if (v.stream().noneMatch(x -> x.spec().builder().equals(name))) v.add(new Variant(name, BuilderSpec.of(name)));
+        v.addAll(bvh());
         return v;
     }
 
-    /** {@return a few variants for a quick look (and for tests): median plane, exact SAH, binned B = 8 and 32} */
+    /** The bounding volume hierarchy's variants: its own trade-offs of layout, bins and leaf size. */
+    private static List<Variant> bvh() {
+        BuilderSpec bvh = BuilderSpec.of(BvhBuilder.NAME);
+        return List.of(new Variant("bvh", bvh),
+                new Variant("bvh-width2", bvh.with(Setting.BVH_WIDTH, 2)),
+                new Variant("bvh-width8", bvh.with(Setting.BVH_WIDTH, 8)),
+                new Variant("bvh-b8", bvh.with(Setting.BINS, 8)),
+                new Variant("bvh-leaf1", bvh.with(Setting.LEAF_SIZE, 1)));
+    }
+
+    /** {@return a few variants for a quick look (and for tests): median plane, exact SAH, binned B = 8 and 32, the BVH} */
     public static List<Variant> quick() {
-        return all().stream().filter(v -> List.of("median-plane", "sah-exact-l0.8", "sah-binned-b8", "sah-binned-b32")
+        return all().stream().filter(v -> List.of("median-plane", "sah-exact-l0.8", "sah-binned-b8", "sah-binned-b32", "bvh")
                 .contains(v.name())).toList();
     }
 }

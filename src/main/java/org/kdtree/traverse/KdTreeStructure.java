@@ -5,8 +5,14 @@ import org.kdtree.geom.Ray;
 import org.kdtree.tree.KdTree;
 import org.kdtree.tree.TreeStats;
 
-/** A kd-tree seen as an {@link AccelerationStructure}: its queries are {@link Traverser}s. */
-record KdTreeStructure(KdTree tree) implements AccelerationStructure {
+/**
+ * A kd-tree seen as an {@link AccelerationStructure}: its queries are {@link Traverser}s. Made by
+ * {@link AccelerationStructure#of(KdTree)}; public so that a caller holding a structure can reach
+ * what only a kd-tree has (the leaves its reference budget made early, say).
+ *
+ * @param tree the kd-tree
+ */
+public record KdTreeStructure(KdTree tree) implements AccelerationStructure {
     @Override public String kind() { return "kd-tree"; }
     @Override public int dimension() { return tree.dimension(); }
     @Override public Box bounds() { return tree.bounds(); }

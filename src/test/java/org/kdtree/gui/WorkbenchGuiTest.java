@@ -177,13 +177,13 @@ class WorkbenchGuiTest {
     @Test void aValueOutsideItsLimitIsFlaggedNotSilentlyReverted() {
         int nodes = bench.model().tree().nodeCount();
         window.textBox("kmaxdepth.text").setText("").enterText("1000\n");
-        window.label("rejection").requireText("Kmaxdepth must be between -1 and 64 (-1 = auto, 8 + 1.3 log2 N), got 1000");
+        window.label("rejection").requireText("Kmaxdepth must be between -1 and 64 (-1 = auto: 8 + 1.3 log2 N for a kd-tree, 64 for a BVH), got 1000");
         assertThat(window.textBox("kmaxdepth.text").target().getToolTipText()).startsWith("Kmaxdepth must be between");
         assertThat(bench.model().settings().value(org.kdtree.build.Setting.MAX_DEPTH)).as("the rejected value is not applied").isEqualTo(-1);
         assertThat(bench.model().tree().nodeCount()).isEqualTo(nodes);
 
         window.textBox("kmaxdepth.text").setText("").enterText("12x");
-        window.label("rejection").requireText("Kmaxdepth: '12x' is not a number, allowed: -1..64 (-1 = auto, 8 + 1.3 log2 N)");
+        window.label("rejection").requireText("Kmaxdepth: '12x' is not a number, allowed: -1..64 (-1 = auto: 8 + 1.3 log2 N for a kd-tree, 64 for a BVH)");
         window.textBox("kmaxdepth.text").setText("").enterText("3\n");
         assertThat(window.robot().finder().findAll(bench, c -> "rejection".equals(c.getName()) && c.isShowing()))
                 .as("a valid value again: the rejection's row is gone").isEmpty();

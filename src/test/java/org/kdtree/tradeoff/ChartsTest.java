@@ -39,7 +39,7 @@ class ChartsTest {
     @Test void theTradeoffChartHasLabelledLogAxesDistinctMarkersAndUnits() throws Exception {
         List<TradeoffResult> results = new ArrayList<>();
         for (int i = 0; i < 12; i++)
-            results.add(new TradeoffResult("variant-" + i, "", 30 + 40 * i, 100, 1, 1, 1, 1, 1, 1e5 * (1 + i % 5), 1000));
+            results.add(new TradeoffResult("variant-" + i, "", 30 + 40 * i, 100, 1, 1, 1, 1, 1, 0, 1e5 * (1 + i % 5), 1000));
         XYChart chart = TradeoffChart.chart(results, "test", 10);
         assertLabelledLogAxes(chart, 30, 470, 10, 100);
         assertThat(chart.getXAxisTitle()).contains("(ms)");

@@ -73,13 +73,52 @@ class TradeoffTest {
         assertThat(Files.readAllLines(csv)).hasSize(2).anyMatch(l -> l.startsWith("centre-midpoint,"));
     }
 
+    @Test void theBvhsVariantsAreStudiedBesideTheKdTrees() {
+        List<Variant> bvh = Variant.all().stream().filter(v -> v.spec().buildsBvh()).toList();
+        assertThat(bvh).extracting(Variant::name).containsExactly("bvh", "bvh-width2", "bvh-width8", "bvh-b8", "bvh-leaf1");
+        assertThat(Variant.quick()).extracting(Variant::name).contains("bvh", "sah-exact-l0.8");
+        assertThat(Variant.all()).extracting(Variant::name).doesNotHaveDuplicates();
+    }
+
+    /** The same harness for both structures: the same rays, the same counts, one chart and one CSV. */
+    @Test void aBvhIsMeasuredByTheSameHarness() {
+        TriangleMesh m = Meshes.surface(300, 7);
+        Tradeoff t = new Tradeoff(m, RaySet.random(m, 2000), 1, 1, 300);
+        List<TradeoffResult> rs = Variant.all().stream().filter(v -> List.of("sah-exact-l0.8", "bvh", "bvh-width8").contains(v.name()))
+                .map(t::run).toList();
+        TradeoffResult kd = rs.get(0), bvh = rs.get(1), wide = rs.get(2);
+        assertThat(kd.boxesPerRay()).as("a kd-tree tests no boxes").isZero();
+        assertThat(bvh.boxesPerRay()).isPositive();
+        assertThat(bvh.testsPerRay()).isPositive();
+        assertThat(bvh.settings()).startsWith("width=4 bins=32 leafSize=16");
+        assertThat(wide.nodes()).as("the same binary tree, collapsed wider").isEqualTo(bvh.nodes());
+        assertThat(wide.expectedCost()).isEqualTo(bvh.expectedCost());
+        assertThat(Tradeoff.csv(rs).lines()).anyMatch(l -> l.startsWith("bvh-width8,")).element(0).asString().contains("boxes_per_ray");
+        assertThat(TradeoffChart.chart(rs, "t", 10).getSeriesMap()).containsKeys("sah-exact-l0.8", "bvh", "bvh-width8");
+    }
+
+    @Test void theCommandTakesTheBvhAsAnotherVariant() throws IOException {
+        Path obj = writeObj(Meshes.surface(200, 7));
+        Path csv = dir.resolve("bvh.csv"), png = dir.resolve("bvh.png");
+        int code = Main.run("tradeoff", obj.toString(), "--variants", "bvh-b8,bvh-bvh-width-2,sah-exact-l0.8", "-b", "bvh",
+                "--bvh-width", "2", "--ray-count", "1000", "--runs", "1", "--counted-rays", "100", "--csv", csv.toString(),
+                "--chart", png.toString(), "--quiet");
+        assertThat(code).isZero();
+        List<String> lines = Files.readAllLines(csv);
+        assertThat(lines).hasSize(4);
+        assertThat(lines).anyMatch(l -> l.startsWith("bvh-b8,") && l.contains("\"width=2 bins=8"))
+                .anyMatch(l -> l.startsWith("bvh-bvh-width-2,") && l.contains("\"width=2 bins=32"))
+                .anyMatch(l -> l.startsWith("sah-exact-l0.8,"));
+        assertThat(Files.size(png)).isGreaterThan(1000);
+    }
+
     @Test void unknownVariantIsAClearError() throws IOException {
         Path obj = writeObj(Meshes.surface(50, 7));
         assertThat(Main.run("tradeoff", obj.toString(), "--variants", "nonsense")).isEqualTo(2);
     }
 
     private static TradeoffResult result(String name, double buildMs, double raysPerSecond) {
-        return new TradeoffResult(name, "", buildMs, 1, 1, 1, 1, 1, 1, raysPerSecond, 1000);
+        return new TradeoffResult(name, "", buildMs, 1, 1, 1, 1, 1, 1, 0, raysPerSecond, 1000);
     }
 
     private Path writeObj(TriangleMesh m) throws IOException {
