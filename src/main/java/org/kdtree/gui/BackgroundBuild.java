@@ -10,9 +10,11 @@ import java.util.concurrent.TimeoutException;
 import java.util.function.Consumer;
 import javax.swing.SwingUtilities;
 import org.kdtree.build.BuilderFault;
+import org.kdtree.build.BuilderSpec;
 import org.kdtree.build.Builders;
 import org.kdtree.build.KdTreeBuilder;
 import org.kdtree.build.Supervisor;
+import org.kdtree.bvh.BvhBuilder;
 import org.kdtree.limits.Deadlines;
 import org.kdtree.shape.Primitives;
 import org.kdtree.tree.KdTree;
@@ -20,12 +22,13 @@ import org.kdtree.tree.KdTree;
 /**
  * The workbench's builds, off the event thread: one at a time on a thread of their own, a
  * plug-in's under a {@link Supervisor} with the workbench's {@link Deadlines} (the library's own
- * builders are trusted to return, and obey interruption). A new build cancels the one under way;
- * only the newest build's outcome is delivered, once, on the event thread.
+ * builders, the bounding volume hierarchy's too, are trusted to return, and obey interruption).
+ * A new build cancels the one under way; only the newest build's outcome is delivered, once, on
+ * the event thread.
  */
 final class BackgroundBuild {
-    /** A build's end: its tree, or its builder's fault; and how long it took. */
-    record Outcome(KdTree tree, BuilderFault fault, double millis) {
+    /** A build's end: its kd-tree or hierarchy, or its builder's fault; and how long it took. */
+    record Outcome(Built built, BuilderFault fault, double millis) {
     }
 
     private final Supervisor supervisor = Supervisor.of(Deadlines.WORKBENCH).trustingTheLibrary();
@@ -56,20 +59,24 @@ final class BackgroundBuild {
     static final long LIBRARY_WAIT_MILLIS = 2_000;
 
     /**
-     * Starts building {@code primitives} with {@code builder}, cancelling the build under way;
-     * for a {@code small} scene, waits for it on the calling (event) thread, up to
-     * {@link #LIBRARY_WAIT_MILLIS} for the library's builders and {@link #PLUGIN_WAIT_MILLIS} for
-     * any other.
+     * Starts building {@code primitives} as {@code spec} says, a kd-tree or a hierarchy,
+     * cancelling the build under way; for a {@code small} scene, waits for it on the calling
+     * (event) thread, up to {@link #LIBRARY_WAIT_MILLIS} for the library's builders and
+     * {@link #PLUGIN_WAIT_MILLIS} for any other.
      *
      * @return true if it ended within the wait and {@code done} has had its outcome; false if it
      *         still runs, and {@code done} will have it later, on the event thread
+     * @throws IllegalArgumentException if {@code spec} names no builder or gives a setting it does not take
      */
-    boolean start(KdTreeBuilder builder, Primitives primitives, boolean small, Consumer<Outcome> done) {
-        long waitMillis = !small ? 0 : Builders.isLibrarys(builder) ? LIBRARY_WAIT_MILLIS : PLUGIN_WAIT_MILLIS;
+    boolean start(BuilderSpec spec, Primitives primitives, boolean small, Consumer<Outcome> done) {
+        KdTreeBuilder builder = spec.buildsBvh() ? null : spec.create();
+        BvhBuilder bvh = spec.buildsBvh() ? spec.createBvh() : null;
+        boolean librarys = builder == null || Builders.isLibrarys(builder);
+        long waitMillis = !small ? 0 : librarys ? LIBRARY_WAIT_MILLIS : PLUGIN_WAIT_MILLIS;
         int mine = ++started;
         if (pending != null) pending.cancel(true);
         Future<Outcome> job = thread.submit(() -> {
-            Outcome o = build(builder, primitives);
+            Outcome o = builder != null ? build(builder, primitives) : build(bvh, primitives);
             if (o != null) SwingUtilities.invokeLater(() -> deliver(mine, o, done));
             return o;
         });
@@ -95,9 +102,19 @@ final class BackgroundBuild {
         long t0 = System.nanoTime();
         try {
             KdTree t = supervisor.build(builder, primitives);
-            return new Outcome(t, null, (System.nanoTime() - t0) / 1e6);
+            return new Outcome(Built.of(t), null, (System.nanoTime() - t0) / 1e6);
         } catch (BuilderFault f) {
             return new Outcome(null, f, (System.nanoTime() - t0) / 1e6);
+        } catch (CancellationException replaced) {
+            return null;
+        }
+    }
+
+    /** Builds a hierarchy on the build thread (the library's: trusted, it stops when interrupted); null if cancelled. */
+    private static Outcome build(BvhBuilder builder, Primitives primitives) {
+        long t0 = System.nanoTime();
+        try {
+            return new Outcome(Built.of(builder.build(primitives)), null, (System.nanoTime() - t0) / 1e6);
         } catch (CancellationException replaced) {
             return null;
         }

@@ -13,15 +13,16 @@ import javax.swing.JLabel;
 import javax.swing.JPanel;
 import javax.swing.JSlider;
 import org.kdtree.build.BuilderSpec;
-import org.kdtree.build.Builders;
 import org.kdtree.build.KdTreeBuilder;
 import org.kdtree.build.SahBuilder;
 import org.kdtree.build.Setting;
+import org.kdtree.bvh.BvhBuilder;
 
 /**
  * The builder controls, an editor of the model's {@link BuilderSpec}: which builder, then one
  * control per row of {@link Setting} (made by {@link SettingControl}), with lambda also as a
  * slider and the automatic depth cap spelled out. Every change rebuilds the tree at once.
+ * The builders are the kd-tree builders and the bounding volume hierarchy's ({@code bvh}).
  * Controls whose setting does not apply to the chosen builder are greyed out and left out of the
  * spec (which would refuse them); each spinner takes its row's range, states it in its tooltip and,
  * for a typed value outside it, says so below instead of reverting silently.
@@ -32,13 +33,13 @@ final class BuilderPanel extends JPanel {
      * would override it) and threads (its scenes build in milliseconds on one; the tree is the same).
      */
     private static final Set<Setting<?>> NOT_OFFERED = Set.of(Setting.QUALITY, Setting.THREADS);
-    /** The settings only the binned plane search uses: greyed out, and not given, under the exact ones. */
+    /** The settings only the binned plane search uses: greyed out, and not given, under the exact ones (a hierarchy always bins). */
     private static final Set<Setting<?>> BINNED_ONLY = Set.of(Setting.BINS, Setting.EXACT_BELOW);
 
     /** The model whose builder settings this panel edits. */
     private final WorkbenchModel model;
     /** The builder's name. */
-    private final JComboBox<String> builder = new JComboBox<>(Builders.names().toArray(String[]::new));
+    private final JComboBox<String> builder = new JComboBox<>(BuilderSpec.names().toArray(String[]::new));
     /** Why a typed value is refused, or blank. */
     private final JLabel rejection = new JLabel(" ");
     /** The last build's fault, in the builder's own line (the tree shown is then stale), or blank. */
@@ -63,7 +64,8 @@ final class BuilderPanel extends JPanel {
         super(new GridBagLayout());
         this.model = model;
         setBorder(BorderFactory.createTitledBorder("Builder"));
-        name(builder, "builder", "Builder (Alt+1, Alt+2, ...): median-plane splits the voxel in the middle, object-median at the median object; sah minimises the expected cost; others are registered builders");
+        name(builder, "builder", "Builder (Alt+1, Alt+2, ...): median-plane splits the voxel in the middle, object-median at the median object; "
+                + "sah minimises the expected cost; bvh builds a bounding volume hierarchy by the same cost; others are registered builders");
         name(lambdaSlider, "lambdaSlider", "lambda as a slider, in hundredths");
         autoDepth.setName("autoDepth");
         rejection.setName("rejection");
@@ -131,7 +133,7 @@ final class BuilderPanel extends JPanel {
     /**
      * Selects the builder at {@code index} in the list (keyboard shortcut).
      *
-     * @param index 0-based, in {@link org.kdtree.build.Builders#names()} order
+     * @param index 0-based, in {@link BuilderSpec#names()} order
      */
     public void selectBuilder(int index) {
         if (index < builder.getItemCount()) builder.setSelectedIndex(index);
@@ -140,27 +142,25 @@ final class BuilderPanel extends JPanel {
     private void apply() {
         if (updating) return;
         String name = (String) builder.getSelectedItem();
-        KdTreeBuilder probe = Builders.create(name);
         BuilderSpec s = BuilderSpec.of(name);
-        for (SettingControl c : controls.values()) if (live(c.setting(), probe)) s = c.giveTo(s);
+        for (SettingControl c : controls.values()) if (live(c.setting(), name)) s = c.giveTo(s);
         show(s);
         model.setSettings(s);
     }
 
-    /** Whether {@code setting} counts for {@code probe} as the controls are set (bins only under the binned search). */
-    private boolean live(Setting<?> setting, KdTreeBuilder probe) {
-        return setting.appliesTo(probe)
-                && (!BINNED_ONLY.contains(setting) || controls.get(Setting.ALGORITHM).value() == SahBuilder.Algorithm.BINNED);
+    /** Whether {@code setting} counts for builder {@code name} as the controls are set (bins only under a binned search). */
+    private boolean live(Setting<?> setting, String name) {
+        return BuilderSpec.applies(setting, name) && (!BINNED_ONLY.contains(setting) || !BuilderSpec.applies(Setting.ALGORITHM, name)
+                || controls.get(Setting.ALGORITHM).value() == SahBuilder.Algorithm.BINNED);
     }
 
     private void show(BuilderSpec s) {
         updating = true;
         try {
-            KdTreeBuilder probe = Builders.create(s.builder());
             builder.setSelectedItem(s.builder());
-            for (SettingControl c : controls.values()) if (c.setting().appliesTo(probe)) c.show(s.value(c.setting()));
+            for (SettingControl c : controls.values()) if (BuilderSpec.applies(c.setting(), s.builder())) c.show(s.value(c.setting()));
             for (SettingControl c : controls.values()) {   // another builder's setting, or bins under an exact search: not shown
-                boolean live = live(c.setting(), probe);
+                boolean live = live(c.setting(), s.builder());
                 c.component().setEnabled(live);
                 c.component().setVisible(live);
                 labels.get(c.setting()).setVisible(live);
@@ -169,15 +169,20 @@ final class BuilderPanel extends JPanel {
             lambdaSlider.setValue((int) Math.round((Double) lambda.value() * 100));
             lambdaSlider.setEnabled(lambda.component().isEnabled());
             lambdaSlider.setVisible(lambda.component().isVisible());
-            int n = model.scene().size();
-            int depth = (Integer) controls.get(Setting.MAX_DEPTH).value();
-            autoDepth.setText(depth >= 0 ? "fixed depth cap " + depth
-                    : "-1 = auto: depth cap " + KdTreeBuilder.defaultMaxDepth(n));
-            autoDepth.setToolTipText("the automatic depth cap is 8 + 1.3 log2 N, here 8 + 1.3 log2 " + n + " = "
-                    + KdTreeBuilder.defaultMaxDepth(n));
+            showAutoDepth(s.buildsBvh());
         } finally {
             updating = false;
         }
+    }
+
+    /** Spells out the depth cap: fixed, or the automatic one, which a hierarchy does not take from the scene's size. */
+    private void showAutoDepth(boolean bvh) {
+        int n = model.scene().size();
+        int depth = (Integer) controls.get(Setting.MAX_DEPTH).value();
+        int auto = bvh ? BvhBuilder.DEPTH_LIMIT : KdTreeBuilder.defaultMaxDepth(n);
+        autoDepth.setText(depth >= 0 ? "fixed depth cap " + depth : "-1 = auto: depth cap " + auto);
+        autoDepth.setToolTipText(bvh ? "a hierarchy's automatic depth cap is its depth limit, " + auto
+                : "the automatic depth cap is 8 + 1.3 log2 N, here 8 + 1.3 log2 " + n + " = " + auto);
     }
 
     private static void name(JComponent c, String name, String tip) {

@@ -46,6 +46,8 @@ final class CollisionsView extends JPanel {
     /** How far above the scene balls start, in scene extents (the first drop is spread over it). */
     private static final double DROP_HEIGHT = 0.25;
 
+    /** What the view says while the builder is the bounding volume hierarchy's: the balls' sweeps run through a kd-tree. */
+    static final String KD_TREES_ONLY = "the balls collide through a kd-tree: choose a kd-tree builder";
     /** The model whose scene and tree the balls collide with. */
     private final WorkbenchModel model;
     /** The panel the balls and objects are drawn in. */
@@ -137,6 +139,7 @@ final class CollisionsView extends JPanel {
             return;
         }
         if (stale || sim == null) reset();
+        if (sim == null) return;   // no kd-tree to collide through
         timer.start();
         start.setText("Stop");
     }
@@ -153,9 +156,18 @@ final class CollisionsView extends JPanel {
         frame();
     }
 
-    /** Drops the balls again over the current scene and tree. */
+    /** Drops the balls again over the current scene and tree; under a hierarchy, says that the balls need a kd-tree. */
     public void reset() {
         stale = false;
+        if (model.tree() == null) {
+            stop();
+            sim = null;
+            frames = 0;
+            frameLabel.setText(KD_TREES_ONLY);
+            for (JLabel l : new JLabel[] {testsLabel, bruteLabel, ratioLabel}) l.setText(" ");
+            arena.sceneChanged();
+            return;
+        }
         simTree = model.tree();
         simScene = model.scene();
         Box b = simTree.bounds();

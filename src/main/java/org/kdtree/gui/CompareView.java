@@ -1,28 +1,23 @@
 package org.kdtree.gui;
 
-import java.awt.BasicStroke;
 import java.awt.BorderLayout;
-import java.awt.Dimension;
-import java.awt.Graphics;
-import java.awt.Graphics2D;
 import java.awt.GridLayout;
 import java.awt.event.HierarchyEvent;
 import java.util.List;
 import java.util.Locale;
 import javax.swing.JComboBox;
-import javax.swing.JComponent;
 import javax.swing.JLabel;
 import javax.swing.JPanel;
 import org.kdtree.build.BuilderSpec;
-import org.kdtree.build.Builders;
 import org.kdtree.shape.Scene2D;
-import org.kdtree.tree.KdTree;
 import org.kdtree.tree.TreeStats;
 
 /**
  * Three builders side by side on the workbench's scene, with the same Kt, Ki, lambda, Kmintri
  * and Kmaxdepth: each tree drawn, its statistics, and the cast ray's traversal cost in it. Each
- * column chooses its builder among all registered ones (a student's too).
+ * column chooses its builder among all registered ones (a student's too) and the bounding volume
+ * hierarchy's ({@code bvh}), whose boxes are drawn by depth and whose ray cost counts the boxes
+ * tested besides the nodes and objects.
  */
 final class CompareView extends JPanel {
     /** The builders the columns show at first, in column order. */
@@ -62,7 +57,7 @@ final class CompareView extends JPanel {
         });
     }
 
-    /** Rebuilds the three trees and retraces the ray (done lazily, when the view is visible). */
+    /** Rebuilds the three trees (or hierarchies) and retraces the ray (done lazily, when the view is visible). */
     public void refresh() {
         stale = false;
         Scene2D scene = model.scene();
@@ -81,10 +76,20 @@ final class CompareView extends JPanel {
     }
 
     /**
+     * {@return the boxes the column of {@code builder} drew last} (a hierarchy's nodes; 0 for a kd-tree) (for tests)
+     *
+     * @param builder the builder's name
+     */
+    public int boxesPainted(String builder) {
+        for (Column c : columns) if (c.builder.equals(builder)) return c.canvas.boxesPainted();
+        throw new IllegalArgumentException("no column shows " + builder);
+    }
+
+    /**
      * Shows {@code builder}'s tree in column {@code column} (0-based), as its builder box does.
      *
      * @param column  the column
-     * @param builder a registered builder's name
+     * @param builder a registered builder's name, or "bvh" 
      */
     public void choose(int column, String builder) {
         columns[column].chooser.setSelectedItem(builder);
@@ -92,10 +97,10 @@ final class CompareView extends JPanel {
 
     /** One builder, chosen in its box: its canvas, statistics and ray cost. */
     private final class Column extends JPanel {
-        private final JComboBox<String> chooser = new JComboBox<>(Builders.names().toArray(String[]::new));
+        private final JComboBox<String> chooser = new JComboBox<>(BuilderSpec.names().toArray(String[]::new));
         private String builder;
         private final JLabel stats = new JLabel();
-        private final Mini canvas = new Mini();
+        private final CompareCanvas canvas = new CompareCanvas();
         /** This column's builds, off the event thread. */
         private final BackgroundBuild builds;
 
@@ -105,7 +110,7 @@ final class CompareView extends JPanel {
             builds = new BackgroundBuild("compare build " + index);
             chooser.setSelectedItem(initial);
             chooser.setName("compare.builder." + index);
-            chooser.setToolTipText("The builder this column shows: any registered builder, a student's too");
+            chooser.setToolTipText("The builder this column shows: any registered builder, a student's too, or bvh, a bounding volume hierarchy");
             chooser.addActionListener(e -> {
                 builder = (String) chooser.getSelectedItem();
                 label();
@@ -113,7 +118,7 @@ final class CompareView extends JPanel {
                 else stale = true;
             });
             label();
-            canvas.setToolTipText("This column's tree over the same scene; the leaves the ray visits are shaded orange");
+            canvas.setToolTipText("This column's tree (or hierarchy's boxes, by depth) over the same scene; the leaves the ray visits are shaded orange");
             add(chooser, BorderLayout.NORTH);
             add(canvas, BorderLayout.CENTER);
             add(stats, BorderLayout.SOUTH);
@@ -128,7 +133,7 @@ final class CompareView extends JPanel {
         /** Builds this column's tree off the event thread (waiting for it briefly, as the model does), then shows it. */
         void update(Scene2D scene, double[] ray) {
             BuilderSpec s = model.settings().forBuilder(builder);
-            if (!builds.start(s.create(), scene, true, o -> show(scene, ray, o)))
+            if (!builds.start(s, scene, true, o -> show(scene, ray, o)))
                 stats.setText("<html>building ...</html>");
         }
 
@@ -138,70 +143,30 @@ final class CompareView extends JPanel {
                         .replace("<", "&lt;") + "<br><b>The tree shown is the previous one (stale).</b></div></html>");
                 return;
             }
-            KdTree tree = o.tree();
-            double ms = o.millis();
-            TraversalTrace trace = recorder.record(tree, scene, ray);
-            TreeStats st = tree.stats();
-            StringBuilder b = new StringBuilder("<html>");
-            b.append(String.format(Locale.ROOT, "build time: %.2f ms<br>nodes: %d, leaves: %d, empty: %d<br>"
-                            + "depth: %d, refs / leaf: %.2f<br>SAH cost: %.2f", ms, st.nodes(), st.leaves(), st.emptyLeaves(),
-                    st.maxDepth(), st.averageRefsPerLeaf(), st.expectedCost()));
-            if (ray != null && trace.size() > 0) {
-                double cost = tree.costModel().kt() * (trace.nodes() - trace.leaves()) + tree.costModel().ki() * trace.tests();
-                b.append(String.format(Locale.ROOT, "<br><b>ray:</b> %d nodes, %d leaves, %d tests<br>"
-                        + "ray cost (Kt per interior node + Ki per test): %.0f<br>%s", trace.nodes(), trace.leaves(),
-                        trace.tests(), cost, trace.hitObject() >= 0 ? "hit object " + trace.hitObject() : "no hit"));
-            } else if (ray == null) {
-                b.append("<br>ray: cast one in the 2-D build view");
-            }
-            stats.setText(b.append("</html>").toString());
-            canvas.set(scene, tree, ray, trace);
-        }
-    }
-
-    /** A canvas without interaction, fitted to the scene. */
-    private static final class Mini extends JComponent {
-        private Scene2D scene;
-        private KdTree tree;
-        private double[] ray;
-        private TraversalTrace trace;
-        private org.kdtree.geom.Box[] voxels;
-
-        Mini() {
-            setPreferredSize(new Dimension(360, 360));
+            Built built = o.built();
+            TraversalTrace trace = recorder.record(built.structure(), scene, ray);
+            stats.setText("<html>" + statistics(built, o.millis()) + rayCost(built, ray, trace) + "</html>");
+            canvas.set(scene, built, ray, trace);
         }
 
-        void set(Scene2D s, KdTree t, double[] r, TraversalTrace tr) {
-            scene = s;
-            tree = t;
-            ray = r;
-            trace = tr;
-            voxels = r == null ? null : StepperVoxels.of(t);
-            repaint();
+        /** Build time, nodes, leaves, depth, references per leaf, expected cost and memory. */
+        private String statistics(Built built, double ms) {
+            TreeStats st = built.stats();
+            return String.format(Locale.ROOT, "build time: %.2f ms<br>%s: %d, leaves: %d, empty: %d<br>"
+                            + "depth: %d, refs / leaf: %.2f<br>SAH cost: %.2f, memory: %s", ms, built.isBvh() ? "nodes (boxes)" : "nodes",
+                    st.nodes(), st.leaves(), st.emptyLeaves(), st.maxDepth(), st.averageRefsPerLeaf(), st.expectedCost(),
+                    StatsPanel.memory(st.memoryBytes()));
         }
 
-        @Override protected void paintComponent(Graphics g0) {
-            if (tree == null) return;
-            Graphics2D g = (Graphics2D) g0.create();
-            ViewTransform v = new ViewTransform().fit(tree.bounds(), getWidth(), getHeight());
-            TreePainter.paint(g, getWidth(), getHeight(), scene, tree, v, TreePainter.Options.PLAIN);
-            if (ray != null) {
-                // the leaves the ray visited: what it paid for in this tree
-                java.awt.Color c = Palette.CURRENT_NODE;
-                g.setColor(new java.awt.Color(c.getRed(), c.getGreen(), c.getBlue(), 90));
-                for (TraversalTrace.Step st : trace.steps())
-                    if (st.kind() == TraversalTrace.Kind.LEAF && voxels[st.node()] != null) g.fill(TreePainter.rect(v, voxels[st.node()]));
-                double end = StepperPanel.rayEnd(tree.bounds(), ray);
-                g.setColor(Palette.RAY);
-                g.setStroke(new BasicStroke(2f));
-                g.draw(TreeCanvas.line(v, ray[0], ray[1], ray[0] + end * ray[2], ray[1] + end * ray[3]));
-                if (trace.hitObject() >= 0) {
-                    TreePainter.paintShape(g, scene.get(trace.hitObject()), v, Palette.HIT, null, new BasicStroke(3f));
-                    double hx = v.screenX(ray[0] + trace.hitT() * ray[2]), hy = v.screenY(ray[1] + trace.hitT() * ray[3]);
-                    g.fill(new java.awt.geom.Ellipse2D.Double(hx - 4, hy - 4, 8, 8));
-                }
-            }
-            g.dispose();
+        /** The cast ray's traversal: nodes, leaves, boxes and objects tested, and its cost by the structure's Kt and Ki. */
+        private String rayCost(Built built, double[] ray, TraversalTrace trace) {
+            if (ray == null) return "<br>ray: cast one in the 2-D build view";
+            if (trace.size() == 0) return "";
+            double cost = built.kt() * (trace.nodes() - trace.leaves()) + built.ki() * trace.tests();
+            String boxes = built.isBvh() ? String.format(Locale.ROOT, "%d box tests, ", trace.boxTests()) : "";
+            return String.format(Locale.ROOT, "<br><b>ray:</b> %d nodes, %d leaves, %s%d tests<br>"
+                    + "ray cost (Kt per interior node + Ki per test): %.0f<br>%s", trace.nodes(), trace.leaves(), boxes,
+                    trace.tests(), cost, trace.hitObject() >= 0 ? "hit object " + trace.hitObject() : "no hit");
         }
     }
 }

@@ -4,12 +4,11 @@ import java.util.ArrayList;
 import java.util.List;
 import java.util.Locale;
 import javax.swing.event.TreeModelListener;
-import javax.swing.tree.TreeModel;
 import javax.swing.tree.TreePath;
 import org.kdtree.tree.KdTree;
 
 /** A Swing {@link TreeModel} read straight from a {@link KdTree}'s arrays: no copy, so big trees open at once. */
-final class KdTreeModel implements TreeModel {
+final class KdTreeModel implements TreeNodeView.Nodes {
     /** One node, shown as its split plane or its leaf contents. */
     public record NodeRef(KdTree tree, int node) {
         @Override public String toString() {
@@ -36,6 +35,8 @@ final class KdTreeModel implements TreeModel {
 
     @Override public Object getRoot() { return new NodeRef(tree, 0); }
 
+    @Override public int node(Object value) { return ((NodeRef) value).node(); }
+
     @Override public Object getChild(Object parent, int index) {
         int n = ((NodeRef) parent).node();
         return new NodeRef(tree, index == 0 ? tree.leftChild(n) : tree.rightChild(n));
@@ -51,12 +52,8 @@ final class KdTreeModel implements TreeModel {
         return c == tree.leftChild(p) ? 0 : c == tree.rightChild(p) ? 1 : -1;
     }
 
-    /**
-     * {@return the path from the root to {@code node}}: nodes are stored depth first, so each step is one comparison.
-     *
-     * @param node a node's index
-     */
-    public TreePath pathTo(int node) {
+    /** {@return the path from the root to {@code node}}: nodes are stored depth first, so each step is one comparison. */
+    @Override public TreePath pathTo(int node) {
         List<Object> path = new ArrayList<>();
         int n = 0;
         path.add(new NodeRef(tree, 0));

@@ -33,6 +33,8 @@ final class NearestStepperPanel extends JPanel implements CanvasOverlay {
             new float[] {6, 4}, 0);
     private static final BasicStroke THICK = new BasicStroke(3f), THIN = new BasicStroke(1.5f);
 
+    /** What the stepper says while the builder is the bounding volume hierarchy's. */
+    static final String KD_TREES_ONLY = "the k-NN stepper searches kd-trees: choose a kd-tree builder";
     /** The model whose scene, tree and query point are searched. */
     private final WorkbenchModel model;
     /** Which event of the search is shown. */
@@ -120,8 +122,8 @@ final class NearestStepperPanel extends JPanel implements CanvasOverlay {
     }
 
     private void retrace() {
-        KdTree tree = model.tree();
-        trace = NearestRecorder.record(tree, model.scene(), model.query(), k());
+        KdTree tree = model.tree();   // null under a hierarchy: the search is a kd-tree's
+        trace = tree == null ? NearestTrace.EMPTY : NearestRecorder.record(tree, model.scene(), model.query(), k());
         if (colliderOf != model.scene()) {
             colliderOf = model.scene();
             collider = new ShapeCollider(colliderOf);
@@ -138,7 +140,7 @@ final class NearestStepperPanel extends JPanel implements CanvasOverlay {
         entered = trace.enteredUpTo(index);
         pruned = trace.prunedUpTo(index);
         if (trace.size() == 0) {
-            stepLabel.setText("no query");
+            stepLabel.setText(model.tree() == null ? KD_TREES_ONLY : "no query");
             for (JLabel l : new JLabel[] {nodeLabel, radiusLabel, testedLabel, bestLabel}) l.setText(" ");
         } else {
             NearestTrace.Step s = trace.step(controls.index());
@@ -177,6 +179,7 @@ final class NearestStepperPanel extends JPanel implements CanvasOverlay {
     }
 
     private String resultText() {
+        if (model.tree() == null) return "result: -";
         if (trace.size() == 0) return "result: place a query point (click with the k-NN query tool)";
         return String.format(Locale.ROOT, "result: %s  (%d nodes, %d leaves, %d pruned, %d of %d objects tested)",
                 listText(trace.result(), 4), trace.nodes(), trace.leaves(), trace.pruned(), trace.tests(), model.scene().size());

@@ -43,6 +43,26 @@ final class Palette {
     public static final Color QUERY = new Color(0xC0, 0x00, 0x80);
     /** Voxels the nearest-neighbour search pruned. */
     public static final Color PRUNED = new Color(0x70, 0x70, 0x70);
+    /**
+     * A bounding volume hierarchy's leaf boxes: a translucent tint, laid once per leaf, so that
+     * overlapping leaves show darker where they overlap.
+     */
+    public static final Color BVH_LEAF = new Color(0x20, 0xA0, 0x98, 56);
+    /** The outline of a bounding volume hierarchy's leaf boxes (its interior boxes' are greys by depth). */
+    public static final Color BVH_LEAF_LINE = new Color(0x10, 0x80, 0x78);
+
+    /**
+     * {@return the outline colour of a bounding volume hierarchy's interior boxes at {@code depth}}:
+     * near black at the root, lighter greys deeper (down to depth 8), so that the leaves' teal and
+     * the stepper's saturated colours stay apart from them
+     *
+     * @param depth a node's depth, the root's 0
+     */
+    public static Color bvhDepth(int depth) {
+        int grey = 0x20 + Math.min(depth, 8) * (0xA0 - 0x20) / 8;
+        return new Color(grey, grey, grey);
+    }
+
     /** Balls of the collisions view. */
     public static final Color BALL = new Color(0xE0, 0x50, 0x20);
 }

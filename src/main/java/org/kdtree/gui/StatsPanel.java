@@ -8,10 +8,12 @@ import javax.swing.BorderFactory;
 import javax.swing.JLabel;
 import javax.swing.JPanel;
 import javax.swing.JProgressBar;
-import org.kdtree.tree.KdTree;
 import org.kdtree.tree.TreeStats;
 
-/** The statistics of the current tree: build time, nodes, leaves, empty leaves, depth, refs per leaf, SAH cost. */
+/**
+ * The statistics of the current tree or bounding volume hierarchy: build time, nodes, leaves,
+ * empty leaves, depth, refs per leaf, SAH cost (the same Kt and Ki for both) and memory.
+ */
 final class StatsPanel extends JPanel {
     /** The value label of each statistic, by name. */
     private final Map<String, JLabel> values = new LinkedHashMap<>();
@@ -34,6 +36,7 @@ final class StatsPanel extends JPanel {
         add("depth", "Depth of the deepest leaf (the root has depth 0)");
         add("refs / leaf", "Object references per non-empty leaf");
         add("SAH cost", "Expected cost of a random ray: Kt per node visited plus Ki per object tested");
+        add("memory", "Bytes the structure's arrays hold (a hierarchy's: both its layouts)");
         progress.setIndeterminate(true);
         progress.setName("stat.building");
         progress.setToolTipText("A large scene is built in the background; the views show the last tree until it is ready");
@@ -69,8 +72,7 @@ final class StatsPanel extends JPanel {
     }
 
     private void show(WorkbenchModel m) {
-        KdTree t = m.tree();
-        TreeStats s = t.stats();
+        TreeStats s = m.built().stats();
         set("objects", Integer.toString(m.scene().size()));
         set("build time", String.format(Locale.ROOT, "%.2f ms", m.buildMillis()));
         set("nodes", Integer.toString(s.nodes()));
@@ -79,6 +81,14 @@ final class StatsPanel extends JPanel {
         set("depth", Integer.toString(s.maxDepth()));
         set("refs / leaf", String.format(Locale.ROOT, "%.2f", s.averageRefsPerLeaf()));
         set("SAH cost", String.format(Locale.ROOT, "%.2f", s.expectedCost()));
+        set("memory", memory(s.memoryBytes()));
+    }
+
+    /** {@return bytes as people read them: "840 B", "12.3 KB", "4.50 MB"} */
+    static String memory(long bytes) {
+        if (bytes < 1024) return bytes + " B";
+        if (bytes < 1024 * 1024) return String.format(Locale.ROOT, "%.1f KB", bytes / 1024.0);
+        return String.format(Locale.ROOT, "%.2f MB", bytes / (1024.0 * 1024));
     }
 
     private void set(String name, String text) {

@@ -12,25 +12,27 @@ import javax.swing.JLabel;
 import javax.swing.JPanel;
 import org.kdtree.geom.Box;
 import org.kdtree.shape.Scene2D;
-import org.kdtree.tree.KdTree;
+import org.kdtree.traverse.AccelerationStructure;
 
 /**
  * The traversal stepper: replays the recorded traversal of the cast ray (see {@link
  * TraversalTrace}) one event at a time, forward, back or playing, with Algorithm 2's state in
  * labels and on the canvas (current voxel, [tMin, tMax] on the ray, tSplit, near and far
- * children, stacked voxels, objects tested, the hit).
+ * children, stacked voxels, objects tested, the hit). Through a bounding volume hierarchy it
+ * steps through the box tests instead of the split planes: each child box tested, entered
+ * (green) or missed (grey, dashed), the nearer one visited first and the other saved.
  */
 final class StepperPanel extends JPanel implements CanvasOverlay {
-    /** Records a ray's traversal of a tree: the library's traverser behind a listener. */
+    /** Records a ray's traversal of a tree or hierarchy: the library's traversal behind a listener. */
     public interface Recorder {
         /**
-         * {@return the recorded traversal of {@code ray} through {@code tree}}
+         * {@return the recorded traversal of {@code ray} through {@code structure}}
          *
-         * @param tree the kd-tree over {@code scene}
+         * @param structure the kd-tree or hierarchy over {@code scene}
          * @param scene the 2-D scene
          * @param ray the ray {ox, oy, dx, dy}, or null
          */
-        TraversalTrace record(KdTree tree, Scene2D scene, double[] ray);
+        TraversalTrace record(AccelerationStructure structure, Scene2D scene, double[] ray);
     }
 
     /** The model whose tree and ray are traced. */
@@ -43,8 +45,9 @@ final class StepperPanel extends JPanel implements CanvasOverlay {
     private final JLabel nodeLabel = Widgets.label("step.node", "The node Algorithm 2 is at");
     /** The ray's interval in the node, and where it meets the split plane. */
     private final JLabel intervalLabel = Widgets.label("step.interval", "The ray's interval in the node, and where it meets the split plane");
-    /** Near child, far child, and which the ray visits. */
-    private final JLabel childrenLabel = Widgets.label("step.children", "Near child (green), far child (blue), and which the ray visits");
+    /** Near child, far child, and which the ray visits; a hierarchy's child boxes tested. */
+    private final JLabel childrenLabel = Widgets.label("step.children",
+            "Near child (green), far child (blue), and which the ray visits; in a hierarchy, the child boxes tested");
     /** Far children saved for later, bottom first. */
     private final JLabel stackLabel = Widgets.label("step.stack", "Far children saved for later (purple, dashed), bottom first");
     /** Objects tested in the current leaf. */
@@ -90,11 +93,9 @@ final class StepperPanel extends JPanel implements CanvasOverlay {
     StepControls controls() { return controls; }
 
     private void retrace() {
-        KdTree tree = model.tree();
-        trace = recorder.record(tree, model.scene(), model.ray());
-        if (!voxels.isOf(tree)) {
-            voxels.index(tree);
-        }
+        Built built = model.built();
+        trace = recorder.record(built.structure(), model.scene(), model.ray());
+        voxels.index(built);
         controls.reset(trace.size());
         resultLabel.setText(resultText());
     }
@@ -112,13 +113,12 @@ final class StepperPanel extends JPanel implements CanvasOverlay {
     }
 
     private void describe(TraversalTrace.Step s) {
-        KdTree t = model.tree();
+        Built b = model.built();
         stepLabel.setText(String.format(Locale.ROOT, "step %d / %d: %s", controls.index() + 1, trace.size(), kindText(s.kind())));
-        nodeLabel.setText(s.node() < 0 ? "node: -" : "node #" + s.node() + (t.isLeaf(s.node())
-                ? " (leaf, " + t.leafSize(s.node()) + (t.leafSize(s.node()) == 1 ? " object)" : " objects)")
-                : String.format(Locale.ROOT, " (%s = %.3f)", t.axis(s.node()) == 0 ? "x" : "y", t.split(s.node()))));
+        nodeLabel.setText(s.node() < 0 ? "node: -" : b.nodeText(s.node()));
         intervalLabel.setText(String.format(Locale.ROOT, "tMin = %s   tMax = %s   tSplit = %s", Widgets.num(s.tMin()), Widgets.num(s.tMax()), Widgets.num(s.tSplit())));
-        childrenLabel.setText(s.near() < 0 ? "near / far: -" : "near #" + s.near() + ", far #" + s.far() + ": " + s.visit());
+        childrenLabel.setText(s.near() >= 0 ? "near #" + s.near() + ", far #" + s.far() + ": " + s.visit()
+                : !s.boxes().isEmpty() ? boxesText(s.boxes()) : "near / far: -");
         stackLabel.setText(stackText(s.stack()));
         testedLabel.setText("tested: " + (s.tested().isEmpty() ? "-" : s.tested().stream().map(String::valueOf)
                 .collect(Collectors.joining(", "))) + (s.bestObject() >= 0 ? "   best: object " + s.bestObject() + " at t = " + Widgets.num(s.bestT()) : ""));
@@ -136,9 +136,19 @@ final class StepperPanel extends JPanel implements CanvasOverlay {
         return b.append(stack.size() > 3 ? ", ..." : "").toString();
     }
 
+    /** A hierarchy's child boxes tested at the current node: "box #1 entered [0.2, 0.5], box #2 missed". */
+    private static String boxesText(java.util.List<TraversalTrace.BoxTest> boxes) {
+        return boxes.stream().map(t -> "box #" + t.node() + (t.entered()
+                ? " entered [" + Widgets.num(t.tMin()) + ", " + Widgets.num(t.tMax()) + "]" : " missed"))
+                .collect(Collectors.joining(", "));
+    }
+
     private String resultText() {
         if (model.ray() == null) return "result: cast a ray (drag with the Cast ray tool)";
         String hit = trace.hitObject() >= 0 ? "hit object " + trace.hitObject() + " at t = " + Widgets.num(trace.hitT()) : "no hit";
+        if (model.built().isBvh())
+            return String.format(Locale.ROOT, "result: %s  (%d nodes, %d leaves, %d box tests, %d tests)", hit, trace.nodes(),
+                    trace.leaves(), trace.boxTests(), trace.tests());
         return String.format(Locale.ROOT, "result: %s  (%d nodes, %d leaves, %d tests)", hit, trace.nodes(), trace.leaves(), trace.tests());
     }
 
@@ -147,6 +157,8 @@ final class StepperPanel extends JPanel implements CanvasOverlay {
             case BEGIN -> "the ray enters the scene box";
             case MISSED_SCENE -> "the ray misses the scene box";
             case INTERIOR -> "interior node: compare tSplit with [tMin, tMax]";
+            case BOX_NODE -> "interior box: test its children's boxes";
+            case BOX_TEST -> "test a child's box";
             case PUSH_FAR -> "push the far child, go to the near one";
             case POP -> "pop a far child from the stack";
             case SKIP -> "pop a far child: beyond the hit, skipped";
@@ -162,16 +174,18 @@ final class StepperPanel extends JPanel implements CanvasOverlay {
     @Override public void paint(Graphics2D g, ViewTransform v) {
         double[] ray = model.ray();
         if (ray == null || !isVisible()) return;   // another stepper's tab is up: its drawing alone
-        KdTree tree = model.tree();
-        double tEnd = rayEnd(tree.bounds(), ray);
+        Built built = model.built();
+        double tEnd = rayEnd(built.bounds(), ray);
         g.setColor(Palette.RAY);
         g.setStroke(new BasicStroke(1.5f));
         g.draw(TreeCanvas.line(v, ray[0], ray[1], ray[0] + tEnd * ray[2], ray[1] + tEnd * ray[3]));
         StepperVoxels.dot(g, v, ray[0], ray[1], Palette.RAY, 4);
-        if (trace.size() == 0 || !voxels.isOf(tree)) return;
+        if (trace.size() == 0 || !voxels.isOf(built)) return;
         TraversalTrace.Step s = trace.step(controls.index());
         BasicStroke dashed = new BasicStroke(2f, BasicStroke.CAP_BUTT, BasicStroke.JOIN_MITER, 10, new float[] {6, 4}, 0);
         for (TraversalTrace.Entry e : s.stack()) voxels.outline(g, v, e.node(), Palette.STACKED, dashed);
+        for (TraversalTrace.BoxTest b : s.boxes())
+            voxels.outline(g, v, b.node(), b.entered() ? Palette.NEAR_CHILD : Palette.PRUNED, b.entered() ? new BasicStroke(2.5f) : dashed);
         if (s.near() >= 0) {
             tint(g, v, s.near(), Palette.NEAR_CHILD);
             tint(g, v, s.far(), Palette.FAR_CHILD);

@@ -4,27 +4,38 @@ import java.awt.BasicStroke;
 import java.awt.Color;
 import java.awt.Graphics2D;
 import java.awt.geom.Ellipse2D;
+import java.util.function.Supplier;
 import org.kdtree.geom.Box;
 import org.kdtree.tree.KdTree;
 
 /**
- * The voxel of every node of the tree a stepper shows, indexed once per tree, and how the two
- * steppers (traversal, k-NN search) draw a node's voxel and a point.
+ * The voxel of every node of the tree a stepper shows (or the box of every node of a bounding
+ * volume hierarchy), indexed once per tree, and how the two steppers (traversal, k-NN search)
+ * draw a node's voxel and a point.
  */
 final class StepperVoxels {
-    /** The voxel of each node of {@link #tree}. */
+    /** The voxel of each node of {@link #owner}. */
     private Box[] voxels = new Box[0];
-    /** The tree {@link #voxels} belong to. */
-    private KdTree tree;
+    /** The kd-tree or build {@link #voxels} belong to. */
+    private Object owner;
 
-    /** {@return whether the voxels are those of {@code t}} */
-    boolean isOf(KdTree t) { return tree == t; }
+    /** {@return whether the voxels are those of {@code structure}, a kd-tree or a build} */
+    boolean isOf(Object structure) { return owner == structure; }
 
     /** Indexes the voxels of {@code t} unless they already are. */
     void index(KdTree t) {
-        if (tree == t) return;
-        voxels = of(t);
-        tree = t;
+        index(t, () -> of(t));
+    }
+
+    /** Indexes the voxels or boxes of {@code b} unless they already are. */
+    void index(Built b) {
+        index(b, b::regions);
+    }
+
+    private void index(Object structure, Supplier<Box[]> regions) {
+        if (owner == structure) return;
+        voxels = regions.get();
+        owner = structure;
     }
 
     /** {@return the voxel of {@code node}}, or null if there is no such node. */

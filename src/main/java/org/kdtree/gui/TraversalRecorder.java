@@ -4,7 +4,9 @@ import java.util.ArrayList;
 import java.util.List;
 import org.kdtree.geom.Ray;
 import org.kdtree.shape.Scene2D;
+import org.kdtree.traverse.AccelerationStructure;
 import org.kdtree.traverse.Hit;
+import org.kdtree.traverse.RayQuery;
 import org.kdtree.traverse.Shape2DIntersector;
 import org.kdtree.traverse.TraversalListener;
 import org.kdtree.traverse.TraversalStats;
@@ -12,14 +14,15 @@ import org.kdtree.traverse.Traverser;
 import org.kdtree.tree.KdTree;
 
 /**
- * Records the real traversal ({@link Traverser#closestHit} with a {@link TraversalListener})
- * into a {@link TraversalTrace}: the stepper replays what the library did, it does not
- * traverse on its own.
+ * Records the real traversal (a kd-tree's {@link Traverser#closestHit}, or a bounding volume
+ * hierarchy's, with a {@link TraversalListener}) into a {@link TraversalTrace}: the stepper
+ * replays what the library did, it does not traverse on its own.
  */
 final class TraversalRecorder implements TraversalListener {
     private final List<TraversalTrace.Step> steps = new ArrayList<>();
     private final List<TraversalTrace.Entry> stack = new ArrayList<>();
     private final List<Integer> tested = new ArrayList<>();
+    private final List<TraversalTrace.BoxTest> boxes = new ArrayList<>();
     private int node = -1;
     private double tMin = Double.NaN, tMax = Double.NaN;
     private int best = -1;
@@ -37,20 +40,32 @@ final class TraversalRecorder implements TraversalListener {
      * @return the recorded traversal ({@link TraversalTrace#EMPTY} without a ray)
      */
     public static TraversalTrace record(KdTree tree, Scene2D scene, double[] ray) {
+        return record(AccelerationStructure.of(tree), scene, ray);
+    }
+
+    /**
+     * Traces the closest hit of the 2-D ray {ox, oy, dx, dy} (t >= 0) through {@code structure},
+     * a kd-tree or a bounding volume hierarchy, counting as {@link TraversalStats} does.
+     *
+     * @param structure the structure over {@code scene}
+     * @param scene the 2-D scene
+     * @param ray the ray {ox, oy, dx, dy}, or null
+     * @return the recorded traversal ({@link TraversalTrace#EMPTY} without a ray)
+     */
+    public static TraversalTrace record(AccelerationStructure structure, Scene2D scene, double[] ray) {
         if (ray == null) return TraversalTrace.EMPTY;
-        Traverser traverser = new Traverser(tree, new Shape2DIntersector(scene));
         TraversalRecorder rec = new TraversalRecorder();
         TraversalStats stats = new TraversalStats();
         Hit hit = new Hit();
-        boolean found = traverser.closestHit(new Ray(2).set(ray[0], ray[1], ray[2], ray[3]), 0, Double.POSITIVE_INFINITY,
-                hit, new Both(rec, stats));
-        return new TraversalTrace(List.copyOf(rec.steps), stats.nodes, stats.leaves, stats.primitiveTests,
+        RayQuery query = structure.query(new Shape2DIntersector(scene), new Both(rec, stats));
+        boolean found = query.closestHit(new Ray(2).set(ray[0], ray[1], ray[2], ray[3]), 0, Double.POSITIVE_INFINITY, hit);
+        return new TraversalTrace(List.copyOf(rec.steps), stats.nodes, stats.leaves, stats.primitiveTests, stats.boxTests,
                 found ? hit.primitive : -1, found ? hit.t : Double.NaN);
     }
 
     private void add(TraversalTrace.Kind kind, double tSplit, int near, int far, String visit, int object, boolean hit) {
         steps.add(new TraversalTrace.Step(kind, node, tMin, tMax, tSplit, near, far, visit, List.copyOf(stack),
-                List.copyOf(tested), object, hit, best, bestT));
+                List.copyOf(tested), List.copyOf(boxes), object, hit, best, bestT));
     }
 
     private void at(int n, double lo, double hi) {
@@ -80,22 +95,46 @@ final class TraversalRecorder implements TraversalListener {
         }, -1, false);
     }
 
+    @Override public void boxNode(int n, double lo, double hi) {
+        at(n, lo, hi);
+        tested.clear();
+        boxes.clear();
+        add(TraversalTrace.Kind.BOX_NODE, Double.NaN, -1, -1, "", -1, false);
+    }
+
+    @Override public void boxTest(int child, boolean entered, double lo, double hi) {
+        boxes.add(new TraversalTrace.BoxTest(child, entered, lo, hi));
+        add(TraversalTrace.Kind.BOX_TEST, Double.NaN, -1, -1, "", -1, false);
+    }
+
     @Override public void pushFar(int n, double lo, double hi) {
         stack.add(new TraversalTrace.Entry(n, lo, hi));
         TraversalTrace.Step last = steps.get(steps.size() - 1);
-        add(TraversalTrace.Kind.PUSH_FAR, last.tSplit(), last.near(), last.far(), last.visit(), -1, false);
+        if (last.kind() == TraversalTrace.Kind.BOX_TEST) {   // a hierarchy: the nearer box entered first, the other saved
+            add(TraversalTrace.Kind.PUSH_FAR, Double.NaN, nearerBox(n), n, "nearer box, then the other", -1, false);
+        } else {
+            add(TraversalTrace.Kind.PUSH_FAR, last.tSplit(), last.near(), last.far(), last.visit(), -1, false);
+        }
+    }
+
+    /** The box entered at this node other than {@code far}. */
+    private int nearerBox(int far) {
+        for (TraversalTrace.BoxTest b : boxes) if (b.entered() && b.node() != far) return b.node();
+        return -1;
     }
 
     @Override public void pop(int n, double lo, double hi, boolean skipped) {
         if (!stack.isEmpty()) stack.remove(stack.size() - 1);
         at(n, lo, hi);
         tested.clear();
+        boxes.clear();
         add(skipped ? TraversalTrace.Kind.SKIP : TraversalTrace.Kind.POP, Double.NaN, -1, -1, "", -1, false);
     }
 
     @Override public void leaf(int n, double lo, double hi, int count) {
         at(n, lo, hi);
         tested.clear();
+        boxes.clear();
         add(TraversalTrace.Kind.LEAF, Double.NaN, -1, -1, "", -1, false);
     }
 
@@ -129,6 +168,8 @@ final class TraversalRecorder implements TraversalListener {
             a.interior(n, axis, s, lo, hi, ts, near, far, v);
             b.interior(n, axis, s, lo, hi, ts, near, far, v);
         }
+        @Override public void boxNode(int n, double lo, double hi) { a.boxNode(n, lo, hi); b.boxNode(n, lo, hi); }
+        @Override public void boxTest(int n, boolean in, double lo, double hi) { a.boxTest(n, in, lo, hi); b.boxTest(n, in, lo, hi); }
         @Override public void pushFar(int n, double lo, double hi) { a.pushFar(n, lo, hi); b.pushFar(n, lo, hi); }
         @Override public void pop(int n, double lo, double hi, boolean s) { a.pop(n, lo, hi, s); b.pop(n, lo, hi, s); }
         @Override public void leaf(int n, double lo, double hi, int c) { a.leaf(n, lo, hi, c); b.leaf(n, lo, hi, c); }

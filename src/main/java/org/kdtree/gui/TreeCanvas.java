@@ -16,7 +16,8 @@ import javax.swing.SwingUtilities;
 import org.kdtree.shape.Shape2D;
 
 /**
- * The 2-D build canvas: the scene and its tree (see {@link TreePainter}), the leaf under the
+ * The 2-D build canvas: the scene and its tree (see {@link TreePainter}) or bounding volume
+ * hierarchy (see {@link BvhPainter}), the leaf under the
  * mouse highlighted, zoom with the wheel, pan with the right or middle button, and left-button
  * editing, ray casting or placing the k-NN query according to the current {@link EditTool}.
  */
@@ -78,7 +79,7 @@ final class TreeCanvas extends JComponent {
     /** Fits the whole scene into the canvas. */
     public void fit() {
         if (getWidth() > 0) {
-            view.fit(model.tree().bounds(), getWidth(), getHeight());
+            view.fit(model.built().bounds(), getWidth(), getHeight());
             fitted = true;
         } else {
             fitted = false;
@@ -117,22 +118,22 @@ final class TreeCanvas extends JComponent {
 
     /** The scene and tree without selection, kept while tree, view and size stay the same. */
     private BufferedImage base;
-    /** The tree {@link #base} shows. */
-    private Object baseTree;
+    /** The build {@link #base} shows. */
+    private Built baseTree;
     /** The view {@link #base} was painted with. */
     private ViewTransform baseView;
 
     private void paintScene(Graphics2D g, ViewTransform v, int w, int h) {
-        if (base == null || base.getWidth() != w || base.getHeight() != h || baseTree != model.tree() || !v.sameAs(baseView)) {
+        if (base == null || base.getWidth() != w || base.getHeight() != h || baseTree != model.built() || !v.sameAs(baseView)) {
             base = new BufferedImage(w, h, BufferedImage.TYPE_INT_RGB);
             Graphics2D bg = base.createGraphics();
-            TreePainter.paint(bg, w, h, model.scene(), model.tree(), v, TreePainter.Options.PLAIN);
+            model.built().paint(bg, w, h, model.scene(), v, TreePainter.Options.PLAIN);
             bg.dispose();
-            baseTree = model.tree();
+            baseTree = model.built();
             baseView = v.copy();
         }
         g.drawImage(base, 0, 0, null);
-        TreePainter.paintSelection(g, model.scene(), model.tree(), v, model.selectedNode(), model.selectedShape());
+        model.built().paintSelection(g, model.scene(), v, model.selectedNode(), model.selectedShape());
         for (CanvasOverlay o : overlays) o.paint(g, v);
         if (model.stale()) paintStale(g, w);
         if (preview != null)
@@ -162,7 +163,7 @@ final class TreeCanvas extends JComponent {
 
         @Override public void mouseMoved(MouseEvent e) {
             if (model.ray() != null || model.query() != null) return;   // then the selected node is a stepper's
-            model.selectNode(TreePainter.leafAt(model.tree(), view.worldX(e.getX()), view.worldY(e.getY())));
+            model.selectNode(model.built().leafAt(view.worldX(e.getX()), view.worldY(e.getY())));
         }
 
         @Override public void mousePressed(MouseEvent e) {

@@ -164,7 +164,7 @@ public final class TreePainter {
     }
 
     /** Draws the objects: all fills as one path, all outlines as another, then the highlighted ones on top. */
-    private static void paintObjects(Graphics2D g, Scene2D scene, ViewTransform v, BitSet highlighted, int selected) {
+    static void paintObjects(Graphics2D g, Scene2D scene, ViewTransform v, BitSet highlighted, int selected) {
         Path2D.Double fills = new Path2D.Double(Path2D.WIND_NON_ZERO, 8 * scene.size() + 8);
         Path2D.Double lines = new Path2D.Double(Path2D.WIND_NON_ZERO, 8 * scene.size() + 8);
         for (int i = 0; i < scene.size(); i++) {

@@ -102,7 +102,7 @@ public final class Workbench extends JFrame {
         compare = new CompareView(model, recorder);
         tabs.addTab("Compare builders", compare);
         tabs.setMnemonicAt(1, KeyEvent.VK_C);
-        tabs.setToolTipTextAt(1, "The three builders side by side on the same scene, with the ray's cost in each (Alt+C)");
+        tabs.setToolTipTextAt(1, "Three builders side by side on the same scene, a kd-tree's or the bounding volume hierarchy's, with the ray's cost in each (Alt+C)");
         view3D = new View3D(model, Path.of("scenes"));
         tabs.addTab("3-D", view3D);
         tabs.setMnemonicAt(2, KeyEvent.VK_3);
@@ -230,7 +230,7 @@ public final class Workbench extends JFrame {
         JMenu builders = new JMenu("Builder");
         builders.setMnemonic('U');
         i = 0;
-        for (String name : Builders.names()) {
+        for (String name : BuilderSpec.names()) {
             int index = i++;
             builders.add(action(name, KeyStroke.getKeyStroke(KeyEvent.VK_1 + index, InputEvent.ALT_DOWN_MASK),
                     "Build with " + name, () -> builderPanel.selectBuilder(index)));

@@ -13,7 +13,9 @@ import org.kdtree.tree.KdTree;
 
 /**
  * The state the 2-D views share: the scene being edited, the builder settings, the tree built
- * from them (rebuilt on every change), the selected node and shape, and the cast ray. Listeners
+ * from them (rebuilt on every change), the selected node and shape, and the cast ray. The
+ * builder may be the bounding volume hierarchy's ({@code bvh}): then {@link #built()} is the
+ * hierarchy and {@link #tree()} is null, and the views that need a kd-tree say so. Listeners
  * hear what changed. Used on the Swing event thread only. It also holds the query point of the
  * nearest-neighbour stepper.
  *
@@ -64,7 +66,7 @@ final class WorkbenchModel {
     private Scene2D scene = new Scene2D(List.of());
     private String sceneName = "";
     private BuilderSpec settings = BuilderSpec.of("sah");
-    private KdTree tree;
+    private Built built;
     private double buildMillis;
     private boolean building;
     private final BackgroundBuild builds = new BackgroundBuild("workbench build");
@@ -177,8 +179,14 @@ final class WorkbenchModel {
         rebuild();
     }
 
-    /** {@return the tree of the scene} (the previous one while a background build runs). */
-    public KdTree tree() { return tree; }
+    /**
+     * {@return the kd-tree of the scene} (the previous one while a background build runs), or
+     * null while the builder is the bounding volume hierarchy's
+     */
+    public KdTree tree() { return built.tree(); }
+
+    /** {@return what the last build made, a kd-tree or a hierarchy} (the previous one while a background build runs) */
+    public Built built() { return built; }
 
     /** {@return the wall-clock time of the last build, in milliseconds} */
     public double buildMillis() { return buildMillis; }
@@ -202,7 +210,7 @@ final class WorkbenchModel {
 
     private void rebuild() {
         Scene2D next = new Scene2D(shapes);
-        if (builds.start(settings.create(), next, next.size() <= BACKGROUND_ABOVE, o -> finish(next, o))) return;
+        if (builds.start(settings, next, next.size() <= BACKGROUND_ABOVE, o -> finish(next, o))) return;
         building = true;
         fire(Change.BUILDING);
     }
@@ -212,8 +220,8 @@ final class WorkbenchModel {
         building = false;
         if (o.fault() == null) {
             fault = null;
-            hung.remove(o.tree().builderName());
-            install(builtScene, o.tree(), o.millis());
+            hung.remove(o.built().builderName());
+            install(builtScene, o.built(), o.millis());
             return;
         }
         fault = o.fault();
@@ -222,11 +230,11 @@ final class WorkbenchModel {
     }
 
     /** Publishes a scene and its tree together, so that the views never pair a tree with another scene. */
-    private void install(Scene2D builtScene, KdTree builtTree, double ms) {
+    private void install(Scene2D builtScene, Built b, double ms) {
         scene = builtScene;
-        tree = builtTree;
+        built = b;
         buildMillis = ms;
-        if (selectedNode >= tree.nodeCount()) selectedNode = -1;
+        if (selectedNode >= built.nodeCount()) selectedNode = -1;
         if (selectedShape >= shapes.size()) selectedShape = -1;
         fire(Change.TREE);
     }

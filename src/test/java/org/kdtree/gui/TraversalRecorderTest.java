@@ -55,4 +55,34 @@ class TraversalRecorderTest {
         assertThat(pushes).as("a long ray across 200 objects visits both children somewhere").isPositive();
         assertThat(TraversalRecorder.record(tree, scene, null).size()).isZero();
     }
+
+    @Test void aHierarchysTraceStepsThroughItsBoxesToTheBruteForceHit() {
+        Scene2D scene = new Scene2D(Shapes.clustered(300, 5).shapes());
+        org.kdtree.bvh.Bvh bvh = BuilderSpec.of("bvh").createBvh().build(scene);
+        BruteForce brute = new BruteForce(new Shape2DIntersector(scene));
+        Random r = new Random(3);
+        for (int i = 0; i < 200; i++) {
+            double[] ray = {r.nextDouble() * 12 - 1, r.nextDouble() * 12 - 1, r.nextGaussian(), r.nextGaussian()};
+            TraversalTrace t = TraversalRecorder.record(bvh, scene, ray);
+            Hit h = new Hit();
+            boolean found = brute.closestHit(new Ray(2).set(ray[0], ray[1], ray[2], ray[3]), 0, Double.POSITIVE_INFINITY, h);
+            assertThat(t.hitObject() >= 0).isEqualTo(found);
+            if (found) assertThat(t.hitT()).isCloseTo(h.t, org.assertj.core.data.Offset.offset(1e-9));
+            assertThat(t.step(t.size() - 1).kind()).isEqualTo(TraversalTrace.Kind.END);
+            assertThat(count(t, TraversalTrace.Kind.BOX_TEST)).isEqualTo(t.boxTests());
+            assertThat(count(t, TraversalTrace.Kind.BOX_NODE) + count(t, TraversalTrace.Kind.LEAF)).isEqualTo(t.nodes());
+            assertThat(count(t, TraversalTrace.Kind.INTERIOR)).as("no split planes in a hierarchy").isZero();
+            for (TraversalTrace.Step s : t.steps()) {
+                if (s.kind() == TraversalTrace.Kind.BOX_TEST)
+                    assertThat(s.boxes()).as("a box test names a child of the node").last()
+                            .matches(b -> b.node() == bvh.left(s.node()) || b.node() == bvh.right(s.node()));
+                if (s.kind() == TraversalTrace.Kind.PUSH_FAR)
+                    assertThat(s.near()).as("the nearer box entered, visited first").isNotNegative().isNotEqualTo(s.far());
+            }
+        }
+    }
+
+    private static long count(TraversalTrace t, TraversalTrace.Kind kind) {
+        return t.steps().stream().filter(s -> s.kind() == kind).count();
+    }
 }

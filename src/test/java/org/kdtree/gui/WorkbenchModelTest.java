@@ -111,4 +111,27 @@ class WorkbenchModelTest {
                 assertThat(tm.getIndexOfChild(p.getPathComponent(i - 1), p.getPathComponent(i))).isNotNegative();
         }
     }
+
+    @Test void theHierarchyIsBuiltDrawnAndTracedInPlaceOfTheTree() {
+        WorkbenchModel m = new WorkbenchModel();
+        m.setScene("talk", BuiltinScenes.talkFigures());
+        m.setSettings(m.settings().forBuilder("bvh").with(org.kdtree.build.Setting.LEAF_SIZE, 1));
+        assertThat(m.built().isBvh()).isTrue();
+        assertThat(m.tree()).as("no kd-tree while the hierarchy is shown").isNull();
+        assertThat(m.built().builderName()).isEqualTo("bvh");
+        assertThat(m.built().stats().leaves()).as("one object per leaf").isEqualTo(m.scene().size());
+        TreeCanvas c = new TreeCanvas(m);
+        c.setSize(400, 300);
+        java.awt.image.BufferedImage img = c.snapshot();
+        boolean leafLine = false;
+        for (int y = 0; y < 300; y++) for (int x = 0; x < 400; x++) leafLine |= img.getRGB(x, y) == Palette.BVH_LEAF_LINE.getRGB();
+        assertThat(leafLine).as("the leaves' boxes are drawn").isTrue();
+        TraversalTrace t = TraversalRecorder.record(m.built().structure(), m.scene(), new double[] {0, 1.5, 1, 0});
+        assertThat(t.hitObject()).as("the small rectangle at (1..2, 1..2)").isNotNegative();
+        assertThat(t.boxTests()).isPositive();
+
+        m.setSettings(m.settings().forBuilder("sah"));
+        assertThat(m.built().isBvh()).isFalse();
+        assertThat(m.tree().builderName()).isEqualTo("sah");
+    }
 }
