@@ -21,7 +21,9 @@ final class GuiCommand implements Callable<Integer> {
             return 2;
         }
         BuilderSpec spec = options.spec();
-        spec.create();   // an unknown builder, or a setting it does not take, is one line here, not in the window
+        // an unknown builder, or a setting it does not take, is one line here, not in the window (bvh opens it too)
+        if (spec.buildsBvh()) spec.createBvh();
+        else spec.create();
         Workbench.open(spec);
         opened = true;
         return 0;

@@ -12,7 +12,8 @@ import org.kdtree.shape.Scene2D;
 
 /**
  * A compare column's canvas, without interaction, fitted to the scene: the tree (or the
- * hierarchy's boxes by depth), the leaves the cast ray visited shaded, the ray and its hit.
+ * hierarchy's boxes by depth), the leaves the cast ray visited shaded (and the hierarchy's
+ * interior boxes it entered outlined), the ray and its hit.
  */
 final class CompareCanvas extends JComponent {
     private Scene2D scene;
@@ -57,12 +58,17 @@ final class CompareCanvas extends JComponent {
         g.dispose();
     }
 
-    /** The leaves the ray visited (what it paid for in this structure), the ray and its hit. */
+    /** The leaves and boxes the ray visited (what it paid for in this structure), the ray and its hit. */
     private void paintRay(Graphics2D g, ViewTransform v) {
-        Color c = Palette.CURRENT_NODE;
-        g.setColor(new Color(c.getRed(), c.getGreen(), c.getBlue(), 90));
-        for (TraversalTrace.Step st : trace.steps())
-            if (st.kind() == TraversalTrace.Kind.LEAF && regions[st.node()] != null) g.fill(TreePainter.rect(v, regions[st.node()]));
+        Color c = Palette.CURRENT_NODE, shade = new Color(c.getRed(), c.getGreen(), c.getBlue(), 90);
+        g.setStroke(new BasicStroke(2f));
+        for (TraversalTrace.Step st : trace.steps()) {
+            boolean leaf = st.kind() == TraversalTrace.Kind.LEAF, box = st.kind() == TraversalTrace.Kind.BOX_NODE;
+            if (!(leaf || box) || regions[st.node()] == null) continue;
+            g.setColor(leaf ? shade : c);
+            if (leaf) g.fill(TreePainter.rect(v, regions[st.node()]));
+            else g.draw(TreePainter.rect(v, regions[st.node()]));
+        }
         double end = StepperPanel.rayEnd(built.bounds(), ray);
         g.setColor(Palette.RAY);
         g.setStroke(new BasicStroke(2f));

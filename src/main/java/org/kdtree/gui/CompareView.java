@@ -118,7 +118,8 @@ final class CompareView extends JPanel {
                 else stale = true;
             });
             label();
-            canvas.setToolTipText("This column's tree (or hierarchy's boxes, by depth) over the same scene; the leaves the ray visits are shaded orange");
+            canvas.setToolTipText("This column's tree (or hierarchy's boxes, by depth) over the same scene; the leaves the ray visits are shaded orange, "
+                    + "the hierarchy's boxes it enters outlined orange");
             add(chooser, BorderLayout.NORTH);
             add(canvas, BorderLayout.CENTER);
             add(stats, BorderLayout.SOUTH);

@@ -44,7 +44,7 @@ final class TreeCanvas extends JComponent {
         this.model = model;
         setPreferredSize(new Dimension(720, 640));
         setFocusable(true);
-        setToolTipText("Scene and kd-tree: wheel zooms, right-drag pans, F fits; the leaf under the mouse is highlighted");
+        setToolTipText("Scene and kd-tree (or bounding volume hierarchy): wheel zooms, right-drag pans, F fits; the leaf under the mouse is highlighted");
         model.addListener(c -> repaint());
         Mouse m = new Mouse();
         addMouseListener(m);

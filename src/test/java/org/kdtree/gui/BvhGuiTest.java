@@ -123,6 +123,19 @@ class BvhGuiTest {
         assertThat(showing("lambda")).isTrue();
     }
 
+    @Test void theCollisionsSayTheyNeedAKdTree() {
+        window.comboBox("builder").selectItem("bvh");
+        window.tabbedPane("tabs").selectTab("Collisions");
+        window.label("collide.frame").requireText(CollisionsView.KD_TREES_ONLY);
+        window.button("collide.start").click();
+        window.button("collide.start").requireText("Start");
+        assertThat(GuiActionRunner.execute(() -> bench.collisions().running())).isFalse();
+        GuiActionRunner.execute(() -> bench.model().setSettings(bench.model().settings().forBuilder("sah")));
+        window.label("collide.frame").requireText("frame 0");
+        window.button("collide.step").click();
+        window.label("collide.frame").requireText("frame 1");
+    }
+
     private boolean showing(String name) {
         return !window.robot().finder().findAll(bench, c -> name.equals(c.getName()) && c.isShowing()).isEmpty();
     }

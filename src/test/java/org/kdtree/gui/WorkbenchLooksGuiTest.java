@@ -52,7 +52,7 @@ class WorkbenchLooksGuiTest {
     }
 
     @Test void theTreeListKeepsRoomForItsNodesWhateverTheBuilder() {
-        for (String name : new String[] {"sah", "median-plane", "sliding-midpoint"}) {
+        for (String name : new String[] {"sah", "median-plane", "sliding-midpoint", "bvh"}) {
             window.comboBox("builder").selectItem(name);
             int height = GuiActionRunner.execute(() -> treeView().getHeight());
             assertThat(height).as("the tree list's height under %s (1280 x 880 window)", name).isGreaterThanOrEqualTo(150);

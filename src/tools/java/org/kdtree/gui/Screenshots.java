@@ -101,6 +101,26 @@ public final class Screenshots {
         });
         shot(out, "compare.png");
 
+        on(() -> b.compare().choose(0, "bvh"));
+        shot(out, "compare-bvh.png");
+
+        on(() -> {
+            b.compare().choose(0, CompareView.DEFAULT_BUILDERS.get(0));
+            b.tabs().setSelectedIndex(0);
+            m.setSettings(m.settings().forBuilder("bvh"));
+            // the hierarchy's stepper at a box test, with boxes saved on the stack
+            StepperPanel s = b.stepper();
+            int target = 0;
+            for (int i = 0; i < s.trace().size() && target == 0; i++) {
+                TraversalTrace.Step st = s.trace().step(i);
+                if (st.kind() == TraversalTrace.Kind.BOX_TEST && st.boxes().size() == 2 && st.stack().size() >= 2) target = i;
+            }
+            s.controls().first();
+            for (int i = 0; i < target; i++) s.controls().forward();
+        });
+        shot(out, "bvh-2d.png");
+        on(() -> m.setSettings(m.settings().forBuilder("sah")));
+
         View3D v = (View3D) b.tabs().getComponentAt(2);
         on(() -> {
             v.choose("cornell-box.json", 400);
