@@ -30,7 +30,8 @@ final class WideNodes {
         this.width = width;
         this.refs = 2 * k * width;
         this.stride = refs + 2 * width;
-        words = new int[stride * Math.max(1, root.size())];  // a wide tree has fewer nodes than the binary one
+        // A wide node takes the place of up to width - 1 binary interior nodes: start from that, grow if needed.
+        words = new int[stride * (root.size() / 2 / (width - 1) + 16)];
         add(root);
         words = Arrays.copyOf(words, stride * nodes);
     }
@@ -38,6 +39,7 @@ final class WideNodes {
     /** Lays out the wide node whose children are those of {@code n}'s collapsed subtree; returns its index. */
     private int add(BuildNode n) {
         int id = nodes++;
+        if (stride * nodes > words.length) words = Arrays.copyOf(words, Math.max(stride * nodes, words.length + words.length / 2));
         BuildNode[] kids = new BuildNode[width];
         int m = collapse(n, kids);
         int base = stride * id;
@@ -54,7 +56,8 @@ final class WideNodes {
                 words[ref] = kids[i].first;
                 words[count] = kids[i].count;
             } else {
-                words[ref] = add(kids[i]);
+                int child = add(kids[i]);     // first: it may grow the array, which words[ref] = add(..) would have read before
+                words[ref] = child;
                 words[count] = 0;
             }
         }

@@ -5,6 +5,7 @@ import static org.assertj.core.api.Assertions.assertThat;
 import java.util.Arrays;
 import java.util.Random;
 import org.junit.jupiter.api.Test;
+import org.junit.jupiter.api.Timeout;
 import org.kdtree.generate.Meshes;
 import org.kdtree.generate.Shapes;
 import org.kdtree.geom.Box;
@@ -27,6 +28,7 @@ import org.kdtree.tree.TreeStats;
  * and its queries against brute force, in 3-D and 2-D, on both layouts. The hard cases are
  * {@code traverse.HardCases3DTest} and {@code HardCases2DTest}, which take the BVH among the builders.
  */
+@Timeout(120)   // a layout with a cycle would trace forever: fail instead
 class BvhTest {
     private static final double EPS = 1e-9;
 
@@ -65,6 +67,30 @@ class BvhTest {
             p.bounds(prim, b);
             for (int a = 0; a < p.dimension(); a++)
                 assertThat(b.min(a) >= box.min(a) && b.max(a) <= box.max(a)).as("primitive " + prim + " in leaf " + node).isTrue();
+        }
+    }
+
+    @Test void theWideLayoutReachesEveryNodeOnceAndEveryPrimitiveOnceAtEveryWidth() {
+        // Uniform triangles make wide nodes with few children: more nodes than the layout first makes room for.
+        for (TriangleMesh m : new TriangleMesh[] {Meshes.surface(20_000, 3), Meshes.uniform(2000, 4)})
+        for (int width = 2; width <= 8; width++) {
+            Bvh h = new BvhBuilder().width(width).build(m);
+            WideNodes w = h.wide();
+            int[] seenNode = new int[w.nodeCount()], seenRef = new int[h.primitiveCount()];
+            java.util.ArrayDeque<Integer> todo = new java.util.ArrayDeque<>(java.util.List.of(0));
+            int visits = 0;
+            while (!todo.isEmpty()) {
+                int node = todo.pop();
+                assertThat(++visits).as("width " + width + ": a cycle").isLessThanOrEqualTo(w.nodeCount());
+                seenNode[node]++;
+                for (int i = 0; i < width; i++) {
+                    int ref = w.words[w.stride * node + w.refs + i], count = w.words[w.stride * node + w.refs + width + i];
+                    if (count == 0) todo.push(ref);
+                    for (int r = ref; r < ref + Math.max(0, count); r++) seenRef[r]++;
+                }
+            }
+            assertThat(seenNode).as("width " + width).containsOnly(1);
+            assertThat(seenRef).as("width " + width).containsOnly(1);
         }
     }
 
