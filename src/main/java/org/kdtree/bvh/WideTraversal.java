@@ -30,6 +30,10 @@ final class WideTraversal implements RayQuery {
     private final int[] hitEntry;
     private final double[] hitT;
     private final Hit scratch = new Hit();
+    /** Traces the rays this loop leaves out: those with a zero direction component, or a negative tMin. */
+    private final BvhTraverser general;
+    /** The slack as factors on a non-negative interval: {@code t0 (1 - slack) <= t1 (1 + slack)}. */
+    private static final double SHRINK = 1 - SLACK, GROW = 1 + SLACK;
 
     WideTraversal(Bvh bvh, TriangleIntersector tris) {
         WideNodes w = bvh.wide();
@@ -45,9 +49,11 @@ final class WideTraversal implements RayQuery {
         stackT = new double[stack];
         hitEntry = new int[width];
         hitT = new double[width];
+        general = new BvhTraverser(bvh, tris, org.kdtree.traverse.TraversalListener.NONE);
     }
 
     @Override public boolean closestHit(Ray ray, double tMin, double tMax, Hit hit) {
+        if (!suits(ray, tMin)) return general.closestHit(ray, tMin, tMax, hit);
         hit.reset();
         int r = trace(ray, tMin, tMax, hit, false);
         if (r < 0) return false;
@@ -56,7 +62,19 @@ final class WideTraversal implements RayQuery {
     }
 
     @Override public boolean anyHit(Ray ray, double tMin, double tMax) {
+        if (!suits(ray, tMin)) return general.anyHit(ray, tMin, tMax);
         return trace(ray, tMin, tMax, scratch.reset(), true) >= 0;
+    }
+
+    /**
+     * Whether this loop traces the ray: one whose direction has no zero component (so that no
+     * slab bound is 0 times infinity, NaN, and the loop needs no test for it) and whose interval
+     * starts at t >= 0 (so that the slack can be a factor). Others, rare, take the binary
+     * traversal, which handles both.
+     */
+    private static boolean suits(Ray ray, double tMin) {
+        return tMin >= 0 && ray.dimension() == 3 && Double.isFinite(ray.inverseDirection(0))
+                && Double.isFinite(ray.inverseDirection(1)) && Double.isFinite(ray.inverseDirection(2));
     }
 
     /**
@@ -98,22 +116,18 @@ final class WideTraversal implements RayQuery {
                 for (int i = 0; i < w; i++) {
                     int count = nd[base + refs + w + i];
                     if (count < 0) break;
-                    // Branch-free slabs (Math.max and min compile to single instructions); a NaN bound
-                    // (origin in a face's plane, direction 0 on that axis) constrains nothing.
-                    double a = (Float.intBitsToFloat(nd[base + nx + i]) - ox) * ix, b = (Float.intBitsToFloat(nd[base + fx + i]) - ox) * ix;
-                    double t0 = Math.max(start, a == a ? a : start), t1 = Math.min(limit, b == b ? b : limit);
-                    a = (Float.intBitsToFloat(nd[base + ny + i]) - oy) * iy;
-                    b = (Float.intBitsToFloat(nd[base + fy + i]) - oy) * iy;
-                    t0 = Math.max(t0, a == a ? a : t0);
-                    t1 = Math.min(t1, b == b ? b : t1);
-                    a = (Float.intBitsToFloat(nd[base + nz + i]) - oz) * iz;
-                    b = (Float.intBitsToFloat(nd[base + fz + i]) - oz) * iz;
-                    t0 = Math.max(t0, a == a ? a : t0);
-                    t1 = Math.min(t1, b == b ? b : t1);
-                    // Appended always, kept only if entered: no branch to mispredict. (NaN: an infinite bound, missed.)
+                    // Branch-free slabs: Math.max and min compile to single instructions, and with no
+                    // zero direction component no bound is NaN.
+                    double t0 = Math.max(start, (Float.intBitsToFloat(nd[base + nx + i]) - ox) * ix);
+                    double t1 = Math.min(limit, (Float.intBitsToFloat(nd[base + fx + i]) - ox) * ix);
+                    t0 = Math.max(t0, (Float.intBitsToFloat(nd[base + ny + i]) - oy) * iy);
+                    t1 = Math.min(t1, (Float.intBitsToFloat(nd[base + fy + i]) - oy) * iy);
+                    t0 = Math.max(t0, (Float.intBitsToFloat(nd[base + nz + i]) - oz) * iz);
+                    t1 = Math.min(t1, (Float.intBitsToFloat(nd[base + fz + i]) - oz) * iz);
+                    // Appended always, kept only if entered: no branch to mispredict. (t0 >= 0 here.)
                     he[m] = count > 0 ? -1 - (base + refs + i) : nd[base + refs + i];
                     ht[m] = t0;
-                    m += t0 - Math.abs(t0) * SLACK <= t1 + Math.abs(t1) * SLACK ? 1 : 0;
+                    m += t0 * SHRINK <= t1 * GROW ? 1 : 0;
                 }
                 // Farthest first, so that the nearest is taken next.
                 for (int i = 1; i < m; i++) {
