@@ -6,6 +6,7 @@ import org.kdtree.traverse.Hit;
 import org.kdtree.traverse.Intersector;
 import org.kdtree.traverse.RayQuery;
 import org.kdtree.traverse.TraversalListener;
+import org.kdtree.traverse.Traverser;
 
 /**
  * The readable traversal of a {@link Bvh}'s binary tree, in any dimension and over any
@@ -13,7 +14,7 @@ import org.kdtree.traverse.TraversalListener;
  * boxes are tested; the nearer one entered is visited first, the other saved with its entry
  * distance; a saved node that starts beyond the closest hit found so far is dropped. Box tests
  * are widened by the kd-tree traversal's slack ({@link Tolerance#TRAVERSAL_SLACK}), so rounding
- * never skips a box that holds the hit. Not thread safe: one per thread.
+ * never skips a box that holds the hit ({@link Traverser#clip}, the kd-tree's own). Not thread safe: one per thread.
  */
 final class BvhTraverser implements RayQuery {
     private static final double SLACK = Tolerance.TRAVERSAL_SLACK;
@@ -29,6 +30,7 @@ final class BvhTraverser implements RayQuery {
     private final Hit scratch = new Hit();
     /** The interval of the last {@link #enters} test. */
     private double enter, exit;
+    private final double[] interval = new double[2];
 
     BvhTraverser(Bvh bvh, Intersector prims, TraversalListener listener) {
         this.bvh = bvh;
@@ -122,23 +124,11 @@ final class BvhTraverser implements RayQuery {
         }
     }
 
-    /**
-     * Whether the ray meets {@code node}'s box within {@code [tMin, tMax]}, the interval met left
-     * in {@link #enter} and {@link #exit}, widened by the slack. A NaN slab bound (origin on a
-     * face of a flat box, direction 0 on that axis) constrains nothing.
-     */
+    /** Whether the ray meets {@code node}'s box within {@code [tMin, tMax]}, the interval met left in {@link #enter} and {@link #exit}. */
     private boolean enters(Ray ray, int node, double tMin, double tMax) {
-        double t0 = tMin, t1 = tMax;
-        int o = 2 * k * node;
-        for (int a = 0; a < k; a++) {
-            double inv = ray.inverseDirection(a), org = ray.origin(a);
-            double tNear = (box[o + a] - org) * inv, tFar = (box[o + k + a] - org) * inv;
-            if (inv < 0) { double s = tNear; tNear = tFar; tFar = s; }
-            if (tNear > t0) t0 = tNear;
-            if (tFar < t1) t1 = tFar;
-        }
-        enter = Math.max(tMin, t0 - Math.abs(t0) * SLACK);
-        exit = Math.min(tMax, t1 + Math.abs(t1) * SLACK);
-        return enter <= exit;
+        boolean in = Traverser.clip(ray, box, 2 * k * node, tMin, tMax, interval);
+        enter = interval[0];
+        exit = interval[1];
+        return in;
     }
 }

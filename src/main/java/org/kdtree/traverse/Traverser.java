@@ -47,7 +47,10 @@ public final class Traverser implements RayQuery {
     /** The tree's {@link KdTree#axisBits()}, which {@link Nodes} decodes a word with. */
     private final int bits;
     private final int[] refs;
-    private final double[] lo, hi;
+    /** The scene box: k minima, then k maxima ({@link #clip}'s form). */
+    private final double[] scene;
+    /** Where the ray enters and leaves the scene box, from {@link #clipToScene}. */
+    private final double[] interval = new double[2];
     private final Mailbox mailbox;
     private final int[] stackNode;
     private final double[] stackMin, stackMax;
@@ -71,8 +74,12 @@ public final class Traverser implements RayQuery {
         bits = tree.axisBits();
         refs = tree.refArray();
         Box b = tree.bounds();
-        lo = b.minCorner();
-        hi = b.maxCorner();
+        int k = b.dimension();
+        scene = new double[2 * k];
+        for (int a = 0; a < k; a++) {
+            scene[a] = b.min(a);
+            scene[k + a] = b.max(a);
+        }
         mailbox = new Mailbox(prims.size());
         int depth = tree.stats().maxDepth() + 2;
         stackNode = new int[depth];
@@ -206,23 +213,41 @@ public final class Traverser implements RayQuery {
         }
     }
 
-    /**
-     * Clips {@code [tMin, tMax]} to the scene box into {@link #enter} and {@link #exit}, widened by
-     * the slack; false when nothing is left. A NaN slab bound (origin on a face of a flat slab,
-     * direction 0 on that axis) constrains nothing.
-     */
+    /** Clips {@code [tMin, tMax]} to the scene box into {@link #enter} and {@link #exit}; false when nothing is left. */
     private boolean clipToScene(Ray ray, double tMin, double tMax) {
+        boolean in = clip(ray, scene, 0, tMin, tMax, interval);
+        enter = interval[0];
+        exit = interval[1];
+        return in;
+    }
+
+    /**
+     * The slab test of every traversal that clips a ray to a box (the kd-tree's scene box, a
+     * bounding volume hierarchy's node boxes): {@code [tMin, tMax]} clipped to the box, widened by
+     * the slack, into {@code interval}. A NaN slab bound (origin on a face of a flat box,
+     * direction 0 on that axis) constrains nothing.
+     *
+     * @param ray      the ray, of the box's dimension k
+     * @param box      holds the box from {@code at}: k minima, then k maxima
+     * @param at       where the box starts in {@code box}
+     * @param tMin     the start of the ray's range
+     * @param tMax     its end
+     * @param interval receives where the ray enters the box (index 0) and leaves it (index 1)
+     * @return whether anything of the range is left
+     */
+    public static boolean clip(Ray ray, double[] box, int at, double tMin, double tMax, double[] interval) {
+        int k = ray.dimension();
         double t0 = tMin, t1 = tMax;
-        for (int a = 0; a < lo.length; a++) {
+        for (int a = 0; a < k; a++) {
             double inv = ray.inverseDirection(a), o = ray.origin(a);
-            double tNear = (lo[a] - o) * inv, tFar = (hi[a] - o) * inv;
+            double tNear = (box[at + a] - o) * inv, tFar = (box[at + k + a] - o) * inv;
             if (inv < 0) { double s = tNear; tNear = tFar; tFar = s; }
             if (tNear > t0) t0 = tNear;
             if (tFar < t1) t1 = tFar;
         }
-        enter = Math.max(tMin, t0 - Math.abs(t0) * SLACK);
-        exit = Math.min(tMax, t1 + Math.abs(t1) * SLACK);
-        return enter <= exit;
+        interval[0] = Math.max(tMin, t0 - Math.abs(t0) * SLACK);
+        interval[1] = Math.min(tMax, t1 + Math.abs(t1) * SLACK);
+        return interval[0] <= interval[1];
     }
 
     /** Which children to visit: Algorithm 2's three cases, closed and with slack, plus the in-plane case. */
@@ -274,6 +299,6 @@ public final class Traverser implements RayQuery {
 
     /** Rejects rays that no query can answer: non-finite values or an all-zero direction. */
     void checkRay(Ray ray) {
-        ray.requireTraceable(lo.length, "tree");
+        ray.requireTraceable(scene.length / 2, "tree");
     }
 }
