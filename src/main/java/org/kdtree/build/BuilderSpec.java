@@ -148,7 +148,7 @@ public final class BuilderSpec {
     public KdTreeBuilder create() {
         if (buildsBvh())
             throw new IllegalArgumentException("-b " + builder + " builds a bounding volume hierarchy, which answers ray queries"
-                    + " only (raycast, stats, render, tradeoff); this needs a kd-tree builder: " + String.join(", ", Builders.names()));
+                    + " only (raycast, stats, render, tradeoff, the workbench); this needs a kd-tree builder: " + String.join(", ", Builders.names()));
         return applied(Builders.create(builder));
     }
 

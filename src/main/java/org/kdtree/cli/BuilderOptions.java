@@ -112,7 +112,7 @@ final class BuilderOptions {
                     .filter(BuilderOptions.class::isInstance).map(BuilderOptions.class::cast).findFirst().orElseThrow();
             command.addOption(OptionSpec.builder("-b", "--builder").type(String.class).paramLabel("NAME")
                     .description("Builder: sah, median-plane, object-median, sliding-midpoint, a registered name, or bvh "
-                            + "(a bounding volume hierarchy: ray queries only) "
+                            + "(a bounding volume hierarchy: ray queries and the workbench) "
                             + (o.role != null ? "(" + o.role + ")." : "(default: " + o.defaultBuilder + ")."))
                     .setter(setter(v -> o.builder = (String) v)).build());
             for (Setting<?> s : Setting.ALL) command.addOption(option(s, o));

@@ -88,14 +88,14 @@ class BvhCommandsTest {
                 CliRun.of("grade", "-b", "bvh"));
         for (CliRun r : runs)
             assertOneLine(r, "-b bvh builds a bounding volume hierarchy, which answers ray queries only (raycast, stats, render, "
-                    + "tradeoff); this needs a kd-tree builder: sah, median-plane");
+                    + "tradeoff, the workbench); this needs a kd-tree builder: sah, median-plane");
         assertThat(dir.resolve("o.csv")).as("refused before any output").doesNotExist();
     }
 
     @Test void everyBuilderOptionsHelpNamesTheBvhAndItsWidth() {
         for (String c : new String[] {"stats", "raycast", "render", "tradeoff", "knn", "knn-study", "grade"}) {
             String help = CliRun.of(c, "--help").out().replaceAll("\\s+", " ");
-            assertThat(help).as(c).contains("or bvh (a bounding volume hierarchy: ray queries only)")
+            assertThat(help).as(c).contains("or bvh (a bounding volume hierarchy: ray queries and the workbench)")
                     .contains("--bvh-width=N BVH width: children per node");
         }
     }
