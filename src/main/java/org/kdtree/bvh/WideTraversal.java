@@ -78,12 +78,13 @@ final class WideTraversal implements RayQuery {
     }
 
     /**
-     * Where box intervals start: {@code tMin}, or a little before it when it is subnormal (the
-     * benchmark's tMin is {@link Double#MIN_VALUE}): arithmetic on subnormal numbers takes the
-     * processor a hundred cycles per operation, and starting earlier only admits more boxes.
+     * Where box intervals start, for a {@code tMin >= 0} ({@link #suits}): {@code tMin}, or 0 when
+     * it is subnormal (the benchmark's tMin is {@link Double#MIN_VALUE}): arithmetic on subnormal
+     * numbers takes the processor a hundred cycles per operation, and starting earlier only admits
+     * more boxes.
      */
     static double boxStart(double tMin) {
-        return Math.abs(tMin) >= Double.MIN_NORMAL ? tMin : tMin > 0 ? 0 : -Double.MIN_NORMAL;
+        return tMin >= Double.MIN_NORMAL ? tMin : 0;
     }
 
     /** Returns the leaf-order position of the closest (or, for {@code any}, the first) hit, or -1. */
