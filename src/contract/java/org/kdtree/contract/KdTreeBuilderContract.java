@@ -13,10 +13,10 @@ import org.junit.jupiter.api.DynamicTest;
 import org.junit.jupiter.api.Test;
 import org.junit.jupiter.api.TestFactory;
 import org.junit.platform.engine.TestEngine;
-import org.kdtree.build.BuilderFault;
-import org.kdtree.build.KdTreeBuilder;
 import org.kdtree.check.Contract;
 import org.kdtree.check.ContractViolation;
+import org.kdtree.kdtree.BuilderFault;
+import org.kdtree.kdtree.KdTreeBuilder;
 
 /**
  * The contract every {@link KdTreeBuilder} must honour: extend this class, implement

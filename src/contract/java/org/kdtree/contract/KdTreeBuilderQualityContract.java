@@ -3,8 +3,8 @@ package org.kdtree.contract;
 import java.util.stream.Stream;
 import org.junit.jupiter.api.DynamicTest;
 import org.junit.jupiter.api.TestFactory;
-import org.kdtree.build.KdTreeBuilder;
 import org.kdtree.check.QualityChecks;
+import org.kdtree.kdtree.KdTreeBuilder;
 
 /**
  * The contract's quality tier, opt-in (graders use it): extend this class as you extend

@@ -1,18 +1,18 @@
 package org.kdtree.bench;
 
-import java.util.concurrent.TimeUnit;
 import java.util.LinkedHashMap;
 import java.util.Map;
+import java.util.concurrent.TimeUnit;
 import java.util.function.Function;
-import org.kdtree.build.BuilderSpec;
-import org.kdtree.build.Builders;
-import org.kdtree.build.KdTreeBuilder;
-import org.kdtree.build.Quality;
-import org.kdtree.build.SahBuilder;
-import org.kdtree.build.Setting;
+import org.kdtree.accel.AccelerationStructure;
+import org.kdtree.accel.SharedSettings;
 import org.kdtree.bvh.BvhBuilder;
+import org.kdtree.kdtree.KdTreeBuilder;
+import org.kdtree.kdtree.Quality;
+import org.kdtree.kdtree.SahBuilder;
 import org.kdtree.shape.TriangleMesh;
-import org.kdtree.traverse.AccelerationStructure;
+import org.kdtree.spec.BuilderSpec;
+import org.kdtree.spec.Builders;
 import org.openjdk.jmh.annotations.Benchmark;
 import org.openjdk.jmh.annotations.BenchmarkMode;
 import org.openjdk.jmh.annotations.Fork;
@@ -58,7 +58,7 @@ public class BuildBenchmark {
     @Setup(Level.Trial)
     public void setUp() {
         mesh = BenchScenes.make(scene, n);
-        BuilderSpec s = spec(builder).with(Setting.THREADS, threads);
+        BuilderSpec s = spec(builder).with(SharedSettings.THREADS, threads);
         if (s.buildsBvh()) {
             BvhBuilder bvh = s.createBvh();
             build = bvh::build;
@@ -79,16 +79,16 @@ public class BuildBenchmark {
     private static Map<String, BuilderSpec> specs() {
         BuilderSpec sah = BuilderSpec.of("sah");
         Map<String, BuilderSpec> m = new LinkedHashMap<>();
-        m.put("sah-naive", sah.with(Setting.ALGORITHM, SahBuilder.Algorithm.NAIVE));
-        m.put("sah-sorted", sah.with(Setting.ALGORITHM, SahBuilder.Algorithm.SORTED));
-        m.put("sah-event", sah.with(Setting.ALGORITHM, SahBuilder.Algorithm.EVENT));
-        m.put("sah-binned", sah.with(Setting.ALGORITHM, SahBuilder.Algorithm.BINNED));
-        m.put("sah-balanced", sah.with(Setting.QUALITY, Quality.BALANCED));
-        m.put("sah-fast", sah.with(Setting.QUALITY, Quality.FAST));
+        m.put("sah-naive", sah.with(SahBuilder.ALGORITHM, SahBuilder.Algorithm.NAIVE));
+        m.put("sah-sorted", sah.with(SahBuilder.ALGORITHM, SahBuilder.Algorithm.SORTED));
+        m.put("sah-event", sah.with(SahBuilder.ALGORITHM, SahBuilder.Algorithm.EVENT));
+        m.put("sah-binned", sah.with(SahBuilder.ALGORITHM, SahBuilder.Algorithm.BINNED));
+        m.put("sah-balanced", sah.with(SahBuilder.QUALITY, Quality.BALANCED));
+        m.put("sah-fast", sah.with(SahBuilder.QUALITY, Quality.FAST));
         for (String name : Builders.names()) m.putIfAbsent(name, BuilderSpec.of(name));
         m.put(BvhBuilder.NAME, BuilderSpec.of(BvhBuilder.NAME));
-        m.put("bvh-width2", BuilderSpec.of(BvhBuilder.NAME).with(Setting.BVH_WIDTH, 2));
-        m.put("bvh-width8", BuilderSpec.of(BvhBuilder.NAME).with(Setting.BVH_WIDTH, 8));
+        m.put("bvh-width2", BuilderSpec.of(BvhBuilder.NAME).with(BvhBuilder.WIDTH, 2));
+        m.put("bvh-width8", BuilderSpec.of(BvhBuilder.NAME).with(BvhBuilder.WIDTH, 8));
         return m;
     }
 

@@ -1,9 +1,9 @@
 package org.kdtree.bench;
 
 import java.util.concurrent.TimeUnit;
-import org.kdtree.build.KdTreeBuilder;
+import org.kdtree.kdtree.KdTree;
+import org.kdtree.kdtree.KdTreeBuilder;
 import org.kdtree.shape.TriangleMesh;
-import org.kdtree.tree.KdTree;
 import org.openjdk.jmh.annotations.Benchmark;
 import org.openjdk.jmh.annotations.BenchmarkMode;
 import org.openjdk.jmh.annotations.Fork;

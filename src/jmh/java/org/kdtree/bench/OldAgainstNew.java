@@ -36,7 +36,7 @@ public final class OldAgainstNew {
             ClassLoader cl = new URLClassLoader(new URL[] {Path.of(args[i]).toUri().toURL()}, ClassLoader.getPlatformClassLoader());
             meshes[i] = cl.loadClass("org.kdtree.io.ObjMeshReader").getMethod("read", Path.class).invoke(null, Path.of(args[2]));
             builders[i] = builder(cl, args[4], args.length > 5 ? args[5] : null);
-            build[i] = cl.loadClass("org.kdtree.build.KdTreeBuilder").getMethod("build", cl.loadClass("org.kdtree.shape.Primitives"));
+            build[i] = cl.loadClass("org.kdtree.kdtree.KdTreeBuilder").getMethod("build", cl.loadClass("org.kdtree.shape.Primitives"));
         }
         ThreadMXBean mx = ManagementFactory.getThreadMXBean();
         double[][] ms = new double[2][runs];
@@ -59,13 +59,13 @@ public final class OldAgainstNew {
     private static Object builder(ClassLoader cl, String name, String variant) throws Exception {
         Object b = name.equals("centre-midpoint")
                 ? cl.loadClass("org.kdtree.examples.CentreMidpointBuilder").getConstructor().newInstance()
-                : cl.loadClass("org.kdtree.build.Builders").getMethod("create", String.class).invoke(null, name);
+                : cl.loadClass("org.kdtree.spec.Builders").getMethod("create", String.class).invoke(null, name);
         if (variant == null) return b;
         if (variant.equals("fast")) {
-            Class quality = cl.loadClass("org.kdtree.build.Quality");
+            Class quality = cl.loadClass("org.kdtree.kdtree.Quality");
             b.getClass().getMethod("quality", quality).invoke(b, Enum.valueOf(quality, "FAST"));
         } else {
-            Class algorithm = cl.loadClass("org.kdtree.build.SahBuilder$Algorithm");
+            Class algorithm = cl.loadClass("org.kdtree.kdtree.SahBuilder$Algorithm");
             b.getClass().getMethod("algorithm", algorithm).invoke(b, Enum.valueOf(algorithm, variant));
         }
         return b;

@@ -1,11 +1,11 @@
 package org.kdtree.bench;
 
 import java.util.concurrent.TimeUnit;
-import org.kdtree.shape.TriangleMesh;
-import org.kdtree.measure.RaySet;
+import org.kdtree.accel.RayQuery;
+import org.kdtree.accel.TriangleIntersector;
 import org.kdtree.measure.RayBatch;
-import org.kdtree.traverse.TriangleIntersector;
-import org.kdtree.traverse.RayQuery;
+import org.kdtree.measure.RaySet;
+import org.kdtree.shape.TriangleMesh;
 import org.openjdk.jmh.annotations.Benchmark;
 import org.openjdk.jmh.annotations.BenchmarkMode;
 import org.openjdk.jmh.annotations.Fork;

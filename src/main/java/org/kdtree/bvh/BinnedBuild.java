@@ -3,9 +3,9 @@ package org.kdtree.bvh;
 import java.util.concurrent.CancellationException;
 import java.util.concurrent.ForkJoinPool;
 import java.util.concurrent.RecursiveTask;
+import org.kdtree.accel.CostModel;
 import org.kdtree.geom.Box;
 import org.kdtree.shape.Primitives;
-import org.kdtree.tree.CostModel;
 
 /**
  * One build of a {@link Bvh}: the top-down binned SAH over the primitives' bounds (Wald 2007).

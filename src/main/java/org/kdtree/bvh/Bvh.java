@@ -1,14 +1,14 @@
 package org.kdtree.bvh;
 
 import java.util.Objects;
+import org.kdtree.accel.AccelerationStructure;
+import org.kdtree.accel.CostModel;
+import org.kdtree.accel.Intersector;
+import org.kdtree.accel.RayQuery;
+import org.kdtree.accel.TraversalListener;
+import org.kdtree.accel.TreeStats;
+import org.kdtree.accel.TriangleIntersector;
 import org.kdtree.geom.Box;
-import org.kdtree.traverse.AccelerationStructure;
-import org.kdtree.traverse.Intersector;
-import org.kdtree.traverse.RayQuery;
-import org.kdtree.traverse.TraversalListener;
-import org.kdtree.traverse.TriangleIntersector;
-import org.kdtree.tree.CostModel;
-import org.kdtree.tree.TreeStats;
 
 /**
  * A bounding volume hierarchy, immutable, in two layouts of flat arrays:

@@ -1,7 +1,7 @@
 package org.kdtree.bvh;
 
-import org.kdtree.tree.CostModel;
-import org.kdtree.tree.TreeStats;
+import org.kdtree.accel.CostModel;
+import org.kdtree.accel.TreeStats;
 
 /**
  * A hierarchy's statistics in the kd-tree's terms ({@link TreeStats}), counted on the binary

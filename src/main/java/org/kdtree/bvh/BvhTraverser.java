@@ -1,12 +1,12 @@
 package org.kdtree.bvh;
 
+import org.kdtree.accel.Hit;
+import org.kdtree.accel.Intersector;
+import org.kdtree.accel.RayQuery;
+import org.kdtree.accel.SlabClip;
+import org.kdtree.accel.TraversalListener;
 import org.kdtree.geom.Ray;
 import org.kdtree.geom.Tolerance;
-import org.kdtree.traverse.Hit;
-import org.kdtree.traverse.Intersector;
-import org.kdtree.traverse.RayQuery;
-import org.kdtree.traverse.TraversalListener;
-import org.kdtree.traverse.Traverser;
 
 /**
  * The readable traversal of a {@link Bvh}'s binary tree, in any dimension and over any
@@ -14,7 +14,7 @@ import org.kdtree.traverse.Traverser;
  * boxes are tested; the nearer one entered is visited first, the other saved with its entry
  * distance; a saved node that starts beyond the closest hit found so far is dropped. Box tests
  * are widened by the kd-tree traversal's slack ({@link Tolerance#TRAVERSAL_SLACK}), so rounding
- * never skips a box that holds the hit ({@link Traverser#clip}, the kd-tree's own). Not thread safe: one per thread.
+ * never skips a box that holds the hit ({@link SlabClip#clip}, the kd-tree's own). Not thread safe: one per thread.
  */
 final class BvhTraverser implements RayQuery {
     private static final double SLACK = Tolerance.TRAVERSAL_SLACK;
@@ -126,7 +126,7 @@ final class BvhTraverser implements RayQuery {
 
     /** Whether the ray meets {@code node}'s box within {@code [tMin, tMax]}, the interval met left in {@link #enter} and {@link #exit}. */
     private boolean enters(Ray ray, int node, double tMin, double tMax) {
-        boolean in = Traverser.clip(ray, box, 2 * k * node, tMin, tMax, interval);
+        boolean in = SlabClip.clip(ray, box, 2 * k * node, tMin, tMax, interval);
         enter = interval[0];
         exit = interval[1];
         return in;

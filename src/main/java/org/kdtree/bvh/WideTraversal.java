@@ -1,10 +1,10 @@
 package org.kdtree.bvh;
 
+import org.kdtree.accel.Hit;
+import org.kdtree.accel.RayQuery;
+import org.kdtree.accel.TriangleIntersector;
 import org.kdtree.geom.Ray;
 import org.kdtree.geom.Tolerance;
-import org.kdtree.traverse.Hit;
-import org.kdtree.traverse.RayQuery;
-import org.kdtree.traverse.TriangleIntersector;
 
 /**
  * The fast traversal of a {@link Bvh} over a triangle mesh: its wide layout ({@link WideNodes}),
@@ -49,7 +49,7 @@ final class WideTraversal implements RayQuery {
         stackT = new double[stack];
         hitEntry = new int[width];
         hitT = new double[width];
-        general = new BvhTraverser(bvh, tris, org.kdtree.traverse.TraversalListener.NONE);
+        general = new BvhTraverser(bvh, tris, org.kdtree.accel.TraversalListener.NONE);
     }
 
     @Override public boolean closestHit(Ray ray, double tMin, double tMax, Hit hit) {

@@ -7,21 +7,21 @@ import java.util.Optional;
 import java.util.Random;
 import java.util.concurrent.ConcurrentHashMap;
 import java.util.function.Supplier;
-import org.kdtree.build.BuilderFault;
-import org.kdtree.build.KdTreeBuilder;
-import org.kdtree.build.Supervisor;
 import org.kdtree.generate.HardMeshes;
 import org.kdtree.generate.Meshes;
 import org.kdtree.generate.Points;
 import org.kdtree.generate.Shapes;
 import org.kdtree.io.BundledScenes;
+import org.kdtree.kdtree.BuilderFault;
+import org.kdtree.kdtree.KdTree;
+import org.kdtree.kdtree.KdTreeBuilder;
+import org.kdtree.kdtree.Supervisor;
 import org.kdtree.limits.Deadlines;
 import org.kdtree.shape.InvalidGeometryException;
 import org.kdtree.shape.Primitives;
-import org.kdtree.shape.Shape2D;
 import org.kdtree.shape.Scene2D;
+import org.kdtree.shape.Shape2D;
 import org.kdtree.shape.TriangleMesh;
-import org.kdtree.tree.KdTree;
 
 /**
  * The contract every {@link KdTreeBuilder} must honour, as named cases: every primitive is

@@ -1,7 +1,7 @@
 package org.kdtree.check;
 
 import java.util.function.Supplier;
-import org.kdtree.build.KdTreeBuilder;
+import org.kdtree.kdtree.KdTreeBuilder;
 
 /**
  * One named check of the builder contract: it builds one or more scenes with new builders and

@@ -4,11 +4,11 @@ import java.util.ArrayList;
 import java.util.List;
 import java.util.Locale;
 import java.util.function.Supplier;
-import org.kdtree.build.KdTreeBuilder;
-import org.kdtree.build.MedianPlaneBuilder;
 import org.kdtree.geom.Box;
 import org.kdtree.geom.Tolerance;
-import org.kdtree.tree.KdTree;
+import org.kdtree.kdtree.KdTree;
+import org.kdtree.kdtree.KdTreeBuilder;
+import org.kdtree.kdtree.MedianPlaneBuilder;
 
 /**
  * The contract's quality tier, opt-in (for grading): a builder may honour every invariant and

@@ -2,10 +2,10 @@ package org.kdtree.check;
 
 import java.util.Arrays;
 import java.util.List;
-import org.kdtree.build.KdTreeBuilder;
 import org.kdtree.geom.Box;
+import org.kdtree.kdtree.KdTree;
+import org.kdtree.kdtree.KdTreeBuilder;
 import org.kdtree.shape.Primitives;
-import org.kdtree.tree.KdTree;
 
 /**
  * The invariants every kd-tree must satisfy, checked with messages a student can act on.

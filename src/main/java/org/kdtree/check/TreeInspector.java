@@ -3,8 +3,8 @@ package org.kdtree.check;
 import java.util.ArrayList;
 import java.util.List;
 import org.kdtree.geom.Box;
-import org.kdtree.tree.KdTree;
-import org.kdtree.tree.TreeVisitor;
+import org.kdtree.kdtree.KdTree;
+import org.kdtree.kdtree.TreeVisitor;
 
 /** The nodes of a tree as plain objects, for checking its invariants (the contract, the grading). */
 final class TreeInspector {

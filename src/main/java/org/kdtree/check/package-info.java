@@ -4,7 +4,7 @@
  * ({@link org.kdtree.check.QualityChecks}) and the course's scenes ({@link org.kdtree.check.CourseScenes}; the contract's scenes
  * are generated in {@code generate}). The JUnit base classes students extend
  * ({@code org.kdtree.contract}, the artifact {@code kdtree-contract}) and the {@code grade} command
- * run the same cases, every build under a {@link org.kdtree.build.Supervisor}. Uses {@code build}, {@code tree},
+ * run the same cases, every build under a {@link org.kdtree.kdtree.Supervisor}. Uses {@code build}, {@code tree},
  * {@code shape}, {@code geom}, {@code limits} (the deadlines), {@code generate} (the generated
  * scenes) and {@code io} (the bundled scenes); used by {@code cli}.
  *

@@ -4,11 +4,11 @@ import java.util.concurrent.ExecutorService;
 import java.util.concurrent.Executors;
 import java.util.concurrent.Future;
 import java.util.concurrent.atomic.AtomicLong;
+import org.kdtree.accel.AccelerationStructure;
+import org.kdtree.accel.Hit;
+import org.kdtree.accel.TriangleIntersector;
 import org.kdtree.geom.Ray;
 import org.kdtree.geom.Tolerance;
-import org.kdtree.traverse.TriangleIntersector;
-import org.kdtree.traverse.Hit;
-import org.kdtree.traverse.AccelerationStructure;
 import org.kdtree.measure.RaySet;
 
 /**

@@ -6,9 +6,10 @@ import java.util.LinkedHashMap;
 import java.util.List;
 import java.util.Map;
 import java.util.stream.Collectors;
-import org.kdtree.build.BuilderSpec;
-import org.kdtree.build.Setting;
+import org.kdtree.accel.Setting;
 import org.kdtree.limits.Limit;
+import org.kdtree.spec.BuilderSpec;
+import org.kdtree.spec.SettingsTable;
 import picocli.CommandLine.Command;
 import picocli.CommandLine.IModelTransformer;
 import picocli.CommandLine.Model.CommandSpec;
@@ -115,7 +116,7 @@ final class BuilderOptions {
                             + "(a bounding volume hierarchy: ray queries and the workbench) "
                             + (o.role != null ? "(" + o.role + ")." : "(default: " + o.defaultBuilder + ")."))
                     .setter(setter(v -> o.builder = (String) v)).build());
-            for (Setting<?> s : Setting.ALL) command.addOption(option(s, o));
+            for (Setting<?> s : SettingsTable.all()) command.addOption(option(s, o));
             return command;
         }
 
@@ -133,7 +134,7 @@ final class BuilderOptions {
 
         /** "lambda: the SAH's weight of ... (1 = no bonus). 0.01..1, default 0.8; the sah builder only." */
         static String description(Setting<?> s) {
-            String only = s.appliesToEvery() ? "." : "; " + s.ownerName() + " only.";
+            String only = SettingsTable.appliesToEvery(s) ? "." : "; " + SettingsTable.ownerName(s) + " only.";
             if (s.type() == Boolean.class)
                 return "Turn " + s.name() + " " + s.format(!(Boolean) s.defaultValue()) + " (default " + s.format(s.defaultValue())
                         + "): " + s.help() + only;

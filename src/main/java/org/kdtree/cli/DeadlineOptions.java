@@ -1,6 +1,6 @@
 package org.kdtree.cli;
 
-import org.kdtree.build.Supervisor;
+import org.kdtree.kdtree.Supervisor;
 import org.kdtree.limits.Deadlines;
 import org.kdtree.limits.Limits;
 import picocli.CommandLine.Option;

@@ -5,8 +5,8 @@ import java.io.PrintWriter;
 import java.io.StringWriter;
 import java.nio.file.Files;
 import java.nio.file.Path;
-import org.kdtree.build.BuilderFault;
 import org.kdtree.files.AtomicFile;
+import org.kdtree.kdtree.BuilderFault;
 
 /**
  * What the command line prints when a command fails: one line, never a stack trace. A user's

@@ -2,8 +2,8 @@ package org.kdtree.cli;
 
 import java.awt.GraphicsEnvironment;
 import java.util.concurrent.Callable;
-import org.kdtree.build.BuilderSpec;
 import org.kdtree.gui.Workbench;
+import org.kdtree.spec.BuilderSpec;
 import picocli.CommandLine.Command;
 import picocli.CommandLine.Mixin;
 

@@ -3,11 +3,11 @@ package org.kdtree.cli;
 import java.nio.file.Path;
 import java.util.ArrayList;
 import java.util.List;
-import org.kdtree.build.Builders;
 import org.kdtree.examples.CentreMidpointBuilder;
-import picocli.CommandLine;
+import org.kdtree.spec.Builders;
 import picocli.CommandLine.Command;
 import picocli.CommandLine.Option;
+import picocli.CommandLine;
 
 /** The command line: {@code java -jar kdtree.jar COMMAND ...}. */
 @Command(name = "kdtree", mixinStandardHelpOptions = true, version = "kdtree 0.1",

@@ -4,10 +4,10 @@ import java.io.BufferedReader;
 import java.io.IOException;
 import java.io.PrintWriter;
 import java.util.Locale;
+import org.kdtree.accel.Hit;
+import org.kdtree.accel.RayQuery;
 import org.kdtree.geom.Ray;
 import org.kdtree.io.SceneFormatException;
-import org.kdtree.traverse.Hit;
-import org.kdtree.traverse.RayQuery;
 
 /**
  * The ray-file mode of {@code raycast} (bench SPEC, last section): one ray per line,

@@ -7,23 +7,23 @@ import java.nio.file.Files;
 import java.nio.file.Path;
 import java.util.Locale;
 import java.util.concurrent.Callable;
-import org.kdtree.build.Supervisor;
-import org.kdtree.build.BuilderSpec;
+import org.kdtree.accel.AccelerationStructure;
+import org.kdtree.accel.RayQuery;
+import org.kdtree.accel.TreeStats;
+import org.kdtree.accel.TriangleIntersector;
 import org.kdtree.files.AtomicFile;
-import org.kdtree.limits.Limits;
 import org.kdtree.generate.MeshGrid;
+import org.kdtree.kdtree.Supervisor;
+import org.kdtree.limits.Limits;
+import org.kdtree.measure.RayBatch;
+import org.kdtree.measure.RaySet;
+import org.kdtree.measure.Timing;
 import org.kdtree.shape.TriangleMesh;
-import org.kdtree.traverse.AccelerationStructure;
-import org.kdtree.traverse.RayQuery;
-import org.kdtree.traverse.TriangleIntersector;
-import org.kdtree.tree.TreeStats;
+import org.kdtree.spec.BuilderSpec;
 import picocli.CommandLine.Command;
 import picocli.CommandLine.Mixin;
 import picocli.CommandLine.Option;
 import picocli.CommandLine.Parameters;
-import org.kdtree.measure.RayBatch;
-import org.kdtree.measure.RaySet;
-import org.kdtree.measure.Timing;
 
 /**
  * {@code raycast MESH.obj}: the ray-casting benchmark of docs/benchmark-spec.md, or, with
@@ -82,7 +82,7 @@ final class RaycastCommand implements Callable<Integer> {
         }
         String settings = spec.describe();        // also refuses settings the builder does not take, before the mesh is read
         TriangleMesh scene = MeshGrid.grid(CommandFiles.readMesh(mesh, "raycast"), grid);
-        threads = spec.value(org.kdtree.build.Setting.THREADS);
+        threads = spec.value(org.kdtree.accel.SharedSettings.THREADS);
         if (raysFile != null) return traceFile(scene, spec);
         return benchmark(scene, spec, settings);
     }

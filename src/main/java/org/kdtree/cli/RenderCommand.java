@@ -2,14 +2,14 @@ package org.kdtree.cli;
 
 import java.nio.file.Path;
 import java.util.concurrent.Callable;
-import org.kdtree.build.BuilderSpec;
-import org.kdtree.build.Setting;
+import org.kdtree.accel.SharedSettings;
 import org.kdtree.io.BundledScenes;
 import org.kdtree.io.SceneReader;
-import org.kdtree.render.RenderJob;
 import org.kdtree.limits.Limits;
+import org.kdtree.render.RenderJob;
 import org.kdtree.render.Renderer;
 import org.kdtree.scene.Scene;
+import org.kdtree.spec.BuilderSpec;
 import picocli.CommandLine.Command;
 import picocli.CommandLine.Mixin;
 import picocli.CommandLine.Option;
@@ -64,7 +64,7 @@ final class RenderCommand implements Callable<Integer> {
         }
         BuilderSpec spec = options.spec();
         Renderer.Options o = Renderer.Options.defaults();
-        if (spec.get(Setting.THREADS) != null) o = o.withThreads(spec.get(Setting.THREADS));
+        if (spec.get(SharedSettings.THREADS) != null) o = o.withThreads(spec.get(SharedSettings.THREADS));
         RenderJob job;
         try (ProgressBar bar = progress.bar(1, "tiles")) {
             job = RenderJob.run(s, spec, deadlines.supervisor(), o.withProgress((done, total, image) -> bar.update(done, total)));

@@ -3,19 +3,19 @@ package org.kdtree.cli;
 import java.nio.file.Path;
 import java.util.Locale;
 import java.util.concurrent.Callable;
-import org.kdtree.build.BuilderSpec;
-import org.kdtree.build.Setting;
-import org.kdtree.build.Supervisor;
+import org.kdtree.accel.AccelerationStructure;
+import org.kdtree.generate.MeshGrid;
 import org.kdtree.io.BundledScenes;
 import org.kdtree.io.PrimitivesReader;
-import org.kdtree.measure.Timing;
+import org.kdtree.kdtree.KdTree;
+import org.kdtree.kdtree.KdTreeBuilder;
+import org.kdtree.kdtree.Supervisor;
 import org.kdtree.limits.Limits;
+import org.kdtree.measure.Timing;
 import org.kdtree.render.RenderJob;
 import org.kdtree.shape.Primitives;
-import org.kdtree.generate.MeshGrid;
 import org.kdtree.shape.TriangleMesh;
-import org.kdtree.traverse.AccelerationStructure;
-import org.kdtree.traverse.KdTreeStructure;
+import org.kdtree.spec.BuilderSpec;
 import picocli.CommandLine.Command;
 import picocli.CommandLine.Mixin;
 import picocli.CommandLine.Option;
@@ -69,10 +69,10 @@ final class StatsCommand implements Callable<Integer> {
         System.out.printf(Locale.ROOT, "build time: %.1f ms%s%n", build.millis(),
                 timed.runs > 1 ? " (median of " + timed.runs + ", after " + timed.warmup + " warm-up)" : "");
         System.out.println(built.stats().describe());
-        if (built instanceof KdTreeStructure kd && kd.tree().budgetLeaves() > 0) {
-            int leaves = kd.tree().budgetLeaves();
+        if (built instanceof KdTree kd && kd.budgetLeaves() > 0) {
+            int leaves = kd.budgetLeaves();
             System.out.printf(Locale.ROOT, "note: the reference budget (%d per primitive, --reference-budget) made %d %s early%n",
-                    spec.value(Setting.REFERENCE_BUDGET), leaves, leaves == 1 ? "leaf" : "leaves");
+                    spec.value(KdTreeBuilder.REFERENCE_BUDGET), leaves, leaves == 1 ? "leaf" : "leaves");
         }
         return 0;
     }

@@ -5,12 +5,12 @@ import java.util.ArrayList;
 import java.util.List;
 import java.util.Locale;
 import java.util.concurrent.Callable;
-import org.kdtree.build.Setting;
-import org.kdtree.limits.Limits;
+import org.kdtree.accel.SharedSettings;
 import org.kdtree.generate.MeshGrid;
+import org.kdtree.limits.Limits;
+import org.kdtree.measure.RaySet;
 import org.kdtree.shape.TriangleMesh;
 import org.kdtree.tradeoff.ChartFile;
-import org.kdtree.measure.RaySet;
 import org.kdtree.tradeoff.Tradeoff;
 import org.kdtree.tradeoff.TradeoffChart;
 import org.kdtree.tradeoff.TradeoffResult;
@@ -113,7 +113,7 @@ final class TradeoffCommand implements Callable<Integer> {
             default -> throw new IllegalArgumentException("--rays must be P or R, got " + rays);
         };
         List<Variant> variants = variants();
-        int threads = options.value(Setting.THREADS);   // checked with the variants' specs
+        int threads = options.value(SharedSettings.THREADS);   // checked with the variants' specs
         StudyFile table = new StudyFile(csvOut);
 
         System.out.printf(Locale.ROOT, "scene: %s (%d triangles), rays: %s x %d, %d run(s), %d build thread(s)%n",

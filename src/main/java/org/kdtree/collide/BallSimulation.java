@@ -1,8 +1,8 @@
 package org.kdtree.collide;
 
 import org.kdtree.geom.Tolerance;
+import org.kdtree.kdtree.KdTree;
 import org.kdtree.shape.Scene2D;
-import org.kdtree.tree.KdTree;
 
 /**
  * The talk's figure of balls bouncing in a fixed scene, headless: N balls fall under gravity in a

@@ -1,7 +1,7 @@
 package org.kdtree.collide;
 
+import org.kdtree.accel.TriangleIntersector;
 import org.kdtree.shape.TriangleMesh;
-import org.kdtree.traverse.TriangleIntersector;
 
 /**
  * Sphere tests against the triangles of a {@link TriangleMesh}. The points within r of a

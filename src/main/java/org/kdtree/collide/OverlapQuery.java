@@ -1,7 +1,7 @@
 package org.kdtree.collide;
 
-import org.kdtree.traverse.Mailbox;
-import org.kdtree.tree.KdTree;
+import org.kdtree.kdtree.KdTree;
+import org.kdtree.kdtree.Mailbox;
 
 /**
  * All primitives overlapping a sphere (a circle in 2-D): those at distance {@code <= r} from its centre,

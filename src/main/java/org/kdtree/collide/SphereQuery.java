@@ -1,8 +1,8 @@
 package org.kdtree.collide;
 
 import org.kdtree.geom.Box;
-import org.kdtree.traverse.Mailbox;
-import org.kdtree.tree.KdTree;
+import org.kdtree.kdtree.KdTree;
+import org.kdtree.kdtree.Mailbox;
 
 /**
  * What both sphere queries keep of their scene: the tree, its primitives' exact tests, the root

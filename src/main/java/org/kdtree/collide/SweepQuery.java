@@ -1,6 +1,6 @@
 package org.kdtree.collide;
 
-import org.kdtree.tree.KdTree;
+import org.kdtree.kdtree.KdTree;
 
 /**
  * The first contact of a moving sphere (a circle in 2-D): its centre moves along

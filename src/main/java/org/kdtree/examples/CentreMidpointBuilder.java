@@ -1,9 +1,9 @@
 package org.kdtree.examples;
 
-import org.kdtree.build.BuildContext;
-import org.kdtree.build.BuildNode;
-import org.kdtree.build.KdTreeBuilder;
 import org.kdtree.geom.SplitPlane;
+import org.kdtree.kdtree.BuildContext;
+import org.kdtree.kdtree.BuildNode;
+import org.kdtree.kdtree.KdTreeBuilder;
 
 /**
  * The worked example of docs/write-your-own-builder.md: a student's builder in one small class.

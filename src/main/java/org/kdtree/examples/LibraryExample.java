@@ -1,16 +1,16 @@
 package org.kdtree.examples;
 
 import java.nio.file.Path;
-import org.kdtree.build.Quality;
-import org.kdtree.build.SahBuilder;
+import org.kdtree.accel.Hit;
+import org.kdtree.accel.TriangleIntersector;
 import org.kdtree.geom.Ray;
 import org.kdtree.io.BundledScenes;
 import org.kdtree.io.ObjMeshReader;
+import org.kdtree.kdtree.KdTree;
+import org.kdtree.kdtree.Quality;
+import org.kdtree.kdtree.SahBuilder;
+import org.kdtree.kdtree.Traverser;
 import org.kdtree.shape.TriangleMesh;
-import org.kdtree.traverse.Hit;
-import org.kdtree.traverse.Traverser;
-import org.kdtree.traverse.TriangleIntersector;
-import org.kdtree.tree.KdTree;
 
 /** Loads a mesh (an OBJ file, or by default a bundled scene), builds a tree, traces a ray, prints the statistics. */
 public final class LibraryExample {

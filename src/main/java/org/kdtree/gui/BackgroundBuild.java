@@ -9,15 +9,14 @@ import java.util.concurrent.TimeUnit;
 import java.util.concurrent.TimeoutException;
 import java.util.function.Consumer;
 import javax.swing.SwingUtilities;
-import org.kdtree.build.BuilderFault;
-import org.kdtree.build.BuilderSpec;
-import org.kdtree.build.Builders;
-import org.kdtree.build.KdTreeBuilder;
-import org.kdtree.build.Supervisor;
 import org.kdtree.bvh.BvhBuilder;
+import org.kdtree.kdtree.BuilderFault;
+import org.kdtree.kdtree.KdTree;
+import org.kdtree.kdtree.KdTreeBuilder;
+import org.kdtree.kdtree.Supervisor;
 import org.kdtree.limits.Deadlines;
 import org.kdtree.shape.Primitives;
-import org.kdtree.tree.KdTree;
+import org.kdtree.spec.BuilderSpec;
 
 /**
  * The workbench's builds, off the event thread: one at a time on a thread of their own, a
@@ -71,7 +70,7 @@ final class BackgroundBuild {
     boolean start(BuilderSpec spec, Primitives primitives, boolean small, Consumer<Outcome> done) {
         KdTreeBuilder builder = spec.buildsBvh() ? null : spec.create();
         BvhBuilder bvh = spec.buildsBvh() ? spec.createBvh() : null;
-        boolean librarys = builder == null || Builders.isLibrarys(builder);
+        boolean librarys = builder == null || Supervisor.isLibrarys(builder);
         long waitMillis = !small ? 0 : librarys ? LIBRARY_WAIT_MILLIS : PLUGIN_WAIT_MILLIS;
         int mine = ++started;
         if (pending != null) pending.cancel(true);

@@ -12,11 +12,13 @@ import javax.swing.JComponent;
 import javax.swing.JLabel;
 import javax.swing.JPanel;
 import javax.swing.JSlider;
-import org.kdtree.build.BuilderSpec;
-import org.kdtree.build.KdTreeBuilder;
-import org.kdtree.build.SahBuilder;
-import org.kdtree.build.Setting;
+import org.kdtree.accel.Setting;
+import org.kdtree.accel.SharedSettings;
 import org.kdtree.bvh.BvhBuilder;
+import org.kdtree.kdtree.KdTreeBuilder;
+import org.kdtree.kdtree.SahBuilder;
+import org.kdtree.spec.BuilderSpec;
+import org.kdtree.spec.SettingsTable;
 
 /**
  * The builder controls, an editor of the model's {@link BuilderSpec}: which builder, then one
@@ -32,9 +34,9 @@ final class BuilderPanel extends JPanel {
      * The settings the workbench does not offer: a preset (the controls set what it would, and
      * would override it) and threads (its scenes build in milliseconds on one; the tree is the same).
      */
-    private static final Set<Setting<?>> NOT_OFFERED = Set.of(Setting.QUALITY, Setting.THREADS);
+    private static final Set<Setting<?>> NOT_OFFERED = Set.of(SahBuilder.QUALITY, SharedSettings.THREADS);
     /** The settings only the binned plane search uses: greyed out, and not given, under the exact ones (a hierarchy always bins). */
-    private static final Set<Setting<?>> BINNED_ONLY = Set.of(Setting.BINS, Setting.EXACT_BELOW);
+    private static final Set<Setting<?>> BINNED_ONLY = Set.of(SharedSettings.BINS, SahBuilder.EXACT_BELOW);
 
     /** The model whose builder settings this panel edits. */
     private final WorkbenchModel model;
@@ -48,8 +50,8 @@ final class BuilderPanel extends JPanel {
     private final Map<Setting<?>, SettingControl> controls = new LinkedHashMap<>();
     private final Map<Setting<?>, JLabel> labels = new LinkedHashMap<>();
     /** lambda as a slider, in hundredths. */
-    private final JSlider lambdaSlider = new JSlider((int) Math.round(Setting.LAMBDA.limit().min() * 100),
-            (int) Math.round(Setting.LAMBDA.limit().max() * 100), (int) Math.round(Setting.LAMBDA.defaultValue() * 100));
+    private final JSlider lambdaSlider = new JSlider((int) Math.round(SahBuilder.LAMBDA.limit().min() * 100),
+            (int) Math.round(SahBuilder.LAMBDA.limit().max() * 100), (int) Math.round(SahBuilder.LAMBDA.defaultValue() * 100));
     /** The automatic depth cap the current scene gets. */
     private final JLabel autoDepth = new JLabel();
     /** True while the panel sets its own controls, so that their listeners do not write back. */
@@ -72,14 +74,14 @@ final class BuilderPanel extends JPanel {
         rejection.setForeground(new java.awt.Color(170, 0, 0));
         int y = 0;
         row(y++, "Builder", builder);
-        for (Setting<?> s : Setting.ALL) {
+        for (Setting<?> s : SettingsTable.all()) {
             if (NOT_OFFERED.contains(s)) continue;
             // the plane search's O(N^2) naive algorithm is too slow to be live
             SettingControl c = SettingControl.of(s, this::reject, v -> v != SahBuilder.Algorithm.NAIVE);
             controls.put(s, c);
             labels.put(s, row(y++, c.label(), c.component()));
-            if (s == Setting.LAMBDA) row(y++, "", lambdaSlider);
-            if (s == Setting.MAX_DEPTH) row(y++, "", autoDepth);
+            if (s == SahBuilder.LAMBDA) row(y++, "", lambdaSlider);
+            if (s == SharedSettings.MAX_DEPTH) row(y++, "", autoDepth);
             c.onChange(this::apply);
         }
         row(y++, "", rejection);
@@ -97,7 +99,7 @@ final class BuilderPanel extends JPanel {
             }
         });
         lambdaSlider.addChangeListener(e -> {
-            if (!updating) controls.get(Setting.LAMBDA).show(lambdaSlider.getValue() / 100.0);
+            if (!updating) controls.get(SahBuilder.LAMBDA).show(lambdaSlider.getValue() / 100.0);
         });
         show(model.settings());
         model.addListener(c -> {
@@ -150,8 +152,8 @@ final class BuilderPanel extends JPanel {
 
     /** Whether {@code setting} counts for builder {@code name} as the controls are set (bins only under a binned search). */
     private boolean live(Setting<?> setting, String name) {
-        return BuilderSpec.applies(setting, name) && (!BINNED_ONLY.contains(setting) || !BuilderSpec.applies(Setting.ALGORITHM, name)
-                || controls.get(Setting.ALGORITHM).value() == SahBuilder.Algorithm.BINNED);
+        return BuilderSpec.applies(setting, name) && (!BINNED_ONLY.contains(setting) || !BuilderSpec.applies(SahBuilder.ALGORITHM, name)
+                || controls.get(SahBuilder.ALGORITHM).value() == SahBuilder.Algorithm.BINNED);
     }
 
     private void show(BuilderSpec s) {
@@ -165,7 +167,7 @@ final class BuilderPanel extends JPanel {
                 c.component().setVisible(live);
                 labels.get(c.setting()).setVisible(live);
             }
-            SettingControl lambda = controls.get(Setting.LAMBDA);
+            SettingControl lambda = controls.get(SahBuilder.LAMBDA);
             lambdaSlider.setValue((int) Math.round((Double) lambda.value() * 100));
             lambdaSlider.setEnabled(lambda.component().isEnabled());
             lambdaSlider.setVisible(lambda.component().isVisible());
@@ -178,7 +180,7 @@ final class BuilderPanel extends JPanel {
     /** Spells out the depth cap: fixed, or the automatic one, which a hierarchy does not take from the scene's size. */
     private void showAutoDepth(boolean bvh) {
         int n = model.scene().size();
-        int depth = (Integer) controls.get(Setting.MAX_DEPTH).value();
+        int depth = (Integer) controls.get(SharedSettings.MAX_DEPTH).value();
         int auto = bvh ? BvhBuilder.DEPTH_LIMIT : KdTreeBuilder.defaultMaxDepth(n);
         autoDepth.setText(depth >= 0 ? "fixed depth cap " + depth : "-1 = auto: depth cap " + auto);
         autoDepth.setToolTipText(bvh ? "a hierarchy's automatic depth cap is its depth limit, " + auto

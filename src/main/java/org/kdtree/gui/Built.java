@@ -3,13 +3,13 @@ package org.kdtree.gui;
 import java.awt.Graphics2D;
 import java.util.Locale;
 import java.util.Objects;
+import org.kdtree.accel.AccelerationStructure;
+import org.kdtree.accel.TreeStats;
 import org.kdtree.bvh.Bvh;
 import org.kdtree.bvh.BvhBuilder;
 import org.kdtree.geom.Box;
+import org.kdtree.kdtree.KdTree;
 import org.kdtree.shape.Scene2D;
-import org.kdtree.traverse.AccelerationStructure;
-import org.kdtree.tree.KdTree;
-import org.kdtree.tree.TreeStats;
 
 /**
  * What one build of the workbench made: a kd-tree, or a bounding volume hierarchy when the
@@ -40,7 +40,7 @@ record Built(KdTree tree, Bvh bvh) {
     String builderName() { return isBvh() ? BvhBuilder.NAME : tree.builderName(); }
 
     /** {@return the structure as the traversals see it} (a new view of a kd-tree each time: compare builds, not these) */
-    AccelerationStructure structure() { return isBvh() ? bvh : AccelerationStructure.of(tree); }
+    AccelerationStructure structure() { return isBvh() ? bvh : tree; }
 
     /** {@return the bounds of the scene's objects} */
     Box bounds() { return isBvh() ? bvh.bounds() : tree.bounds(); }

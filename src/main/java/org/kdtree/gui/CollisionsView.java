@@ -4,8 +4,8 @@ import java.awt.BorderLayout;
 import java.awt.Color;
 import java.awt.Dimension;
 import java.awt.FlowLayout;
-import java.awt.Graphics;
 import java.awt.Graphics2D;
+import java.awt.Graphics;
 import java.awt.RenderingHints;
 import java.awt.event.HierarchyEvent;
 import java.awt.geom.Ellipse2D;
@@ -22,8 +22,8 @@ import javax.swing.JSpinner;
 import javax.swing.Timer;
 import org.kdtree.collide.BallSimulation;
 import org.kdtree.geom.Box;
+import org.kdtree.kdtree.KdTree;
 import org.kdtree.shape.Scene2D;
-import org.kdtree.tree.KdTree;
 
 /**
  * The collisions view: balls rain into the workbench's 2-D scene and bounce off its objects under

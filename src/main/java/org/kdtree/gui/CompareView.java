@@ -8,9 +8,9 @@ import java.util.Locale;
 import javax.swing.JComboBox;
 import javax.swing.JLabel;
 import javax.swing.JPanel;
-import org.kdtree.build.BuilderSpec;
+import org.kdtree.accel.TreeStats;
 import org.kdtree.shape.Scene2D;
-import org.kdtree.tree.TreeStats;
+import org.kdtree.spec.BuilderSpec;
 
 /**
  * Three builders side by side on the workbench's scene, with the same Kt, Ki, lambda, Kmintri

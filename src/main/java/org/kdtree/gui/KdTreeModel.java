@@ -5,7 +5,7 @@ import java.util.List;
 import java.util.Locale;
 import javax.swing.event.TreeModelListener;
 import javax.swing.tree.TreePath;
-import org.kdtree.tree.KdTree;
+import org.kdtree.kdtree.KdTree;
 
 /** A Swing {@link TreeModel} read straight from a {@link KdTree}'s arrays: no copy, so big trees open at once. */
 final class KdTreeModel implements TreeNodeView.Nodes {

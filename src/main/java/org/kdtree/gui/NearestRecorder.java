@@ -1,12 +1,12 @@
 package org.kdtree.gui;
 
-import org.kdtree.geom.Tolerance;
 import java.util.ArrayList;
 import java.util.List;
 import org.kdtree.collide.ShapeCollider;
 import org.kdtree.geom.Box;
+import org.kdtree.geom.Tolerance;
+import org.kdtree.kdtree.KdTree;
 import org.kdtree.shape.Scene2D;
-import org.kdtree.tree.KdTree;
 
 /**
  * Searches the k objects of a 2-D scene nearest to a query point through the workbench's tree,

@@ -15,8 +15,8 @@ import javax.swing.JPanel;
 import javax.swing.JSpinner;
 import org.kdtree.collide.ShapeCollider;
 import org.kdtree.geom.Box;
+import org.kdtree.kdtree.KdTree;
 import org.kdtree.shape.Scene2D;
-import org.kdtree.tree.KdTree;
 
 /**
  * The nearest-neighbour stepper: replays the recorded search for the k objects nearest to the

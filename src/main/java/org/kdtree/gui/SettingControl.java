@@ -10,8 +10,9 @@ import javax.swing.JComboBox;
 import javax.swing.JComponent;
 import javax.swing.JList;
 import javax.swing.JSpinner;
-import org.kdtree.build.BuilderSpec;
-import org.kdtree.build.Setting;
+import org.kdtree.accel.Setting;
+import org.kdtree.spec.BuilderSpec;
+import org.kdtree.spec.SettingsTable;
 
 /**
  * The workbench's control of one builder {@link Setting}, made from its row: a spinner over the
@@ -72,7 +73,7 @@ final class SettingControl {
 
     /** "lambda: the SAH's weight of ... (1 = no bonus); the sah builder only; allowed: 0.01..1". */
     private static String tooltip(Setting<?> s) {
-        return s.name() + ": " + s.help() + (s.appliesToEvery() ? "" : "; " + s.ownerName() + " only")
+        return s.name() + ": " + s.help() + (SettingsTable.appliesToEvery(s) ? "" : "; " + SettingsTable.ownerName(s) + " only")
                 + (s.limit() != null ? "; " + LimitedSpinner.allowed(s.limit()) : "");
     }
 

@@ -8,7 +8,7 @@ import javax.swing.BorderFactory;
 import javax.swing.JLabel;
 import javax.swing.JPanel;
 import javax.swing.JProgressBar;
-import org.kdtree.tree.TreeStats;
+import org.kdtree.accel.TreeStats;
 
 /**
  * The statistics of the current tree or bounding volume hierarchy: build time, nodes, leaves,

@@ -10,9 +10,9 @@ import java.util.stream.Collectors;
 import javax.swing.BorderFactory;
 import javax.swing.JLabel;
 import javax.swing.JPanel;
+import org.kdtree.accel.AccelerationStructure;
 import org.kdtree.geom.Box;
 import org.kdtree.shape.Scene2D;
-import org.kdtree.traverse.AccelerationStructure;
 
 /**
  * The traversal stepper: replays the recorded traversal of the cast ray (see {@link

@@ -6,7 +6,7 @@ import java.awt.Graphics2D;
 import java.awt.geom.Ellipse2D;
 import java.util.function.Supplier;
 import org.kdtree.geom.Box;
-import org.kdtree.tree.KdTree;
+import org.kdtree.kdtree.KdTree;
 
 /**
  * The voxel of every node of the tree a stepper shows (or the box of every node of a bounding
@@ -64,7 +64,7 @@ final class StepperVoxels {
     /** The voxel of every node, indexed by node. */
     static Box[] of(KdTree tree) {
         Box[] out = new Box[tree.nodeCount()];
-        tree.walk(new org.kdtree.tree.TreeVisitor() {
+        tree.walk(new org.kdtree.kdtree.TreeVisitor() {
             @Override public void interior(int node, int depth, Box voxel, int axis, double split) { out[node] = voxel.copy(); }
             @Override public void leaf(int node, int depth, Box voxel, int[] refs, int from, int to) { out[node] = voxel.copy(); }
         });

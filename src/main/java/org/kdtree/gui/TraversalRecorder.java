@@ -2,16 +2,16 @@ package org.kdtree.gui;
 
 import java.util.ArrayList;
 import java.util.List;
+import org.kdtree.accel.AccelerationStructure;
+import org.kdtree.accel.Hit;
+import org.kdtree.accel.RayQuery;
+import org.kdtree.accel.Shape2DIntersector;
+import org.kdtree.accel.TraversalListener;
+import org.kdtree.accel.TraversalStats;
 import org.kdtree.geom.Ray;
+import org.kdtree.kdtree.KdTree;
+import org.kdtree.kdtree.Traverser;
 import org.kdtree.shape.Scene2D;
-import org.kdtree.traverse.AccelerationStructure;
-import org.kdtree.traverse.Hit;
-import org.kdtree.traverse.RayQuery;
-import org.kdtree.traverse.Shape2DIntersector;
-import org.kdtree.traverse.TraversalListener;
-import org.kdtree.traverse.TraversalStats;
-import org.kdtree.traverse.Traverser;
-import org.kdtree.tree.KdTree;
 
 /**
  * Records the real traversal (a kd-tree's {@link Traverser#closestHit}, or a bounding volume
@@ -40,7 +40,7 @@ final class TraversalRecorder implements TraversalListener {
      * @return the recorded traversal ({@link TraversalTrace#EMPTY} without a ray)
      */
     public static TraversalTrace record(KdTree tree, Scene2D scene, double[] ray) {
-        return record(AccelerationStructure.of(tree), scene, ray);
+        return record((AccelerationStructure) tree, scene, ray);
     }
 
     /**

@@ -11,10 +11,10 @@ import java.awt.geom.Path2D;
 import java.awt.geom.Rectangle2D;
 import java.util.BitSet;
 import org.kdtree.geom.Box;
+import org.kdtree.kdtree.KdTree;
+import org.kdtree.kdtree.TreeVisitor;
 import org.kdtree.shape.Scene2D;
 import org.kdtree.shape.Shape2D;
-import org.kdtree.tree.KdTree;
-import org.kdtree.tree.TreeVisitor;
 
 /**
  * Draws a 2-D scene and its kd-tree the way the talk's figures 2-5 do: empty voxels shaded,

@@ -27,21 +27,21 @@ import javax.swing.JSplitPane;
 import javax.swing.JTextArea;
 import javax.swing.SwingUtilities;
 import javax.swing.Timer;
-import org.kdtree.build.Builders;
-import org.kdtree.build.Supervisor;
+import org.kdtree.io.BundledScenes;
 import org.kdtree.io.PrimitivesReader;
 import org.kdtree.io.SceneReader;
+import org.kdtree.kdtree.KdTree;
+import org.kdtree.kdtree.KdTreeBuilder;
+import org.kdtree.kdtree.Supervisor;
+import org.kdtree.kdtree.Traverser;
 import org.kdtree.limits.Deadlines;
-import org.kdtree.build.KdTreeBuilder;
-import org.kdtree.io.BundledScenes;
 import org.kdtree.render.Image;
 import org.kdtree.render.RenderJob;
 import org.kdtree.render.Renderer;
-import org.kdtree.scene.Scene;
 import org.kdtree.render.Tracer;
+import org.kdtree.scene.Scene;
 import org.kdtree.shape.Primitives;
-import org.kdtree.traverse.Traverser;
-import org.kdtree.tree.KdTree;
+import org.kdtree.spec.Builders;
 
 /**
  * The 3-D view: pick a scene (the bundled ones, those of a scenes folder, or a file opened with

@@ -26,9 +26,9 @@ import javax.swing.JToolBar;
 import javax.swing.KeyStroke;
 import javax.swing.SwingUtilities;
 import javax.swing.filechooser.FileNameExtensionFilter;
-import org.kdtree.build.BuilderSpec;
-import org.kdtree.build.Builders;
 import org.kdtree.examples.CentreMidpointBuilder;
+import org.kdtree.spec.BuilderSpec;
+import org.kdtree.spec.Builders;
 
 /**
  * The workbench window: the 2-D build canvas with its builder controls, statistics, tree view,

@@ -2,14 +2,14 @@ package org.kdtree.gui;
 
 import java.util.ArrayList;
 import java.util.HashSet;
-import java.util.Set;
 import java.util.List;
+import java.util.Set;
 import java.util.concurrent.CopyOnWriteArrayList;
-import org.kdtree.build.BuilderFault;
-import org.kdtree.build.BuilderSpec;
+import org.kdtree.kdtree.BuilderFault;
+import org.kdtree.kdtree.KdTree;
 import org.kdtree.shape.Scene2D;
 import org.kdtree.shape.Shape2D;
-import org.kdtree.tree.KdTree;
+import org.kdtree.spec.BuilderSpec;
 
 /**
  * The state the 2-D views share: the scene being edited, the builder settings, the tree built

@@ -6,13 +6,13 @@ import java.util.concurrent.Executors;
 import java.util.concurrent.Future;
 import java.util.concurrent.atomic.AtomicInteger;
 import java.util.function.Supplier;
+import org.kdtree.accel.AccelerationStructure;
+import org.kdtree.accel.Hit;
+import org.kdtree.accel.Intersector;
+import org.kdtree.accel.RayQuery;
+import org.kdtree.accel.TraversalStats;
 import org.kdtree.geom.Ray;
 import org.kdtree.limits.Limits;
-import org.kdtree.traverse.AccelerationStructure;
-import org.kdtree.traverse.Hit;
-import org.kdtree.traverse.Intersector;
-import org.kdtree.traverse.RayQuery;
-import org.kdtree.traverse.TraversalStats;
 
 /**
  * The one ray-batch tracer: traces a {@link RaySet} (closest hit of every ray) on one or more

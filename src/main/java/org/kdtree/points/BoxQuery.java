@@ -1,6 +1,6 @@
 package org.kdtree.points;
 
-import org.kdtree.tree.Nodes;
+import org.kdtree.kdtree.Nodes;
 
 /**
  * All points inside an axis-aligned box (faces included), by increasing index. One instance per
@@ -14,9 +14,9 @@ import org.kdtree.tree.Nodes;
 public final class BoxQuery {
     private final PointTree points;
     private final int k;
-    /** The tree's nodes and references ({@link org.kdtree.tree.KdTree#nodeArray()}), read with {@link Nodes}. */
+    /** The tree's nodes and references ({@link org.kdtree.kdtree.KdTree#nodeArray()}), read with {@link Nodes}. */
     private final int[] nodes, refs;
-    /** The tree's {@link org.kdtree.tree.KdTree#axisBits()}, which {@link Nodes} decodes a word with. */
+    /** The tree's {@link org.kdtree.kdtree.KdTree#axisBits()}, which {@link Nodes} decodes a word with. */
     private final int bits;
     private final double[] coords;
     private final int[] stack;

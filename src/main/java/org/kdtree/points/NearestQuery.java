@@ -1,6 +1,6 @@
 package org.kdtree.points;
 
-import org.kdtree.tree.Nodes;
+import org.kdtree.kdtree.Nodes;
 
 /**
  * The k nearest neighbours of a query point, optionally within a maximum distance: exact by

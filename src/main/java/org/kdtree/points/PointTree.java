@@ -1,8 +1,8 @@
 package org.kdtree.points;
 
-import org.kdtree.build.KdTreeBuilder;
+import org.kdtree.kdtree.KdTree;
+import org.kdtree.kdtree.KdTreeBuilder;
 import org.kdtree.shape.PointsKd;
-import org.kdtree.tree.KdTree;
 
 /**
  * k-D points and a kd-tree built over them, ready for point queries ({@link NearestQuery},

@@ -1,8 +1,8 @@
 package org.kdtree.points;
 
 import org.kdtree.geom.Tolerance;
-import org.kdtree.tree.KdTree;
-import org.kdtree.tree.Nodes;
+import org.kdtree.kdtree.KdTree;
+import org.kdtree.kdtree.Nodes;
 
 /**
  * The exact search shared by the nearest-neighbour and the radius query: descend the near child

@@ -1,14 +1,14 @@
 package org.kdtree.render;
 
-import org.kdtree.scene.Camera;
-import org.kdtree.scene.Scene;
 import java.util.Locale;
 import java.util.function.Supplier;
-import org.kdtree.build.BuilderSpec;
-import org.kdtree.build.KdTreeBuilder;
-import org.kdtree.build.Supervisor;
-import org.kdtree.traverse.AccelerationStructure;
-import org.kdtree.traverse.TriangleIntersector;
+import org.kdtree.accel.AccelerationStructure;
+import org.kdtree.accel.TriangleIntersector;
+import org.kdtree.kdtree.KdTreeBuilder;
+import org.kdtree.kdtree.Supervisor;
+import org.kdtree.scene.Camera;
+import org.kdtree.scene.Scene;
+import org.kdtree.spec.BuilderSpec;
 
 /**
  * A whole render: build the acceleration structure over the scene's mesh (a kd-tree with the
@@ -44,11 +44,11 @@ public record RenderJob(Scene scene, AccelerationStructure structure, String bui
      * @param supervisor runs the build; null to build on this thread, unsupervised
      * @param options threads, tiles and progress
      * @return the finished job
-     * @throws org.kdtree.build.BuilderFault if the builder failed under supervision
+     * @throws org.kdtree.kdtree.BuilderFault if the builder failed under supervision
      */
     public static RenderJob run(Scene scene, KdTreeBuilder builder, Supervisor supervisor, Renderer.Options options) {
-        return run(scene, builder.name(), () -> AccelerationStructure.of(
-                supervisor == null ? builder.build(scene.mesh()) : supervisor.build(builder, scene.mesh())), options);
+        return run(scene, builder.name(), () ->
+                supervisor == null ? builder.build(scene.mesh()) : supervisor.build(builder, scene.mesh()), options);
     }
 
     /**
@@ -61,7 +61,7 @@ public record RenderJob(Scene scene, AccelerationStructure structure, String bui
      * @param options threads, tiles and progress
      * @return the finished job
      * @throws IllegalArgumentException if the spec names no builder or a setting its builder does not take
-     * @throws org.kdtree.build.BuilderFault if a kd-tree builder failed under supervision
+     * @throws org.kdtree.kdtree.BuilderFault if a kd-tree builder failed under supervision
      */
     public static RenderJob run(Scene scene, BuilderSpec spec, Supervisor supervisor, Renderer.Options options) {
         return run(scene, spec.builder(), () -> spec.build(scene.mesh(), supervisor), options);

@@ -1,6 +1,5 @@
 package org.kdtree.render;
 
-import org.kdtree.scene.Scene;
 import java.util.ArrayList;
 import java.util.List;
 import java.util.concurrent.ExecutionException;
@@ -10,7 +9,8 @@ import java.util.concurrent.Future;
 import java.util.concurrent.atomic.AtomicInteger;
 import java.util.function.BooleanSupplier;
 import java.util.function.Supplier;
-import org.kdtree.traverse.RayQuery;
+import org.kdtree.accel.RayQuery;
+import org.kdtree.scene.Scene;
 
 /**
  * Renders a scene in square tiles over a pool of threads. Each thread takes the next tile

@@ -9,6 +9,8 @@ import static org.kdtree.scene.Vectors.reflect;
 import static org.kdtree.scene.Vectors.set;
 
 import java.util.List;
+import org.kdtree.accel.Hit;
+import org.kdtree.accel.RayQuery;
 import org.kdtree.geom.Ray;
 import org.kdtree.geom.Tolerance;
 import org.kdtree.scene.Light;
@@ -16,8 +18,6 @@ import org.kdtree.scene.Material;
 import org.kdtree.scene.Scene;
 import org.kdtree.scene.SceneGeometry;
 import org.kdtree.scene.Vec3;
-import org.kdtree.traverse.Hit;
-import org.kdtree.traverse.RayQuery;
 
 /**
  * Whitted ray tracing of one pixel at a time, casting only the rays the {@link EffectPlan}

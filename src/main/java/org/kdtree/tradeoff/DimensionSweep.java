@@ -1,7 +1,7 @@
 package org.kdtree.tradeoff;
 
 import java.util.List;
-import org.kdtree.build.KdTreeBuilder;
+import org.kdtree.kdtree.KdTreeBuilder;
 import org.kdtree.points.PointTree;
 
 /**

@@ -2,18 +2,18 @@ package org.kdtree.tradeoff;
 
 import java.util.ArrayList;
 import java.util.List;
+import org.kdtree.accel.AccelerationStructure;
+import org.kdtree.accel.RayQuery;
+import org.kdtree.accel.SharedSettings;
+import org.kdtree.accel.TraversalStats;
+import org.kdtree.accel.TreeStats;
+import org.kdtree.accel.TriangleIntersector;
+import org.kdtree.kdtree.Supervisor;
 import org.kdtree.measure.RayBatch;
 import org.kdtree.measure.RaySet;
 import org.kdtree.measure.Timing;
-import org.kdtree.build.BuilderSpec;
-import org.kdtree.build.Setting;
-import org.kdtree.build.Supervisor;
 import org.kdtree.shape.TriangleMesh;
-import org.kdtree.traverse.AccelerationStructure;
-import org.kdtree.traverse.RayQuery;
-import org.kdtree.traverse.TraversalStats;
-import org.kdtree.traverse.TriangleIntersector;
-import org.kdtree.tree.TreeStats;
+import org.kdtree.spec.BuilderSpec;
 
 /**
  * "What accuracy costs in time": builds the scene with each variant (a kd-tree or a bounding
@@ -65,7 +65,7 @@ public final class Tradeoff {
      * @return its build time, tree quality and trace speed
      */
     public TradeoffResult run(Variant v) {
-        BuilderSpec spec = v.spec().with(Setting.THREADS, threads);
+        BuilderSpec spec = v.spec().with(SharedSettings.THREADS, threads);
         String settings = spec.describe();
         Timing.Timed<AccelerationStructure> build = Timing.median(1, runs, Timing.QUIET, () -> spec.build(mesh, supervisor));
         AccelerationStructure structure = build.value();

@@ -2,12 +2,14 @@ package org.kdtree.tradeoff;
 
 import java.util.ArrayList;
 import java.util.List;
-import org.kdtree.build.BuilderSpec;
-import org.kdtree.build.Builders;
-import org.kdtree.build.Quality;
-import org.kdtree.build.SahBuilder.Algorithm;
-import org.kdtree.build.Setting;
+import org.kdtree.accel.SharedSettings;
 import org.kdtree.bvh.BvhBuilder;
+import org.kdtree.kdtree.KdTreeBuilder;
+import org.kdtree.kdtree.Quality;
+import org.kdtree.kdtree.SahBuilder.Algorithm;
+import org.kdtree.kdtree.SahBuilder;
+import org.kdtree.spec.BuilderSpec;
+import org.kdtree.spec.Builders;
 
 /**
  * One builder configuration of the trade-off study: a short name and its builder specification,
@@ -37,17 +39,17 @@ public record Variant(String name, BuilderSpec spec) {
         v.add(new Variant("median-plane", BuilderSpec.of("median-plane")));
         v.add(new Variant("object-median", BuilderSpec.of("object-median")));
         for (double lambda : new double[] {1.0, 0.8, 0.5})
-            v.add(new Variant("sah-exact-l" + lambda, sah.with(Setting.LAMBDA, lambda)));
-        v.add(new Variant("sah-sorted-l0.8", sah.with(Setting.ALGORITHM, Algorithm.SORTED)));
-        BuilderSpec binned = sah.with(Setting.ALGORITHM, Algorithm.BINNED);
+            v.add(new Variant("sah-exact-l" + lambda, sah.with(SahBuilder.LAMBDA, lambda)));
+        v.add(new Variant("sah-sorted-l0.8", sah.with(SahBuilder.ALGORITHM, Algorithm.SORTED)));
+        BuilderSpec binned = sah.with(SahBuilder.ALGORITHM, Algorithm.BINNED);
         for (int b : new int[] {8, 32, 256})
-            v.add(new Variant("sah-binned-b" + b, binned.with(Setting.BINS, b)));
-        v.add(new Variant("sah-binned-b32-pure", binned.with(Setting.BINS, 32).with(Setting.EXACT_BELOW, 0)));
-        v.add(new Variant("sah-no-perfect-splits", sah.with(Setting.PERFECT_SPLITS, false)));
+            v.add(new Variant("sah-binned-b" + b, binned.with(SharedSettings.BINS, b)));
+        v.add(new Variant("sah-binned-b32-pure", binned.with(SharedSettings.BINS, 32).with(SahBuilder.EXACT_BELOW, 0)));
+        v.add(new Variant("sah-no-perfect-splits", sah.with(KdTreeBuilder.PERFECT_SPLITS, false)));
         for (int d : new int[] {12, 16, 20})
-            v.add(new Variant("sah-maxdepth-" + d, sah.with(Setting.MAX_DEPTH, d)));
-        v.add(new Variant("sah-fast", sah.with(Setting.QUALITY, Quality.FAST)));
-        v.add(new Variant("sah-balanced", sah.with(Setting.QUALITY, Quality.BALANCED)));
+            v.add(new Variant("sah-maxdepth-" + d, sah.with(SharedSettings.MAX_DEPTH, d)));
+        v.add(new Variant("sah-fast", sah.with(SahBuilder.QUALITY, Quality.FAST)));
+        v.add(new Variant("sah-balanced", sah.with(SahBuilder.QUALITY, Quality.BALANCED)));
         for (String name : Builders.names())
             if (v.stream().noneMatch(x -> x.spec().builder().equals(name))) v.add(new Variant(name, BuilderSpec.of(name)));
         v.addAll(bvh());
@@ -58,10 +60,10 @@ public record Variant(String name, BuilderSpec spec) {
     private static List<Variant> bvh() {
         BuilderSpec bvh = BuilderSpec.of(BvhBuilder.NAME);
         return List.of(new Variant("bvh", bvh),
-                new Variant("bvh-width2", bvh.with(Setting.BVH_WIDTH, 2)),
-                new Variant("bvh-width8", bvh.with(Setting.BVH_WIDTH, 8)),
-                new Variant("bvh-b8", bvh.with(Setting.BINS, 8)),
-                new Variant("bvh-leaf1", bvh.with(Setting.LEAF_SIZE, 1)));
+                new Variant("bvh-width2", bvh.with(BvhBuilder.WIDTH, 2)),
+                new Variant("bvh-width8", bvh.with(BvhBuilder.WIDTH, 8)),
+                new Variant("bvh-b8", bvh.with(SharedSettings.BINS, 8)),
+                new Variant("bvh-leaf1", bvh.with(SharedSettings.LEAF_SIZE, 1)));
     }
 
     /** {@return a few variants for a quick look (and for tests): median plane, exact SAH, binned B = 8 and 32, the BVH} */

@@ -20,7 +20,7 @@ final class Rooms {
 
     private static Map<String, List<String>> rooms() {
         Map<String, List<String>> rooms = new LinkedHashMap<>();
-        rooms.put("library", List.of("limits", "geom", "files", "shape", "tree", "build", "traverse", "bvh", "generate",
+        rooms.put("library", List.of("limits", "geom", "files", "shape", "accel", "kdtree", "bvh", "spec", "generate",
                 "points", "collide", "scene", "io"));
         rooms.put("rendering", List.of("render"));
         rooms.put("course", List.of("check", "examples"));

@@ -6,6 +6,14 @@ import java.util.Arrays;
 import java.util.Random;
 import org.junit.jupiter.api.Test;
 import org.junit.jupiter.api.Timeout;
+import org.kdtree.accel.BruteForce;
+import org.kdtree.accel.Hit;
+import org.kdtree.accel.Intersector;
+import org.kdtree.accel.RayQuery;
+import org.kdtree.accel.Shape2DIntersector;
+import org.kdtree.accel.TraversalStats;
+import org.kdtree.accel.TreeStats;
+import org.kdtree.accel.TriangleIntersector;
 import org.kdtree.generate.Meshes;
 import org.kdtree.generate.Shapes;
 import org.kdtree.geom.Box;
@@ -13,14 +21,6 @@ import org.kdtree.geom.Ray;
 import org.kdtree.shape.Primitives;
 import org.kdtree.shape.Scene2D;
 import org.kdtree.shape.TriangleMesh;
-import org.kdtree.traverse.BruteForce;
-import org.kdtree.traverse.Hit;
-import org.kdtree.traverse.Intersector;
-import org.kdtree.traverse.RayQuery;
-import org.kdtree.traverse.Shape2DIntersector;
-import org.kdtree.traverse.TraversalStats;
-import org.kdtree.traverse.TriangleIntersector;
-import org.kdtree.tree.TreeStats;
 
 /**
  * The hierarchy's invariants (each primitive in exactly one leaf, boxes that bound what they

@@ -3,16 +3,16 @@ package org.kdtree.check;
 import static org.assertj.core.api.Assertions.assertThatThrownBy;
 
 import org.junit.jupiter.api.Test;
-import org.kdtree.build.BuildContext;
-import org.kdtree.build.BuildNode;
-import org.kdtree.build.KdTreeBuilder;
-import org.kdtree.build.MedianPlaneBuilder;
-import org.kdtree.geom.SplitPlane;
-import org.kdtree.shape.Primitives;
-import org.kdtree.tree.KdTree;
-import org.kdtree.tree.KdTreeWriter;
 import org.kdtree.generate.HardMeshes;
 import org.kdtree.generate.Shapes;
+import org.kdtree.geom.SplitPlane;
+import org.kdtree.kdtree.BuildContext;
+import org.kdtree.kdtree.BuildNode;
+import org.kdtree.kdtree.KdTree;
+import org.kdtree.kdtree.KdTreeBuilder;
+import org.kdtree.kdtree.KdTreeWriter;
+import org.kdtree.kdtree.MedianPlaneBuilder;
+import org.kdtree.shape.Primitives;
 
 /** The contract's checks fail, with a useful message, on the mistakes students make. */
 class ContractCatchesBrokenBuildersTest {
@@ -117,7 +117,7 @@ class ContractCatchesBrokenBuildersTest {
 
     @Test void aPlaneOutsideTheVoxelIsReportedByTheBuild() {
         assertThatThrownBy(() -> new PlaneOutside().build(scene))
-                .isInstanceOf(org.kdtree.build.BuilderFault.class)
+                .isInstanceOf(org.kdtree.kdtree.BuilderFault.class)
                 .hasMessageContaining("outside the voxel");
     }
 }

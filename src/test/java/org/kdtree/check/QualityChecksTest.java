@@ -3,12 +3,12 @@ package org.kdtree.check;
 import static org.assertj.core.api.Assertions.assertThatThrownBy;
 
 import org.junit.jupiter.api.Test;
-import org.kdtree.build.BuildContext;
-import org.kdtree.build.BuildNode;
-import org.kdtree.build.KdTreeBuilder;
-import org.kdtree.build.SahBuilder;
-import org.kdtree.build.SlidingMidpointBuilder;
 import org.kdtree.geom.SplitPlane;
+import org.kdtree.kdtree.BuildContext;
+import org.kdtree.kdtree.BuildNode;
+import org.kdtree.kdtree.KdTreeBuilder;
+import org.kdtree.kdtree.SahBuilder;
+import org.kdtree.kdtree.SlidingMidpointBuilder;
 
 /** The quality tier passes the SAH and flags the useless builders the issue found passing the contract. */
 class QualityChecksTest {

@@ -4,12 +4,12 @@ import static org.assertj.core.api.Assertions.assertThat;
 
 import org.junit.jupiter.api.Test;
 import org.kdtree.geom.Box;
-import org.kdtree.shape.Scene2D;
-import org.kdtree.tree.KdTree;
 import org.kdtree.io.BundledScenes;
-import org.kdtree.build.MedianPlaneBuilder;
-import org.kdtree.build.ObjectMedianBuilder;
-import org.kdtree.build.SahBuilder;
+import org.kdtree.kdtree.KdTree;
+import org.kdtree.kdtree.MedianPlaneBuilder;
+import org.kdtree.kdtree.ObjectMedianBuilder;
+import org.kdtree.kdtree.SahBuilder;
+import org.kdtree.shape.Scene2D;
 
 /** The handful of 2-D objects of the talk's figures 2-5 give the splits the talk describes. */
 class TalkFiguresTest {

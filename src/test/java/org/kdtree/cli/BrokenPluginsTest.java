@@ -8,7 +8,7 @@ import org.junit.jupiter.api.AfterAll;
 import org.junit.jupiter.api.BeforeAll;
 import org.junit.jupiter.api.Test;
 import org.junit.jupiter.api.io.TempDir;
-import org.kdtree.build.Builders;
+import org.kdtree.spec.Builders;
 import org.kdtree.testing.InfinitePlaneBuilder;
 import org.kdtree.testing.LoopingFindPlaneBuilder;
 import org.kdtree.testing.LoopingTerminateBuilder;

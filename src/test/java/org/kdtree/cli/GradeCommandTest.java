@@ -7,9 +7,9 @@ import java.nio.file.Path;
 import org.junit.jupiter.api.AfterEach;
 import org.junit.jupiter.api.Test;
 import org.junit.jupiter.api.io.TempDir;
-import org.kdtree.build.Builders;
-import org.kdtree.testing.PluginJars;
+import org.kdtree.spec.Builders;
 import org.kdtree.testing.PlaneOutsideBuilder;
+import org.kdtree.testing.PluginJars;
 
 /** {@code grade}: the course example honours the contract but not the quality tier; a broken plug-in fails it. */
 class GradeCommandTest {
@@ -72,6 +72,6 @@ class GradeCommandTest {
         assertThat(missing.err()).isEqualTo("error: --plugin " + dir.resolve("none.jar") + ": no such jar or folder" + System.lineSeparator());
         Path empty = Files.createDirectory(dir.resolve("plugins"));
         assertThat(CliRun.of("--plugin", empty.toString(), "stats", "scenes:talk-figures").err())
-                .contains("no builder listed in META-INF/services/org.kdtree.build.KdTreeBuilder (the folder holds no .jar)");
+                .contains("no builder listed in META-INF/services/org.kdtree.kdtree.KdTreeBuilder (the folder holds no .jar)");
     }
 }

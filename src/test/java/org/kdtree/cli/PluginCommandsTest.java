@@ -7,7 +7,7 @@ import java.nio.file.Path;
 import org.junit.jupiter.api.AfterEach;
 import org.junit.jupiter.api.Test;
 import org.junit.jupiter.api.io.TempDir;
-import org.kdtree.build.Builders;
+import org.kdtree.spec.Builders;
 import org.kdtree.testing.PluginJars;
 import org.kdtree.testing.PluginMidpointBuilder;
 

@@ -11,15 +11,15 @@ import java.io.StringWriter;
 import java.util.Locale;
 import java.util.Random;
 import org.junit.jupiter.api.Test;
-import org.kdtree.build.SahBuilder;
+import org.kdtree.accel.BruteForce;
+import org.kdtree.accel.Hit;
+import org.kdtree.accel.TriangleIntersector;
+import org.kdtree.generate.MeshGrid;
 import org.kdtree.geom.Ray;
 import org.kdtree.io.SceneFormatException;
-import org.kdtree.generate.MeshGrid;
+import org.kdtree.kdtree.SahBuilder;
+import org.kdtree.kdtree.Traverser;
 import org.kdtree.shape.TriangleMesh;
-import org.kdtree.traverse.BruteForce;
-import org.kdtree.traverse.Hit;
-import org.kdtree.traverse.Traverser;
-import org.kdtree.traverse.TriangleIntersector;
 
 /**
  * Issue 23: ray directions of any scale, down to the smallest subnormal, give the brute-force

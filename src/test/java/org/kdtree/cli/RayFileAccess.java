@@ -3,9 +3,9 @@ package org.kdtree.cli;
 import java.io.BufferedReader;
 import java.io.IOException;
 import java.io.PrintWriter;
+import org.kdtree.accel.TriangleIntersector;
+import org.kdtree.kdtree.Traverser;
 import org.kdtree.shape.TriangleMesh;
-import org.kdtree.traverse.Traverser;
-import org.kdtree.traverse.TriangleIntersector;
 
 /** The ray-file reader, for tests outside the command-line package (the fuzz test). */
 public final class RayFileAccess {
@@ -17,6 +17,6 @@ public final class RayFileAccess {
     /** Traces the rays of {@code in} through a one-triangle scene. */
     public static long trace(BufferedReader in, String name, PrintWriter out) throws IOException {
         TriangleIntersector tris = new TriangleIntersector(MESH);
-        return RayFile.trace(in, name, new Traverser(new org.kdtree.build.SahBuilder().build(MESH), tris), out);
+        return RayFile.trace(in, name, new Traverser(new org.kdtree.kdtree.SahBuilder().build(MESH), tris), out);
     }
 }

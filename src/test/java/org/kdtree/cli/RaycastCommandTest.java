@@ -11,15 +11,15 @@ import java.util.List;
 import java.util.Locale;
 import org.junit.jupiter.api.Test;
 import org.junit.jupiter.api.io.TempDir;
+import org.kdtree.accel.BruteForce;
+import org.kdtree.accel.Hit;
+import org.kdtree.accel.TriangleIntersector;
+import org.kdtree.generate.MeshGrid;
 import org.kdtree.geom.Box;
 import org.kdtree.geom.Ray;
 import org.kdtree.io.ObjMeshReader;
-import org.kdtree.generate.MeshGrid;
-import org.kdtree.shape.TriangleMesh;
-import org.kdtree.traverse.BruteForce;
-import org.kdtree.traverse.Hit;
-import org.kdtree.traverse.TriangleIntersector;
 import org.kdtree.measure.RaySet;
+import org.kdtree.shape.TriangleMesh;
 
 class RaycastCommandTest {
     @TempDir Path dir;

@@ -6,11 +6,11 @@ import java.util.ArrayList;
 import java.util.List;
 import java.util.Random;
 import org.junit.jupiter.api.Test;
-import org.kdtree.build.Builders;
-import org.kdtree.shape.Shape2D;
-import org.kdtree.shape.Scene2D;
-import org.kdtree.tree.KdTree;
 import org.kdtree.generate.Shapes;
+import org.kdtree.kdtree.KdTree;
+import org.kdtree.shape.Scene2D;
+import org.kdtree.shape.Shape2D;
+import org.kdtree.spec.Builders;
 
 /** Balls dropped into a walled 2-D scene stay out of its objects, do not gain energy, and the tree saves tests. */
 class BallSimulationTest {

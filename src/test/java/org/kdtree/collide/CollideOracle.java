@@ -4,8 +4,8 @@ import static org.assertj.core.api.Assertions.assertThat;
 
 import java.util.Arrays;
 import java.util.List;
-import org.kdtree.build.Builders;
 import org.kdtree.shape.Primitives;
+import org.kdtree.spec.Builders;
 
 /**
  * The test oracle: the tree queries must agree with brute force over all primitives. Both run the

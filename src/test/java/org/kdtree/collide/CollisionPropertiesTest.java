@@ -6,25 +6,25 @@ import java.util.List;
 import java.util.Random;
 import net.jqwik.api.Arbitraries;
 import net.jqwik.api.Arbitrary;
-import org.kdtree.testing.GridArbitraries;
 import net.jqwik.api.Combinators;
 import net.jqwik.api.ForAll;
 import net.jqwik.api.Property;
 import net.jqwik.api.Provide;
 import net.jqwik.api.constraints.IntRange;
-import org.kdtree.build.Builders;
-import org.kdtree.geom.Ray;
-import org.kdtree.geom.Tolerance;
-import org.kdtree.shape.Shape2D;
-import org.kdtree.shape.Scene2D;
-import org.kdtree.shape.TriangleMesh;
-import org.kdtree.traverse.Hit;
-import org.kdtree.traverse.Shape2DIntersector;
-import org.kdtree.traverse.Traverser;
-import org.kdtree.traverse.TriangleIntersector;
+import org.kdtree.accel.Hit;
+import org.kdtree.accel.Shape2DIntersector;
+import org.kdtree.accel.TriangleIntersector;
 import org.kdtree.generate.HardMeshes;
 import org.kdtree.generate.Meshes;
 import org.kdtree.generate.Shapes;
+import org.kdtree.geom.Ray;
+import org.kdtree.geom.Tolerance;
+import org.kdtree.kdtree.Traverser;
+import org.kdtree.shape.Scene2D;
+import org.kdtree.shape.Shape2D;
+import org.kdtree.shape.TriangleMesh;
+import org.kdtree.spec.Builders;
+import org.kdtree.testing.GridArbitraries;
 
 /**
  * Random scenes and spheres, for every builder, against brute force over all primitives. As in

@@ -4,7 +4,7 @@ import static org.assertj.core.api.Assertions.assertThatThrownBy;
 
 import java.util.List;
 import org.junit.jupiter.api.Test;
-import org.kdtree.build.SahBuilder;
+import org.kdtree.kdtree.SahBuilder;
 import org.kdtree.shape.InvalidGeometryException;
 import org.kdtree.shape.Scene2D;
 import org.kdtree.shape.Shape2D;

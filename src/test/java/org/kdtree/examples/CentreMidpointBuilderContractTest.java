@@ -1,7 +1,7 @@
 package org.kdtree.examples;
 
-import org.kdtree.build.KdTreeBuilder;
 import org.kdtree.contract.KdTreeBuilderContract;
+import org.kdtree.kdtree.KdTreeBuilder;
 
 /** The worked example of docs/write-your-own-builder.md passes the same contract as ours. */
 class CentreMidpointBuilderContractTest extends KdTreeBuilderContract {

@@ -17,12 +17,12 @@ import net.jqwik.api.ForAll;
 import net.jqwik.api.Property;
 import net.jqwik.api.lifecycle.AfterContainer;
 import org.junit.jupiter.api.Assertions;
-import org.kdtree.build.SahBuilder;
 import org.kdtree.cli.RayFileAccess;
 import org.kdtree.io.MaterialReader;
 import org.kdtree.io.ObjMeshReader;
 import org.kdtree.io.Scene2DReader;
 import org.kdtree.io.SceneReader;
+import org.kdtree.kdtree.SahBuilder;
 import org.kdtree.shape.InvalidGeometryException;
 
 /**

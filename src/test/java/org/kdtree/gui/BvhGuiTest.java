@@ -11,13 +11,13 @@ import org.junit.jupiter.api.AfterEach;
 import org.junit.jupiter.api.BeforeEach;
 import org.junit.jupiter.api.Tag;
 import org.junit.jupiter.api.Test;
-import org.kdtree.build.BuilderSpec;
+import org.kdtree.accel.Hit;
+import org.kdtree.accel.Shape2DIntersector;
+import org.kdtree.accel.TraversalStats;
 import org.kdtree.bvh.Bvh;
 import org.kdtree.geom.Ray;
 import org.kdtree.shape.Scene2D;
-import org.kdtree.traverse.Hit;
-import org.kdtree.traverse.Shape2DIntersector;
-import org.kdtree.traverse.TraversalStats;
+import org.kdtree.spec.BuilderSpec;
 
 /**
  * The bounding volume hierarchy in the workbench, driven by the robot in the real window (a

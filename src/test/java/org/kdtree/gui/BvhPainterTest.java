@@ -9,10 +9,10 @@ import java.util.HashSet;
 import java.util.Set;
 import javax.swing.tree.TreePath;
 import org.junit.jupiter.api.Test;
-import org.kdtree.build.BuilderSpec;
 import org.kdtree.bvh.Bvh;
 import org.kdtree.generate.Shapes;
 import org.kdtree.shape.Scene2D;
+import org.kdtree.spec.BuilderSpec;
 
 /** Paints a bounding volume hierarchy into an image (headless) and reads back what was drawn. */
 class BvhPainterTest {

@@ -13,12 +13,12 @@ import org.junit.jupiter.api.BeforeEach;
 import org.junit.jupiter.api.Tag;
 import org.junit.jupiter.api.Test;
 import org.junit.jupiter.api.io.TempDir;
-import org.kdtree.build.BuilderFault;
-import org.kdtree.build.Builders;
+import org.kdtree.kdtree.BuilderFault;
+import org.kdtree.kdtree.KdTree;
+import org.kdtree.spec.Builders;
 import org.kdtree.testing.LoopingFindPlaneBuilder;
 import org.kdtree.testing.PluginJars;
 import org.kdtree.testing.ThrowingBuilder;
-import org.kdtree.tree.KdTree;
 
 /**
  * A plug-in builder that never returns from findPlane, picked in the workbench: the window stays

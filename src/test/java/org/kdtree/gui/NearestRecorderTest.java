@@ -1,15 +1,15 @@
 package org.kdtree.gui;
 
-import org.kdtree.build.BuilderSpec;
 import static org.assertj.core.api.Assertions.assertThat;
 
 import java.util.List;
 import java.util.Random;
 import org.junit.jupiter.api.Test;
-import org.kdtree.shape.Shape2D;
-import org.kdtree.shape.Scene2D;
-import org.kdtree.tree.KdTree;
 import org.kdtree.generate.Shapes;
+import org.kdtree.kdtree.KdTree;
+import org.kdtree.shape.Scene2D;
+import org.kdtree.shape.Shape2D;
+import org.kdtree.spec.BuilderSpec;
 
 /** The nearest-neighbour stepper's recording: the brute-force answer, and pruning that never cuts inside the k-th distance. */
 class NearestRecorderTest {

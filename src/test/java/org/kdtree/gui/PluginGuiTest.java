@@ -12,7 +12,7 @@ import org.junit.jupiter.api.BeforeEach;
 import org.junit.jupiter.api.Tag;
 import org.junit.jupiter.api.Test;
 import org.junit.jupiter.api.io.TempDir;
-import org.kdtree.build.Builders;
+import org.kdtree.spec.Builders;
 import org.kdtree.testing.PluginJars;
 import org.kdtree.testing.PluginMidpointBuilder;
 

@@ -1,17 +1,17 @@
 package org.kdtree.gui;
 
-import org.kdtree.build.BuilderSpec;
 import static org.assertj.core.api.Assertions.assertThat;
 
 import java.util.Random;
 import org.junit.jupiter.api.Test;
-import org.kdtree.geom.Ray;
-import org.kdtree.shape.Scene2D;
-import org.kdtree.traverse.BruteForce;
-import org.kdtree.traverse.Hit;
-import org.kdtree.traverse.Shape2DIntersector;
-import org.kdtree.tree.KdTree;
+import org.kdtree.accel.BruteForce;
+import org.kdtree.accel.Hit;
+import org.kdtree.accel.Shape2DIntersector;
 import org.kdtree.generate.Shapes;
+import org.kdtree.geom.Ray;
+import org.kdtree.kdtree.KdTree;
+import org.kdtree.shape.Scene2D;
+import org.kdtree.spec.BuilderSpec;
 
 /** The stepper's recording of the library's traversal: consistent steps, and the same hit as brute force. */
 class TraversalRecorderTest {

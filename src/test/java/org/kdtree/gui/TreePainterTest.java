@@ -1,6 +1,5 @@
 package org.kdtree.gui;
 
-import org.kdtree.build.BuilderSpec;
 import static org.assertj.core.api.Assertions.assertThat;
 
 import java.awt.Color;
@@ -10,9 +9,10 @@ import java.util.ArrayList;
 import java.util.List;
 import org.junit.jupiter.api.Test;
 import org.kdtree.geom.Box;
+import org.kdtree.kdtree.KdTree;
+import org.kdtree.kdtree.TreeVisitor;
 import org.kdtree.shape.Scene2D;
-import org.kdtree.tree.KdTree;
-import org.kdtree.tree.TreeVisitor;
+import org.kdtree.spec.BuilderSpec;
 
 /** Paints the canvas into an image (headless) and reads back what was drawn. */
 class TreePainterTest {
@@ -85,7 +85,7 @@ class TreePainterTest {
     }
 
     @Test void aSingleLeafHasNoSplitLineInside() {
-        Painted p = paint(talk(), BuilderSpec.of("sah").with(org.kdtree.build.Setting.MAX_DEPTH, 0), -1);
+        Painted p = paint(talk(), BuilderSpec.of("sah").with(org.kdtree.accel.SharedSettings.MAX_DEPTH, 0), -1);
         assertThat(p.tree().nodeCount()).isEqualTo(1);
         Box b = p.tree().bounds();
         int x0 = (int) p.view().screenX(b.min(0)) + 4, x1 = (int) p.view().screenX(b.max(0)) - 4;

@@ -52,7 +52,7 @@ class WorkbenchGuiTest {
         window.comboBox("builder").selectItem("sah");
         assertThat(stats()).isEqualTo(sah);
         window.spinner("lambda").select(0.2);
-        assertThat(bench.model().settings().get(org.kdtree.build.Setting.LAMBDA)).isEqualTo(0.2);
+        assertThat(bench.model().settings().get(org.kdtree.kdtree.SahBuilder.LAMBDA)).isEqualTo(0.2);
         assertThat(stats()).as("lambda 0.2 cuts off more empty space than 0.8").isNotEqualTo(sah);
 
         window.toggleButton("tool.RAY").click();
@@ -179,7 +179,7 @@ class WorkbenchGuiTest {
         window.textBox("kmaxdepth.text").setText("").enterText("1000\n");
         window.label("rejection").requireText("Kmaxdepth must be between -1 and 64 (-1 = auto: 8 + 1.3 log2 N for a kd-tree, 64 for a BVH), got 1000");
         assertThat(window.textBox("kmaxdepth.text").target().getToolTipText()).startsWith("Kmaxdepth must be between");
-        assertThat(bench.model().settings().value(org.kdtree.build.Setting.MAX_DEPTH)).as("the rejected value is not applied").isEqualTo(-1);
+        assertThat(bench.model().settings().value(org.kdtree.accel.SharedSettings.MAX_DEPTH)).as("the rejected value is not applied").isEqualTo(-1);
         assertThat(bench.model().tree().nodeCount()).isEqualTo(nodes);
 
         window.textBox("kmaxdepth.text").setText("").enterText("12x");
@@ -187,7 +187,7 @@ class WorkbenchGuiTest {
         window.textBox("kmaxdepth.text").setText("").enterText("3\n");
         assertThat(window.robot().finder().findAll(bench, c -> "rejection".equals(c.getName()) && c.isShowing()))
                 .as("a valid value again: the rejection's row is gone").isEmpty();
-        assertThat(bench.model().settings().value(org.kdtree.build.Setting.MAX_DEPTH)).isEqualTo(3);
+        assertThat(bench.model().settings().value(org.kdtree.accel.SharedSettings.MAX_DEPTH)).isEqualTo(3);
         window.label("autoDepth").requireText("fixed depth cap 3");
         assertThat(window.textBox("kmaxdepth.text").target().getToolTipText()).contains("allowed: -1..64");
     }

@@ -1,14 +1,14 @@
 package org.kdtree.gui;
 
-import org.kdtree.build.BuilderSpec;
 import static org.assertj.core.api.Assertions.assertThat;
 
 import java.util.ArrayList;
 import java.util.List;
 import javax.swing.tree.TreePath;
 import org.junit.jupiter.api.Test;
-import org.kdtree.shape.Shape2D;
 import org.kdtree.generate.Shapes;
+import org.kdtree.shape.Shape2D;
+import org.kdtree.spec.BuilderSpec;
 
 class WorkbenchModelTest {
     @Test void everyChangeRebuildsTheTree() {
@@ -17,9 +17,9 @@ class WorkbenchModelTest {
         m.addListener(heard::add);
         m.setScene("t", Shapes.clustered(300, 3).shapes());
         int sahNodes = m.tree().nodeCount();
-        m.setSettings(m.settings().with(org.kdtree.build.Setting.LAMBDA, 1.0));
+        m.setSettings(m.settings().with(org.kdtree.kdtree.SahBuilder.LAMBDA, 1.0));
         assertThat(m.tree()).isNotNull();
-        m.setSettings(m.settings().forBuilder("median-plane").with(org.kdtree.build.Setting.MIN_PRIMITIVES, 1));
+        m.setSettings(m.settings().forBuilder("median-plane").with(org.kdtree.kdtree.CyclingAxisBuilder.MIN_PRIMITIVES, 1));
         assertThat(m.tree().builderName()).isEqualTo("median-plane");
         m.addShape(new Shape2D.Point(5, 5));
         assertThat(m.scene().size()).isEqualTo(301);
@@ -29,7 +29,7 @@ class WorkbenchModelTest {
         assertThat(heard).containsOnly(WorkbenchModel.Change.TREE).hasSize(5);
         assertThat(sahNodes).isGreaterThan(1);
 
-        m.setSettings(BuilderSpec.of("sah").with(org.kdtree.build.Setting.ALGORITHM, org.kdtree.build.SahBuilder.Algorithm.SORTED));
+        m.setSettings(BuilderSpec.of("sah").with(org.kdtree.kdtree.SahBuilder.ALGORITHM, org.kdtree.kdtree.SahBuilder.Algorithm.SORTED));
         assertThat(m.tree().nodeCount()).as("every exact plane search builds the same tree").isEqualTo(sahNodes);
     }
 
@@ -115,7 +115,7 @@ class WorkbenchModelTest {
     @Test void theHierarchyIsBuiltDrawnAndTracedInPlaceOfTheTree() {
         WorkbenchModel m = new WorkbenchModel();
         m.setScene("talk", BuiltinScenes.talkFigures());
-        m.setSettings(m.settings().forBuilder("bvh").with(org.kdtree.build.Setting.LEAF_SIZE, 1));
+        m.setSettings(m.settings().forBuilder("bvh").with(org.kdtree.accel.SharedSettings.LEAF_SIZE, 1));
         assertThat(m.built().isBvh()).isTrue();
         assertThat(m.tree()).as("no kd-tree while the hierarchy is shown").isNull();
         assertThat(m.built().builderName()).isEqualTo("bvh");

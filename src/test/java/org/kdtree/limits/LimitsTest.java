@@ -7,10 +7,10 @@ import java.nio.file.Files;
 import java.nio.file.Path;
 import java.util.List;
 import org.junit.jupiter.api.Test;
-import org.kdtree.build.SahBuilder;
+import org.kdtree.accel.CostModel;
 import org.kdtree.io.SceneReader;
+import org.kdtree.kdtree.SahBuilder;
 import org.kdtree.scene.Tessellation;
-import org.kdtree.tree.CostModel;
 
 class LimitsTest {
     @Test void eachLimitAllowsItsEndsAndRejectsJustBeyondThem() {
@@ -33,11 +33,11 @@ class LimitsTest {
     }
 
     @Test void theApiRefusesWhatTheCommandLineAndTheFilesRefuse() {
-        assertThatThrownBy(() -> new SahBuilder().threads(257)).hasMessage("threads must be between 1 and 256, got 257");
-        assertThatThrownBy(() -> new SahBuilder().maxDepth(65)).hasMessageStartingWith("maxDepth must be between -1 and 64");
+        assertThatThrownBy(() -> new SahBuilder().threads(257)).hasMessage("--threads must be between 1 and 256, got 257");
+        assertThatThrownBy(() -> new SahBuilder().maxDepth(65)).hasMessageStartingWith("--max-depth must be between -1 and 64");
         assertThatThrownBy(() -> new SahBuilder().lambda(0)).hasMessageContaining("must be between 0.01 and 1");
-        assertThatThrownBy(() -> new SahBuilder().costModel(new CostModel(15, 1e9))).hasMessage("Ki must be between 0.001 and 10000, got 1000000000");
-        assertThatThrownBy(() -> new SahBuilder().referenceBudget(0)).hasMessageStartingWith("referenceBudget must be between 1 and 65536");
+        assertThatThrownBy(() -> new SahBuilder().costModel(new CostModel(15, 1e9))).hasMessage("--ki must be between 0.001 and 10000, got 1000000000");
+        assertThatThrownBy(() -> new SahBuilder().referenceBudget(0)).hasMessageStartingWith("--reference-budget must be between 1 and 65536");
         assertThatThrownBy(() -> Tessellation.sphere(null, null, 1, 2, 8, 0)).hasMessage("segments must be between 3 and 4096, got 2");
     }
 

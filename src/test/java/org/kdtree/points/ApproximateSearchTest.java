@@ -8,11 +8,11 @@ import java.util.Set;
 import net.jqwik.api.ForAll;
 import net.jqwik.api.Property;
 import net.jqwik.api.constraints.IntRange;
-import org.kdtree.build.Builders;
 import org.junit.jupiter.api.Test;
 import org.kdtree.points.BruteForcePoints.Neighbour;
 import org.kdtree.points.PointSets.Kind;
 import org.kdtree.shape.PointsKd;
+import org.kdtree.spec.Builders;
 
 /** Best-bin-first with a budget of leaves, and the (1 + eps) bound. */
 class ApproximateSearchTest {

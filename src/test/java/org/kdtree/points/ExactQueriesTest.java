@@ -9,10 +9,10 @@ import net.jqwik.api.ForAll;
 import net.jqwik.api.Property;
 import net.jqwik.api.constraints.IntRange;
 import org.junit.jupiter.api.Test;
-import org.kdtree.build.Builders;
 import org.kdtree.points.BruteForcePoints.Neighbour;
 import org.kdtree.points.PointSets.Kind;
 import org.kdtree.shape.PointsKd;
+import org.kdtree.spec.Builders;
 
 /**
  * k-NN (with and without a maximum distance), radius and box queries against brute force over

@@ -4,7 +4,7 @@ import static org.assertj.core.api.Assertions.assertThat;
 import static org.assertj.core.api.Assertions.assertThatThrownBy;
 
 import org.junit.jupiter.api.Test;
-import org.kdtree.build.SlidingMidpointBuilder;
+import org.kdtree.kdtree.SlidingMidpointBuilder;
 import org.kdtree.shape.InvalidGeometryException;
 import org.kdtree.shape.PointsKd;
 

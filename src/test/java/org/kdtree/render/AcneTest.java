@@ -1,20 +1,20 @@
 package org.kdtree.render;
 
-import org.kdtree.scene.Camera;
-import org.kdtree.scene.Light;
-import org.kdtree.scene.Scene;
-import org.kdtree.scene.Vec3;
 import static org.assertj.core.api.Assertions.assertThat;
 
 import java.util.List;
 import java.util.Locale;
 import org.junit.jupiter.params.ParameterizedTest;
 import org.junit.jupiter.params.provider.ValueSource;
-import org.kdtree.build.Builders;
+import org.kdtree.accel.BruteForce;
+import org.kdtree.accel.Hit;
+import org.kdtree.accel.TriangleIntersector;
 import org.kdtree.geom.Ray;
-import org.kdtree.traverse.BruteForce;
-import org.kdtree.traverse.Hit;
-import org.kdtree.traverse.TriangleIntersector;
+import org.kdtree.scene.Camera;
+import org.kdtree.scene.Light;
+import org.kdtree.scene.Scene;
+import org.kdtree.scene.Vec3;
+import org.kdtree.spec.Builders;
 
 /**
  * Secondary rays leave surfaces cleanly at any scale: a tessellated sphere (convex, so it cannot

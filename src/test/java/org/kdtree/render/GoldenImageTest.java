@@ -1,6 +1,5 @@
 package org.kdtree.render;
 
-import org.kdtree.scene.Scene;
 import static org.assertj.core.api.Assertions.assertThat;
 
 import java.awt.image.BufferedImage;
@@ -10,7 +9,8 @@ import java.nio.file.Path;
 import javax.imageio.ImageIO;
 import org.junit.jupiter.params.ParameterizedTest;
 import org.junit.jupiter.params.provider.ValueSource;
-import org.kdtree.build.Builders;
+import org.kdtree.scene.Scene;
+import org.kdtree.spec.Builders;
 
 /**
  * 64 x 64 renders of the shipped scenes against reference PNGs in src/test/resources/golden,

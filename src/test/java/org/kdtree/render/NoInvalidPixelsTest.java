@@ -1,12 +1,12 @@
 package org.kdtree.render;
 
-import org.kdtree.scene.Scene;
 import static org.assertj.core.api.Assertions.assertThat;
 
 import java.util.Locale;
 import java.util.SplittableRandom;
 import org.junit.jupiter.api.Test;
-import org.kdtree.build.Builders;
+import org.kdtree.scene.Scene;
+import org.kdtree.spec.Builders;
 
 /**
  * No NaN, infinite or negative pixel, even where shading is fragile: coarse smooth-shaded glass

@@ -1,18 +1,18 @@
 package org.kdtree.render;
 
-import org.kdtree.scene.Camera;
-import org.kdtree.scene.Material;
-import org.kdtree.scene.Scene;
-import org.kdtree.scene.Vec3;
 import static org.assertj.core.api.Assertions.assertThat;
 
 import java.util.ArrayList;
 import java.util.List;
 import org.junit.jupiter.api.Test;
+import org.kdtree.accel.BruteForce;
+import org.kdtree.accel.Hit;
+import org.kdtree.accel.TriangleIntersector;
 import org.kdtree.geom.Ray;
-import org.kdtree.traverse.BruteForce;
-import org.kdtree.traverse.TriangleIntersector;
-import org.kdtree.traverse.Hit;
+import org.kdtree.scene.Camera;
+import org.kdtree.scene.Material;
+import org.kdtree.scene.Scene;
+import org.kdtree.scene.Vec3;
 
 /** The effect plan decides which rays are cast: counted by kind. */
 class RayCountTest {

@@ -3,8 +3,8 @@ package org.kdtree.render;
 import static org.assertj.core.api.Assertions.assertThat;
 
 import org.junit.jupiter.api.Test;
-import org.kdtree.build.Builders;
 import org.kdtree.scene.Scene;
+import org.kdtree.spec.Builders;
 
 /** The report after a render: counts in good English, rays by kind with one rate for them all. */
 class RenderJobTest {

@@ -1,11 +1,11 @@
 package org.kdtree.render;
 
-import org.kdtree.scene.Scene;
 import static org.assertj.core.api.Assertions.assertThat;
 
 import java.util.concurrent.atomic.AtomicInteger;
 import org.junit.jupiter.api.Test;
-import org.kdtree.build.SahBuilder;
+import org.kdtree.kdtree.SahBuilder;
+import org.kdtree.scene.Scene;
 
 /** The workbench's Stop and progress, through the one renderer: a stopped render keeps the tiles it finished. */
 class RendererStopTest {

@@ -1,6 +1,5 @@
 package org.kdtree.render;
 
-import org.kdtree.scene.Scene;
 import static org.assertj.core.api.Assertions.assertThat;
 import static org.assertj.core.api.Assertions.within;
 
@@ -9,16 +8,18 @@ import org.junit.jupiter.api.Test;
 import org.junit.jupiter.params.ParameterizedTest;
 import org.junit.jupiter.params.provider.CsvSource;
 import org.junit.jupiter.params.provider.ValueSource;
-import org.kdtree.build.BuilderSpec;
-import org.kdtree.build.Builders;
-import org.kdtree.build.Setting;
-import org.kdtree.build.Supervisor;
-import org.kdtree.limits.Deadlines;
+import org.kdtree.accel.BruteForce;
+import org.kdtree.accel.Hit;
+import org.kdtree.accel.RayQuery;
+import org.kdtree.accel.SharedSettings;
+import org.kdtree.accel.TriangleIntersector;
+import org.kdtree.bvh.BvhBuilder;
 import org.kdtree.geom.Ray;
-import org.kdtree.traverse.BruteForce;
-import org.kdtree.traverse.Hit;
-import org.kdtree.traverse.RayQuery;
-import org.kdtree.traverse.TriangleIntersector;
+import org.kdtree.kdtree.Supervisor;
+import org.kdtree.limits.Deadlines;
+import org.kdtree.scene.Scene;
+import org.kdtree.spec.BuilderSpec;
+import org.kdtree.spec.Builders;
 
 /** The tree changes speed, never the picture: the same pixels with every builder, the BVH, thread count, and brute force. */
 class SameImageTest {
@@ -47,7 +48,7 @@ class SameImageTest {
     @ParameterizedTest(name = "bvh --bvh-width {0} --leaf-size {1}")
     @CsvSource({"4, 16", "2, 16", "8, 1"})
     void theBvhGivesTheSameImagePixelForPixel(int width, int leafSize) {
-        BuilderSpec bvh = BuilderSpec.of("bvh").with(Setting.BVH_WIDTH, width).with(Setting.LEAF_SIZE, leafSize);
+        BuilderSpec bvh = BuilderSpec.of("bvh").with(BvhBuilder.WIDTH, width).with(SharedSettings.LEAF_SIZE, leafSize);
         RenderJob job = RenderJob.run(cornell, bvh, Supervisor.of(Deadlines.COMMAND_LINE), Renderer.Options.defaults().withThreads(2));
         assertThat(job.structure().kind()).isEqualTo("bvh");
         assertThat(job.summary()).contains("build time: ").contains("(bvh)").contains("bvh:").contains("nodes: ");

@@ -1,12 +1,12 @@
 package org.kdtree.render;
 
-import org.kdtree.scene.Scene;
 import java.io.IOException;
 import java.io.StringReader;
 import java.nio.file.Path;
+import org.kdtree.accel.BruteForce;
+import org.kdtree.accel.TriangleIntersector;
 import org.kdtree.io.SceneReader;
-import org.kdtree.traverse.BruteForce;
-import org.kdtree.traverse.TriangleIntersector;
+import org.kdtree.scene.Scene;
 
 /** Scene loading and rendering shortcuts for the render tests. */
 final class TestRenders {

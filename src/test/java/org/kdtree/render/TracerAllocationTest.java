@@ -5,10 +5,10 @@ import static org.assertj.core.api.Assertions.assertThat;
 import java.lang.management.ManagementFactory;
 import org.junit.jupiter.api.Assumptions;
 import org.junit.jupiter.api.Test;
-import org.kdtree.build.Builders;
+import org.kdtree.accel.TriangleIntersector;
+import org.kdtree.kdtree.Traverser;
 import org.kdtree.scene.Scene;
-import org.kdtree.traverse.Traverser;
-import org.kdtree.traverse.TriangleIntersector;
+import org.kdtree.spec.Builders;
 
 /**
  * The tracer allocates nothing per ray: over a Cornell box with glass, a mirror and an area light

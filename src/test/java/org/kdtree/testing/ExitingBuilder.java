@@ -1,9 +1,9 @@
 package org.kdtree.testing;
 
-import org.kdtree.build.BuildContext;
-import org.kdtree.build.BuildNode;
-import org.kdtree.build.KdTreeBuilder;
 import org.kdtree.geom.SplitPlane;
+import org.kdtree.kdtree.BuildContext;
+import org.kdtree.kdtree.BuildNode;
+import org.kdtree.kdtree.KdTreeBuilder;
 
 /** A broken student's builder for grade-class: findPlane ends the whole JVM. */
 public class ExitingBuilder extends KdTreeBuilder {

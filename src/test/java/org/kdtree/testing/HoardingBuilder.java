@@ -2,10 +2,10 @@ package org.kdtree.testing;
 
 import java.util.ArrayList;
 import java.util.List;
-import org.kdtree.build.BuildContext;
-import org.kdtree.build.BuildNode;
-import org.kdtree.build.KdTreeBuilder;
 import org.kdtree.geom.SplitPlane;
+import org.kdtree.kdtree.BuildContext;
+import org.kdtree.kdtree.BuildNode;
+import org.kdtree.kdtree.KdTreeBuilder;
 
 /** A broken student's builder for grade-class: findPlane allocates without bound and keeps it all. */
 public class HoardingBuilder extends KdTreeBuilder {

@@ -34,7 +34,7 @@ public final class PluginJars {
         if (student != null) m.getMainAttributes().put(Attributes.Name.IMPLEMENTATION_VENDOR, student);
         try (OutputStream out = Files.newOutputStream(jar); JarOutputStream j = new JarOutputStream(out, m)) {
             if (listed.length > 0 || helpers == null) {
-                j.putNextEntry(new JarEntry("META-INF/services/org.kdtree.build.KdTreeBuilder"));
+                j.putNextEntry(new JarEntry("META-INF/services/org.kdtree.kdtree.KdTreeBuilder"));
                 j.write((String.join("\n", listed) + "\n").getBytes(StandardCharsets.UTF_8));
                 j.closeEntry();
             }

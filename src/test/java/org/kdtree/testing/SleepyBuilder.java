@@ -1,9 +1,9 @@
 package org.kdtree.testing;
 
-import org.kdtree.build.BuildContext;
-import org.kdtree.build.BuildNode;
-import org.kdtree.build.KdTreeBuilder;
 import org.kdtree.geom.SplitPlane;
+import org.kdtree.kdtree.BuildContext;
+import org.kdtree.kdtree.BuildNode;
+import org.kdtree.kdtree.KdTreeBuilder;
 
 /** A correct but slow student's builder for plug-in tests: 200 ms per decision to stop, then voxel midpoints. */
 public class SleepyBuilder extends KdTreeBuilder {

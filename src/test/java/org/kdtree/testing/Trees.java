@@ -2,7 +2,7 @@ package org.kdtree.testing;
 
 import static org.assertj.core.api.Assertions.assertThat;
 
-import org.kdtree.tree.KdTree;
+import org.kdtree.kdtree.KdTree;
 
 /** Tree comparisons for tests. */
 public final class Trees {

@@ -6,7 +6,7 @@ import static org.assertj.core.api.Assertions.assertThatThrownBy;
 import java.util.ArrayList;
 import java.util.List;
 import org.junit.jupiter.api.Test;
-import org.kdtree.build.SlidingMidpointBuilder;
+import org.kdtree.kdtree.SlidingMidpointBuilder;
 import org.kdtree.points.NearestQuery;
 import org.kdtree.points.PointTree;
 import org.kdtree.shape.PointsKd;

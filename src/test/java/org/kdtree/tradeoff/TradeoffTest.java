@@ -9,14 +9,14 @@ import java.util.List;
 import java.util.Locale;
 import org.junit.jupiter.api.Test;
 import org.junit.jupiter.api.io.TempDir;
+import org.kdtree.accel.BruteForce;
+import org.kdtree.accel.TriangleIntersector;
+import org.kdtree.cli.Main;
+import org.kdtree.generate.Meshes;
+import org.kdtree.kdtree.Traverser;
 import org.kdtree.measure.RayBatch;
 import org.kdtree.measure.RaySet;
-import org.kdtree.cli.Main;
 import org.kdtree.shape.TriangleMesh;
-import org.kdtree.traverse.BruteForce;
-import org.kdtree.traverse.TriangleIntersector;
-import org.kdtree.traverse.Traverser;
-import org.kdtree.generate.Meshes;
 
 class TradeoffTest {
     @TempDir Path dir;
@@ -35,7 +35,7 @@ class TradeoffTest {
     @Test void rayCheckSumsMatchBruteForce() {
         TriangleMesh m = Meshes.surface(400, 5);
         TriangleIntersector tri = new TriangleIntersector(m);
-        var tree = new org.kdtree.build.SahBuilder().build(m);
+        var tree = new org.kdtree.kdtree.SahBuilder().build(m);
         for (RaySet set : new RaySet[] {RaySet.primary(m, 30), RaySet.random(m, 500)}) {
             RayBatch.Checksum kd, brute;
             try (RayBatch batch = new RayBatch(2, () -> new Traverser(tree, tri))) {

@@ -1,14 +1,14 @@
 package org.kdtree.render;
 
-import org.kdtree.scene.Scene;
 import java.nio.file.Path;
 import java.util.Arrays;
 import java.util.Locale;
-import org.kdtree.build.Builders;
+import org.kdtree.accel.TriangleIntersector;
 import org.kdtree.io.SceneReader;
-import org.kdtree.traverse.Traverser;
-import org.kdtree.traverse.TriangleIntersector;
-import org.kdtree.tree.KdTree;
+import org.kdtree.kdtree.KdTree;
+import org.kdtree.kdtree.Traverser;
+import org.kdtree.scene.Scene;
+import org.kdtree.spec.Builders;
 
 /**
  * Render time against thread count on one scene: the tree is built once, a small render warms

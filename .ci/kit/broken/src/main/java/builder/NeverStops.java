@@ -1,9 +1,9 @@
 package builder;
 
-import org.kdtree.build.BuildContext;
-import org.kdtree.build.BuildNode;
-import org.kdtree.build.KdTreeBuilder;
 import org.kdtree.geom.SplitPlane;
+import org.kdtree.kdtree.BuildContext;
+import org.kdtree.kdtree.BuildNode;
+import org.kdtree.kdtree.KdTreeBuilder;
 
 /** CI's runaway answer: terminate() never says yes, only the depth cap stops it (the contract must say "never stops"). */
 public class NeverStops extends KdTreeBuilder {

@@ -1,9 +1,9 @@
 package builder;
 
-import org.kdtree.build.BuildContext;
-import org.kdtree.build.BuildNode;
-import org.kdtree.build.KdTreeBuilder;
 import org.kdtree.geom.SplitPlane;
+import org.kdtree.kdtree.BuildContext;
+import org.kdtree.kdtree.BuildNode;
+import org.kdtree.kdtree.KdTreeBuilder;
 
 /** CI's useless answer: valid, but every plane lies on the voxel's face (the quality tier must say it separates nothing). */
 public class PlanesOnTheFace extends KdTreeBuilder {

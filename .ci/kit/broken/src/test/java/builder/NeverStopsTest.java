@@ -1,7 +1,7 @@
 package builder;
 
-import org.kdtree.build.KdTreeBuilder;
 import org.kdtree.contract.KdTreeBuilderContract;
+import org.kdtree.kdtree.KdTreeBuilder;
 
 class NeverStopsTest extends KdTreeBuilderContract {
     @Override protected KdTreeBuilder newBuilder() {

@@ -1,7 +1,7 @@
 package builder;
 
-import org.kdtree.build.KdTreeBuilder;
 import org.kdtree.contract.KdTreeBuilderQualityContract;
+import org.kdtree.kdtree.KdTreeBuilder;
 
 class PlanesOnTheFaceQualityTest extends KdTreeBuilderQualityContract {
     @Override protected KdTreeBuilder newBuilder() {

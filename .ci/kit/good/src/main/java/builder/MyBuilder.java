@@ -1,9 +1,9 @@
 package builder;
 
-import org.kdtree.build.BuildContext;
-import org.kdtree.build.BuildNode;
-import org.kdtree.build.KdTreeBuilder;
 import org.kdtree.geom.SplitPlane;
+import org.kdtree.kdtree.BuildContext;
+import org.kdtree.kdtree.BuildNode;
+import org.kdtree.kdtree.KdTreeBuilder;
 
 /** CI's known-good answer to the starter: the median plane, cycling the axes, two objects a leaf. */
 public class MyBuilder extends KdTreeBuilder {

@@ -1,9 +1,9 @@
 package builder;
 
-import org.kdtree.build.BuildContext;
-import org.kdtree.build.BuildNode;
-import org.kdtree.build.KdTreeBuilder;
 import org.kdtree.geom.SplitPlane;
+import org.kdtree.kdtree.BuildContext;
+import org.kdtree.kdtree.BuildNode;
+import org.kdtree.kdtree.KdTreeBuilder;
 
 /**
  * Your kd-tree builder: decide when a node becomes a leaf (terminate) and where to cut it

@@ -1,7 +1,7 @@
 package builder;
 
-import org.kdtree.build.KdTreeBuilder;
 import org.kdtree.contract.KdTreeBuilderContract;
+import org.kdtree.kdtree.KdTreeBuilder;
 
 /** The builder contract, run on your builder: every check of it is a test. */
 class MyBuilderTest extends KdTreeBuilderContract {

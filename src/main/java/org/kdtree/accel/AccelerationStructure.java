@@ -1,0 +1,42 @@
+package org.kdtree.accel;
+
+import org.kdtree.geom.Box;
+
+/**
+ * What a ray tracer sees of a built acceleration structure, a kd-tree or a bounding volume
+ * hierarchy: its statistics and, for each thread, a query over the primitives it was built
+ * over. The benchmark, the renderer, the trade-off study and the workbench's comparison take
+ * this, so that both structures are judged by the same rays, the same checksum and the same
+ * cost model.
+ */
+public interface AccelerationStructure {
+    /** {@return what kind of structure it is}: "kd-tree" or "bvh" */
+    String kind();
+
+    /** {@return k, the dimension of its primitives} */
+    int dimension();
+
+    /** {@return the bounds of the primitives it holds} */
+    Box bounds();
+
+    /** {@return its statistics}: nodes, leaves, depth, references, memory, expected cost under its cost model */
+    TreeStats stats();
+
+    /**
+     * A new query object for one thread, the fastest this structure has (silent: it reports nothing).
+     *
+     * @param prims the intersector of the primitives it was built over
+     * @return the query
+     */
+    RayQuery query(Intersector prims);
+
+    /**
+     * A new query object for one thread that reports every step to {@code listener} (the
+     * statistics per ray, the workbench's stepper); slower than {@link #query}.
+     *
+     * @param prims    the intersector of the primitives it was built over
+     * @param listener is told each step of each query
+     * @return the query
+     */
+    RayQuery query(Intersector prims, TraversalListener listener);
+}

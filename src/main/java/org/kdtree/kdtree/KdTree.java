@@ -1,0 +1,207 @@
+package org.kdtree.kdtree;
+
+import org.kdtree.accel.AccelerationStructure;
+import org.kdtree.accel.CostModel;
+import org.kdtree.accel.Hit;
+import org.kdtree.accel.Intersector;
+import org.kdtree.accel.RayQuery;
+import org.kdtree.accel.TraversalListener;
+import org.kdtree.accel.TreeStats;
+import org.kdtree.geom.Box;
+import org.kdtree.geom.Ray;
+
+/**
+ * A built kd-tree: immutable flat arrays, in the spirit of pbrt's compact nodes.
+ *
+ * <p>Nodes are stored depth first, 12 bytes each in one {@code int} array, so that a node is one
+ * load away (there is no second copy for the traversal); leaves index into one shared array of
+ * primitive references. A node keeps its split position as the {@code double} the build
+ * partitioned with (a float would move it off the primitive bounds the builder chose, see
+ * docs/traversal.md). {@link Nodes} is the layout, and the only code that decodes it.
+ *
+ * <p>The methods below answer node by node. Hot paths (traversal, point queries) hold the raw
+ * {@link #nodeArray()} and {@link #refArray()} instead, read-only by convention, and decode them
+ * with {@link Nodes} and this tree's {@link #axisBits()}.
+ *
+ * <p>As an {@link AccelerationStructure}, a sibling of the bounding volume hierarchy, its ray
+ * queries are {@link Traverser}s.
+ */
+public final class KdTree implements AccelerationStructure {
+    /** The most dimensions a tree may have ({@link org.kdtree.limits.Limits#DIMENSION}). */
+    public static final int MAX_DIMENSION = (int) org.kdtree.limits.Limits.DIMENSION.max();
+
+    private final Box bounds;
+    private final CostModel cost;
+    private final String builderName;
+    private final int[] nodes;
+    private final int[] refs;
+    private final int budgetLeaves;
+    private final int axisBits;
+    private TreeStats stats;
+
+    KdTree(Box bounds, CostModel cost, String builderName, int[] nodes, int[] refs, int budgetLeaves) {
+        this.budgetLeaves = budgetLeaves;
+        this.bounds = bounds;
+        this.cost = cost;
+        this.builderName = builderName;
+        this.nodes = nodes;
+        this.refs = refs;
+        this.axisBits = Nodes.axisBits(bounds.dimension());
+    }
+
+    /** {@return the width of the axis field of this tree's node words}: what {@link Nodes} decodes a word with */
+    public int axisBits() { return axisBits; }
+
+    /** {@return k, the dimension} */
+    public int dimension() { return bounds.dimension(); }
+
+    /**
+     * Checks that a query's objects have this tree's dimension.
+     *
+     * @param dimension their dimension
+     * @param what what they are, for the message ("primitives", "points")
+     * @throws IllegalArgumentException naming both dimensions if they differ
+     */
+    public void requireDimension(int dimension, String what) {
+        if (dimension != dimension())
+            throw new IllegalArgumentException("tree is " + dimension() + "-D, " + what + " " + dimension + "-D");
+    }
+
+    /** {@return the root voxel (a copy)} */
+    public Box bounds() { return bounds.copy(); }
+
+    /** {@return the Kt and Ki used for {@link TreeStats#expectedCost()}} */
+    public CostModel costModel() { return cost; }
+
+    /** {@return the name of the builder that made this tree} */
+    public String builderName() { return builderName; }
+
+    /** {@return the number of nodes, interior and leaf} */
+    public int nodeCount() { return nodes.length / Nodes.INTS; }
+
+    /**
+     * Leaves the build made early because the reference budget ran out
+     * ({@code KdTreeBuilder.referenceBudget}); 0 when the tree is the one the builder's own rules make.
+     * @return the number of such early leaves
+     */
+    public int budgetLeaves() { return budgetLeaves; }
+
+    // ---- node access (small enough to be inlined into hot loops) ----
+
+    /**
+     * {@return whether {@code node} is a leaf}
+     * @param node a node index
+     */
+    public boolean isLeaf(int node) { return Nodes.isLeaf(Nodes.word(nodes, node), axisBits); }
+    /**
+     * {@return the split axis of interior node {@code node}}
+     * @param node an interior node's index
+     */
+    public int axis(int node) { return Nodes.axis(Nodes.word(nodes, node), axisBits); }
+    /**
+     * {@return the split plane's position on the axis of interior node {@code node}}
+     * @param node an interior node's index
+     */
+    public double split(int node) { return Nodes.split(nodes, node); }
+    /**
+     * {@return the left (lower) child of interior node {@code node}}
+     * @param node an interior node's index
+     */
+    public int leftChild(int node) { return Nodes.leftChild(node); }
+    /**
+     * {@return the upper child of interior node {@code node}}
+     * @param node an interior node's index
+     */
+    public int rightChild(int node) { return Nodes.rightChild(Nodes.word(nodes, node), axisBits); }
+    /**
+     * {@return where the references of leaf {@code node} begin in {@link #refArray()}}
+     * @param node a leaf node's index
+     */
+    public int leafStart(int node) { return Nodes.leafStart(nodes, node); }
+    /**
+     * {@return where the references of leaf {@code node} end (exclusive) in {@link #refArray()}}
+     * @param node a leaf node's index
+     */
+    public int leafEnd(int node) { return leafStart(node) + leafSize(node); }
+    /**
+     * {@return the number of primitive references in leaf {@code node}}
+     * @param node a leaf node's index
+     */
+    public int leafSize(int node) { return Nodes.leafSize(Nodes.word(nodes, node), axisBits); }
+    /**
+     * {@return the i-th entry of the shared leaf reference array}
+     * @param i an index into {@link #refArray()}
+     */
+    public int ref(int i) { return refs[i]; }
+
+    /**
+     * {@return the nodes, three ints each, as {@link Nodes} lays them out}: the raw array for flat hot loops; never modify it.
+     */
+    public int[] nodeArray() { return nodes; }
+    /** {@return the shared leaf reference array (primitive indices), in leaf order}: the raw array; never modify it. */
+    public int[] refArray() { return refs; }
+
+    /**
+     * {@return the primitives referenced by a leaf node, as a new array}
+     * @param node a leaf node's index
+     */
+    public int[] leafPrimitives(int node) {
+        return java.util.Arrays.copyOfRange(refs, leafStart(node), leafEnd(node));
+    }
+
+    /**
+     * Visits every node depth first, left child first, with its voxel and depth.
+     *
+     * @param visitor receives every interior node and leaf
+     */
+    public void walk(TreeVisitor visitor) {
+        walk(0, 0, bounds.copy(), visitor);
+    }
+
+    private void walk(int node, int depth, Box voxel, TreeVisitor v) {
+        if (isLeaf(node)) {
+            v.leaf(node, depth, voxel, refs, leafStart(node), leafEnd(node));
+            return;
+        }
+        int axis = axis(node);
+        double xi = split(node);
+        v.interior(node, depth, voxel, axis, xi);
+        double lo = voxel.min(axis), hi = voxel.max(axis);
+        voxel.setMax(axis, xi);
+        walk(leftChild(node), depth + 1, voxel, v);
+        voxel.setMax(axis, hi).setMin(axis, xi);
+        walk(rightChild(node), depth + 1, voxel, v);
+        voxel.setMin(axis, lo);
+    }
+
+    /** {@return the tree's statistics (computed once)} */
+    public TreeStats stats() {
+        if (stats == null) stats = KdTreeStats.of(this);
+        return stats;
+    }
+
+    /** {@return bytes held by the arrays (12 per node, 4 per reference, plus the arrays' headers)} */
+    public long memoryBytes() {
+        return 2 * 16L + 4L * nodes.length + 4L * refs.length;
+    }
+
+    /** {@return "kd-tree"} */
+    @Override public String kind() { return "kd-tree"; }
+
+    /** {@return a {@link Traverser} over this tree and {@code prims}} */
+    @Override public RayQuery query(Intersector prims) { return new Traverser(this, prims); }
+
+    /** {@return a {@link Traverser} over this tree and {@code prims} that reports every step to {@code listener}} */
+    @Override public RayQuery query(Intersector prims, TraversalListener listener) {
+        Traverser t = new Traverser(this, prims);
+        return new RayQuery() {
+            @Override public boolean closestHit(Ray ray, double tMin, double tMax, Hit hit) {
+                return t.closestHit(ray, tMin, tMax, hit, listener);
+            }
+
+            @Override public boolean anyHit(Ray ray, double tMin, double tMax) {
+                return t.anyHit(ray, tMin, tMax, listener);
+            }
+        };
+    }
+}

@@ -1,0 +1,162 @@
+package org.kdtree.kdtree;
+
+import org.kdtree.accel.Hit;
+import org.kdtree.accel.TriangleIntersector;
+import org.kdtree.geom.Box;
+import org.kdtree.geom.Ray;
+
+/**
+ * The specialised 3-D path of {@link Traverser} for triangle meshes: the same algorithm and the
+ * same robustness rules as the generic loop, on the flat arrays, with the ray in locals, the
+ * per-ray shear of the watertight test computed once, and the triangle test inlined. Not thread
+ * safe: owned by one traverser.
+ */
+final class MeshTraversal {
+    /** A 3-D tree's {@link KdTree#axisBits()}, a constant the JIT folds into the node decoding. */
+    private static final int BITS = Nodes.axisBits(3);
+    private static final double SLACK = Traverser.SLACK;
+
+    /** The tree's nodes ({@link KdTree#nodeArray()}), read with {@link Nodes}. */
+    private final int[] nodes;
+    private final int[] refs;
+    private final double[] corners;
+    private final double lx, ly, lz, hx, hy, hz;
+    private final Mailbox mailbox;
+    private final int[] stackNode;
+    private final double[] stackMin, stackMax;
+    private final double[] org = new double[3], inv = new double[3];
+    private final Hit scratch = new Hit();
+
+    MeshTraversal(KdTree tree, TriangleIntersector tris, Mailbox mailbox, int stackSize) {
+        if (tree.axisBits() != BITS) throw new IllegalArgumentException("a 3-D tree's axis field is " + BITS + " bits");
+        nodes = tree.nodeArray();
+        refs = tree.refArray();
+        corners = tris.cornerArray();
+        Box b = tree.bounds();
+        lx = b.min(0); ly = b.min(1); lz = b.min(2);
+        hx = b.max(0); hy = b.max(1); hz = b.max(2);
+        this.mailbox = mailbox;
+        stackNode = new int[stackSize];
+        stackMin = new double[stackSize];
+        stackMax = new double[stackSize];
+    }
+
+    boolean closestHit(Ray ray, double tMin, double tMax, Hit hit) {
+        hit.reset();
+        return trace(ray, tMin, tMax, hit, false);
+    }
+
+    boolean anyHit(Ray ray, double tMin, double tMax) {
+        return trace(ray, tMin, tMax, scratch.reset(), true);
+    }
+
+    private boolean trace(Ray ray, double tMin, double tMax, Hit hit, boolean any) {
+        if (ray.dimension() != 3) throw new IllegalArgumentException("a " + ray.dimension() + "-D ray in a 3-D tree");
+        double ox = ray.origin(0), oy = ray.origin(1), oz = ray.origin(2);
+        double dx = ray.direction(0), dy = ray.direction(1), dz = ray.direction(2);
+        double ix = ray.inverseDirection(0), iy = ray.inverseDirection(1), iz = ray.inverseDirection(2);
+        if (!(ox - ox == 0 && oy - oy == 0 && oz - oz == 0 && dx - dx == 0 && dy - dy == 0 && dz - dz == 0)
+                || (dx == 0 && dy == 0 && dz == 0))
+            throw new IllegalArgumentException("ray has a non-finite or zero origin or direction: " + ray);
+        // Clip to the scene box (NaN from 0 * infinity constrains nothing).
+        double t0 = tMin, t1 = tMax, a, b;
+        a = (lx - ox) * ix; b = (hx - ox) * ix;
+        if (ix < 0) { double s = a; a = b; b = s; }
+        if (a > t0) t0 = a;
+        if (b < t1) t1 = b;
+        a = (ly - oy) * iy; b = (hy - oy) * iy;
+        if (iy < 0) { double s = a; a = b; b = s; }
+        if (a > t0) t0 = a;
+        if (b < t1) t1 = b;
+        a = (lz - oz) * iz; b = (hz - oz) * iz;
+        if (iz < 0) { double s = a; a = b; b = s; }
+        if (a > t0) t0 = a;
+        if (b < t1) t1 = b;
+        t0 = Math.max(tMin, t0 - Math.abs(t0) * SLACK);
+        t1 = Math.min(tMax, t1 + Math.abs(t1) * SLACK);
+        if (!(t0 <= t1)) return false;
+
+        // The watertight test's shear, once per ray.
+        int kz = TriangleIntersector.maxAxis(dx, dy, dz);
+        int kx = kz == 2 ? 0 : kz + 1, ky = kx == 2 ? 0 : kx + 1;
+        double[] o = org, iv = inv;
+        o[0] = ox; o[1] = oy; o[2] = oz;
+        iv[0] = ix; iv[1] = iy; iv[2] = iz;
+        double dkz = ray.direction(kz);
+        if (dkz < 0) { int s = kx; kx = ky; ky = s; }
+        double sz = ray.inverseDirection(kz), sx = ray.direction(kx) * sz, sy = ray.direction(ky) * sz; // = 1 / dkz
+        double okx = o[kx], oky = o[ky], okz = o[kz];
+
+        int stamp = mailbox.next();
+        int[] box = mailbox.stamp;
+        int[] nodes = this.nodes;
+        int[] refs = this.refs;
+        double[] c = corners;
+        int sp = 0, node = 0;
+        double curMin = t0, curMax = t1;
+        // The slack-widened bounds, updated only when the interval changes (not per node).
+        double lo = curMin - Math.abs(curMin) * SLACK, hi = curMax + Math.abs(curMax) * SLACK;
+        boolean found = false;
+        while (true) {
+            int w = Nodes.word(nodes, node);
+            while (!Nodes.isLeaf(w, BITS)) {
+                int axis = Nodes.axis(w, BITS);
+                double ia = iv[axis];
+                double tSplit = (Nodes.split(nodes, node) - o[axis]) * ia;
+                int near = Nodes.leftChild(node), far = Nodes.rightChild(w, BITS);
+                if (!(ia > 0)) { far = near; near = Nodes.rightChild(w, BITS); }
+                if (tSplit > hi) {
+                    node = near;
+                } else if (tSplit < lo) {
+                    node = far;
+                } else {
+                    stackNode[sp] = far;
+                    stackMax[sp] = curMax;
+                    node = near;
+                    if (tSplit != tSplit) {          // the ray lies in the split plane
+                        stackMin[sp] = curMin;
+                    } else {
+                        stackMin[sp] = tSplit;
+                        curMax = tSplit;
+                        hi = tSplit + Math.abs(tSplit) * SLACK;
+                    }
+                    sp++;
+                }
+                w = Nodes.word(nodes, node);
+            }
+            for (int r = Nodes.leafStart(nodes, node), end = r + Nodes.leafSize(w, BITS); r < end; r++) {
+                int p = refs[r];
+                if (box[p] == stamp) continue;
+                box[p] = stamp;
+                // TriangleIntersector.test, inlined (the JIT will not inline a method that large).
+                int q = 9 * p;
+                double az = c[q + kz] - okz, bz = c[q + 3 + kz] - okz, cz = c[q + 6 + kz] - okz;
+                double ax = c[q + kx] - okx - sx * az, ay = c[q + ky] - oky - sy * az;
+                double bx = c[q + 3 + kx] - okx - sx * bz, by = c[q + 3 + ky] - oky - sy * bz;
+                double cx = c[q + 6 + kx] - okx - sx * cz, cy = c[q + 6 + ky] - oky - sy * cz;
+                double u = cx * by - cy * bx, v = ax * cy - ay * cx, e = bx * ay - by * ax;
+                if ((u < 0 || v < 0 || e < 0) && (u > 0 || v > 0 || e > 0)) continue;
+                double det = u + v + e;
+                if (det == 0) continue;
+                double t = (u * az + v * bz + e * cz) * sz / det;
+                if (!(t >= tMin && t <= tMax && t < hit.t)) continue;
+                if (any) return true;
+                found = true;
+                hit.primitive = p;
+                hit.t = t;
+                hit.u = v / det;
+                hit.v = e / det;
+            }
+            while (true) {
+                if (sp == 0) return found;
+                sp--;
+                curMin = stackMin[sp];
+                if (curMin <= hit.t + Math.abs(hit.t) * SLACK) break;
+            }
+            node = stackNode[sp];
+            curMax = stackMax[sp];
+            lo = curMin - Math.abs(curMin) * SLACK;
+            hi = curMax + Math.abs(curMax) * SLACK;
+        }
+    }
+}

@@ -1,0 +1,58 @@
+package org.kdtree.kdtree;
+
+/**
+ * Named SAH settings along the measured trade-off between build time and tree quality
+ * (docs/performance.md, "Quality presets"). What they give up, measured on the meshes: near the
+ * leaves the greedy SAH goes on cutting a few triangles apart, each cut saving a little, and
+ * those nodes are most of the tree and most of the build. Stopping at a few references
+ * ({@link SahBuilder#leafBelow}) removes them for little loss; the binned search then cheapens
+ * the plane search of the big nodes that remain.
+ */
+public enum Quality {
+    /**
+     * Binned SAH (32 bins, the exact sweep below 32 references), leaves below 11 references: on the
+     * meshes measured, 15 to 35 % of the exact tree's nodes, within 25 % of its expected cost.
+     */
+    FAST(SahBuilder.Algorithm.BINNED, 32, 11),
+    /**
+     * The exact event algorithm, leaves below 6 references: on the meshes measured, 35 to 45 % of
+     * the exact tree's nodes, within 4 % of its expected cost.
+     */
+    BALANCED(SahBuilder.Algorithm.EVENT, -1, 6),
+    /** The exact SAH tree (event algorithm), every split that pays. */
+    EXACT(SahBuilder.Algorithm.EVENT, -1, 1);
+
+    private final SahBuilder.Algorithm algorithm;
+    /** The binned search's exact threshold; -1 (an exact search, which does not read it) restores the setting's default. */
+    private final int exactBelow, leafBelow;
+
+    Quality(SahBuilder.Algorithm algorithm, int exactBelow, int leafBelow) {
+        this.algorithm = algorithm;
+        this.exactBelow = exactBelow;
+        this.leafBelow = leafBelow;
+    }
+
+    /** {@return the plane search of this preset} */
+    public SahBuilder.Algorithm algorithm() { return algorithm; }
+
+    /** {@return what the preset sets, in a few words}, e.g. for the command line's help */
+    public String describe() {
+        return (algorithm.exact() ? "exact " : "binned, exact below " + exactBelow + ", ") + "leaves below " + leafBelow + " references";
+    }
+
+    /** {@return the node size below which this preset makes leaves without a plane search} */
+    public int leafBelow() { return leafBelow; }
+
+    /** {@return the binned search's exact threshold, or -1 where the preset leaves it at the setting's default} */
+    public int exactBelow() { return exactBelow; }
+
+    /**
+     * Gives {@code sah} this preset ({@link SahBuilder#quality}).
+     *
+     * @param sah the builder to set
+     * @return {@code sah}
+     */
+    public SahBuilder applyTo(SahBuilder sah) {
+        return sah.quality(this);
+    }
+}

@@ -1,8 +1,0 @@
-package org.kdtree.build;
-
-import org.kdtree.contract.KdTreeBuilderContract;
-
-/** The builder contract for {@link ObjectMedianBuilder} with its default settings. */
-class ObjectMedianBuilderContractTest extends KdTreeBuilderContract {
-    @Override protected KdTreeBuilder newBuilder() { return new ObjectMedianBuilder(); }
-}

@@ -1,8 +1,0 @@
-package org.kdtree.build;
-
-import org.kdtree.contract.KdTreeBuilderContract;
-
-/** The builder contract for {@link SahBuilder} with its default settings. */
-class SahBuilderContractTest extends KdTreeBuilderContract {
-    @Override protected KdTreeBuilder newBuilder() { return new SahBuilder(); }
-}
