@@ -54,12 +54,12 @@ public final class Main implements Runnable {
      */
     public static int run(String... args) {
         registerTheCourseExample();
-        CommandLine cl = new CommandLine(new Main());
         try {
             args = loadPlugins(args);
         } catch (RuntimeException e) {
-            return Failure.report(e, cl.getErr());
+            return Failure.report(e, new CommandLine(new Main()).getErr());
         }
+        CommandLine cl = new CommandLine(new Main());   // after the plug-ins: their settings' rows are options too
         cl.setCaseInsensitiveEnumValuesAllowed(true);
         if (args.length > 0 && !args[0].startsWith("-") && !cl.getSubcommands().containsKey(args[0])) {
             // picocli would print the top-level help for "nearest --help" and exit 0

@@ -89,6 +89,12 @@ public final class Builders {
             throw new IllegalArgumentException("--plugin " + jarOrFolder + ": " + unloadable(e), e);
         }
         if (listed.isEmpty()) throw new IllegalArgumentException("--plugin " + jarOrFolder + ": " + noBuilder(jarFiles));
+        try {
+            SettingsTable.all();   // a plug-in's rows must not take another row's option
+        } catch (IllegalArgumentException e) {
+            listed.forEach(BY_NAME::remove);
+            throw new IllegalArgumentException("--plugin " + jarOrFolder + ": " + e.getMessage());
+        }
         return listed;
     }
 

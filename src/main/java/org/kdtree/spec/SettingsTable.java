@@ -1,8 +1,10 @@
 package org.kdtree.spec;
 
 import java.util.ArrayList;
+import java.util.HashMap;
 import java.util.LinkedHashSet;
 import java.util.List;
+import java.util.Map;
 import java.util.Set;
 import org.kdtree.accel.Setting;
 
@@ -24,7 +26,16 @@ public final class SettingsTable {
      */
     public static List<Setting<?>> all() {
         Set<Setting<?>> rows = new LinkedHashSet<>();
-        for (String name : BuilderSpec.names()) rows.addAll(BuilderSpec.newBuilder(name).settingRows());
+        Map<String, String> ownerOfOption = new HashMap<>();
+        for (String name : BuilderSpec.names()) {
+            for (Setting<?> row : BuilderSpec.newBuilder(name).settingRows()) {
+                if (!rows.add(row)) continue;
+                String before = ownerOfOption.putIfAbsent(row.option(), name);
+                if (before != null)
+                    throw new IllegalArgumentException("the " + name + " builder declares a setting " + row.option()
+                            + " of its own, but the " + before + " builder's " + row.option() + " is another setting: give it another option");
+            }
+        }
         return List.copyOf(rows);
     }
 

@@ -9,6 +9,7 @@ import org.junit.jupiter.api.Test;
 import org.junit.jupiter.api.io.TempDir;
 import org.kdtree.spec.Builders;
 import org.kdtree.testing.PluginJars;
+import org.kdtree.testing.PluginLeafyBuilder;
 import org.kdtree.testing.PluginMidpointBuilder;
 
 /**
@@ -18,8 +19,36 @@ import org.kdtree.testing.PluginMidpointBuilder;
 class PluginCommandsTest {
     @TempDir Path dir;
 
-    @AfterEach void forgetThePlugIn() {
+    @AfterEach void forgetThePlugIns() {
         Builders.remove(new PluginMidpointBuilder().name());
+        Builders.remove(new PluginLeafyBuilder().name());
+    }
+
+    /** A plug-in declares a setting of its own: the command line offers it, checks its range and gives it to the builder. */
+    @Test void aPluginsOwnSettingIsAnOptionThatReachesItsBuilder() throws Exception {
+        Path jar = PluginJars.listing(dir, "leafy.jar", PluginLeafyBuilder.class.getName());
+
+        CliRun three = CliRun.of("--plugin", jar.toString(), "stats", "scenes:cornell-box", "-b", "plugin-leafy", "--leaf-limit", "3");
+        assertThat(three.code()).as(three.err()).isZero();
+        assertThat(three.out()).contains("leafLimit=3");
+        CliRun fifty = CliRun.of("--plugin", jar.toString(), "stats", "scenes:cornell-box", "-b", "plugin-leafy", "--leaf-limit", "50");
+        assertThat(fifty.code()).as(fifty.err()).isZero();
+        assertThat(nodes(three.out())).as("a smaller leaf limit splits more").isGreaterThan(nodes(fifty.out()));
+
+        CliRun zero = CliRun.of("--plugin", jar.toString(), "stats", "scenes:cornell-box", "-b", "plugin-leafy", "--leaf-limit", "0");
+        assertThat(zero.code()).isEqualTo(2);
+        assertThat(zero.err().strip()).isEqualTo("error: --leaf-limit must be between 1 and 1000, got 0");
+
+        CliRun sah = CliRun.of("--plugin", jar.toString(), "stats", "scenes:cornell-box", "-b", "sah", "--leaf-limit", "3");
+        assertThat(sah.code()).isEqualTo(2);
+        assertThat(sah.err()).contains("--leaf-limit applies to the plugin-leafy builder only, not to sah");
+
+        CliRun help = CliRun.of("--plugin", jar.toString(), "stats", "--help");
+        assertThat(help.out().replaceAll("\\s+", " ")).contains("--leaf-limit=N").contains("leaf limit: the largest node the plug-in makes a leaf of");
+    }
+
+    private static int nodes(String statsOut) {
+        return Integer.parseInt(statsOut.lines().filter(l -> l.startsWith("nodes: ")).findFirst().orElseThrow().substring(7).strip());
     }
 
     @Test void statsRaycastAndRenderBuildWithAPluggedInBuilder() throws Exception {

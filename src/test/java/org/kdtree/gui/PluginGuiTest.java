@@ -14,6 +14,7 @@ import org.junit.jupiter.api.Test;
 import org.junit.jupiter.api.io.TempDir;
 import org.kdtree.spec.Builders;
 import org.kdtree.testing.PluginJars;
+import org.kdtree.testing.PluginLeafyBuilder;
 import org.kdtree.testing.PluginMidpointBuilder;
 
 /**
@@ -31,6 +32,7 @@ class PluginGuiTest {
         assumeFalse(GraphicsEnvironment.isHeadless(), "no display");
         assertThat(Builders.names()).doesNotContain("plugin-midpoint");
         Builders.loadPlugins(PluginJars.listing(dir, "student.jar", PluginMidpointBuilder.class.getName()));
+        Builders.loadPlugins(PluginJars.listing(dir, "leafy.jar", PluginLeafyBuilder.class.getName()));
         window = WorkbenchWindow.open(null);
         bench = (Workbench) window.target();
     }
@@ -38,6 +40,24 @@ class PluginGuiTest {
     @AfterEach void close() {
         if (window != null) window.cleanUp();
         Builders.remove("plugin-midpoint");
+        Builders.remove("plugin-leafy");
+    }
+
+    /** A plug-in's own setting has its control, shown for that builder only, and the builder reads it. */
+    @Test void aPluginsOwnSettingHasItsControl() {
+        window.menuItemWithPath("Scene", "Clustered (200)").click();
+        window.comboBox("builder").selectItem("sah");
+        assertThat(window.robot().finder().findByName("leafLimit", javax.swing.JSpinner.class, false).isVisible())
+                .as("another builder's setting is not shown").isFalse();
+        window.comboBox("builder").selectItem("plugin-leafy");
+        window.spinner("leafLimit").requireVisible();
+        window.spinner("leafLimit").select(2);
+        assertThat(bench.model().tree().builderName()).isEqualTo("plugin-leafy");
+        assertThat(bench.model().settings().get(PluginLeafyBuilder.LEAF_LIMIT)).isEqualTo(2);
+        int small = bench.model().tree().nodeCount();
+        window.spinner("leafLimit").select(100);
+        assertThat(bench.model().settings().get(PluginLeafyBuilder.LEAF_LIMIT)).isEqualTo(100);
+        assertThat(bench.model().tree().nodeCount()).as("a larger leaf limit splits less").isLessThan(small);
     }
 
     @Test void aPluggedInBuilderIsInTheBuilderBoxAndTheCompareView() {
