@@ -6,6 +6,7 @@ import java.util.concurrent.TimeUnit;
 import java.util.function.Function;
 import org.kdtree.accel.AccelerationStructure;
 import org.kdtree.accel.SharedSettings;
+import org.kdtree.accel.StructureBuilder;
 import org.kdtree.bvh.BvhBuilder;
 import org.kdtree.kdtree.KdTreeBuilder;
 import org.kdtree.kdtree.Quality;
@@ -59,13 +60,8 @@ public class BuildBenchmark {
     public void setUp() {
         mesh = BenchScenes.make(scene, n);
         BuilderSpec s = spec(builder).with(SharedSettings.THREADS, threads);
-        if (s.buildsBvh()) {
-            BvhBuilder bvh = s.createBvh();
-            build = bvh::build;
-        } else {
-            KdTreeBuilder kd = s.create();
-            build = kd::build;
-        }
+        StructureBuilder b = s.structureBuilder();
+        build = b::build;
     }
 
     @Benchmark

@@ -13,6 +13,12 @@ public interface AccelerationStructure {
     /** {@return what kind of structure it is}: "kd-tree" or "bvh" */
     String kind();
 
+    /**
+     * {@return what its builder's safety nets did to it, one line each, for the statistics}: empty
+     * when they did nothing (a kd-tree's reference budget may make leaves early)
+     */
+    default java.util.List<String> notes() { return java.util.List.of(); }
+
     /** {@return k, the dimension of its primitives} */
     int dimension();
 

@@ -36,6 +36,14 @@ public interface StructureBuilder {
      */
     AccelerationStructure build(Primitives primitives);
 
+    /**
+     * {@return the depth cap a build over {@code primitives} primitives uses}: Kmaxdepth if given,
+     * else the structure's automatic cap
+     *
+     * @param primitives N
+     */
+    int depthCap(int primitives);
+
     /** {@return its settings in one line}, e.g. for the command line */
     String describeSettings();
 

@@ -44,7 +44,7 @@ final class BinnedBuild {
         this.cost = settings.costModel();
         this.bins = settings.bins();
         this.leafSize = settings.leafSize();
-        this.depthCap = settings.depthCap();
+        this.depthCap = settings.depthCap(0);
         this.parallel = settings.threads() > 1;
     }
 

@@ -96,8 +96,8 @@ public final class BvhBuilder implements StructureBuilder {
      */
     public BvhBuilder maxDepth(int depth) { return with(SharedSettings.MAX_DEPTH, depth); }
 
-    /** {@return the depth cap this builder uses} */
-    int depthCap() { return maxDepth() >= 0 ? maxDepth() : DEPTH_LIMIT; }
+    /** {@return the depth cap this builder uses, whatever the number of primitives: Kmaxdepth if given, else {@link #DEPTH_LIMIT}} */
+    @Override public int depthCap(int primitives) { return maxDepth() >= 0 ? maxDepth() : DEPTH_LIMIT; }
 
     /** {@return bins per axis of the binned SAH (a node of fewer primitives uses one bin each)} */
     public int bins() { return settings.get(SharedSettings.BINS); }

@@ -8,7 +8,11 @@ import org.kdtree.kdtree.KdTreeBuilder;
 import org.kdtree.shape.Primitives;
 
 /**
- * The invariants every kd-tree must satisfy, checked with messages a student can act on.
+ * The invariants every kd-tree must satisfy, checked with messages a student can act on. Three
+ * of them are the library's self-checks, which no builder can fail: the recursion enforces the
+ * tree's shape, the depth cap and a split inside its voxel for every builder (a plane outside its
+ * voxel is refused as the builder's fault before it is used); should one fail, the message says
+ * it is a bug of kdtree's, not of the builder. The others are the builder's to keep.
  * Coordinates are compared with a margin of {@link org.kdtree.geom.Tolerance#CHECK_MARGIN} of the scene's size, so that rounding in
  * the sample points never raises a false alarm.
  */
@@ -26,13 +30,17 @@ final class TreeChecks {
     public static void checkAll(KdTreeBuilder builder, Primitives prims, KdTree tree) {
         TreeInspector in = new TreeInspector(tree);
         double eps = margin(tree.bounds());
-        checkShape(builder, tree, in);
+        checkShape(builder, tree, in);                 // the library's self-checks
         checkDepth(builder, prims, in);
         checkSplitsInsideVoxels(builder, in);
         checkLeavesTileRoot(builder, tree, in);
         checkEveryReferenceTouchesItsLeaf(builder, prims, in, eps);
         checkEveryPrimitiveIsInEveryLeafItOverlaps(builder, prims, in, eps);
     }
+
+    /** The end of a self-check's message: whose bug it is. */
+    static final String SELF_CHECK = " (a self-check of the library: the recursion enforces this for every builder, "
+            + "so this is a bug of kdtree's, not of the builder; please report it)";
 
     static double margin(Box root) {
         double size = 0;
@@ -44,18 +52,17 @@ final class TreeChecks {
     static void checkShape(KdTreeBuilder b, KdTree tree, TreeInspector in) {
         if (in.leaves().size() != in.interiors().size() + 1)
             fail(b.name() + ": a kd-tree is a full binary tree, so it has one more leaf than interior nodes; this one has "
-                    + in.leaves().size() + " leaves and " + in.interiors().size() + " interior nodes.");
+                    + in.leaves().size() + " leaves and " + in.interiors().size() + " interior nodes" + SELF_CHECK);
         if (tree.nodeCount() != in.leaves().size() + in.interiors().size())
             fail(b.name() + ": " + tree.nodeCount() + " nodes stored but only " + (in.leaves().size() + in.interiors().size())
-                    + " reachable from the root.");
+                    + " reachable from the root" + SELF_CHECK);
     }
 
     static void checkDepth(KdTreeBuilder b, Primitives prims, TreeInspector in) {
         int cap = b.depthCap(prims.size());
         for (TreeInspector.Leaf l : in.leaves())
             if (l.depth() > cap)
-                fail(b.name() + ": leaf at depth " + l.depth() + " but the depth cap Kmaxdepth is " + cap
-                        + "; terminate() must stop the recursion at the cap.");
+                fail(b.name() + ": leaf at depth " + l.depth() + " but the depth cap Kmaxdepth is " + cap + SELF_CHECK);
     }
 
     static void checkSplitsInsideVoxels(KdTreeBuilder b, TreeInspector in) {
@@ -63,7 +70,7 @@ final class TreeChecks {
             Box v = n.voxel();
             if (n.split() < v.min(n.axis()) || n.split() > v.max(n.axis()))
                 fail(b.name() + ": node " + n.node() + " at depth " + n.depth() + " splits axis " + n.axis() + " at "
-                        + n.split() + ", outside its voxel " + v + "; findPlane() must choose a plane inside the voxel.");
+                        + n.split() + ", outside its voxel " + v + SELF_CHECK);
         }
     }
 

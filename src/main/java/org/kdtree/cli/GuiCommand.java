@@ -22,8 +22,7 @@ final class GuiCommand implements Callable<Integer> {
         }
         BuilderSpec spec = options.spec();
         // an unknown builder, or a setting it does not take, is one line here, not in the window (bvh opens it too)
-        if (spec.buildsBvh()) spec.createBvh();
-        else spec.create();
+        spec.structureBuilder();
         Workbench.open(spec);
         opened = true;
         return 0;

@@ -7,8 +7,6 @@ import org.kdtree.accel.AccelerationStructure;
 import org.kdtree.generate.MeshGrid;
 import org.kdtree.io.BundledScenes;
 import org.kdtree.io.PrimitivesReader;
-import org.kdtree.kdtree.KdTree;
-import org.kdtree.kdtree.KdTreeBuilder;
 import org.kdtree.kdtree.Supervisor;
 import org.kdtree.limits.Limits;
 import org.kdtree.measure.Timing;
@@ -69,11 +67,7 @@ final class StatsCommand implements Callable<Integer> {
         System.out.printf(Locale.ROOT, "build time: %.1f ms%s%n", build.millis(),
                 timed.runs > 1 ? " (median of " + timed.runs + ", after " + timed.warmup + " warm-up)" : "");
         System.out.println(built.stats().describe());
-        if (built instanceof KdTree kd && kd.budgetLeaves() > 0) {
-            int leaves = kd.budgetLeaves();
-            System.out.printf(Locale.ROOT, "note: the reference budget (%d per primitive, --reference-budget) made %d %s early%n",
-                    spec.value(KdTreeBuilder.REFERENCE_BUDGET), leaves, leaves == 1 ? "leaf" : "leaves");
-        }
+        for (String note : built.notes()) System.out.println("note: " + note);
         return 0;
     }
 }

@@ -2,7 +2,7 @@ package org.kdtree.collide;
 
 /**
  * Exact sphere tests against numbered primitives: what collision detection adds to the builders'
- * view of a scene, as {@code traverse.Intersector} adds ray tests. In 2-D the sphere is a circle.
+ * view of a scene, as {@code accel.Intersector} adds ray tests. In 2-D the sphere is a circle.
  *
  * <p>Contacts are closed everywhere: a sphere at distance exactly r touches, and so does a moving
  * sphere that only grazes an edge or a vertex (its path tangent to the capsule or vertex sphere).

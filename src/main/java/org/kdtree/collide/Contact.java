@@ -6,7 +6,7 @@ import java.util.Arrays;
  * The result of a swept-sphere query, reused between queries: which primitive the sphere
  * touches first, when (t in [0, 1] along the motion), where its centre is then, the touching
  * point on the primitive, and the contact normal (unit, pointing from the primitive towards the
- * centre). Mutable and owned by the caller, like {@code traverse.Hit}.
+ * centre). Mutable and owned by the caller, like {@code accel.Hit}.
  */
 public final class Contact {
     /** The primitive touched, or -1 for none. */

@@ -9,7 +9,7 @@ import org.kdtree.shape.TriangleMesh;
  * a moving sphere's first contact is the earliest of: touching at t = 0, the face
  * ({@link SweptTriangle}), three edges ({@link SweptSegment}) and three vertices
  * ({@link SweptPoint}). A zero-area triangle is never touched, as it is never hit by a ray
- * ({@code traverse.Intersector}'s rule): radius 0 is then exactly the ray's first hit, and no
+ * ({@code accel.Intersector}'s rule): radius 0 is then exactly the ray's first hit, and no
  * query depends on where a builder files a primitive without area.
  *
  * <p>Which triangles have zero area is decided exactly, by {@link TriangleIntersector} (the one

@@ -18,7 +18,7 @@ import org.kdtree.shape.ShapeKind;
  * end points for the round caps). A filled shape is touched at t = 0 when the circle starts on or
  * over it, and otherwise first on its boundary, so its sweep is the earliest over its edges and
  * corners. A zero-area triangle or rectangle is never touched, as a ray never hits it
- * ({@code traverse.Shape2DIntersector}'s rule); a zero-length segment is its point.
+ * ({@code accel.Shape2DIntersector}'s rule); a zero-length segment is its point.
  */
 public final class ShapeCollider implements Collider {
     /** Up to four corners (x, y) per shape, in boundary order; a rectangle's four. */

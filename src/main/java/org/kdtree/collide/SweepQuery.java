@@ -7,7 +7,7 @@ import org.kdtree.kdtree.KdTree;
  * {@code s + t d}, t in [0, 1], and the answer is the smallest t at which it touches a primitive,
  * which one, where, and the contact normal ({@link Contact}).
  *
- * <p>The traversal is the ray traversal of {@code traverse.Traverser} (the talk's Algorithm 2)
+ * <p>The traversal is the ray traversal of {@code kdtree.Traverser} (the talk's Algorithm 2)
  * run on voxels inflated by r. At a split plane {@code x_axis = xi} the near child's inflated
  * voxel ends where the centre passes {@code xi + r} (moving up; {@code xi - r} moving down), the
  * far child's begins where it passes {@code xi - r} (resp. {@code xi + r}): two overlapping

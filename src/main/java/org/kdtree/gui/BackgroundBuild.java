@@ -9,10 +9,7 @@ import java.util.concurrent.TimeUnit;
 import java.util.concurrent.TimeoutException;
 import java.util.function.Consumer;
 import javax.swing.SwingUtilities;
-import org.kdtree.bvh.BvhBuilder;
 import org.kdtree.kdtree.BuilderFault;
-import org.kdtree.kdtree.KdTree;
-import org.kdtree.kdtree.KdTreeBuilder;
 import org.kdtree.kdtree.Supervisor;
 import org.kdtree.limits.Deadlines;
 import org.kdtree.shape.Primitives;
@@ -68,14 +65,12 @@ final class BackgroundBuild {
      * @throws IllegalArgumentException if {@code spec} names no builder or gives a setting it does not take
      */
     boolean start(BuilderSpec spec, Primitives primitives, boolean small, Consumer<Outcome> done) {
-        KdTreeBuilder builder = spec.buildsBvh() ? null : spec.create();
-        BvhBuilder bvh = spec.buildsBvh() ? spec.createBvh() : null;
-        boolean librarys = builder == null || Supervisor.isLibrarys(builder);
+        boolean librarys = spec.librarys();
         long waitMillis = !small ? 0 : librarys ? LIBRARY_WAIT_MILLIS : PLUGIN_WAIT_MILLIS;
         int mine = ++started;
         if (pending != null) pending.cancel(true);
         Future<Outcome> job = thread.submit(() -> {
-            Outcome o = builder != null ? build(builder, primitives) : build(bvh, primitives);
+            Outcome o = build(spec, primitives);
             if (o != null) SwingUtilities.invokeLater(() -> deliver(mine, o, done));
             return o;
         });
@@ -96,24 +91,17 @@ final class BackgroundBuild {
         }
     }
 
-    /** Builds on the build thread; null if cancelled (a newer build replaced it). */
-    private Outcome build(KdTreeBuilder builder, Primitives primitives) {
+    /**
+     * Builds on the build thread, a kd-tree builder under the supervisor (its faults are the
+     * outcome), a hierarchy directly (the library's: trusted, it stops when interrupted); null if
+     * cancelled (a newer build replaced it).
+     */
+    private Outcome build(BuilderSpec spec, Primitives primitives) {
         long t0 = System.nanoTime();
         try {
-            KdTree t = supervisor.build(builder, primitives);
-            return new Outcome(Built.of(t), null, (System.nanoTime() - t0) / 1e6);
+            return new Outcome(Built.of(spec.build(primitives, supervisor)), null, (System.nanoTime() - t0) / 1e6);
         } catch (BuilderFault f) {
             return new Outcome(null, f, (System.nanoTime() - t0) / 1e6);
-        } catch (CancellationException replaced) {
-            return null;
-        }
-    }
-
-    /** Builds a hierarchy on the build thread (the library's: trusted, it stops when interrupted); null if cancelled. */
-    private static Outcome build(BvhBuilder builder, Primitives primitives) {
-        long t0 = System.nanoTime();
-        try {
-            return new Outcome(Built.of(builder.build(primitives)), null, (System.nanoTime() - t0) / 1e6);
         } catch (CancellationException replaced) {
             return null;
         }

@@ -14,8 +14,6 @@ import javax.swing.JPanel;
 import javax.swing.JSlider;
 import org.kdtree.accel.Setting;
 import org.kdtree.accel.SharedSettings;
-import org.kdtree.bvh.BvhBuilder;
-import org.kdtree.kdtree.KdTreeBuilder;
 import org.kdtree.kdtree.SahBuilder;
 import org.kdtree.spec.BuilderSpec;
 import org.kdtree.spec.SettingsTable;
@@ -171,20 +169,19 @@ final class BuilderPanel extends JPanel {
             lambdaSlider.setValue((int) Math.round((Double) lambda.value() * 100));
             lambdaSlider.setEnabled(lambda.component().isEnabled());
             lambdaSlider.setVisible(lambda.component().isVisible());
-            showAutoDepth(s.buildsBvh());
+            showAutoDepth(s);
         } finally {
             updating = false;
         }
     }
 
-    /** Spells out the depth cap: fixed, or the automatic one, which a hierarchy does not take from the scene's size. */
-    private void showAutoDepth(boolean bvh) {
+    /** Spells out the depth cap: fixed, or the automatic one the builder gives the current scene. */
+    private void showAutoDepth(BuilderSpec s) {
         int n = model.scene().size();
         int depth = (Integer) controls.get(SharedSettings.MAX_DEPTH).value();
-        int auto = bvh ? BvhBuilder.DEPTH_LIMIT : KdTreeBuilder.defaultMaxDepth(n);
+        int auto = s.forBuilder(s.builder()).with(SharedSettings.MAX_DEPTH, null).structureBuilder().depthCap(n);
         autoDepth.setText(depth >= 0 ? "fixed depth cap " + depth : "-1 = auto: depth cap " + auto);
-        autoDepth.setToolTipText(bvh ? "a hierarchy's automatic depth cap is its depth limit, " + auto
-                : "the automatic depth cap is 8 + 1.3 log2 N, here 8 + 1.3 log2 " + n + " = " + auto);
+        autoDepth.setToolTipText("the " + s.builder() + " builder's automatic depth cap for these " + n + " objects is " + auto);
     }
 
     private static void name(JComponent c, String name, String tip) {

@@ -154,7 +154,7 @@ final class CompareView extends JPanel {
         private String statistics(Built built, double ms) {
             TreeStats st = built.stats();
             return String.format(Locale.ROOT, "build time: %.2f ms<br>%s: %d, leaves: %d, empty: %d<br>"
-                            + "depth: %d, refs / leaf: %.2f<br>SAH cost: %.2f, memory: %s", ms, built.isBvh() ? "nodes (boxes)" : "nodes",
+                            + "depth: %d, refs / leaf: %.2f<br>SAH cost: %.2f, memory: %s", ms, built.nodesLabel(),
                     st.nodes(), st.leaves(), st.emptyLeaves(), st.maxDepth(), st.averageRefsPerLeaf(), st.expectedCost(),
                     StatsPanel.memory(st.memoryBytes()));
         }
@@ -164,7 +164,7 @@ final class CompareView extends JPanel {
             if (ray == null) return "<br>ray: cast one in the 2-D build view";
             if (trace.size() == 0) return "";
             double cost = built.kt() * (trace.nodes() - trace.leaves()) + built.ki() * trace.tests();
-            String boxes = built.isBvh() ? String.format(Locale.ROOT, "%d box tests, ", trace.boxTests()) : "";
+            String boxes = built.testsBoxes() ? String.format(Locale.ROOT, "%d box tests, ", trace.boxTests()) : "";
             return String.format(Locale.ROOT, "<br><b>ray:</b> %d nodes, %d leaves, %s%d tests<br>"
                     + "ray cost (Kt per interior node + Ki per test): %.0f<br>%s", trace.nodes(), trace.leaves(), boxes,
                     trace.tests(), cost, trace.hitObject() >= 0 ? "hit object " + trace.hitObject() : "no hit");

@@ -146,7 +146,7 @@ final class StepperPanel extends JPanel implements CanvasOverlay {
     private String resultText() {
         if (model.ray() == null) return "result: cast a ray (drag with the Cast ray tool)";
         String hit = trace.hitObject() >= 0 ? "hit object " + trace.hitObject() + " at t = " + Widgets.num(trace.hitT()) : "no hit";
-        if (model.built().isBvh())
+        if (model.built().testsBoxes())
             return String.format(Locale.ROOT, "result: %s  (%d nodes, %d leaves, %d box tests, %d tests)", hit, trace.nodes(),
                     trace.leaves(), trace.boxTests(), trace.tests());
         return String.format(Locale.ROOT, "result: %s  (%d nodes, %d leaves, %d tests)", hit, trace.nodes(), trace.leaves(), trace.tests());

@@ -71,7 +71,7 @@ final class TreeNodeView extends JScrollPane {
         syncing = true;
         try {
             Built b = model.built();
-            treeModel = b.isBvh() ? new BvhTreeModel(b.bvh()) : new KdTreeModel(b.tree());
+            treeModel = b.treeNodes();
             jtree.setModel(treeModel);
         } finally {
             syncing = false;

@@ -183,7 +183,7 @@ final class WorkbenchModel {
      * {@return the kd-tree of the scene} (the previous one while a background build runs), or
      * null while the builder is the bounding volume hierarchy's
      */
-    public KdTree tree() { return built.tree(); }
+    public KdTree tree() { return built.kdTree(); }
 
     /** {@return what the last build made, a kd-tree or a hierarchy} (the previous one while a background build runs) */
     public Built built() { return built; }

@@ -185,6 +185,13 @@ public final class KdTree implements AccelerationStructure {
         return 2 * 16L + 4L * nodes.length + 4L * refs.length;
     }
 
+    /** {@return a line when the reference budget made leaves early ({@link #budgetLeaves()}), else none} */
+    @Override public java.util.List<String> notes() {
+        if (budgetLeaves == 0) return java.util.List.of();
+        return java.util.List.of("the reference budget (--reference-budget) made " + budgetLeaves + (budgetLeaves == 1 ? " leaf" : " leaves")
+                + " early");
+    }
+
     /** {@return "kd-tree"} */
     @Override public String kind() { return "kd-tree"; }
 

@@ -234,7 +234,7 @@ public abstract class KdTreeBuilder implements StructureBuilder {
      * @param n N, the number of primitives
      * @return the cap
      */
-    public final int depthCap(int n) {
+    @Override public final int depthCap(int n) {
         int maxDepth = maxDepth();
         return maxDepth >= 0 ? maxDepth : automaticDepthCap(n, depthFactor);
     }

@@ -175,10 +175,14 @@ public class SahBuilder extends KdTreeBuilder {
     public SahBuilder lambda(double lambda) { with(LAMBDA, lambda); return this; }
 
     /** {@return the plane search: as given, else the preset's, else EVENT} */
-    public Algorithm algorithm() {
-        Algorithm a = settings().given(ALGORITHM);
-        Quality q = quality();
-        return a != null ? a : q != null ? q.algorithm() : ALGORITHM.defaultValue();
+    public Algorithm algorithm() { return givenOrPreset(ALGORITHM, Quality::algorithm); }
+
+    /** A row's value as given, else the preset's (where it sets one), else the row's default. */
+    private <T> T givenOrPreset(Setting<T> row, java.util.function.Function<Quality, T> ofPreset) {
+        T given = settings().given(row);
+        if (given != null) return given;
+        T preset = quality() != null ? ofPreset.apply(quality()) : null;
+        return preset != null ? preset : row.defaultValue();
     }
 
     /**
@@ -201,11 +205,7 @@ public class SahBuilder extends KdTreeBuilder {
     public SahBuilder bins(int b) { with(SharedSettings.BINS, b); return this; }
 
     /** {@return the node size below which the binned search sweeps exactly: as given, else the preset's, else 64} */
-    public int exactBelow() {
-        Integer n = settings().given(EXACT_BELOW);
-        Quality q = quality();
-        return n != null ? n : q != null && q.exactBelow() >= 0 ? q.exactBelow() : EXACT_BELOW.defaultValue();
-    }
+    public int exactBelow() { return givenOrPreset(EXACT_BELOW, q -> q.exactBelow() >= 0 ? q.exactBelow() : null); }
 
     /**
      * Sets the exact threshold of the binned search.
@@ -216,11 +216,7 @@ public class SahBuilder extends KdTreeBuilder {
     public SahBuilder exactBelow(int n) { with(EXACT_BELOW, n); return this; }
 
     /** {@return the smallest node searched for a plane: as given, else the preset's, else 1} */
-    public int leafBelow() {
-        Integer n = settings().given(LEAF_BELOW);
-        Quality q = quality();
-        return n != null ? n : q != null ? q.leafBelow() : LEAF_BELOW.defaultValue();
-    }
+    public int leafBelow() { return givenOrPreset(LEAF_BELOW, Quality::leafBelow); }
 
     /**
      * Sets the smallest node searched for a plane.

@@ -101,7 +101,7 @@ public record RenderJob(Scene scene, AccelerationStructure structure, String bui
         s.append(String.format(Locale.ROOT, "render time: %.1f ms%s%n", result.renderNanos() / 1e6,
                 result.stopped() ? " (stopped before the last tile)" : ""));
         s.append(rayLines(result.rays(), result.renderNanos()));
-        s.append(structure.kind().equals("kd-tree") ? "tree" : structure.kind()).append(':').append(System.lineSeparator());
+        s.append(structure.kind()).append(':').append(System.lineSeparator());
         for (String line : structure.stats().describe().split("\\R")) s.append("  ").append(line).append(System.lineSeparator());
         return s.toString();
     }

@@ -32,6 +32,19 @@ class ArchitectureTest {
                 .containsExactlyInAnyOrderElementsOf(USES.keySet());
     }
 
+    /** The README's "What is here" and architecture.md's table name every package of src/main, and no other. */
+    @Test void theReadmeAndTheArchitectureTableNameEveryPackage() throws java.io.IOException {
+        java.util.Set<String> packages = new java.util.TreeSet<>(Layers.read().keySet());
+        String readme = java.nio.file.Files.readString(Path.of("README.md"));
+        java.util.Set<String> inReadme = new java.util.TreeSet<>();
+        for (Matcher m = Pattern.compile("`src/main/java/org/kdtree/([a-z0-9]+)`").matcher(readme); m.find(); ) inReadme.add(m.group(1));
+        assertThat(inReadme).as("README.md's packages").isEqualTo(packages);
+        String doc = java.nio.file.Files.readString(Layers.DOCUMENT);
+        java.util.Set<String> inTable = new java.util.TreeSet<>();
+        for (Matcher m = Pattern.compile("(?m)^\\| `([a-z0-9]+)` \\|").matcher(doc); m.find(); ) inTable.add(m.group(1));
+        assertThat(inTable).as("the package table of " + Layers.DOCUMENT).isEqualTo(packages);
+    }
+
     @Test void everyUseGoesDownTheLayers() {
         Map<String, Integer> layer = Layers.read();
         List<String> wrong = new ArrayList<>();
@@ -152,6 +165,57 @@ class ArchitectureTest {
             for (String d : NodeDecoding.in(SourceFiles.code(SourceFiles.read(file)))) found.add(file + ": " + d);
         }
         assertThat(found).as("node words decoded outside the tree's own files (read them with kdtree.Nodes)").isEmpty();
+    }
+
+    /**
+     * The kd-tree and the bounding volume hierarchy are siblings, picked by name in one layer
+     * ({@code spec}): below it no code names a structure but its own, and nowhere does code ask
+     * which structure it holds by a kind string or an {@code isBvh}; {@code instanceof} on a
+     * structure or its builder stands only where one is picked (spec) and where the workbench
+     * picks the one view of a structure ({@code gui.Built.of}).
+     */
+    @Test void structuresAreSiblingsNamedOnlyWhereOneIsPicked() {
+        assertThat(siblingViolations(SourceFiles.all())).as("structures named, asked or tested below the picking layer").isEmpty();
+    }
+
+    /** The check above finds what the issue that made the structures siblings listed (on sources as they were). */
+    @Test void theSiblingCheckFindsWhatItForbids() {
+        assertThat(siblingViolations("accel", "import org.kdtree.bvh.BvhBuilder; class Setting { Object b = new BvhBuilder(); }")).isNotEmpty();
+        assertThat(siblingViolations("bvh", "class BvhTraverser { boolean c = org.kdtree.kdtree.KdTree.class != null; }")).isNotEmpty();
+        assertThat(siblingViolations("render", "class RenderJob { String k(S s) { return s.kind().equals(\"kd-tree\") ? \"tree\" : s.kind(); } }")).isNotEmpty();
+        assertThat(siblingViolations("cli", "class StatsCommand { void f(Object built) { if (built instanceof KdTree kd) { } } }")).isNotEmpty();
+        assertThat(siblingViolations("gui", "record Built(KdTree tree, Bvh bvh) { boolean isBvh() { return bvh != null; } }")).isNotEmpty();
+        assertThat(siblingViolations("kdtree", "final class KdTree { String kind() { return \"kd-tree\"; } }")).isEmpty();
+    }
+
+    private static final java.util.Set<String> BELOW_THE_STRUCTURES = java.util.Set.of("limits", "geom", "files", "shape", "accel", "generate");
+    private static final Pattern ANY_STRUCTURE = Pattern.compile("\\b(KdTree|KdTreeBuilder|Bvh|BvhBuilder)\\b");
+    private static final Pattern A_BVH = Pattern.compile("\\b(Bvh|BvhBuilder)\\b"), A_KD_TREE = Pattern.compile("\\b(KdTree|KdTreeBuilder)\\b");
+    private static final Pattern ASKED = Pattern.compile("\\bisBvh\\b|\\bbuildsBvh\\b|kind\\s*\\(\\s*\\)\\s*\\.\\s*equals");
+    private static final Pattern KIND_STRING = Pattern.compile("\\.equals\\(\\s*\"(kd-tree|bvh)\"\\s*\\)|\"(kd-tree|bvh)\"\\s*\\.\\s*equals");
+    private static final Pattern TESTED = Pattern.compile("instanceof\\s+(KdTree|Bvh|KdTreeBuilder|BvhBuilder)\\b");
+
+    private static List<String> siblingViolations(List<Path> files) {
+        List<String> found = new ArrayList<>();
+        for (Path f : files) {
+            String source = SourceFiles.read(f);
+            String where = f.toString().replace('\\', '/');
+            boolean viewPicker = where.endsWith("gui/Built.java");
+            for (String v : siblingViolations(SourceFiles.packageOf(source), source))
+                if (!(viewPicker && v.startsWith("instanceof"))) found.add(f + ": " + v);
+        }
+        return found;
+    }
+
+    private static List<String> siblingViolations(String pkg, String source) {
+        List<String> found = new ArrayList<>();
+        String code = SourceFiles.code(source);
+        Pattern foreign = BELOW_THE_STRUCTURES.contains(pkg) ? ANY_STRUCTURE : pkg.equals("kdtree") ? A_BVH : pkg.equals("bvh") ? A_KD_TREE : null;
+        if (foreign != null) for (Matcher m = foreign.matcher(code); m.find(); ) found.add("names " + m.group());
+        for (Matcher m = ASKED.matcher(code); m.find(); ) found.add("asks " + m.group());
+        for (Matcher m = KIND_STRING.matcher(source); m.find(); ) found.add("compares " + m.group());
+        if (!pkg.equals("spec")) for (Matcher m = TESTED.matcher(code); m.find(); ) found.add(m.group());
+        return found;
     }
 
     /** The check above on the hand decodings it replaced (the traversal's and the point queries'), and on their fix. */

@@ -17,7 +17,6 @@ import org.kdtree.accel.TraversalStats;
 import org.kdtree.bvh.Bvh;
 import org.kdtree.geom.Ray;
 import org.kdtree.shape.Scene2D;
-import org.kdtree.spec.BuilderSpec;
 
 /**
  * The bounding volume hierarchy in the workbench, driven by the robot in the real window (a
@@ -49,7 +48,7 @@ class BvhGuiTest {
     /** The hierarchy the workbench builds with its default settings, and the ray's counts in it as the library counts them. */
     private record Expected(Bvh bvh, TraversalStats ray) {
         static Expected of(Scene2D scene) {
-            Bvh bvh = BuilderSpec.of("bvh").createBvh().build(scene);
+            Bvh bvh = new org.kdtree.bvh.BvhBuilder().build(scene);
             TraversalStats stats = new TraversalStats();
             bvh.query(new Shape2DIntersector(scene), stats).closestHit(
                     new Ray(2).set(RAY[0], RAY[1], RAY[2] - RAY[0], RAY[3] - RAY[1]), 0, Double.POSITIVE_INFINITY, new Hit());
@@ -93,7 +92,7 @@ class BvhGuiTest {
     @Test void theCanvasDrawsTheHierarchyAndTheStepperStepsThroughItsBoxes() {
         window.comboBox("builder").selectItem("bvh");
         Expected e = Expected.of(GuiActionRunner.execute(() -> bench.model().scene()));
-        assertThat(GuiActionRunner.execute(() -> bench.model().built().isBvh())).isTrue();
+        assertThat(GuiActionRunner.execute(() -> bench.model().built() instanceof BvhView)).isTrue();
         window.label("stat.nodes").requireText(Integer.toString(e.bvh().nodeCount()));
         window.label("stat.depth").requireText(Integer.toString(e.bvh().maxDepth()));
         window.label("stat.memory").requireText(StatsPanel.memory(e.bvh().memoryBytes()));

@@ -12,7 +12,6 @@ import org.junit.jupiter.api.Test;
 import org.kdtree.bvh.Bvh;
 import org.kdtree.generate.Shapes;
 import org.kdtree.shape.Scene2D;
-import org.kdtree.spec.BuilderSpec;
 
 /** Paints a bounding volume hierarchy into an image (headless) and reads back what was drawn. */
 class BvhPainterTest {
@@ -22,7 +21,7 @@ class BvhPainterTest {
     }
 
     private static Bvh bvh(Scene2D scene) {
-        return BuilderSpec.of("bvh").createBvh().build(scene);
+        return new org.kdtree.bvh.BvhBuilder().build(scene);
     }
 
     private static Painted paint(Scene2D scene, Bvh bvh, int selected) {

@@ -58,7 +58,7 @@ class TraversalRecorderTest {
 
     @Test void aHierarchysTraceStepsThroughItsBoxesToTheBruteForceHit() {
         Scene2D scene = new Scene2D(Shapes.clustered(300, 5).shapes());
-        org.kdtree.bvh.Bvh bvh = BuilderSpec.of("bvh").createBvh().build(scene);
+        org.kdtree.bvh.Bvh bvh = new org.kdtree.bvh.BvhBuilder().build(scene);
         BruteForce brute = new BruteForce(new Shape2DIntersector(scene));
         Random r = new Random(3);
         for (int i = 0; i < 200; i++) {

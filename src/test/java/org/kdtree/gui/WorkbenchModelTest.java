@@ -116,7 +116,7 @@ class WorkbenchModelTest {
         WorkbenchModel m = new WorkbenchModel();
         m.setScene("talk", BuiltinScenes.talkFigures());
         m.setSettings(m.settings().forBuilder("bvh").with(org.kdtree.accel.SharedSettings.LEAF_SIZE, 1));
-        assertThat(m.built().isBvh()).isTrue();
+        assertThat(m.built()).isInstanceOf(BvhView.class);
         assertThat(m.tree()).as("no kd-tree while the hierarchy is shown").isNull();
         assertThat(m.built().builderName()).isEqualTo("bvh");
         assertThat(m.built().stats().leaves()).as("one object per leaf").isEqualTo(m.scene().size());
@@ -131,7 +131,7 @@ class WorkbenchModelTest {
         assertThat(t.boxTests()).isPositive();
 
         m.setSettings(m.settings().forBuilder("sah"));
-        assertThat(m.built().isBvh()).isFalse();
+        assertThat(m.built()).isInstanceOf(KdTreeView.class);
         assertThat(m.tree().builderName()).isEqualTo("sah");
     }
 }

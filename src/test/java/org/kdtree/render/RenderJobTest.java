@@ -28,6 +28,6 @@ class RenderJobTest {
         Scene s = TestRenders.scene("cornell-box.json", 16, 12, 1);
         String summary = RenderJob.run(s, Builders.create("sah"), Renderer.Options.defaults().withThreads(1)).summary();
         assertThat(summary).contains("1 light)").contains("1 sample per pixel, 1 thread").contains("build time:")
-                .contains("rays:").contains("tree:");
+                .contains("rays:").contains("kd-tree:");
     }
 }

@@ -63,9 +63,9 @@ class BuilderSpecTest {
                 .hasMessage("--lambda applies to the sah builder only, not to median-plane");
         assertThatThrownBy(() -> BuilderSpec.of("median-plane").with(SharedSettings.BINS, 8).create())
                 .hasMessage("--bins applies to the sah and bvh builders only, not to median-plane");
-        assertThatThrownBy(() -> BuilderSpec.of("bvh").with(SahBuilder.LAMBDA, 0.5).createBvh())
+        assertThatThrownBy(() -> BuilderSpec.of("bvh").with(SahBuilder.LAMBDA, 0.5).structureBuilder())
                 .hasMessage("--lambda applies to the sah builder only, not to bvh");
-        assertThatThrownBy(() -> BuilderSpec.of("bvh").with(KdTreeBuilder.PERFECT_SPLITS, false).createBvh())
+        assertThatThrownBy(() -> BuilderSpec.of("bvh").with(KdTreeBuilder.PERFECT_SPLITS, false).structureBuilder())
                 .hasMessage("--no-perfect-splits applies to the kd-tree builders only, not to bvh");
         assertThatThrownBy(() -> BuilderSpec.of("sah").with(BvhBuilder.WIDTH, 8).create())
                 .hasMessage("--bvh-width applies to the bvh builder only, not to sah");
