@@ -17,6 +17,7 @@ import java.util.Locale;
  *
  * <pre>
  * java -cp target/benchmarks.jar org.kdtree.bench.OldAgainstNew OLD.jar NEW.jar MESH.obj RUNS BUILDER [EVENT|BINNED|fast]
+ * (an old jar from before the packages by structure loads too)
  * </pre>
  * BUILDER is a registered name ({@code sah}, {@code median-plane}, ...) or {@code centre-midpoint}.
  */
@@ -36,7 +37,7 @@ public final class OldAgainstNew {
             ClassLoader cl = new URLClassLoader(new URL[] {Path.of(args[i]).toUri().toURL()}, ClassLoader.getPlatformClassLoader());
             meshes[i] = cl.loadClass("org.kdtree.io.ObjMeshReader").getMethod("read", Path.class).invoke(null, Path.of(args[2]));
             builders[i] = builder(cl, args[4], args.length > 5 ? args[5] : null);
-            build[i] = cl.loadClass("org.kdtree.kdtree.KdTreeBuilder").getMethod("build", cl.loadClass("org.kdtree.shape.Primitives"));
+            build[i] = kdtreeClass(cl, "KdTreeBuilder").getMethod("build", cl.loadClass("org.kdtree.shape.Primitives"));
         }
         ThreadMXBean mx = ManagementFactory.getThreadMXBean();
         double[][] ms = new double[2][runs];
@@ -59,15 +60,33 @@ public final class OldAgainstNew {
     private static Object builder(ClassLoader cl, String name, String variant) throws Exception {
         Object b = name.equals("centre-midpoint")
                 ? cl.loadClass("org.kdtree.examples.CentreMidpointBuilder").getConstructor().newInstance()
-                : cl.loadClass("org.kdtree.spec.Builders").getMethod("create", String.class).invoke(null, name);
+                : specClass(cl, "Builders").getMethod("create", String.class).invoke(null, name);
         if (variant == null) return b;
         if (variant.equals("fast")) {
-            Class quality = cl.loadClass("org.kdtree.kdtree.Quality");
+            Class quality = kdtreeClass(cl, "Quality");
             b.getClass().getMethod("quality", quality).invoke(b, Enum.valueOf(quality, "FAST"));
         } else {
-            Class algorithm = cl.loadClass("org.kdtree.kdtree.SahBuilder$Algorithm");
+            Class algorithm = kdtreeClass(cl, "SahBuilder$Algorithm");
             b.getClass().getMethod("algorithm", algorithm).invoke(b, Enum.valueOf(algorithm, variant));
         }
         return b;
+    }
+
+    /** A class of the kd-tree's package: {@code org.kdtree.kdtree} since the packages by structure, {@code org.kdtree.build} in older jars. */
+    private static Class<?> kdtreeClass(ClassLoader cl, String name) throws ClassNotFoundException {
+        try {
+            return cl.loadClass("org.kdtree.kdtree." + name);
+        } catch (ClassNotFoundException older) {
+            return cl.loadClass("org.kdtree.build." + name);
+        }
+    }
+
+    /** The registry's class: {@code org.kdtree.spec} since the packages by structure, {@code org.kdtree.build} in older jars. */
+    private static Class<?> specClass(ClassLoader cl, String name) throws ClassNotFoundException {
+        try {
+            return cl.loadClass("org.kdtree.spec." + name);
+        } catch (ClassNotFoundException older) {
+            return cl.loadClass("org.kdtree.build." + name);
+        }
     }
 }
