@@ -5,6 +5,7 @@ import org.kdtree.accel.Intersector;
 import org.kdtree.accel.RayQuery;
 import org.kdtree.accel.SlabClip;
 import org.kdtree.accel.TraversalListener;
+import org.kdtree.accel.TraversalStack;
 import org.kdtree.geom.Ray;
 import org.kdtree.geom.Tolerance;
 
@@ -25,8 +26,7 @@ final class BvhTraverser implements RayQuery {
     private final int k;
     private final double[] box;
     private final int[] prim;
-    private final int[] stackNode;
-    private final double[] stackMin, stackMax;
+    private final TraversalStack stack;
     private final Hit scratch = new Hit();
     /** The interval of the last {@link #enters} test. */
     private double enter, exit;
@@ -40,9 +40,7 @@ final class BvhTraverser implements RayQuery {
         this.box = bvh.boxArray();
         this.prim = bvh.primitiveArray();
         int depth = bvh.maxDepth() + 2;
-        stackNode = new int[depth];
-        stackMin = new double[depth];
-        stackMax = new double[depth];
+        stack = new TraversalStack(depth);
     }
 
     @Override public boolean closestHit(Ray ray, double tMin, double tMax, Hit hit) {
@@ -67,7 +65,8 @@ final class BvhTraverser implements RayQuery {
         }
         l.begin(enter, exit);
         boolean found = false;
-        int sp = 0, node = 0;
+        stack.clear();
+        int node = 0;
         double curMin = enter, curMax = exit;
         while (true) {
             while (!bvh.isLeaf(node)) {
@@ -84,10 +83,7 @@ final class BvhTraverser implements RayQuery {
                     boolean aFirst = aMin <= bMin;
                     int far = aFirst ? b : a;
                     double farMin = aFirst ? bMin : aMin, farMax = aFirst ? bMax : aMax;
-                    stackNode[sp] = far;
-                    stackMin[sp] = farMin;
-                    stackMax[sp++] = farMax;
-                    l.pushFar(far, farMin, farMax);
+                    stack.push(far, farMin, farMax, l);
                     node = aFirst ? a : b;
                     curMin = aFirst ? aMin : bMin;
                     curMax = aFirst ? aMax : bMax;
@@ -111,16 +107,10 @@ final class BvhTraverser implements RayQuery {
                     found |= h;
                 }
             }
-            while (true) {
-                if (sp == 0) return found;
-                sp--;
-                node = stackNode[sp];
-                curMin = stackMin[sp];
-                curMax = stackMax[sp];
-                boolean skip = curMin > hit.t + Math.abs(hit.t) * SLACK;
-                l.pop(node, curMin, curMax, skip);
-                if (!skip) break;
-            }
+            if (!stack.popNext(true, hit.t, SLACK, l)) return found;
+            node = stack.node();
+            curMin = stack.tMin();
+            curMax = stack.tMax();
         }
     }
 

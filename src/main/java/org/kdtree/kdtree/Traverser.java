@@ -8,6 +8,7 @@ import org.kdtree.accel.Intersector;
 import org.kdtree.accel.RayQuery;
 import org.kdtree.accel.SlabClip;
 import org.kdtree.accel.TraversalListener;
+import org.kdtree.accel.TraversalStack;
 import org.kdtree.accel.TriangleIntersector;
 import org.kdtree.geom.Box;
 import org.kdtree.geom.Ray;
@@ -56,8 +57,7 @@ public final class Traverser implements RayQuery {
     /** Where the ray enters and leaves the scene box, from {@link #clipToScene}. */
     private final double[] interval = new double[2];
     private final Mailbox mailbox;
-    private final int[] stackNode;
-    private final double[] stackMin, stackMax;
+    private final TraversalStack stack;
     private final MeshTraversal fast;
     private final Hit scratch = new Hit();
     /** The ray's range clipped to the scene box, from {@link #clipToScene}. */
@@ -86,9 +86,7 @@ public final class Traverser implements RayQuery {
         }
         mailbox = new Mailbox(prims.size());
         int depth = tree.stats().maxDepth() + 2;
-        stackNode = new int[depth];
-        stackMin = new double[depth];
-        stackMax = new double[depth];
+        stack = new TraversalStack(depth);
         fast = prims instanceof TriangleIntersector t ? new MeshTraversal(tree, t, mailbox, depth) : null;
     }
 
@@ -179,7 +177,8 @@ public final class Traverser implements RayQuery {
         l.begin(enter, exit);
         int stamp = mailbox.next();
         boolean found = false;
-        int sp = 0, node = 0;
+        stack.clear();
+        int node = 0;
         double curMin = enter, curMax = exit;
         while (true) {
             int w = Nodes.word(nodes, node);
@@ -193,8 +192,8 @@ public final class Traverser implements RayQuery {
                 switch (visit) {
                     case NEAR -> node = near;
                     case FAR -> node = far;
-                    case BOTH_IN_PLANE -> { push(sp++, far, curMin, curMax, l); node = near; }
-                    case BOTH -> { push(sp++, far, tSplit, curMax, l); node = near; curMax = tSplit; }
+                    case BOTH_IN_PLANE -> { stack.push(far, curMin, curMax, l); node = near; }
+                    case BOTH -> { stack.push(far, tSplit, curMax, l); node = near; curMax = tSplit; }
                 }
                 w = Nodes.word(nodes, node);
             }
@@ -204,16 +203,10 @@ public final class Traverser implements RayQuery {
             if (result == ANY) return true;
             found |= result == CLOSEST;
             // Take the next saved far child that can still hold something closer.
-            while (true) {
-                if (sp == 0) return found;
-                sp--;
-                node = stackNode[sp];
-                curMin = stackMin[sp];
-                curMax = stackMax[sp];
-                boolean skip = mode == CLOSEST && curMin > hit.t + Math.abs(hit.t) * SLACK;
-                l.pop(node, curMin, curMax, skip);
-                if (!skip) break;
-            }
+            if (!stack.popNext(mode == CLOSEST, hit.t, SLACK, l)) return found;
+            node = stack.node();
+            curMin = stack.tMin();
+            curMax = stack.tMax();
         }
     }
 
@@ -254,13 +247,6 @@ public final class Traverser implements RayQuery {
             result = CLOSEST;
         }
         return result;
-    }
-
-    private void push(int sp, int node, double tMin, double tMax, TraversalListener l) {
-        stackNode[sp] = node;
-        stackMin[sp] = tMin;
-        stackMax[sp] = tMax;
-        l.pushFar(node, tMin, tMax);
     }
 
     private static Hit copy(Hit h) {
