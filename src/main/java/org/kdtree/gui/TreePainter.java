@@ -21,7 +21,7 @@ import org.kdtree.shape.Shape2D;
  * the objects, and each split line clipped to the voxel it cuts, thicker nearer the root.
  * Pure drawing into any {@link Graphics2D}, so that tests can paint into an image.
  */
-public final class TreePainter {
+final class TreePainter {
     private TreePainter() {
     }
 

@@ -6,7 +6,7 @@ import org.kdtree.geom.Box;
  * Maps scene coordinates (y up) to screen pixels (y down): a uniform scale and an offset.
  * Zoom keeps the point under the mouse fixed; pan moves by pixels.
  */
-public final class ViewTransform {
+final class ViewTransform {
     private double scale = 1, offsetX, offsetY;
 
     /**

@@ -1,11 +1,9 @@
-package org.kdtree.bench;
+package org.kdtree.gui;
 
 import java.awt.Graphics2D;
 import java.awt.image.BufferedImage;
 import java.util.concurrent.TimeUnit;
 import org.kdtree.generate.Shapes;
-import org.kdtree.gui.TreePainter;
-import org.kdtree.gui.ViewTransform;
 import org.kdtree.kdtree.KdTree;
 import org.kdtree.shape.Scene2D;
 import org.kdtree.spec.BuilderSpec;
