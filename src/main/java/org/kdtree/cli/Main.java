@@ -87,12 +87,15 @@ public final class Main implements Runnable {
      */
     private static String[] loadPlugins(String[] args) {
         List<String> rest = new ArrayList<>();
+        java.util.Map<String, Path> seen = new java.util.HashMap<>();
         for (int i = 0; i < args.length; i++) {
             if (args[i].equals("--plugin")) {
                 if (i + 1 == args.length) throw new IllegalArgumentException("--plugin needs a jar or a folder of jars");
-                Builders.loadPlugins(Path.of(args[++i]));
+                Path p = Path.of(args[++i]);
+                Builders.requireDistinct(p, Builders.loadPlugins(p), seen);
             } else if (args[i].startsWith("--plugin=")) {
-                Builders.loadPlugins(Path.of(args[i].substring("--plugin=".length())));
+                Path p = Path.of(args[i].substring("--plugin=".length()));
+                Builders.requireDistinct(p, Builders.loadPlugins(p), seen);
             } else {
                 rest.add(args[i]);
             }
