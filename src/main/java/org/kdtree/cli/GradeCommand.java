@@ -81,7 +81,7 @@ final class GradeCommand implements Callable<Integer> {
             String n = output.getFileName().toString().toLowerCase(Locale.ROOT);
             if (!n.endsWith(".md") && !n.endsWith(".csv"))
                 throw new IllegalArgumentException("-o " + output + ": write a .md (Markdown) or .csv report");
-            CommandFiles.requireFolder("-o", output);
+            CommandFiles.requireWritable("-o", output);
         }
         List<ContractCase> cases = new ArrayList<>(Contract.cases());
         cases.addAll(Contract.randomCases());

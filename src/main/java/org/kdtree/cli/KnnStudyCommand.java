@@ -119,8 +119,8 @@ final class KnnStudyCommand implements Callable<Integer> {
             throw new IllegalArgumentException("give POINTS and --queries, or --generate, not both");
         if (dimensions == null && generate == null && (pointsFile == null || queriesFile == null))
             throw new IllegalArgumentException("give POINTS and --queries FILE, or --generate uniform|clustered");
-        CommandFiles.requireFolder("--csv", csvFile());
-        CommandFiles.requireFolder("--chart", chartFile());
+        CommandFiles.requireWritable("--csv", csvFile());
+        CommandFiles.requireWritable("--chart", chartFile());
         requireNotInput("--csv", csvFile());
         requireNotInput("--chart", chartFile());
         ChartFile.requireFormat("--chart", chartFile());

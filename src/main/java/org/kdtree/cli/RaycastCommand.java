@@ -79,7 +79,10 @@ final class RaycastCommand implements Callable<Integer> {
         if (hitsFile != null && !hitsFile.toString().equals("-")) {
             CommandFiles.requireNotInput("--hits", hitsFile, "MESH", mesh);
             CommandFiles.requireNotInput("--hits", hitsFile, "--rays", raysFile);
+            CommandFiles.requireWritable("--hits", hitsFile);
         }
+        if (raysFile != null && !Files.isRegularFile(raysFile))
+            throw new java.io.IOException("--rays " + raysFile + (Files.isDirectory(raysFile) ? ": is a folder, not a file of rays" : ": no such file"));
         String settings = spec.describe();        // also refuses settings the builder does not take, before the mesh is read
         TriangleMesh scene = MeshGrid.grid(CommandFiles.readMesh(mesh, "raycast"), grid);
         threads = spec.value(org.kdtree.build.Setting.THREADS);
@@ -94,8 +97,6 @@ final class RaycastCommand implements Callable<Integer> {
             tree = spec.build(scene, deadlines.supervisor());
         }
         RayQuery traverser = tree.query(new TriangleIntersector(scene));
-        if (!Files.isRegularFile(raysFile)) throw new java.io.IOException(raysFile + ": no such file");
-        if (!hitsFile.toString().equals("-")) CommandFiles.requireFolder("--hits", hitsFile);
         try (BufferedReader in = Files.newBufferedReader(raysFile, StandardCharsets.UTF_8)) {
             if (hitsFile.toString().equals("-")) RayFile.trace(in, raysFile.toString(), traverser, new PrintWriter(System.out));
             else AtomicFile.writeText(hitsFile, out -> RayFile.trace(in, raysFile.toString(), traverser, new PrintWriter(out)));

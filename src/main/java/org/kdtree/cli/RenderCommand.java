@@ -81,6 +81,6 @@ final class RenderCommand implements Callable<Integer> {
             throw new IllegalArgumentException("-o " + output + ": is a folder; give a file name such as " + output.resolve("render.png"));
         if (!output.getFileName().toString().toLowerCase(java.util.Locale.ROOT).endsWith(".png"))
             throw new IllegalArgumentException("-o " + output + ": the image is written as PNG; give a file name ending in .png");
-        CommandFiles.requireFolder("-o", output);
+        CommandFiles.requireWritable("-o", output);
     }
 }

@@ -100,8 +100,8 @@ final class TradeoffCommand implements Callable<Integer> {
         String base = mesh.getFileName().toString().replaceFirst("\\.[^.]*$", "") + (grid > 1 ? "-grid" + grid : "");
         Path csvOut = csv != null ? csv : Path.of("tradeoff-" + base + ".csv");
         Path pngOut = chart != null ? chart : Path.of("tradeoff-" + base + ".png");
-        CommandFiles.requireFolder("--csv", csvOut);
-        CommandFiles.requireFolder("--chart", pngOut);
+        CommandFiles.requireWritable("--csv", csvOut);
+        CommandFiles.requireWritable("--chart", pngOut);
         CommandFiles.requireNotInput("--csv", csvOut, "MESH", mesh);
         CommandFiles.requireNotInput("--chart", pngOut, "MESH", mesh);
         ChartFile.requireFormat("--chart", pngOut);
