@@ -53,6 +53,7 @@ final class RenderCommand implements Callable<Integer> {
     @Override public Integer call() throws Exception {
         checkOutput();
         Path sceneFile = BundledScenes.resolve(scene);
+        requireJsonScene(sceneFile);
         CommandFiles.requireNotInput("-o", output, "SCENE", sceneFile);
         Scene s = SceneReader.read(sceneFile);
         if (spp != null) s = s.withSamplesPerPixel(Limits.SAMPLES_PER_PIXEL.check("--spp", spp));
@@ -73,6 +74,27 @@ final class RenderCommand implements Callable<Integer> {
         System.out.print(job.summary());
         System.out.println("wrote " + output);
         return 0;
+    }
+
+    /** The bundled scenes render takes: the JSON ones. */
+    private static String jsonScenes() {
+        return String.join(", ", BundledScenes.FILES.stream().filter(f -> f.endsWith(".json"))
+                .map(f -> BundledScenes.PREFIX + f.substring(0, f.length() - ".json".length())).toList());
+    }
+
+    /** Refuses a SCENE that is not a JSON scene, naming it as the user gave it and saying what render takes. */
+    private void requireJsonScene(Path sceneFile) {
+        String n = sceneFile.getFileName() == null ? "" : sceneFile.getFileName().toString().toLowerCase(java.util.Locale.ROOT);
+        if (n.endsWith(".json") && !java.nio.file.Files.isDirectory(sceneFile)) return;
+        String what;
+        if (java.nio.file.Files.isDirectory(sceneFile)) what = "is a folder";
+        else if (n.endsWith(".obj")) what = "is an OBJ mesh, with no camera or lights; put it in a JSON scene as an object "
+                + "{\"type\": \"obj\", \"file\": \"" + sceneFile.getFileName() + "\"} (docs/scene-format.md), or trace it with stats or raycast";
+        else if (n.endsWith(".scene2d")) what = "is a 2-D scene; open it in the workbench (gui) or give it to stats";
+        else if (!java.nio.file.Files.exists(sceneFile)) return; // the reader names a missing file
+        else what = "is not a JSON scene (.json)";
+        throw new IllegalArgumentException("SCENE " + scene + ": " + what + ". render takes a JSON scene (camera, lights, materials, "
+                + "objects: docs/scene-format.md), such as " + jsonScenes());
     }
 
     /** Refuses, before any rendering, an output the image could not be written to. */
