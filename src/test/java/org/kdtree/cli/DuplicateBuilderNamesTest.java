@@ -10,6 +10,10 @@ import org.kdtree.testing.StudentJars;
 
 /** Issue 34, item 1: two students' jars that both name their builder "my-builder" are refused, naming both jars. */
 class DuplicateBuilderNamesTest {
+    @org.junit.jupiter.api.AfterEach void forgetThePlugIn() {
+        org.kdtree.build.Builders.remove("my-builder");
+    }
+
     @Test void aFolderWithTwoJarsOfOneBuilderNameIsRefusedNamingBoth(@TempDir Path dir) throws Exception {
         Path folder = Files.createDirectory(dir.resolve("class"));
         Path alice = StudentJars.compile(folder, "alice.jar", "my-builder", 2, null);
