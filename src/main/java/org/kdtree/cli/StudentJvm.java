@@ -101,18 +101,36 @@ record StudentJvm(Deadlines deadlines, double seconds, int heapMb) {
         return String.join(File.pathSeparator, keep);
     }
 
-    /** The student's name from the jar's manifest (Implementation-Vendor, else Built-By), or "". */
+    /**
+     * The student's name: the jar's manifest's Implementation-Vendor (the starter project writes
+     * its {@code student} property there), else Built-By; else the coordinates of the pom Maven
+     * put in the jar ({@code groupId:artifactId}), unless they are the starter's own; else "".
+     */
     static String student(Path jar) {
         try (JarFile j = new JarFile(jar.toFile())) {
             var m = j.getManifest();
-            if (m == null) return "";
-            String v = m.getMainAttributes().getValue("Implementation-Vendor");
-            if (v == null) v = m.getMainAttributes().getValue("Built-By");
-            return v == null ? "" : v.strip();
-        } catch (IOException | SecurityException notAJar) {
+            if (m != null) {
+                String v = m.getMainAttributes().getValue("Implementation-Vendor");
+                if (v == null || v.isBlank()) v = m.getMainAttributes().getValue("Built-By");
+                if (v != null && !v.isBlank()) return v.strip();
+            }
+            for (var e : java.util.Collections.list(j.entries())) {
+                if (!e.getName().startsWith("META-INF/maven/") || !e.getName().endsWith("/pom.properties")) continue;
+                java.util.Properties pom = new java.util.Properties();
+                try (InputStream in = j.getInputStream(e)) {
+                    pom.load(in);
+                }
+                String coordinates = pom.getProperty("groupId", "") + ":" + pom.getProperty("artifactId", "");
+                if (!coordinates.equals(STARTER_COORDINATES) && !coordinates.equals(":")) return coordinates;
+            }
+            return "";
+        } catch (IOException | SecurityException | IllegalArgumentException notAJar) {
             return "";
         }
     }
+
+    /** The starter project's groupId:artifactId, which names no one. */
+    static final String STARTER_COORDINATES = "course.kdtree:my-builder";
 
     /** Kills the child and whatever it started, and waits for it to be gone. */
     private static void kill(Process p) throws InterruptedException {
