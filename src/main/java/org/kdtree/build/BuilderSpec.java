@@ -60,7 +60,10 @@ public final class BuilderSpec {
 
     /** A new builder of {@code name} with its defaults: a {@link KdTreeBuilder} or a {@link BvhBuilder}. */
     private static Object newBuilder(String name) {
-        return name.equals(BvhBuilder.NAME) ? new BvhBuilder() : Builders.create(name);
+        if (name.equals(BvhBuilder.NAME)) return new BvhBuilder();
+        if (!Builders.names().contains(name))
+            throw new IllegalArgumentException("unknown builder '" + name + "' (known: " + String.join(", ", names()) + ")");
+        return Builders.create(name);
     }
 
     /**
@@ -175,12 +178,14 @@ public final class BuilderSpec {
      */
     public AccelerationStructure build(Primitives prims, Supervisor supervisor) {
         if (buildsBvh()) return createBvh().build(prims);
+        newBuilder(builder);
         KdTreeBuilder b = create();
         return AccelerationStructure.of(supervisor == null ? b.build(prims) : supervisor.build(b, prims));
     }
 
     /** {@return the builder's settings in one line} (its {@code describeSettings}) */
     public String describe() {
+        newBuilder(builder); // an unknown name: the line lists every name, bvh too
         return buildsBvh() ? createBvh().describeSettings() : create().describeSettings();
     }
 

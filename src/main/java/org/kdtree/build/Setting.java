@@ -183,6 +183,9 @@ public final class Setting<T> {
     /** {@return the builders it applies to, as a message says it}, e.g. "the sah builder", "every builder" */
     public String ownerName() { return ownerName; }
 
+    /** {@return whether only the BVH's builder takes it (no kd-tree builder does)} */
+    public boolean bvhOnly() { return owner == BVH; }
+
     /** {@return whether every builder takes it, the BVH's too} */
     public boolean appliesToEvery() { return owner == EVERY && giveBvh != null; }
 

@@ -47,10 +47,10 @@ final class ClassGradeCommand implements Callable<Integer> {
     Integer jobs;
 
     @Option(names = "--student-deadline", paramLabel = "SECONDS",
-            description = "A student's JVM still running after this is killed (default: 300; 1..86400).")
+            description = "A student's JVM still running after this is killed (default: 300; 1 to 86400).")
     Double studentSeconds;
 
-    @Option(names = "--student-heap", paramLabel = "MB", description = "Each student's JVM's heap, -Xmx (default: 512; 64..65536).")
+    @Option(names = "--student-heap", paramLabel = "MB", description = "Each student's JVM's heap, -Xmx (default: 512; 64 to 65536).")
     Integer heapMb;
 
     @Mixin

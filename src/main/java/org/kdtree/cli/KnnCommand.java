@@ -42,7 +42,11 @@ final class KnnCommand implements Callable<Integer> {
     Double radius;
 
     @Mixin
-    BuilderOptions options = new BuilderOptions("sliding-midpoint");
+    BuilderOptions options = BuilderOptions.kdTrees("sliding-midpoint", null);
+
+    /** Taken as every command takes it (knn draws no bar: it prints one summary line). */
+    @Mixin
+    ProgressOption progress;
 
     @Option(names = "--out", required = true, paramLabel = "FILE", description = "Where the neighbour lines go.")
     Path outFile;

@@ -48,7 +48,7 @@ final class KnnStudyCommand implements Callable<Integer> {
     int k;
 
     @Mixin
-    BuilderOptions options = new BuilderOptions("sliding-midpoint");
+    BuilderOptions options = BuilderOptions.kdTrees("sliding-midpoint", null);
 
     @Option(names = "--budgets", split = ",", paramLabel = "L", defaultValue = "1,2,4,8,16,32,64,128",
             description = "Best-bin-first budgets: leaves scanned per query (default: ${DEFAULT-VALUE}).")
@@ -57,32 +57,32 @@ final class KnnStudyCommand implements Callable<Integer> {
     @Option(names = "--epsilons", split = ",", paramLabel = "E", description = "Epsilons of the (1 + eps) bound (default: none).")
     List<Double> epsilons;
 
-    @Option(names = "--runs", defaultValue = "3", description = "Timed passes per measurement, after a warm-up; the median is kept (default: ${DEFAULT-VALUE}).")
+    @Option(paramLabel = "N", names = "--runs", defaultValue = "3", description = "Timed passes per measurement, after a warm-up; the median is kept (default: ${DEFAULT-VALUE}).")
     int runs;
 
     @Option(names = "--generate", paramLabel = "KIND", description = "Generate the points and queries instead of reading them: uniform or clustered.")
     String generate;
 
-    @Option(names = "--n", defaultValue = "10000", description = "Generated points (default: ${DEFAULT-VALUE}).")
+    @Option(paramLabel = "N", names = "--n", defaultValue = "10000", description = "Generated points (default: ${DEFAULT-VALUE}).")
     int n;
 
-    @Option(names = "--dimension", defaultValue = "3", description = "Generated points' dimension (default: ${DEFAULT-VALUE}).")
+    @Option(paramLabel = "N", names = "--dimension", defaultValue = "3", description = "Generated points' dimension (default: ${DEFAULT-VALUE}).")
     int dimension;
 
-    @Option(names = "--query-count", defaultValue = "1000", description = "Generated query points (default: ${DEFAULT-VALUE}).")
+    @Option(paramLabel = "N", names = "--query-count", defaultValue = "1000", description = "Generated query points (default: ${DEFAULT-VALUE}).")
     int queryCount;
 
-    @Option(names = "--seed", defaultValue = "1", description = "Seed of the generated data (default: ${DEFAULT-VALUE}).")
+    @Option(paramLabel = "N", names = "--seed", defaultValue = "1", description = "Seed of the generated data (default: ${DEFAULT-VALUE}).")
     long seed;
 
     @Option(names = "--dimensions", split = ",", paramLabel = "D",
             description = "Sweep: the exact search against brute force on generated data (uniform unless --generate says) at each dimension.")
     List<Integer> dimensions;
 
-    @Option(names = "--csv", description = "CSV output file (default: knn-study-DATA.csv).")
+    @Option(paramLabel = "FILE", names = "--csv", description = "CSV output file (default: knn-study-DATA.csv).")
     Path csv;
 
-    @Option(names = "--chart", description = "Chart file, .png or .svg (default: knn-study-DATA.png).")
+    @Option(paramLabel = "FILE", names = "--chart", description = "Chart file, .png or .svg (default: knn-study-DATA.png).")
     Path chart;
 
     @Mixin

@@ -10,7 +10,7 @@ import picocli.CommandLine.Command;
 import picocli.CommandLine.Option;
 
 /** The command line: {@code java -jar kdtree.jar COMMAND ...}. */
-@Command(name = "kdtree", mixinStandardHelpOptions = true, version = "kdtree 0.1",
+@Command(name = "kdtree", mixinStandardHelpOptions = true, versionProvider = Main.Version.class,
         description = "k-d trees for ray tracing: build, inspect, trace, render; nearest neighbours of points.",
         subcommands = {GuiCommand.class, StatsCommand.class, RaycastCommand.class, RenderCommand.class, TradeoffCommand.class,
                 KnnCommand.class, KnnStudyCommand.class, GradeCommand.class, ClassGradeCommand.class},
@@ -25,6 +25,17 @@ public final class Main implements Runnable {
             description = "Load the builders a jar (or every jar in a folder) lists in META-INF/services; "
                     + "any command, anywhere on the line, repeatable.")
     List<Path> plugins;
+
+    /** The version the build wrote (the pom's, e.g. 0.1.0-SNAPSHOT), from {@code version.properties}. */
+    static final class Version implements CommandLine.IVersionProvider {
+        @Override public String[] getVersion() throws java.io.IOException {
+            java.util.Properties p = new java.util.Properties();
+            try (var in = Main.class.getResourceAsStream("version.properties")) {
+                if (in != null) p.load(in);
+            }
+            return new String[] {"kdtree " + p.getProperty("version", "(version unknown: not built by Maven)")};
+        }
+    }
 
     /**
      * Offers the course's worked example ({@code -b centre-midpoint}, {@code grade}, the workbench,
@@ -61,6 +72,7 @@ public final class Main implements Runnable {
             return Failure.report(e, cl.getErr());
         }
         cl.setCaseInsensitiveEnumValuesAllowed(true);
+        for (CommandLine sub : cl.getSubcommands().values()) sub.getCommandSpec().versionProvider(new Version()); // every -V: the build's
         if (args.length > 0 && !args[0].startsWith("-") && !cl.getSubcommands().containsKey(args[0])) {
             // picocli would print the top-level help for "nearest --help" and exit 0
             cl.getErr().println("error: unknown command '" + args[0] + "'; the commands are "

@@ -42,7 +42,7 @@ final class RaycastCommand implements Callable<Integer> {
     Path mesh;
 
     @Mixin
-    BuilderOptions options = new BuilderOptions("sah");
+    BuilderOptions options = new BuilderOptions("sah").threadsHelp("threads building the tree and tracing each ray set (the same tree and hits at any count)");
 
     @Option(names = "--grid", defaultValue = "1", paramLabel = "N",
             description = "Repeat the mesh in an N x N grid on the x-z plane first (the SPEC's scaling scene uses 4).")

@@ -25,23 +25,23 @@ final class RenderCommand implements Callable<Integer> {
             + "scene from any folder: scenes:cornell-box.")
     String scene;
 
-    @Option(names = {"-o", "--output"}, defaultValue = "render.png", description = "PNG file to write (default: ${DEFAULT-VALUE}).")
+    @Option(paramLabel = "FILE", names = {"-o", "--output"}, defaultValue = "render.png", description = "PNG file to write (default: ${DEFAULT-VALUE}).")
     Path output;
 
     @Mixin
     BuilderOptions options = new BuilderOptions("sah");
 
-    @Option(names = "--spp", description = "Samples per pixel (default: the scene's).")
+    @Option(paramLabel = "N", names = "--spp", description = "Samples per pixel (default: the scene's).")
     Integer spp;
 
-    @Option(names = "--ray-depth", description = "Maximum reflection/refraction depth (default: the scene's maxDepth; "
+    @Option(paramLabel = "N", names = "--ray-depth", description = "Maximum reflection/refraction depth (default: the scene's maxDepth; "
             + "--max-depth is the tree's).")
     Integer rayDepth;
 
-    @Option(names = "--width", description = "Image width (default: the scene's).")
+    @Option(paramLabel = "N", names = "--width", description = "Image width (default: the scene's).")
     Integer width;
 
-    @Option(names = "--height", description = "Image height (default: the scene's).")
+    @Option(paramLabel = "N", names = "--height", description = "Image height (default: the scene's).")
     Integer height;
 
     @Mixin

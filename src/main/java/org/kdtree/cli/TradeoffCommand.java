@@ -34,20 +34,20 @@ final class TradeoffCommand implements Callable<Integer> {
     @Parameters(paramLabel = "MESH", description = "An OBJ mesh.")
     Path mesh;
 
-    @Option(names = "--grid", defaultValue = "1", description = "Repeat the mesh in a G x G grid (4: the spec's scaling scene).")
+    @Option(paramLabel = "N", names = "--grid", defaultValue = "1", description = "Repeat the mesh in a G x G grid (4: the spec's scaling scene).")
     int grid;
 
-    @Option(names = "--rays", defaultValue = "R", description = "Ray workload: P (primary, spec), R (random, spec) (default: ${DEFAULT-VALUE}).")
+    @Option(paramLabel = "P|R", names = "--rays", defaultValue = "R", description = "Ray workload: P (primary, spec), R (random, spec) (default: ${DEFAULT-VALUE}).")
     String rays;
 
-    @Option(names = "--ray-count", defaultValue = "1000000",
+    @Option(paramLabel = "N", names = "--ray-count", defaultValue = "1000000",
             description = "Rays in the workload: R draws this many, P uses a square image of about this many (default: ${DEFAULT-VALUE}).")
     int rayCount;
 
-    @Option(names = "--counted-rays", defaultValue = "100000", description = "Rays traced again to count nodes and tests (default: ${DEFAULT-VALUE}).")
+    @Option(paramLabel = "N", names = "--counted-rays", defaultValue = "100000", description = "Rays traced again to count nodes and tests (default: ${DEFAULT-VALUE}).")
     int countedRays;
 
-    @Option(names = "--runs", defaultValue = "3", description = "Timed runs per variant, after one warm-up; the median is kept (default: ${DEFAULT-VALUE}).")
+    @Option(paramLabel = "N", names = "--runs", defaultValue = "3", description = "Timed runs per variant, after one warm-up; the median is kept (default: ${DEFAULT-VALUE}).")
     int runs;
 
     @Mixin
@@ -57,16 +57,16 @@ final class TradeoffCommand implements Callable<Integer> {
     @Option(names = "--quick", description = "Only median-plane, exact SAH, binned B = 8, 32 and the bvh.")
     boolean quick;
 
-    @Option(names = "--variants", split = ",", description = "Only these variants (names as listed by the full run).")
+    @Option(paramLabel = "NAME,...", names = "--variants", split = ",", description = "Only these variants (names as listed by the full run).")
     List<String> only;
 
-    @Option(names = "--csv", description = "CSV output file (default: tradeoff-MESHNAME.csv).")
+    @Option(paramLabel = "FILE", names = "--csv", description = "CSV output file (default: tradeoff-MESHNAME.csv).")
     Path csv;
 
-    @Option(names = "--chart", description = "Chart file, .png or .svg (default: tradeoff-MESHNAME.png).")
+    @Option(paramLabel = "FILE", names = "--chart", description = "Chart file, .png or .svg (default: tradeoff-MESHNAME.png).")
     Path chart;
 
-    @Option(names = "--chart-rpt", defaultValue = "10", description = "Rays per triangle for the chart's trace time (default: ${DEFAULT-VALUE}).")
+    @Option(paramLabel = "X", names = "--chart-rpt", defaultValue = "10", description = "Rays per triangle for the chart's trace time (default: ${DEFAULT-VALUE}).")
     double chartRaysPerTriangle;
 
     @Mixin
