@@ -13,8 +13,19 @@ final class CommandFiles {
     private CommandFiles() {
     }
 
+    /**
+     * Refuses an input {@code what} (e.g. "MESH", "--queries") that is a folder, in the one
+     * wording every command uses; a missing file is left to its reader, which names it.
+     */
+    static Path requireNotFolder(String what, Path file) {
+        if (java.nio.file.Files.isDirectory(file))
+            throw new IllegalArgumentException(what + " " + file + ": is a folder, not a file");
+        return file;
+    }
+
     /** The triangle mesh {@code command} traces rays through: an OBJ file with at least one triangle. */
     static TriangleMesh readMesh(Path mesh, String command) throws IOException {
+        requireNotFolder("MESH", mesh);
         if (!mesh.getFileName().toString().toLowerCase(Locale.ROOT).endsWith(".obj"))
             throw new IllegalArgumentException(mesh + ": " + command + " traces rays through a triangle mesh; give an OBJ file");
         TriangleMesh m = ObjMeshReader.read(mesh);

@@ -59,8 +59,8 @@ final class KnnCommand implements Callable<Integer> {
         CommandFiles.requireWritable("--out", outFile);
         CommandFiles.requireNotInput("--out", outFile, "POINTS", pointsFile);
         CommandFiles.requireNotInput("--out", outFile, "--queries", queriesFile);
-        PointsKd points = PointCsvReader.read(pointsFile);
-        PointsKd queries = PointCsvReader.read(queriesFile);
+        PointsKd points = PointCsvReader.read(CommandFiles.requireNotFolder("POINTS", pointsFile));
+        PointsKd queries = PointCsvReader.read(CommandFiles.requireNotFolder("--queries", queriesFile));
         if (queries.dimension() != points.dimension())
             throw new IllegalArgumentException(queriesFile + ": the queries are " + queries.dimension() + "-D, the points "
                     + points.dimension() + "-D (" + pointsFile + ")");

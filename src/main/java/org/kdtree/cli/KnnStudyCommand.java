@@ -92,8 +92,10 @@ final class KnnStudyCommand implements Callable<Integer> {
         checkOptions();
         KdTreeBuilder b = options.spec().create();
         if (dimensions != null) return sweep(b);
-        PointsKd points = generate != null ? kind().points(n, dimension, seed) : PointCsvReader.read(pointsFile);
-        PointsKd queries = generate != null ? kind().queries(queryCount, dimension, seed) : PointCsvReader.read(queriesFile);
+        PointsKd points = generate != null ? kind().points(n, dimension, seed)
+                : PointCsvReader.read(CommandFiles.requireNotFolder("POINTS", pointsFile));
+        PointsKd queries = generate != null ? kind().queries(queryCount, dimension, seed)
+                : PointCsvReader.read(CommandFiles.requireNotFolder("--queries", queriesFile));
         if (queries.dimension() != points.dimension())
             throw new IllegalArgumentException(queriesFile + ": the queries are " + queries.dimension() + "-D, the points "
                     + points.dimension() + "-D (" + pointsFile + ")");
@@ -178,7 +180,26 @@ final class KnnStudyCommand implements Callable<Integer> {
                 dataName(), tree.size(), tree.dimension(), queries.size(), k, b.name(), runs, runs == 1 ? "" : "s"), 1);
         ChartFile.write(NeighbourChart.chart(results, dataName() + ": recall at k = " + k + " against queries per second"), caption, chartFile());
         System.out.println("wrote " + csvFile() + " and " + chartFile());
+        String warning = tooShortToTime(results, queries.size());
+        if (warning != null) System.out.println(warning);
         return 0;
+    }
+
+    /** A pass shorter than this is timed mostly as the clock's and the JIT's noise. */
+    static final double SHORTEST_PASS_SECONDS = 0.02;
+
+    /**
+     * {@return a warning if a timed pass of some search took under {@link #SHORTEST_PASS_SECONDS}}
+     * (a small input: its queries per second and speed-ups mislead), or null
+     */
+    static String tooShortToTime(List<NeighbourResult> results, int queries) {
+        double shortest = Double.POSITIVE_INFINITY;
+        for (NeighbourResult r : results)
+            if (r.queriesPerSecond() > 0) shortest = Math.min(shortest, queries / r.queriesPerSecond());
+        if (!(shortest < SHORTEST_PASS_SECONDS)) return null;
+        return String.format(Locale.ROOT, "warning: a timed pass took only %.2f ms (%,d queries): too short to time well, so the "
+                + "queries/s and speed-ups above are mostly noise; give more points or queries (--n, --query-count), at least "
+                + "%.0f ms a pass", shortest * 1e3, queries, SHORTEST_PASS_SECONDS * 1e3);
     }
 
     /** Announces step {@code step} on the bar, measures it, keeps its row, and prints its line above the bar. */

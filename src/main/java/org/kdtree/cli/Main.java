@@ -19,7 +19,7 @@ import picocli.CommandLine.Option;
                 "4 a builder's own fault (a plug-in's: it threw, answered with an impossible",
                 "  plane, hung or was slow: the line names it, the method and the node);",
                 "70 a bug of ours (a report file is named)."})
-public final class Main implements Runnable {
+public final class Main implements java.util.concurrent.Callable<Integer> {
     /** Read before picocli parses (see {@link #loadPlugins}); declared here for the usage text. */
     @Option(names = "--plugin", paramLabel = "JAR|FOLDER",
             description = "Load the builders a jar (or every jar in a folder) lists in META-INF/services; "
@@ -115,13 +115,16 @@ public final class Main implements Runnable {
         return rest.toArray(String[]::new);
     }
 
-    /** No command: open the workbench, or print the usage where there is no display. */
-    @Override public void run() {
+    /**
+     * No command: open the workbench; where there is no display, print the usage and end with
+     * exit code 2, as {@code gui} does (the workbench was asked for and could not open).
+     */
+    @Override public Integer call() {
         if (java.awt.GraphicsEnvironment.isHeadless()) {
             new CommandLine(this).usage(System.out);
-            System.err.println("(no display: the workbench, the default command, needs one)");
-        } else {
-            new GuiCommand().call();
+            System.err.println("error: no display for the workbench, the default command (set DISPLAY, or give a command such as 'stats')");
+            return Failure.USAGE;
         }
+        return new GuiCommand().call();
     }
 }

@@ -82,7 +82,7 @@ final class RaycastCommand implements Callable<Integer> {
             CommandFiles.requireWritable("--hits", hitsFile);
         }
         if (raysFile != null && !Files.isRegularFile(raysFile))
-            throw new java.io.IOException("--rays " + raysFile + (Files.isDirectory(raysFile) ? ": is a folder, not a file of rays" : ": no such file"));
+            throw new java.io.IOException("--rays " + raysFile + (Files.isDirectory(raysFile) ? ": is a folder, not a file" : ": no such file"));
         String settings = spec.describe();        // also refuses settings the builder does not take, before the mesh is read
         TriangleMesh scene = MeshGrid.grid(CommandFiles.readMesh(mesh, "raycast"), grid);
         threads = spec.value(org.kdtree.build.Setting.THREADS);

@@ -67,8 +67,18 @@ final class RenderCommand implements Callable<Integer> {
         Renderer.Options o = Renderer.Options.defaults();
         if (spec.get(Setting.THREADS) != null) o = o.withThreads(spec.get(Setting.THREADS));
         RenderJob job;
+        boolean log = System.console() == null && !progress.quiet;   // no bar into a log: a line at each quarter instead
+        if (log) System.out.printf(java.util.Locale.ROOT, "rendering %s: %d x %d, %d sample%s per pixel, into %s%n", scene,
+                s.camera().width(), s.camera().height(), s.samplesPerPixel(), s.samplesPerPixel() == 1 ? "" : "s", output);
+        java.util.concurrent.atomic.AtomicInteger quarter = new java.util.concurrent.atomic.AtomicInteger();
+        long t0 = System.nanoTime();
         try (ProgressBar bar = progress.bar(1, "tiles")) {
-            job = RenderJob.run(s, spec, deadlines.supervisor(), o.withProgress((done, total, image) -> bar.update(done, total)));
+            job = RenderJob.run(s, spec, deadlines.supervisor(), o.withProgress((done, total, image) -> {
+                bar.update(done, total);
+                int q = (int) (4L * done / Math.max(1, total)), before = quarter.get();
+                if (log && q > before && q < 4 && quarter.compareAndSet(before, q))
+                    System.out.printf(java.util.Locale.ROOT, "rendered %d %% of the tiles (%.0f s)%n", 25 * q, (System.nanoTime() - t0) / 1e9);
+            }));
         }
         job.result().image().writePng(output);
         System.out.print(job.summary());
@@ -87,7 +97,7 @@ final class RenderCommand implements Callable<Integer> {
         String n = sceneFile.getFileName() == null ? "" : sceneFile.getFileName().toString().toLowerCase(java.util.Locale.ROOT);
         if (n.endsWith(".json") && !java.nio.file.Files.isDirectory(sceneFile)) return;
         String what;
-        if (java.nio.file.Files.isDirectory(sceneFile)) what = "is a folder";
+        if (java.nio.file.Files.isDirectory(sceneFile)) what = "is a folder, not a file";
         else if (n.endsWith(".obj")) what = "is an OBJ mesh, with no camera or lights; put it in a JSON scene as an object "
                 + "{\"type\": \"obj\", \"file\": \"" + sceneFile.getFileName() + "\"} (docs/scene-format.md), or trace it with stats or raycast";
         else if (n.endsWith(".scene2d")) what = "is a 2-D scene; open it in the workbench (gui) or give it to stats";

@@ -38,6 +38,6 @@ class RenderInputsTest {
         assertThat(run.err().strip()).isEqualTo("error: SCENE scenes:talk-figures: is a 2-D scene; open it in the workbench (gui) or "
                 + "give it to stats" + TAKES);
         CliRun folder = CliRun.of("render", dir.toString(), "-o", dir.resolve("out.png").toString());
-        assertThat(folder.err().strip()).isEqualTo("error: SCENE " + dir + ": is a folder" + TAKES);
+        assertThat(folder.err().strip()).isEqualTo("error: SCENE " + dir + ": is a folder, not a file" + TAKES);
     }
 }
