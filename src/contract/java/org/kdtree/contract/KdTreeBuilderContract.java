@@ -9,11 +9,14 @@ import net.jqwik.api.ForAll;
 import net.jqwik.api.Property;
 import net.jqwik.api.constraints.IntRange;
 import net.jqwik.api.lifecycle.AfterContainer;
-import org.junit.jupiter.api.DynamicTest;
+import org.junit.jupiter.api.Named;
 import org.junit.jupiter.api.Test;
-import org.junit.jupiter.api.TestFactory;
+import org.junit.jupiter.params.ParameterizedTest;
+import org.junit.jupiter.params.provider.Arguments;
+import org.junit.jupiter.params.provider.MethodSource;
 import org.junit.platform.engine.TestEngine;
 import org.kdtree.check.Contract;
+import org.kdtree.check.ContractCase;
 import org.kdtree.check.ContractViolation;
 import org.kdtree.kdtree.BuilderFault;
 import org.kdtree.kdtree.KdTreeBuilder;
@@ -46,10 +49,27 @@ public abstract class KdTreeBuilderContract {
     /** {@return a new builder with the settings under test} */
     protected abstract KdTreeBuilder newBuilder();
 
-    /** {@return one test per case of the contract} */
-    @TestFactory
-    Stream<DynamicTest> contract() {
-        return Contract.cases().stream().map(c -> DynamicTest.dynamicTest(c.name(), () -> guarded(c.name(), () -> c.run(this::newBuilder))));
+    /**
+     * {@return the contract's cases, each named} A parameterized test rather than a test factory:
+     * Maven's surefire counts and reports each case as a test of its own (a factory's cases are
+     * one test to it, whose failures read "Run 1: ... Run 15:" like reruns).
+     */
+    static Stream<Arguments> cases() {
+        return Contract.cases().stream().map(c -> Arguments.of(Named.of(c.name(), c)));
+    }
+
+    /**
+     * One case of the contract; a failure starts with the case's name, so that every report names it.
+     * @param c the case
+     */
+    @ParameterizedTest(name = "{0}")
+    @MethodSource("cases")
+    void contract(ContractCase c) {
+        try {
+            guarded(c.name(), () -> c.run(this::newBuilder));
+        } catch (RuntimeException | AssertionError e) {
+            throw new AssertionError(c.name() + ": " + e.getMessage(), e);
+        }
     }
 
     /** The two properties below run only if jqwik's engine is on the test class path: fail, not skip, if it is not. */

@@ -7,6 +7,7 @@ import java.util.List;
 import java.util.Map;
 import java.util.stream.Collectors;
 import org.kdtree.accel.Setting;
+import org.kdtree.accel.SharedSettings;
 import org.kdtree.limits.Limit;
 import org.kdtree.spec.BuilderSpec;
 import org.kdtree.spec.SettingsTable;
@@ -31,6 +32,8 @@ import picocli.CommandLine.Model.OptionSpec;
 final class BuilderOptions {
     private final String defaultBuilder;
     private final String role;
+    private boolean kdTreesOnly;
+    private String threadsHelp;
     private String builder;
     private final Map<Setting<?>, Object> given = new LinkedHashMap<>();
 
@@ -57,6 +60,31 @@ final class BuilderOptions {
     BuilderOptions(String defaultBuilder, String role) {
         this.defaultBuilder = defaultBuilder;
         this.role = role;
+    }
+
+    /**
+     * Options of a command that needs a kd-tree ({@code knn}, {@code knn-study}, {@code grade}):
+     * its help offers neither {@code bvh} nor the settings only the BVH takes.
+     *
+     * @param defaultBuilder null, or the builder when {@code -b} is not given
+     * @param role           what {@code -b} does in the command, for its help (null: "the builder")
+     * @return the options
+     */
+    static BuilderOptions kdTrees(String defaultBuilder, String role) {
+        BuilderOptions o = new BuilderOptions(defaultBuilder, role);
+        o.kdTreesOnly = true;
+        return o;
+    }
+
+    /**
+     * What {@code --threads} does in this command, where it does more than build (raycast also traces with them).
+     *
+     * @param help the help's first part, as {@link Setting#help()}
+     * @return these options
+     */
+    BuilderOptions threadsHelp(String help) {
+        this.threadsHelp = help;
+        return this;
     }
 
     /** {@return the builder named by {@code -b}, or the command's default (null if it has none)} */
@@ -111,19 +139,23 @@ final class BuilderOptions {
         @Override public CommandSpec transform(CommandSpec command) {
             BuilderOptions o = command.mixins().values().stream().map(CommandSpec::userObject)
                     .filter(BuilderOptions.class::isInstance).map(BuilderOptions.class::cast).findFirst().orElseThrow();
+            String which = o.kdTreesOnly ? "Builder: sah, median-plane, object-median, sliding-midpoint or a registered name "
+                    + "(a kd-tree builder: this command does not take bvh) "
+                    : "Builder: sah, median-plane, object-median, sliding-midpoint, a registered name, or bvh "
+                    + "(a bounding volume hierarchy: ray queries and the workbench) ";
             command.addOption(OptionSpec.builder("-b", "--builder").type(String.class).paramLabel("NAME")
-                    .description("Builder: sah, median-plane, object-median, sliding-midpoint, a registered name, or bvh "
-                            + "(a bounding volume hierarchy: ray queries and the workbench) "
-                            + (o.role != null ? "(" + o.role + ")." : "(default: " + o.defaultBuilder + ")."))
+                    .description(which + (o.role != null ? "(" + o.role + ")." : "(default: " + o.defaultBuilder + ")."))
                     .setter(setter(v -> o.builder = (String) v)).build());
-            for (Setting<?> s : SettingsTable.all()) command.addOption(option(s, o));
+            for (Setting<?> s : SettingsTable.all())
+                if (!o.kdTreesOnly || SettingsTable.takenByKdTrees(s)) command.addOption(option(s, o));
             return command;
         }
 
         /** The option of one setting: a switch for a boolean (it turns the default over), else an option with a value. */
         private static OptionSpec option(Setting<?> s, BuilderOptions o) {
             boolean flag = s.type() == Boolean.class;
-            OptionSpec.Builder b = OptionSpec.builder(s.option()).description(description(s));
+            String help = s == SharedSettings.THREADS && o.threadsHelp != null ? description(s, o.threadsHelp) : description(s);
+            OptionSpec.Builder b = OptionSpec.builder(s.option()).description(help);
             if (flag) b.type(boolean.class).arity("0");
             else b.type(s.type()).paramLabel(label(s));
             return b.setter(setter(v -> {
@@ -134,17 +166,22 @@ final class BuilderOptions {
 
         /** "lambda: the SAH's weight of ... (1 = no bonus). 0.01..1, default 0.8; the sah builder only." */
         static String description(Setting<?> s) {
+            return description(s, s.help());
+        }
+
+        /** The description of {@code s} with {@code help} for its first part. */
+        static String description(Setting<?> s, String help) {
             String only = SettingsTable.appliesToEvery(s) ? "." : "; " + SettingsTable.ownerName(s) + " only.";
             if (s.type() == Boolean.class)
                 return "Turn " + s.name() + " " + s.format(!(Boolean) s.defaultValue()) + " (default " + s.format(s.defaultValue())
-                        + "): " + s.help() + only;
+                        + "): " + help + only;
             List<String> facts = new ArrayList<>();
             if (s.limit() != null) facts.add(range(s.limit()));
             if (s.type().isEnum()) facts.add("one of " + Arrays.stream(s.type().getEnumConstants()).map(Object::toString)
                     .collect(Collectors.joining(", ")));
             facts.add("default " + s.format(s.defaultValue()));
             String f = String.join(", ", facts);
-            return s.name() + ": " + s.help() + ". " + Character.toUpperCase(f.charAt(0)) + f.substring(1) + only;
+            return s.name() + ": " + help + ". " + Character.toUpperCase(f.charAt(0)) + f.substring(1) + only;
         }
 
         /** "1 to 256", not 1..256, which picocli may break after the dots. */

@@ -29,7 +29,8 @@ import picocli.CommandLine.Parameters;
         description = {"Grade a class: every .jar in FOLDER graded alone in a JVM of its own (a hang, System.exit or "
                 + "unbounded allocation ends only that student's run), several at once, into one table (CSV and Markdown): "
                 + "one row per jar, failures first.",
-                "Exit code 0 once the table is written, whatever the verdicts."})
+                "Exit code 0 once the table is written, whatever the verdicts; 2 if a file of it could not be written "
+                        + "(the table is then printed, and kept in a temporary file the error names)."})
 final class ClassGradeCommand implements Callable<Integer> {
     @Parameters(paramLabel = "FOLDER", description = "The students' jars (every .jar file in it; other files are not looked at).")
     Path folder;
@@ -46,10 +47,10 @@ final class ClassGradeCommand implements Callable<Integer> {
     Integer jobs;
 
     @Option(names = "--student-deadline", paramLabel = "SECONDS",
-            description = "A student's JVM still running after this is killed (default: 300; 1..86400).")
+            description = "A student's JVM still running after this is killed (default: 300; 1 to 86400).")
     Double studentSeconds;
 
-    @Option(names = "--student-heap", paramLabel = "MB", description = "Each student's JVM's heap, -Xmx (default: 512; 64..65536).")
+    @Option(names = "--student-heap", paramLabel = "MB", description = "Each student's JVM's heap, -Xmx (default: 512; 64 to 65536).")
     Integer heapMb;
 
     @Mixin
@@ -60,18 +61,43 @@ final class ClassGradeCommand implements Callable<Integer> {
 
     @Override public Integer call() throws IOException, InterruptedException {
         List<Path> jars = jars();
-        for (Path out : List.of(csv, markdown)) CommandFiles.requireFolder(out == csv ? "--csv" : "--markdown", out);
+        for (Path out : List.of(csv, markdown)) CommandFiles.requireWritable(out == csv ? "--csv" : "--markdown", out);
         StudentJvm jvm = new StudentJvm(deadlines.deadlines(Deadlines.GRADE), seconds(), heap());
         int n = jobs == null ? defaultJobs(jvm.heapMb()) : jobs;
         Limits.THREADS.check("--jobs", n);
         long t0 = System.nanoTime();
         List<StudentRow> rows = gradeAll(jars, jvm, n);
         ClassTable table = new ClassTable(rows, CourseScenes.all().stream().map(CourseScenes.Named::name).toList());
-        AtomicFile.writeString(csv, table.csv());
-        AtomicFile.writeString(markdown, table.markdown());
         System.out.print(table.markdown());
+        List<String> lost = save(table, csv, markdown);
         System.out.printf(Locale.ROOT, "%ngraded in %.0f s, %d at once; table: %s, %s%n", (System.nanoTime() - t0) / 1e9, n, csv, markdown);
-        return 0;
+        lost.forEach(System.err::println);
+        return lost.isEmpty() ? 0 : Failure.USAGE;
+    }
+
+    /**
+     * Writes the table's two files; one that cannot be written (its folder made read-only, the
+     * disk full, while the class was graded) is written to a temporary file instead, so that
+     * no finished grade is lost. {@return one line for each file not written where asked, saying where it is}
+     */
+    static List<String> save(ClassTable table, Path csv, Path markdown) {
+        List<String> lost = new ArrayList<>();
+        for (Path file : List.of(csv, markdown)) {
+            String content = file == csv ? table.csv() : table.markdown();
+            try {
+                AtomicFile.writeString(file, content);
+            } catch (IOException e) {
+                String ext = file == csv ? ".csv" : ".md";
+                try {
+                    Path kept = Files.createTempFile("class-grades-", ext);
+                    AtomicFile.writeString(kept, content);
+                    lost.add("error: " + e.getMessage() + "; the table is kept in " + kept);
+                } catch (IOException again) {
+                    lost.add("error: " + e.getMessage() + "; the table is only in the output above");
+                }
+            }
+        }
+        return lost;
     }
 
     /** Every student at once up to {@code n}, each on a thread that waits for its JVM; the bar counts those done. */

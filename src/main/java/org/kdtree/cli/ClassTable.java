@@ -59,7 +59,7 @@ final class ClassTable {
         for (StudentRow r : rows) {
             List<String> notes = new ArrayList<>();
             for (String n : List.of(r.failure(), r.quality().isEmpty() ? "" : "quality: " + r.quality(), r.problem()))
-                if (!n.isEmpty()) notes.add(n);
+                if (!n.isEmpty()) notes.add(StudentRow.shortened(n));
             s.append("| ").append(String.join(" | ", cell(r.file()), cell(r.student()), cell(r.builder()), r.verdict(), num(r.meanRatio(0)),
                     num(r.meanRatio(1)), r.ratios().isEmpty() ? "" : String.format(Locale.ROOT, "%.0f", r.buildMs()),
                     cell(String.join("; ", notes)))).append(" |\n");

@@ -1,9 +1,9 @@
 package org.kdtree.cli;
 
 import java.io.IOException;
-import java.nio.file.Files;
 import java.nio.file.Path;
 import java.util.Locale;
+import org.kdtree.files.AtomicFile;
 import org.kdtree.files.SameFile;
 import org.kdtree.io.ObjMeshReader;
 import org.kdtree.shape.TriangleMesh;
@@ -13,8 +13,19 @@ final class CommandFiles {
     private CommandFiles() {
     }
 
+    /**
+     * Refuses an input {@code what} (e.g. "MESH", "--queries") that is a folder, in the one
+     * wording every command uses; a missing file is left to its reader, which names it.
+     */
+    static Path requireNotFolder(String what, Path file) {
+        if (java.nio.file.Files.isDirectory(file))
+            throw new IllegalArgumentException(what + " " + file + ": is a folder, not a file");
+        return file;
+    }
+
     /** The triangle mesh {@code command} traces rays through: an OBJ file with at least one triangle. */
     static TriangleMesh readMesh(Path mesh, String command) throws IOException {
+        requireNotFolder("MESH", mesh);
         if (!mesh.getFileName().toString().toLowerCase(Locale.ROOT).endsWith(".obj"))
             throw new IllegalArgumentException(mesh + ": " + command + " traces rays through a triangle mesh; give an OBJ file");
         TriangleMesh m = ObjMeshReader.read(mesh);
@@ -22,11 +33,16 @@ final class CommandFiles {
         return m;
     }
 
-    /** Refuses an output file of {@code option} whose folder does not exist (the writer would give no reason). */
-    static void requireFolder(String option, Path file) {
-        Path folder = file.toAbsolutePath().getParent();
-        if (folder != null && !Files.isDirectory(folder))
-            throw new IllegalArgumentException(option + " " + file + ": the folder " + folder + " does not exist");
+    /**
+     * Refuses, before any work, an output file of {@code option} that cannot be written: its
+     * folder missing or not writable, or the file a folder; the line names the user's file and why.
+     */
+    static void requireWritable(String option, Path file) {
+        try {
+            AtomicFile.requireWritable(file);
+        } catch (IOException e) {
+            throw new IllegalArgumentException(option + " " + e.getMessage());
+        }
     }
 
     /**

@@ -14,12 +14,12 @@ import picocli.CommandLine.Option;
 final class DeadlineOptions {
     @Option(names = "--call-deadline", paramLabel = "SECONDS",
             description = "A plug-in builder's terminate or findPlane call that takes longer is stopped and reported as hung "
-                    + "(default: 60, grade: 10; 0.1..3600).")
+                    + "(default: 60 s; grade and grade-class: 10 s; 0.1 to 3600).")
     Double call;
 
     @Option(names = "--build-deadline", paramLabel = "SECONDS",
             description = "A plug-in builder's build that takes longer is stopped and reported as slow "
-                    + "(default: 600, grade: 30; 0.1 to 86400).")
+                    + "(default: 600 s; grade and grade-class: 30 s; 0.1 to 86400).")
     Double build;
 
     /** {@return the deadlines given, each checked against its limit, or {@code defaults}' where not given} */

@@ -38,7 +38,7 @@ final class GradeCommand implements Callable<Integer> {
     static final List<String> BUILT_INS = List.of("median-plane", "object-median", "sah");
 
     @Mixin
-    BuilderOptions options = new BuilderOptions(null, "the one to grade: a jar on the class path, or --plugin my.jar; "
+    BuilderOptions options = BuilderOptions.kdTrees(null, "the one to grade: a jar on the class path, or --plugin my.jar; "
             + "the settings given are its, the built-ins keep their defaults");
 
     /** The graded builder, with the settings given. */
@@ -81,7 +81,7 @@ final class GradeCommand implements Callable<Integer> {
             String n = output.getFileName().toString().toLowerCase(Locale.ROOT);
             if (!n.endsWith(".md") && !n.endsWith(".csv"))
                 throw new IllegalArgumentException("-o " + output + ": write a .md (Markdown) or .csv report");
-            CommandFiles.requireFolder("-o", output);
+            CommandFiles.requireWritable("-o", output);
         }
         List<ContractCase> cases = new ArrayList<>(Contract.cases());
         cases.addAll(Contract.randomCases());

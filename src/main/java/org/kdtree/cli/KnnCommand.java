@@ -42,7 +42,11 @@ final class KnnCommand implements Callable<Integer> {
     Double radius;
 
     @Mixin
-    BuilderOptions options = new BuilderOptions("sliding-midpoint");
+    BuilderOptions options = BuilderOptions.kdTrees("sliding-midpoint", null);
+
+    /** Taken as every command takes it (knn draws no bar: it prints one summary line). */
+    @Mixin
+    ProgressOption progress;
 
     @Option(names = "--out", required = true, paramLabel = "FILE", description = "Where the neighbour lines go.")
     Path outFile;
@@ -52,11 +56,11 @@ final class KnnCommand implements Callable<Integer> {
         if (radius != null && !(radius >= 0 && radius < Double.POSITIVE_INFINITY))
             throw new IllegalArgumentException("--radius must be a finite number >= 0, got " + radius);
         KdTreeBuilder b = options.spec().create();
-        CommandFiles.requireFolder("--out", outFile);
+        CommandFiles.requireWritable("--out", outFile);
         CommandFiles.requireNotInput("--out", outFile, "POINTS", pointsFile);
         CommandFiles.requireNotInput("--out", outFile, "--queries", queriesFile);
-        PointsKd points = PointCsvReader.read(pointsFile);
-        PointsKd queries = PointCsvReader.read(queriesFile);
+        PointsKd points = PointCsvReader.read(CommandFiles.requireNotFolder("POINTS", pointsFile));
+        PointsKd queries = PointCsvReader.read(CommandFiles.requireNotFolder("--queries", queriesFile));
         if (queries.dimension() != points.dimension())
             throw new IllegalArgumentException(queriesFile + ": the queries are " + queries.dimension() + "-D, the points "
                     + points.dimension() + "-D (" + pointsFile + ")");

@@ -48,7 +48,7 @@ final class KnnStudyCommand implements Callable<Integer> {
     int k;
 
     @Mixin
-    BuilderOptions options = new BuilderOptions("sliding-midpoint");
+    BuilderOptions options = BuilderOptions.kdTrees("sliding-midpoint", null);
 
     @Option(names = "--budgets", split = ",", paramLabel = "L", defaultValue = "1,2,4,8,16,32,64,128",
             description = "Best-bin-first budgets: leaves scanned per query (default: ${DEFAULT-VALUE}).")
@@ -57,32 +57,32 @@ final class KnnStudyCommand implements Callable<Integer> {
     @Option(names = "--epsilons", split = ",", paramLabel = "E", description = "Epsilons of the (1 + eps) bound (default: none).")
     List<Double> epsilons;
 
-    @Option(names = "--runs", defaultValue = "3", description = "Timed passes per measurement, after a warm-up; the median is kept (default: ${DEFAULT-VALUE}).")
+    @Option(paramLabel = "N", names = "--runs", defaultValue = "3", description = "Timed passes per measurement, after a warm-up; the median is kept (default: ${DEFAULT-VALUE}).")
     int runs;
 
     @Option(names = "--generate", paramLabel = "KIND", description = "Generate the points and queries instead of reading them: uniform or clustered.")
     String generate;
 
-    @Option(names = "--n", defaultValue = "10000", description = "Generated points (default: ${DEFAULT-VALUE}).")
+    @Option(paramLabel = "N", names = "--n", defaultValue = "10000", description = "Generated points (default: ${DEFAULT-VALUE}).")
     int n;
 
-    @Option(names = "--dimension", defaultValue = "3", description = "Generated points' dimension (default: ${DEFAULT-VALUE}).")
+    @Option(paramLabel = "N", names = "--dimension", defaultValue = "3", description = "Generated points' dimension (default: ${DEFAULT-VALUE}).")
     int dimension;
 
-    @Option(names = "--query-count", defaultValue = "1000", description = "Generated query points (default: ${DEFAULT-VALUE}).")
+    @Option(paramLabel = "N", names = "--query-count", defaultValue = "1000", description = "Generated query points (default: ${DEFAULT-VALUE}).")
     int queryCount;
 
-    @Option(names = "--seed", defaultValue = "1", description = "Seed of the generated data (default: ${DEFAULT-VALUE}).")
+    @Option(paramLabel = "N", names = "--seed", defaultValue = "1", description = "Seed of the generated data (default: ${DEFAULT-VALUE}).")
     long seed;
 
     @Option(names = "--dimensions", split = ",", paramLabel = "D",
             description = "Sweep: the exact search against brute force on generated data (uniform unless --generate says) at each dimension.")
     List<Integer> dimensions;
 
-    @Option(names = "--csv", description = "CSV output file (default: knn-study-DATA.csv).")
+    @Option(paramLabel = "FILE", names = "--csv", description = "CSV output file (default: knn-study-DATA.csv).")
     Path csv;
 
-    @Option(names = "--chart", description = "Chart file, .png or .svg (default: knn-study-DATA.png).")
+    @Option(paramLabel = "FILE", names = "--chart", description = "Chart file, .png or .svg (default: knn-study-DATA.png).")
     Path chart;
 
     @Mixin
@@ -92,8 +92,10 @@ final class KnnStudyCommand implements Callable<Integer> {
         checkOptions();
         KdTreeBuilder b = options.spec().create();
         if (dimensions != null) return sweep(b);
-        PointsKd points = generate != null ? kind().points(n, dimension, seed) : PointCsvReader.read(pointsFile);
-        PointsKd queries = generate != null ? kind().queries(queryCount, dimension, seed) : PointCsvReader.read(queriesFile);
+        PointsKd points = generate != null ? kind().points(n, dimension, seed)
+                : PointCsvReader.read(CommandFiles.requireNotFolder("POINTS", pointsFile));
+        PointsKd queries = generate != null ? kind().queries(queryCount, dimension, seed)
+                : PointCsvReader.read(CommandFiles.requireNotFolder("--queries", queriesFile));
         if (queries.dimension() != points.dimension())
             throw new IllegalArgumentException(queriesFile + ": the queries are " + queries.dimension() + "-D, the points "
                     + points.dimension() + "-D (" + pointsFile + ")");
@@ -119,8 +121,8 @@ final class KnnStudyCommand implements Callable<Integer> {
             throw new IllegalArgumentException("give POINTS and --queries, or --generate, not both");
         if (dimensions == null && generate == null && (pointsFile == null || queriesFile == null))
             throw new IllegalArgumentException("give POINTS and --queries FILE, or --generate uniform|clustered");
-        CommandFiles.requireFolder("--csv", csvFile());
-        CommandFiles.requireFolder("--chart", chartFile());
+        CommandFiles.requireWritable("--csv", csvFile());
+        CommandFiles.requireWritable("--chart", chartFile());
         requireNotInput("--csv", csvFile());
         requireNotInput("--chart", chartFile());
         ChartFile.requireFormat("--chart", chartFile());
@@ -178,7 +180,26 @@ final class KnnStudyCommand implements Callable<Integer> {
                 dataName(), tree.size(), tree.dimension(), queries.size(), k, b.name(), runs, runs == 1 ? "" : "s"), 1);
         ChartFile.write(NeighbourChart.chart(results, dataName() + ": recall at k = " + k + " against queries per second"), caption, chartFile());
         System.out.println("wrote " + csvFile() + " and " + chartFile());
+        String warning = tooShortToTime(results, queries.size());
+        if (warning != null) System.out.println(warning);
         return 0;
+    }
+
+    /** A pass shorter than this is timed mostly as the clock's and the JIT's noise. */
+    static final double SHORTEST_PASS_SECONDS = 0.02;
+
+    /**
+     * {@return a warning if a timed pass of some search took under {@link #SHORTEST_PASS_SECONDS}}
+     * (a small input: its queries per second and speed-ups mislead), or null
+     */
+    static String tooShortToTime(List<NeighbourResult> results, int queries) {
+        double shortest = Double.POSITIVE_INFINITY;
+        for (NeighbourResult r : results)
+            if (r.queriesPerSecond() > 0) shortest = Math.min(shortest, queries / r.queriesPerSecond());
+        if (!(shortest < SHORTEST_PASS_SECONDS)) return null;
+        return String.format(Locale.ROOT, "warning: a timed pass took only %.2f ms (%,d queries): too short to time well, so the "
+                + "queries/s and speed-ups above are mostly noise; give more points or queries (--n, --query-count), at least "
+                + "%.0f ms a pass", shortest * 1e3, queries, SHORTEST_PASS_SECONDS * 1e3);
     }
 
     /** Announces step {@code step} on the bar, measures it, keeps its row, and prints its line above the bar. */

@@ -10,7 +10,7 @@ import picocli.CommandLine.Option;
 import picocli.CommandLine;
 
 /** The command line: {@code java -jar kdtree.jar COMMAND ...}. */
-@Command(name = "kdtree", mixinStandardHelpOptions = true, version = "kdtree 0.1",
+@Command(name = "kdtree", mixinStandardHelpOptions = true, versionProvider = Main.Version.class,
         description = "k-d trees for ray tracing: build, inspect, trace, render; nearest neighbours of points.",
         subcommands = {GuiCommand.class, StatsCommand.class, RaycastCommand.class, RenderCommand.class, TradeoffCommand.class,
                 KnnCommand.class, KnnStudyCommand.class, GradeCommand.class, ClassGradeCommand.class},
@@ -19,12 +19,23 @@ import picocli.CommandLine;
                 "4 a builder's own fault (a plug-in's: it threw, answered with an impossible",
                 "  plane, hung or was slow: the line names it, the method and the node);",
                 "70 a bug of ours (a report file is named)."})
-public final class Main implements Runnable {
+public final class Main implements java.util.concurrent.Callable<Integer> {
     /** Read before picocli parses (see {@link #loadPlugins}); declared here for the usage text. */
     @Option(names = "--plugin", paramLabel = "JAR|FOLDER",
             description = "Load the builders a jar (or every jar in a folder) lists in META-INF/services; "
                     + "any command, anywhere on the line, repeatable.")
     List<Path> plugins;
+
+    /** The version the build wrote (the pom's, e.g. 0.1.0-SNAPSHOT), from {@code version.properties}. */
+    static final class Version implements CommandLine.IVersionProvider {
+        @Override public String[] getVersion() throws java.io.IOException {
+            java.util.Properties p = new java.util.Properties();
+            try (var in = Main.class.getResourceAsStream("version.properties")) {
+                if (in != null) p.load(in);
+            }
+            return new String[] {"kdtree " + p.getProperty("version", "(version unknown: not built by Maven)")};
+        }
+    }
 
     /**
      * Offers the course's worked example ({@code -b centre-midpoint}, {@code grade}, the workbench,
@@ -61,6 +72,7 @@ public final class Main implements Runnable {
         }
         CommandLine cl = new CommandLine(new Main());   // after the plug-ins: their settings' rows are options too
         cl.setCaseInsensitiveEnumValuesAllowed(true);
+        for (CommandLine sub : cl.getSubcommands().values()) sub.getCommandSpec().versionProvider(new Version()); // every -V: the build's
         if (args.length > 0 && !args[0].startsWith("-") && !cl.getSubcommands().containsKey(args[0])) {
             // picocli would print the top-level help for "nearest --help" and exit 0
             cl.getErr().println("error: unknown command '" + args[0] + "'; the commands are "
@@ -87,12 +99,15 @@ public final class Main implements Runnable {
      */
     private static String[] loadPlugins(String[] args) {
         List<String> rest = new ArrayList<>();
+        java.util.Map<String, Path> seen = new java.util.HashMap<>();
         for (int i = 0; i < args.length; i++) {
             if (args[i].equals("--plugin")) {
                 if (i + 1 == args.length) throw new IllegalArgumentException("--plugin needs a jar or a folder of jars");
-                Builders.loadPlugins(Path.of(args[++i]));
+                Path p = Path.of(args[++i]);
+                Builders.requireDistinct(p, Builders.loadPlugins(p), seen);
             } else if (args[i].startsWith("--plugin=")) {
-                Builders.loadPlugins(Path.of(args[i].substring("--plugin=".length())));
+                Path p = Path.of(args[i].substring("--plugin=".length()));
+                Builders.requireDistinct(p, Builders.loadPlugins(p), seen);
             } else {
                 rest.add(args[i]);
             }
@@ -100,13 +115,16 @@ public final class Main implements Runnable {
         return rest.toArray(String[]::new);
     }
 
-    /** No command: open the workbench, or print the usage where there is no display. */
-    @Override public void run() {
+    /**
+     * No command: open the workbench; where there is no display, print the usage and end with
+     * exit code 2, as {@code gui} does (the workbench was asked for and could not open).
+     */
+    @Override public Integer call() {
         if (java.awt.GraphicsEnvironment.isHeadless()) {
             new CommandLine(this).usage(System.out);
-            System.err.println("(no display: the workbench, the default command, needs one)");
-        } else {
-            new GuiCommand().call();
+            System.err.println("error: no display for the workbench, the default command (set DISPLAY, or give a command such as 'stats')");
+            return Failure.USAGE;
         }
+        return new GuiCommand().call();
     }
 }

@@ -42,7 +42,7 @@ final class RaycastCommand implements Callable<Integer> {
     Path mesh;
 
     @Mixin
-    BuilderOptions options = new BuilderOptions("sah");
+    BuilderOptions options = new BuilderOptions("sah").threadsHelp("threads building the tree and tracing each ray set (the same tree and hits at any count)");
 
     @Option(names = "--grid", defaultValue = "1", paramLabel = "N",
             description = "Repeat the mesh in an N x N grid on the x-z plane first (the SPEC's scaling scene uses 4).")
@@ -79,7 +79,10 @@ final class RaycastCommand implements Callable<Integer> {
         if (hitsFile != null && !hitsFile.toString().equals("-")) {
             CommandFiles.requireNotInput("--hits", hitsFile, "MESH", mesh);
             CommandFiles.requireNotInput("--hits", hitsFile, "--rays", raysFile);
+            CommandFiles.requireWritable("--hits", hitsFile);
         }
+        if (raysFile != null && !Files.isRegularFile(raysFile))
+            throw new java.io.IOException("--rays " + raysFile + (Files.isDirectory(raysFile) ? ": is a folder, not a file" : ": no such file"));
         String settings = spec.describe();        // also refuses settings the builder does not take, before the mesh is read
         TriangleMesh scene = MeshGrid.grid(CommandFiles.readMesh(mesh, "raycast"), grid);
         threads = spec.value(org.kdtree.accel.SharedSettings.THREADS);
@@ -94,8 +97,6 @@ final class RaycastCommand implements Callable<Integer> {
             tree = spec.build(scene, deadlines.supervisor());
         }
         RayQuery traverser = tree.query(new TriangleIntersector(scene));
-        if (!Files.isRegularFile(raysFile)) throw new java.io.IOException(raysFile + ": no such file");
-        if (!hitsFile.toString().equals("-")) CommandFiles.requireFolder("--hits", hitsFile);
         try (BufferedReader in = Files.newBufferedReader(raysFile, StandardCharsets.UTF_8)) {
             if (hitsFile.toString().equals("-")) RayFile.trace(in, raysFile.toString(), traverser, new PrintWriter(System.out));
             else AtomicFile.writeText(hitsFile, out -> RayFile.trace(in, raysFile.toString(), traverser, new PrintWriter(out)));

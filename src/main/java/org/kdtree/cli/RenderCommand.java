@@ -25,23 +25,23 @@ final class RenderCommand implements Callable<Integer> {
             + "scene from any folder: scenes:cornell-box.")
     String scene;
 
-    @Option(names = {"-o", "--output"}, defaultValue = "render.png", description = "PNG file to write (default: ${DEFAULT-VALUE}).")
+    @Option(paramLabel = "FILE", names = {"-o", "--output"}, defaultValue = "render.png", description = "PNG file to write (default: ${DEFAULT-VALUE}).")
     Path output;
 
     @Mixin
     BuilderOptions options = new BuilderOptions("sah");
 
-    @Option(names = "--spp", description = "Samples per pixel (default: the scene's).")
+    @Option(paramLabel = "N", names = "--spp", description = "Samples per pixel (default: the scene's).")
     Integer spp;
 
-    @Option(names = "--ray-depth", description = "Maximum reflection/refraction depth (default: the scene's maxDepth; "
+    @Option(paramLabel = "N", names = "--ray-depth", description = "Maximum reflection/refraction depth (default: the scene's maxDepth; "
             + "--max-depth is the tree's).")
     Integer rayDepth;
 
-    @Option(names = "--width", description = "Image width (default: the scene's).")
+    @Option(paramLabel = "N", names = "--width", description = "Image width (default: the scene's).")
     Integer width;
 
-    @Option(names = "--height", description = "Image height (default: the scene's).")
+    @Option(paramLabel = "N", names = "--height", description = "Image height (default: the scene's).")
     Integer height;
 
     @Mixin
@@ -53,6 +53,7 @@ final class RenderCommand implements Callable<Integer> {
     @Override public Integer call() throws Exception {
         checkOutput();
         Path sceneFile = BundledScenes.resolve(scene);
+        requireJsonScene(sceneFile);
         CommandFiles.requireNotInput("-o", output, "SCENE", sceneFile);
         Scene s = SceneReader.read(sceneFile);
         if (spp != null) s = s.withSamplesPerPixel(Limits.SAMPLES_PER_PIXEL.check("--spp", spp));
@@ -66,13 +67,44 @@ final class RenderCommand implements Callable<Integer> {
         Renderer.Options o = Renderer.Options.defaults();
         if (spec.get(SharedSettings.THREADS) != null) o = o.withThreads(spec.get(SharedSettings.THREADS));
         RenderJob job;
+        boolean log = System.console() == null && !progress.quiet;   // no bar into a log: a line at each quarter instead
+        if (log) System.out.printf(java.util.Locale.ROOT, "rendering %s: %d x %d, %d sample%s per pixel, into %s%n", scene,
+                s.camera().width(), s.camera().height(), s.samplesPerPixel(), s.samplesPerPixel() == 1 ? "" : "s", output);
+        java.util.concurrent.atomic.AtomicInteger quarter = new java.util.concurrent.atomic.AtomicInteger();
+        long t0 = System.nanoTime();
         try (ProgressBar bar = progress.bar(1, "tiles")) {
-            job = RenderJob.run(s, spec, deadlines.supervisor(), o.withProgress((done, total, image) -> bar.update(done, total)));
+            job = RenderJob.run(s, spec, deadlines.supervisor(), o.withProgress((done, total, image) -> {
+                bar.update(done, total);
+                int q = (int) (4L * done / Math.max(1, total)), before = quarter.get();
+                if (log && q > before && q < 4 && quarter.compareAndSet(before, q))
+                    System.out.printf(java.util.Locale.ROOT, "rendered %d %% of the tiles (%.0f s)%n", 25 * q, (System.nanoTime() - t0) / 1e9);
+            }));
         }
         job.result().image().writePng(output);
         System.out.print(job.summary());
         System.out.println("wrote " + output);
         return 0;
+    }
+
+    /** The bundled scenes render takes: the JSON ones. */
+    private static String jsonScenes() {
+        return String.join(", ", BundledScenes.FILES.stream().filter(f -> f.endsWith(".json"))
+                .map(f -> BundledScenes.PREFIX + f.substring(0, f.length() - ".json".length())).toList());
+    }
+
+    /** Refuses a SCENE that is not a JSON scene, naming it as the user gave it and saying what render takes. */
+    private void requireJsonScene(Path sceneFile) {
+        String n = sceneFile.getFileName() == null ? "" : sceneFile.getFileName().toString().toLowerCase(java.util.Locale.ROOT);
+        if (n.endsWith(".json") && !java.nio.file.Files.isDirectory(sceneFile)) return;
+        String what;
+        if (java.nio.file.Files.isDirectory(sceneFile)) what = "is a folder, not a file";
+        else if (n.endsWith(".obj")) what = "is an OBJ mesh, with no camera or lights; put it in a JSON scene as an object "
+                + "{\"type\": \"obj\", \"file\": \"" + sceneFile.getFileName() + "\"} (docs/scene-format.md), or trace it with stats or raycast";
+        else if (n.endsWith(".scene2d")) what = "is a 2-D scene; open it in the workbench (gui) or give it to stats";
+        else if (!java.nio.file.Files.exists(sceneFile)) return; // the reader names a missing file
+        else what = "is not a JSON scene (.json)";
+        throw new IllegalArgumentException("SCENE " + scene + ": " + what + ". render takes a JSON scene (camera, lights, materials, "
+                + "objects: docs/scene-format.md), such as " + jsonScenes());
     }
 
     /** Refuses, before any rendering, an output the image could not be written to. */
@@ -81,6 +113,6 @@ final class RenderCommand implements Callable<Integer> {
             throw new IllegalArgumentException("-o " + output + ": is a folder; give a file name such as " + output.resolve("render.png"));
         if (!output.getFileName().toString().toLowerCase(java.util.Locale.ROOT).endsWith(".png"))
             throw new IllegalArgumentException("-o " + output + ": the image is written as PNG; give a file name ending in .png");
-        CommandFiles.requireFolder("-o", output);
+        CommandFiles.requireWritable("-o", output);
     }
 }

@@ -48,7 +48,7 @@ final class StatsCommand implements Callable<Integer> {
         timed.check();
         Limits.GRID.check("--grid", grid);
         BuilderSpec spec = options.spec();
-        Primitives prims = PrimitivesReader.read(BundledScenes.resolve(scene));
+        Primitives prims = PrimitivesReader.read(CommandFiles.requireNotFolder("SCENE", BundledScenes.resolve(scene)));
         if (grid != 1) {
             if (!(prims instanceof TriangleMesh mesh)) throw new IllegalArgumentException("--grid applies to OBJ meshes only");
             prims = MeshGrid.grid(mesh, grid);

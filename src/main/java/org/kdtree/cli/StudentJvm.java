@@ -37,7 +37,7 @@ record StudentJvm(Deadlines deadlines, double seconds, int heapMb) {
             dir = Files.createTempDirectory("kdtree-grade-");
             Path csv = dir.resolve("grade.csv");
             Process p = new ProcessBuilder(command(jar, csv)).redirectOutput(ProcessBuilder.Redirect.DISCARD).start();
-            CompletableFuture<String> err = lastLine(p.getErrorStream());
+            CompletableFuture<String> err = tail(p.getErrorStream());
             boolean finished = p.waitFor((long) (seconds * 1000), TimeUnit.MILLISECONDS);
             if (!finished) kill(p);
             double took = (System.nanoTime() - t0) / 1e9;
@@ -55,14 +55,25 @@ record StudentJvm(Deadlines deadlines, double seconds, int heapMb) {
         }
     }
 
-    /** Why a child ended without its report: its own one-line error (exit 2, 3, 4), or how it died. */
-    private String why(int code, String lastErr, Path jar) {
-        String said = lastErr.replaceFirst("^error: ", "").replace("--plugin " + jar.toAbsolutePath() + ": ", "");
-        if (code == Failure.USAGE) return "not graded: " + StudentRow.oneLine(said);
-        if (code == Failure.MEMORY) return "crashed: out of memory (heap " + heapMb + " MB)";
-        if (code == Failure.BUILDER) return "crashed: " + StudentRow.oneLine(said);
-        return "crashed: the JVM exited with code " + code + " before the grade was done (System.exit in the builder?)"
-                + (said.isBlank() ? "" : ": " + StudentRow.oneLine(said));
+    /**
+     * Why a child ended without its report, from what it said, not from its exit code alone (a
+     * builder may pass any code to System.exit, 2, 3 and 4 included): the grading JVM's own
+     * one-line error ({@link Failure}: "error: ..." as its last line, with its code), the JVM's
+     * out-of-memory error, or else an exit the builder made.
+     */
+    String why(int code, String err, Path jar) {
+        String last = err.strip();
+        last = last.substring(last.lastIndexOf('\n') + 1).strip();
+        boolean ours = last.startsWith("error: ");
+        String said = last.replaceFirst("^error: ", "").replace("--plugin " + jar.toAbsolutePath() + ": ", "");
+        if (ours && code == Failure.MEMORY && said.startsWith("out of memory") || err.contains("java.lang.OutOfMemoryError"))
+            return "crashed: out of memory (heap " + heapMb + " MB)";
+        if (ours && code == Failure.USAGE) return "not graded: " + StudentRow.oneLine(said);
+        if (ours && code == Failure.BUILDER) return "crashed: " + StudentRow.oneLine(said);
+        if (code > 128 && code < 160)
+            return "crashed: the JVM was ended by signal " + (code - 128) + " (exit code " + code + ") before the grade was done";
+        return "crashed: the JVM exited with code " + code + " before the grade was done (System.exit(" + code + ") in the builder?)"
+                + (last.isBlank() ? "" : ": " + StudentRow.oneLine(last));
     }
 
     /** The child's command line: this JVM's java, the library's class path, the student's jar and nothing else. */
@@ -90,18 +101,36 @@ record StudentJvm(Deadlines deadlines, double seconds, int heapMb) {
         return String.join(File.pathSeparator, keep);
     }
 
-    /** The student's name from the jar's manifest (Implementation-Vendor, else Built-By), or "". */
+    /**
+     * The student's name: the jar's manifest's Implementation-Vendor (the starter project writes
+     * its {@code student} property there), else Built-By; else the coordinates of the pom Maven
+     * put in the jar ({@code groupId:artifactId}), unless they are the starter's own; else "".
+     */
     static String student(Path jar) {
         try (JarFile j = new JarFile(jar.toFile())) {
             var m = j.getManifest();
-            if (m == null) return "";
-            String v = m.getMainAttributes().getValue("Implementation-Vendor");
-            if (v == null) v = m.getMainAttributes().getValue("Built-By");
-            return v == null ? "" : v.strip();
-        } catch (IOException | SecurityException notAJar) {
+            if (m != null) {
+                String v = m.getMainAttributes().getValue("Implementation-Vendor");
+                if (v == null || v.isBlank()) v = m.getMainAttributes().getValue("Built-By");
+                if (v != null && !v.isBlank()) return v.strip();
+            }
+            for (var e : java.util.Collections.list(j.entries())) {
+                if (!e.getName().startsWith("META-INF/maven/") || !e.getName().endsWith("/pom.properties")) continue;
+                java.util.Properties pom = new java.util.Properties();
+                try (InputStream in = j.getInputStream(e)) {
+                    pom.load(in);
+                }
+                String coordinates = pom.getProperty("groupId", "") + ":" + pom.getProperty("artifactId", "");
+                if (!coordinates.equals(STARTER_COORDINATES) && !coordinates.equals(":")) return coordinates;
+            }
+            return "";
+        } catch (IOException | SecurityException | IllegalArgumentException notAJar) {
             return "";
         }
     }
+
+    /** The starter project's groupId:artifactId, which names no one. */
+    static final String STARTER_COORDINATES = "course.kdtree:my-builder";
 
     /** Kills the child and whatever it started, and waits for it to be gone. */
     private static void kill(Process p) throws InterruptedException {
@@ -110,13 +139,23 @@ record StudentJvm(Deadlines deadlines, double seconds, int heapMb) {
         p.waitFor();
     }
 
-    /** Reads the stream to its end on a thread of its own (a child blocks on a full pipe); yields its last non-blank line. */
-    private static CompletableFuture<String> lastLine(InputStream in) {
+    /**
+     * Reads the stream to its end on a thread of its own (a child blocks on a full pipe); yields
+     * its last 64 KB (a student's builder may print without bound).
+     */
+    private static CompletableFuture<String> tail(InputStream in) {
         CompletableFuture<String> f = new CompletableFuture<>();
         Thread t = new Thread(() -> {
             try (in) {
-                String all = new String(in.readAllBytes(), StandardCharsets.UTF_8).strip();
-                f.complete(all.substring(all.lastIndexOf('\n') + 1).strip());
+                byte[] ring = new byte[1 << 16];
+                long total = 0;
+                byte[] buf = new byte[8192];
+                for (int n; (n = in.read(buf)) > 0; total += n)
+                    for (int i = 0; i < n; i++) ring[(int) ((total + i) % ring.length)] = buf[i];
+                int len = (int) Math.min(total, ring.length), start = (int) ((total - len) % ring.length);
+                byte[] last = new byte[len];
+                for (int i = 0; i < len; i++) last[i] = ring[(start + i) % ring.length];
+                f.complete(new String(last, StandardCharsets.UTF_8));
             } catch (IOException e) {
                 f.complete("");
             }

@@ -83,9 +83,13 @@ record StudentRow(String file, String student, String builder, String verdict, S
         return Math.exp(log / ratios.size());
     }
 
-    /** The first line, at most {@value #LONGEST} characters. */
+    /** The first line, whole: the CSV keeps it all (a spreadsheet's cell takes it), the Markdown table {@link #shortened} it. */
     static String oneLine(String s) {
-        String line = s.strip().split("\\R", 2)[0];
+        return s.strip().split("\\R", 2)[0];
+    }
+
+    /** At most {@value #LONGEST} characters, for a table read on a screen. */
+    static String shortened(String line) {
         return line.length() <= LONGEST ? line : line.substring(0, LONGEST - 3) + "...";
     }
 

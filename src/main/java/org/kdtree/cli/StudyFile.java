@@ -20,6 +20,11 @@ final class StudyFile {
         this.partial = target.resolveSibling(target.getFileName() + ".partial");
     }
 
+    /** {@return the partial file, which holds the finished rows until the table is complete} */
+    Path partial() {
+        return partial;
+    }
+
     /** Keeps the rows finished so far in the partial file. */
     void progress(String csvSoFar) throws IOException {
         AtomicFile.writeString(partial, csvSoFar);

@@ -9,10 +9,10 @@ import picocli.CommandLine.Option;
  * the wording are the same everywhere.
  */
 final class TimedRunsOptions {
-    @Option(names = "--runs", description = "Timed runs; the median is reported (default: ${DEFAULT-VALUE}).")
+    @Option(paramLabel = "N", names = "--runs", description = "Timed runs; the median is reported (default: ${DEFAULT-VALUE}).")
     int runs;
 
-    @Option(names = "--warmup", description = "Untimed runs first, to warm up the JVM (default: ${DEFAULT-VALUE}).")
+    @Option(paramLabel = "N", names = "--warmup", description = "Untimed runs first, to warm up the JVM (default: ${DEFAULT-VALUE}).")
     int warmup;
 
     TimedRunsOptions(int runs, int warmup) {

@@ -7,6 +7,7 @@ import java.util.Locale;
 import java.util.concurrent.Callable;
 import org.kdtree.accel.SharedSettings;
 import org.kdtree.generate.MeshGrid;
+import org.kdtree.kdtree.BuilderFault;
 import org.kdtree.limits.Limits;
 import org.kdtree.measure.RaySet;
 import org.kdtree.shape.TriangleMesh;
@@ -33,20 +34,20 @@ final class TradeoffCommand implements Callable<Integer> {
     @Parameters(paramLabel = "MESH", description = "An OBJ mesh.")
     Path mesh;
 
-    @Option(names = "--grid", defaultValue = "1", description = "Repeat the mesh in a G x G grid (4: the spec's scaling scene).")
+    @Option(paramLabel = "N", names = "--grid", defaultValue = "1", description = "Repeat the mesh in a G x G grid (4: the spec's scaling scene).")
     int grid;
 
-    @Option(names = "--rays", defaultValue = "R", description = "Ray workload: P (primary, spec), R (random, spec) (default: ${DEFAULT-VALUE}).")
+    @Option(paramLabel = "P|R", names = "--rays", defaultValue = "R", description = "Ray workload: P (primary, spec), R (random, spec) (default: ${DEFAULT-VALUE}).")
     String rays;
 
-    @Option(names = "--ray-count", defaultValue = "1000000",
+    @Option(paramLabel = "N", names = "--ray-count", defaultValue = "1000000",
             description = "Rays in the workload: R draws this many, P uses a square image of about this many (default: ${DEFAULT-VALUE}).")
     int rayCount;
 
-    @Option(names = "--counted-rays", defaultValue = "100000", description = "Rays traced again to count nodes and tests (default: ${DEFAULT-VALUE}).")
+    @Option(paramLabel = "N", names = "--counted-rays", defaultValue = "100000", description = "Rays traced again to count nodes and tests (default: ${DEFAULT-VALUE}).")
     int countedRays;
 
-    @Option(names = "--runs", defaultValue = "3", description = "Timed runs per variant, after one warm-up; the median is kept (default: ${DEFAULT-VALUE}).")
+    @Option(paramLabel = "N", names = "--runs", defaultValue = "3", description = "Timed runs per variant, after one warm-up; the median is kept (default: ${DEFAULT-VALUE}).")
     int runs;
 
     @Mixin
@@ -56,16 +57,16 @@ final class TradeoffCommand implements Callable<Integer> {
     @Option(names = "--quick", description = "Only median-plane, exact SAH, binned B = 8, 32 and the bvh.")
     boolean quick;
 
-    @Option(names = "--variants", split = ",", description = "Only these variants (names as listed by the full run).")
+    @Option(paramLabel = "NAME,...", names = "--variants", split = ",", description = "Only these variants (names as listed by the full run).")
     List<String> only;
 
-    @Option(names = "--csv", description = "CSV output file (default: tradeoff-MESHNAME.csv).")
+    @Option(paramLabel = "FILE", names = "--csv", description = "CSV output file (default: tradeoff-MESHNAME.csv).")
     Path csv;
 
-    @Option(names = "--chart", description = "Chart file, .png or .svg (default: tradeoff-MESHNAME.png).")
+    @Option(paramLabel = "FILE", names = "--chart", description = "Chart file, .png or .svg (default: tradeoff-MESHNAME.png).")
     Path chart;
 
-    @Option(names = "--chart-rpt", defaultValue = "10", description = "Rays per triangle for the chart's trace time (default: ${DEFAULT-VALUE}).")
+    @Option(paramLabel = "X", names = "--chart-rpt", defaultValue = "10", description = "Rays per triangle for the chart's trace time (default: ${DEFAULT-VALUE}).")
     double chartRaysPerTriangle;
 
     @Mixin
@@ -100,8 +101,8 @@ final class TradeoffCommand implements Callable<Integer> {
         String base = mesh.getFileName().toString().replaceFirst("\\.[^.]*$", "") + (grid > 1 ? "-grid" + grid : "");
         Path csvOut = csv != null ? csv : Path.of("tradeoff-" + base + ".csv");
         Path pngOut = chart != null ? chart : Path.of("tradeoff-" + base + ".png");
-        CommandFiles.requireFolder("--csv", csvOut);
-        CommandFiles.requireFolder("--chart", pngOut);
+        CommandFiles.requireWritable("--csv", csvOut);
+        CommandFiles.requireWritable("--chart", pngOut);
         CommandFiles.requireNotInput("--csv", csvOut, "MESH", mesh);
         CommandFiles.requireNotInput("--chart", pngOut, "MESH", mesh);
         ChartFile.requireFormat("--chart", pngOut);
@@ -121,11 +122,42 @@ final class TradeoffCommand implements Callable<Integer> {
         System.out.printf(Locale.ROOT, "%-22s %10s %10s %9s %8s %8s %8s %9s %11s %11s %11s%n", "variant", "build ms", "SAH cost",
                 "nodes", "nodes/r", "tests/r", "boxes/r", "Mrays/s", "1 r/tri ms", "10 r/tri", "100 r/tri");
         Tradeoff t = new Tradeoff(m, set, runs, threads, countedRays).supervisedBy(deadlines.supervisor());
-        List<TradeoffResult> results = new java.util.ArrayList<>();
+        List<String> skipped = new ArrayList<>();
+        List<TradeoffResult> results = measureAll(t, variants, table, csvOut, skipped);
+        table.finish(Tradeoff.csv(results));
+        String caption = ChartFile.caption(String.format(Locale.ROOT, "%s, %,d triangles; %s rays x %,d; median of %d run%s",
+                base, m.size(), set.name(), set.size(), runs, runs == 1 ? "" : "s"), threads);
+        TradeoffChart.write(results, base + ": build time vs trace time (" + set.name() + " rays)", chartRaysPerTriangle,
+                caption, pngOut);
+        System.out.println("wrote " + csvOut + " and " + pngOut);
+        if (!skipped.isEmpty())
+            System.out.println("skipped " + skipped.size() + " variant" + (skipped.size() == 1 ? "" : "s") + " whose builder failed (not in the CSV "
+                    + "or the chart): " + String.join(", ", skipped));
+        return 0;
+    }
+
+    /**
+     * Measures each variant, writing the rows so far to the partial file after each; a variant
+     * whose builder is at fault (a plug-in's: it threw, answered wrongly, hung) is left out with
+     * its one line, its name added to {@code skipped}. A study stopped otherwise says where its
+     * finished rows are.
+     */
+    private List<TradeoffResult> measureAll(Tradeoff t, List<Variant> variants, StudyFile table, Path csvOut, List<String> skipped)
+            throws java.io.IOException {
+        List<TradeoffResult> results = new ArrayList<>();
+        BuilderFault firstFault = null;
         try (ProgressBar bar = progress.bar(variants.size(), "variants")) {
             for (int i = 0; i < variants.size(); i++) {
                 bar.step(i, variants.get(i).name());
-                TradeoffResult r = t.run(variants.get(i));
+                TradeoffResult r;
+                try {
+                    r = t.run(variants.get(i));
+                } catch (BuilderFault fault) {
+                    if (firstFault == null) firstFault = fault;
+                    skipped.add(variants.get(i).name());
+                    bar.print(System.out, String.format(Locale.ROOT, "%-22s skipped: %s", variants.get(i).name(), fault.getMessage()));
+                    continue;
+                }
                 results.add(r);
                 table.progress(Tradeoff.csv(results));
                 bar.print(System.out, String.format(Locale.ROOT,
@@ -133,13 +165,13 @@ final class TradeoffCommand implements Callable<Integer> {
                         r.expectedCost(), r.nodes(), r.nodesPerRay(), r.testsPerRay(), r.boxesPerRay(), r.raysPerSecond() / 1e6,
                         r.totalMs(1), r.totalMs(10), r.totalMs(100)));
             }
+        } catch (RuntimeException | Error stopped) {
+            if (!results.isEmpty())
+                System.err.println("(the study stopped; its " + results.size() + " finished row" + (results.size() == 1 ? " is" : "s are")
+                        + " in " + table.partial() + ", and " + csvOut + " is as it was)");
+            throw stopped;
         }
-        table.finish(Tradeoff.csv(results));
-        String caption = ChartFile.caption(String.format(Locale.ROOT, "%s, %,d triangles; %s rays x %,d; median of %d run%s",
-                base, m.size(), set.name(), set.size(), runs, runs == 1 ? "" : "s"), threads);
-        TradeoffChart.write(results, base + ": build time vs trace time (" + set.name() + " rays)", chartRaysPerTriangle,
-                caption, pngOut);
-        System.out.println("wrote " + csvOut + " and " + pngOut);
-        return 0;
+        if (results.isEmpty()) throw firstFault;
+        return results;
     }
 }

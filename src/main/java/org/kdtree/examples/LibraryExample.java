@@ -5,14 +5,14 @@ import org.kdtree.accel.Hit;
 import org.kdtree.accel.TriangleIntersector;
 import org.kdtree.geom.Ray;
 import org.kdtree.io.BundledScenes;
-import org.kdtree.io.ObjMeshReader;
+import org.kdtree.io.PrimitivesReader;
 import org.kdtree.kdtree.KdTree;
 import org.kdtree.kdtree.Quality;
 import org.kdtree.kdtree.SahBuilder;
 import org.kdtree.kdtree.Traverser;
 import org.kdtree.shape.TriangleMesh;
 
-/** Loads a mesh (an OBJ file, or by default a bundled scene), builds a tree, traces a ray, prints the statistics. */
+/** Loads a mesh (an OBJ file, a JSON scene, or by default a bundled scene), builds a tree, traces a ray, prints the statistics. */
 public final class LibraryExample {
     private LibraryExample() {
     }
@@ -20,12 +20,12 @@ public final class LibraryExample {
     /**
      * Runs the example.
      *
-     * @param args an optional OBJ file or bundled scene (default {@code scenes:clustered-spheres})
+     * @param args an optional OBJ file, JSON scene or bundled 3-D scene (default {@code scenes:clustered-spheres})
      * @throws Exception if the mesh cannot be read
      */
     public static void main(String[] args) throws Exception {
         Path file = BundledScenes.resolve(args.length > 0 ? args[0] : "scenes:clustered-spheres");  // any folder
-        TriangleMesh mesh = ObjMeshReader.read(file);
+        TriangleMesh mesh = PrimitivesReader.readMesh(file);                                // .obj or .json: its triangles
         KdTree tree = new SahBuilder().quality(Quality.EXACT).build(mesh);                 // the talk's Kt, Ki, lambda
         Traverser rays = new Traverser(tree, new TriangleIntersector(mesh));              // one per thread
         double[] aim = new double[3];                                                       // triangle 0's centre

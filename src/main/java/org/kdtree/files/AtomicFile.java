@@ -66,12 +66,21 @@ public final class AtomicFile {
      * @throws IOException if the content or the file system fails; {@code target} is unchanged
      */
     public static void write(Path target, Content content) throws IOException {
-        Path temporary = temporaryBeside(target);
+        Path temporary;
+        try {
+            temporary = temporaryBeside(target);
+        } catch (IOException e) {
+            throw new IOException(target + ": " + reason(e, target), e);
+        }
         try {
             try (OutputStream out = new BufferedOutputStream(Files.newOutputStream(temporary))) {
                 content.writeTo(out);
             }
-            moveOnto(temporary, target);
+            try {
+                moveOnto(temporary, target);
+            } catch (IOException e) {
+                throw new IOException(target + ": " + reason(e, target), e);
+            }
         } catch (Throwable failure) {
             Files.deleteIfExists(temporary);
             throw failure;
@@ -102,6 +111,46 @@ public final class AtomicFile {
      */
     public static void writeString(Path target, String text) throws IOException {
         writeText(target, out -> out.write(text));
+    }
+
+    /**
+     * Checks, before any work goes into it, that {@code target} can be written: that it is no
+     * folder, that its folder exists, and that a file can be made in that folder (as
+     * {@link #write} will make its temporary there). Nothing is left behind.
+     *
+     * @param target the file a command or a study will write
+     * @throws IOException if it cannot be written; the message is the target as given, a colon
+     *         and the reason ("permission denied: ...", "is a folder, not a file", ...)
+     */
+    public static void requireWritable(Path target) throws IOException {
+        Path absolute = followLink(target.toAbsolutePath());
+        if (Files.isDirectory(absolute)) throw new IOException(target + ": is a folder, not a file; give a file name");
+        Path folder = absolute.getParent();
+        if (folder == null || !Files.exists(folder)) throw new IOException(target + ": the folder " + folder + " does not exist");
+        if (!Files.isDirectory(folder)) throw new IOException(target + ": " + folder + " is a file, not a folder");
+        Path probe;
+        try {
+            probe = temporaryBeside(target);
+        } catch (IOException e) {
+            throw new IOException(target + ": " + reason(e, target), e);
+        }
+        Files.deleteIfExists(probe);
+    }
+
+    /** Why writing {@code target} failed, in words, without the temporary file's name. */
+    private static String reason(IOException e, Path target) {
+        Path folder = target.toAbsolutePath().getParent();
+        boolean denied = e instanceof java.nio.file.AccessDeniedException
+                || e instanceof java.nio.file.FileSystemException f && "Operation not permitted".equalsIgnoreCase(f.getReason());
+        if (denied)
+            return "permission denied (no file can be written in " + folder + ")";
+        if (e instanceof java.nio.file.FileSystemException f && f.getReason() != null) {
+            String why = f.getReason();
+            if (why.equalsIgnoreCase("Is a directory")) return "is a folder, not a file; give a file name";
+            if (why.equalsIgnoreCase("Read-only file system")) return "read-only file system (no file can be written in " + folder + ")";
+            return why.substring(0, 1).toLowerCase(java.util.Locale.ROOT) + why.substring(1);
+        }
+        return e.getMessage() != null ? e.getMessage() : e.toString();
     }
 
     /** A new, uniquely named file in the target's folder (a move within one folder can be atomic). */

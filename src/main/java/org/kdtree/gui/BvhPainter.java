@@ -51,7 +51,25 @@ final class BvhPainter {
         TreePainter.paintObjects(g, scene, v, highlighted, o.selectedShape());
         int drawn = paintOutlines(g, bvh, v);
         if (selected >= 0) outlineSelected(g, v, bvh.nodeBounds(selected));
+        paintPointsOnTop(g, scene, v, highlighted);
         return drawn;
+    }
+
+    /**
+     * Draws the scene's points again over the boxes: a point's box is the point itself, and its
+     * outline (and its parents', thicker) would hide it.
+     */
+    static void paintPointsOnTop(Graphics2D g, Scene2D scene, ViewTransform v, BitSet highlighted) {
+        BasicStroke ring = new BasicStroke(1.5f);
+        for (int i = 0; i < scene.size(); i++) {
+            if (!(scene.get(i) instanceof org.kdtree.shape.Shape2D.Point p)) continue;
+            java.awt.geom.Ellipse2D.Double dot = new java.awt.geom.Ellipse2D.Double(v.screenX(p.x()) - 4, v.screenY(p.y()) - 4, 8, 8);
+            g.setColor(highlighted.get(i) ? Palette.HIGHLIGHT_OBJECT : Palette.OBJECT_FILL);
+            g.fill(dot);
+            g.setColor(highlighted.get(i) ? Palette.HIGHLIGHT_OBJECT.darker() : Palette.OBJECT);
+            g.setStroke(ring);
+            g.draw(dot);
+        }
     }
 
     /**

@@ -71,7 +71,7 @@ final class StepperPanel extends JPanel implements CanvasOverlay {
         super(new BorderLayout());
         this.model = model;
         this.recorder = recorder;
-        setBorder(BorderFactory.createTitledBorder("Traversal stepper (Algorithm 2) - cast a ray with the Cast ray tool (F3)"));
+        setBorder(BorderFactory.createTitledBorder(title(false)));
         JPanel buttons = controls.bar();
         buttons.add(stepLabel);
         JPanel labels = new JPanel(new GridLayout(0, 2, 12, 0));
@@ -92,8 +92,15 @@ final class StepperPanel extends JPanel implements CanvasOverlay {
     /** The stepping itself (first, back, forward, last, play), for the workbench's menu and the panel's buttons. */
     StepControls controls() { return controls; }
 
+    /** The panel's title: the kd-tree's traversal is the talk's Algorithm 2; a hierarchy's is a box traversal. */
+    static String title(boolean boxes) {
+        return (boxes ? "Traversal stepper (hierarchy: nearer box first)" : "Traversal stepper (Algorithm 2)")
+                + " - cast a ray with the Cast ray tool (F3)";
+    }
+
     private void retrace() {
         Built built = model.built();
+        ((javax.swing.border.TitledBorder) getBorder()).setTitle(title(built.testsBoxes()));
         trace = recorder.record(built.structure(), model.scene(), model.ray());
         voxels.index(built);
         controls.reset(trace.size());
@@ -106,8 +113,11 @@ final class StepperPanel extends JPanel implements CanvasOverlay {
             stepLabel.setText(model.ray() == null ? "no ray" : "no traversal");
             for (JLabel l : new JLabel[] {nodeLabel, intervalLabel, childrenLabel, stackLabel, testedLabel}) l.setText(" ");
         } else {
-            describe(trace.step(index));
-            if (trace.step(index).node() >= 0) model.selectNode(trace.step(index).node());   // the tree view follows the step
+            TraversalTrace.Step s = trace.step(index);
+            describe(s);
+            // the tree view follows the step; a node skipped beyond the hit, and the end, select nothing (no objects lit as if tested)
+            if (s.kind() == TraversalTrace.Kind.SKIP || s.kind() == TraversalTrace.Kind.END) model.selectNode(-1);
+            else if (s.node() >= 0) model.selectNode(s.node());
         }
         Widgets.repaintWindow(this);
     }
@@ -190,7 +200,9 @@ final class StepperPanel extends JPanel implements CanvasOverlay {
             tint(g, v, s.near(), Palette.NEAR_CHILD);
             tint(g, v, s.far(), Palette.FAR_CHILD);
         }
-        if (s.node() >= 0) voxels.outline(g, v, s.node(), Palette.CURRENT_NODE, new BasicStroke(3f));
+        if (s.node() >= 0)   // a node skipped beyond the hit: outlined as pruned, not as the node at work
+            voxels.outline(g, v, s.node(), s.kind() == TraversalTrace.Kind.SKIP ? Palette.PRUNED : Palette.CURRENT_NODE,
+                    s.kind() == TraversalTrace.Kind.SKIP ? dashed : new BasicStroke(3f));
         if (!Double.isNaN(s.tMin()) && !Double.isNaN(s.tMax())) {
             double a = Math.max(0, s.tMin()), b = Math.min(s.tMax(), tEnd);
             g.setColor(Palette.CURRENT_NODE);

@@ -156,7 +156,10 @@ final class TraversalRecorder implements TraversalListener {
             best = hit.primitive;
             bestT = hit.t;
         }
-        node = -1;
+        node = -1;            // done: no node is current, none of its boxes or objects under test
+        tMin = tMax = Double.NaN;
+        tested.clear();
+        boxes.clear();
         add(TraversalTrace.Kind.END, Double.NaN, -1, -1, "", -1, found);
     }
 

@@ -30,8 +30,6 @@ import javax.swing.Timer;
 import org.kdtree.io.BundledScenes;
 import org.kdtree.io.PrimitivesReader;
 import org.kdtree.io.SceneReader;
-import org.kdtree.kdtree.KdTree;
-import org.kdtree.kdtree.KdTreeBuilder;
 import org.kdtree.kdtree.Supervisor;
 import org.kdtree.kdtree.Traverser;
 import org.kdtree.limits.Deadlines;
@@ -41,7 +39,7 @@ import org.kdtree.render.Renderer;
 import org.kdtree.render.Tracer;
 import org.kdtree.scene.Scene;
 import org.kdtree.shape.Primitives;
-import org.kdtree.spec.Builders;
+import org.kdtree.spec.BuilderSpec;
 
 /**
  * The 3-D view: pick a scene (the bundled ones, those of a scenes folder, or a file opened with
@@ -54,7 +52,7 @@ final class View3D extends JPanel {
     /** Chooses the 3-D scene. */
     private final JComboBox<String> scene = new JComboBox<>();
     /** Chooses the builder. */
-    private final JComboBox<String> builder = new JComboBox<>(Builders.names().toArray(String[]::new));
+    private final JComboBox<String> builder = new JComboBox<>(BuilderSpec.names().toArray(String[]::new));
     /** Builds the tree and renders. */
     private final JButton build = new JButton("Render");
     /** What the view is doing, or blank. */
@@ -98,7 +96,14 @@ final class View3D extends JPanel {
         scene.setToolTipText("A 3-D scene (bundled, from " + scenesDir + ", or opened with File > Open):"
                 + " JSON scenes are rendered, OBJ meshes get their tree's statistics");
         builder.setName("view3d.builder");
-        builder.setToolTipText("The builder (with the Kt, Ki, lambda, Kmintri, Kmaxdepth of the 2-D view)");
+        builder.setToolTipText("The builder, a kd-tree's or bvh (with the Kt, Ki, lambda, Kmintri, Kmaxdepth of the 2-D view); "
+                + "it follows the 2-D view's builder");
+        builder.setSelectedItem(model.settings().builder());   // gui -b bvh: the 3-D tab renders with the BVH too
+        model.addListener(c -> {   // a new builder, built at once (TREE) or in the background (BUILDING)
+            if ((c == WorkbenchModel.Change.TREE || c == WorkbenchModel.Change.BUILDING)
+                    && !model.settings().builder().equals(builder.getSelectedItem()))
+                builder.setSelectedItem(model.settings().builder());
+        });
         width.setName("view3d.width");
         width.setToolTipText("Image width in pixels (the height follows the scene's aspect ratio); "
                 + LimitedSpinner.allowed(WorkbenchLimits.PREVIEW_WIDTH));
@@ -200,7 +205,7 @@ final class View3D extends JPanel {
         String name = (String) scene.getSelectedItem();
         if (name == null || running != null) return;
         Path file = files.get(name);
-        KdTreeBuilder b = model.settings().forBuilder((String) builder.getSelectedItem()).create();
+        BuilderSpec b = model.settings().forBuilder((String) builder.getSelectedItem());
         int w = ((Number) width.getValue()).intValue();
         cancelled = false;
         build.setEnabled(false);
@@ -219,6 +224,9 @@ final class View3D extends JPanel {
         running.setDaemon(true);
         running.start();
     }
+
+    /** {@return the builder the 3-D view builds with, as its box shows it} */
+    String builderChoice() { return (String) builder.getSelectedItem(); }
 
     /** {@return whether a build or render is under way} */
     public boolean busy() { return running != null; }
@@ -267,20 +275,22 @@ final class View3D extends JPanel {
         split.setDividerLocation(Math.max(split.getWidth() / 3, split.getWidth() - split.getDividerSize() - need));
     }
 
-    private String statistics(Path file, KdTreeBuilder b) throws IOException {
+    private String statistics(Path file, BuilderSpec b) throws IOException {
         Primitives p = PrimitivesReader.read(file);
+        String settings = b.describe();
         long t0 = System.nanoTime();
-        KdTree tree = SUPERVISOR.build(b, p);
+        var built = b.build(p, SUPERVISOR);
         double ms = (System.nanoTime() - t0) / 1e6;
         return String.format(Locale.ROOT, "scene: %s (%s, no camera: statistics only)%nbuilder: %s (%s)%n"
-                + "build time: %.1f ms%n%s%n", file.getFileName(), RenderJob.count(p.size(), "primitive"), b.name(), b.describeSettings(), ms, tree.stats().describe());
+                + "build time: %.1f ms%n%s%n", file.getFileName(), RenderJob.count(p.size(), "primitive"), b.builder(), settings, ms,
+                built.stats().describe());
     }
 
     /**
      * Renders with the library's renderer ({@link RenderJob}, as the render command does) over all
      * cores; the picture shows the image as tiles complete, and Stop ends it after the tiles under way.
      */
-    private String render(Path file, KdTreeBuilder b, int w) throws IOException {
+    private String render(Path file, BuilderSpec b, int w) throws IOException {
         Scene s = SceneReader.read(file);
         int h = Math.max(1, (int) Math.round(w * (double) s.camera().height() / s.camera().width()));
         AtomicReference<Image> growing = new AtomicReference<>();

@@ -19,6 +19,7 @@ import javax.swing.JMenu;
 import javax.swing.JMenuBar;
 import javax.swing.JOptionPane;
 import javax.swing.JPanel;
+import javax.swing.JScrollPane;
 import javax.swing.JSplitPane;
 import javax.swing.JTabbedPane;
 import javax.swing.JToggleButton;
@@ -64,6 +65,8 @@ public final class Workbench extends JFrame {
     private final JTabbedPane steppers = new JTabbedPane();
     /** The builders side by side. */
     private final CompareView compare;
+    /** The 2-D build tab's canvas and side panel. */
+    private JSplitPane buildSplit;
     /** The 3-D tab, where File > Open puts JSON scenes and OBJ meshes. */
     private final View3D view3D;
     /** The ball collisions view. */
@@ -113,8 +116,14 @@ public final class Workbench extends JFrame {
         tabs.setToolTipTextAt(3, "Balls bouncing off the 2-D scene under gravity, with the tree's tests against brute force's (Alt+L)");
         setContentPane(tabs);
         setJMenuBar(menus());
-        setPreferredSize(new Dimension(1280, 860));
+        pack();   // what every panel asks for, then at least 1280 x 860, but never more than the screen holds
+        Dimension natural = getSize();
+        setPreferredSize(fitted(new Dimension(Math.max(1280, natural.width), Math.max(860, natural.height)),
+                java.awt.GraphicsEnvironment.getLocalGraphicsEnvironment().getMaximumWindowBounds()));
         pack();
+        // the side panel its full width, the canvas the rest (on a narrow screen the canvas, not the controls, gives way)
+        int side = buildSplit.getRightComponent().getPreferredSize().width;
+        buildSplit.setDividerLocation(Math.max(240, buildSplit.getWidth() - buildSplit.getDividerSize() - side));
         setLocationRelativeTo(null);
     }
 
@@ -153,6 +162,52 @@ public final class Workbench extends JFrame {
     /** {@return the scene panel} */
     public ScenePanel scenes() { return scenePanel; }
 
+    /**
+     * {@return the window's size: {@code wanted}, but no larger than the screen's usable area}
+     * (a 1024 x 768 or 1366 x 768 screen gets the whole screen; the side panel scrolls where it must)
+     *
+     * @param wanted the size the workbench is laid out for
+     * @param usable the screen's area for windows (without task bars)
+     */
+    static Dimension fitted(Dimension wanted, java.awt.Rectangle usable) {
+        return new Dimension(Math.min(wanted.width, usable.width), Math.min(wanted.height, usable.height));
+    }
+
+    /**
+     * The side panel in a vertical scroll pane: its controls keep their sizes on a short screen
+     * and scroll, and on a tall one it fills the height (the tree view takes what is left).
+     */
+    static JScrollPane scrolling(JComponent side) {
+        JPanel fill = new ViewportFiller(side);
+        JScrollPane scroll = new JScrollPane(fill, JScrollPane.VERTICAL_SCROLLBAR_AS_NEEDED, JScrollPane.HORIZONTAL_SCROLLBAR_NEVER) {
+            @Override public Dimension getPreferredSize() {   // room for the scroll bar, so that it never hides a control
+                Dimension d = super.getPreferredSize();
+                return new Dimension(fill.getPreferredSize().width + getVerticalScrollBar().getPreferredSize().width
+                        + getInsets().left + getInsets().right, d.height);
+            }
+        };
+        scroll.setName("side.scroll");
+        scroll.setBorder(BorderFactory.createEmptyBorder());
+        scroll.getVerticalScrollBar().setUnitIncrement(16);
+        return scroll;
+    }
+
+    /** A panel as wide as its viewport, and as tall as the viewport when that is taller than the panel needs. */
+    private static final class ViewportFiller extends JPanel implements javax.swing.Scrollable {
+        ViewportFiller(JComponent content) {
+            super(new BorderLayout());
+            add(content, BorderLayout.CENTER);
+        }
+
+        @Override public Dimension getPreferredScrollableViewportSize() { return getPreferredSize(); }
+        @Override public int getScrollableUnitIncrement(java.awt.Rectangle r, int o, int d) { return 16; }
+        @Override public int getScrollableBlockIncrement(java.awt.Rectangle r, int o, int d) { return Math.max(16, r.height - 32); }
+        @Override public boolean getScrollableTracksViewportWidth() { return true; }
+        @Override public boolean getScrollableTracksViewportHeight() {
+            return getParent() instanceof javax.swing.JViewport v && v.getHeight() > getPreferredSize().height;
+        }
+    }
+
     private JComponent buildTab() {
         JPanel controls = new JPanel();
         controls.setLayout(new BoxLayout(controls, BoxLayout.Y_AXIS));
@@ -160,7 +215,7 @@ public final class Workbench extends JFrame {
         controls.add(builderPanel);
         controls.add(statsPanel);
         treeView.setBorder(BorderFactory.createTitledBorder("Tree"));
-        treeView.setPreferredSize(new Dimension(320, 220));
+        treeView.setPreferredSize(new Dimension(320, 160));   // the least it gets; a tall window gives it the rest
         JPanel side = new JPanel(new BorderLayout());
         side.add(controls, BorderLayout.NORTH);
         side.add(treeView, BorderLayout.CENTER);
@@ -168,19 +223,22 @@ public final class Workbench extends JFrame {
         JPanel centre = new JPanel(new BorderLayout());
         centre.add(toolBar, BorderLayout.WEST);
         centre.add(canvas, BorderLayout.CENTER);
-        JSplitPane split = new JSplitPane(JSplitPane.HORIZONTAL_SPLIT, centre, side);
+        JScrollPane sideScroll = scrolling(side);
+        JSplitPane split = new JSplitPane(JSplitPane.HORIZONTAL_SPLIT, centre, sideScroll);
         split.setResizeWeight(1);
+        buildSplit = split;
         JPanel tab = new JPanel(new BorderLayout());
         tab.add(split, BorderLayout.CENTER);
         steppers.setName("steppers");
         steppers.addChangeListener(e -> canvas.repaint());   // only the shown stepper draws over the tree
         steppers.addTab("Ray traversal", stepper);
         steppers.setMnemonicAt(0, KeyEvent.VK_Y);
-        steppers.setToolTipTextAt(0, "Step through the cast ray's traversal (Algorithm 2); casting a ray shows it (Alt+Y)");
+        steppers.setToolTipTextAt(0, "Step through the cast ray's traversal (a kd-tree's: Algorithm 2; a hierarchy's: nearer box first);"
+                + " casting a ray shows it (Alt+Y)");
         steppers.addTab("Nearest neighbours", nearest);
         steppers.setMnemonicAt(1, KeyEvent.VK_E);
         steppers.setToolTipTextAt(1, "Step through the k-NN search around the query point; placing a query shows it (Alt+E)");
-        tab.add(steppers, BorderLayout.SOUTH);
+        tab.add(steppers, BorderLayout.SOUTH);   // its full height always; on a narrow screen a long line ends in "..."
         return tab;
     }
 

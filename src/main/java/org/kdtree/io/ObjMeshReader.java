@@ -59,14 +59,22 @@ public final class ObjMeshReader {
     }
 
     /**
-     * {@return the mesh of an OBJ file}
+     * {@return the mesh of an OBJ file}, which has at least one triangle
      *
      * @param file the OBJ file
-     * @throws IOException if the file cannot be read or is malformed
+     * @throws IOException if the file cannot be read or is malformed, is another kind of scene
+     *         file (a {@code .json} render scene, a {@code .scene2d} 2-D scene: the message names
+     *         the reader that fits it), or holds no triangle (no {@code f} line: no OBJ mesh)
      */
     public static TriangleMesh read(Path file) throws IOException {
-        return TextLines.read(file, ObjMeshReader::mesh);
+        FileKinds.require(file, FileKinds.OBJ);
+        TriangleMesh m = TextLines.read(file, ObjMeshReader::mesh);
+        if (m.size() == 0) throw new SceneFormatException(file.toString(), 0, NO_TRIANGLES);
+        return m;
     }
+
+    /** Why an OBJ file without faces is refused. */
+    static final String NO_TRIANGLES = "no triangles (no 'f' lines): not an OBJ mesh, or an empty one";
 
     /**
      * {@return the mesh of OBJ text}
@@ -111,7 +119,9 @@ public final class ObjMeshReader {
         int[] face = new int[16];
         for (String line = in.next(); line != null; line = in.next()) {
             int lineNo = in.line();
-            String s = line.strip();
+            int hash = line.indexOf('#');
+            String s = (hash >= 0 ? line.substring(0, hash) : line).strip(); // a comment may end any line
+            if (s.isEmpty()) continue;
             String[] t = s.split("\\s+");
             switch (t[0]) {
                 case "v" -> {

@@ -4,6 +4,7 @@ import java.io.IOException;
 import java.nio.file.Path;
 import java.util.Locale;
 import org.kdtree.shape.Primitives;
+import org.kdtree.shape.TriangleMesh;
 
 /**
  * Reads the primitives of a file by its extension: {@code .obj} meshes, {@code .scene2d} 2-D
@@ -24,6 +25,26 @@ public final class PrimitivesReader {
         if (name.endsWith(".obj")) return ObjMeshReader.read(file);
         if (name.endsWith(".scene2d")) return Scene2DReader.read(file);
         if (name.endsWith(".json")) return SceneReader.read(file).mesh();
-        throw new SceneFormatException(file.toString(), 0, "unknown file type (expected .obj, .scene2d or .json)");
+        throw new SceneFormatException(file.toString(), 0, java.nio.file.Files.isDirectory(file)
+                ? "is a folder, not a scene file (.obj, .scene2d or .json)" : "unknown file type (expected .obj, .scene2d or .json)");
+    }
+
+    /**
+     * {@return the triangles of an {@code .obj} mesh or a {@code .json} render scene}, at least one
+     *
+     * @param file the file (a bundled one too: {@link BundledScenes#resolve})
+     * @throws IOException if the file cannot be read or is malformed, is a 2-D scene (which has
+     *         no triangles), has another extension, or holds no triangle
+     */
+    public static TriangleMesh readMesh(Path file) throws IOException {
+        String kind = FileKinds.of(file);
+        if (FileKinds.OBJ.equals(kind)) return ObjMeshReader.read(file);
+        if (FileKinds.SCENE2D.equals(kind))
+            throw new SceneFormatException(file.toString(), 0, "a 2-D scene (.scene2d) has no triangles; give an .obj mesh or a .json scene");
+        if (!FileKinds.JSON.equals(kind))
+            throw new SceneFormatException(file.toString(), 0, "unknown file type (expected an .obj mesh or a .json scene)");
+        TriangleMesh m = SceneReader.read(file).mesh();
+        if (m.size() == 0) throw new SceneFormatException(file.toString(), 0, "the scene has no triangles");
+        return m;
     }
 }

@@ -10,11 +10,11 @@ import java.util.LinkedHashMap;
 import java.util.List;
 import java.util.Map;
 import org.kdtree.geom.Tolerance;
+import org.kdtree.limits.Limits;
 import org.kdtree.scene.Camera;
 import org.kdtree.scene.GeometryBuilder;
 import org.kdtree.scene.Light;
 import org.kdtree.scene.Material;
-import org.kdtree.limits.Limits;
 import org.kdtree.scene.Scene;
 import org.kdtree.scene.Tessellation;
 import org.kdtree.scene.Vec3;
@@ -44,6 +44,7 @@ public final class SceneReader {
      * @throws IOException if a file cannot be read or is malformed
      */
     public static Scene read(Path path) throws IOException {
+        FileKinds.require(path, FileKinds.JSON);
         try (Reader r = new StringReader(TextLines.readAll(path))) {
             Path dir = path.toAbsolutePath().getParent();
             return new SceneReader(path.toString(), dir).parse(JsonNode.read(r, path.toString()),

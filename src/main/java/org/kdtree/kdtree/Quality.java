@@ -37,7 +37,8 @@ public enum Quality {
 
     /** {@return what the preset sets, in a few words}, e.g. for the command line's help */
     public String describe() {
-        return (algorithm.exact() ? "exact " : "binned, exact below " + exactBelow + ", ") + "leaves below " + leafBelow + " references";
+        return (algorithm.exact() ? "exact, " : "binned, exact below " + exactBelow + ", ")
+                + (leafBelow <= 1 ? "no leaf without a plane search" : "leaves below " + leafBelow + " references");
     }
 
     /** {@return the node size below which this preset makes leaves without a plane search} */

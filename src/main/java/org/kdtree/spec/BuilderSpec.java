@@ -60,9 +60,12 @@ public final class BuilderSpec {
         return List.copyOf(all);
     }
 
-    /** A new builder of {@code name} with its defaults: a kd-tree builder or the BVH's. */
+    /** A new builder of {@code name} with its defaults: a kd-tree builder or the BVH's; an unknown name's line lists every name, bvh too. */
     static StructureBuilder newBuilder(String name) {
-        return name.equals(BvhBuilder.NAME) ? new BvhBuilder() : Builders.create(name);
+        if (name.equals(BvhBuilder.NAME)) return new BvhBuilder();
+        if (!Builders.names().contains(name))
+            throw new IllegalArgumentException("unknown builder '" + name + "' (known: " + String.join(", ", names()) + ")");
+        return Builders.create(name);
     }
 
     /**

@@ -1,7 +1,6 @@
 package org.kdtree.spec;
 
 import java.io.IOException;
-import java.io.UncheckedIOException;
 import java.net.URL;
 import java.net.URLClassLoader;
 import java.nio.file.Files;
@@ -74,28 +73,63 @@ public final class Builders {
         List<URL> jars = new ArrayList<>();
         List<Path> jarFiles = jarsOf(jarOrFolder);
         for (Path jar : jarFiles) jars.add(PluginJar.open(jar));
-        URLClassLoader loader = new URLClassLoader(jars.toArray(URL[]::new), Builders.class.getClassLoader());
-        Set<String> ownClasses = listedClasses(loader);
+        Map<String, Class<? extends KdTreeBuilder>> found = new LinkedHashMap<>();
+        Map<String, Path> from = new LinkedHashMap<>();
         List<String> listed = new ArrayList<>();
         try {
-            for (ServiceLoader.Provider<KdTreeBuilder> p : ServiceLoader.load(KdTreeBuilder.class, loader).stream().toList()) {
-                if (!ownClasses.contains(p.type().getName())) continue; // the library's own, seen through the parent
-                String name = p.get().name();
-                listed.add(name);
-                if (p.type().getClassLoader() != loader && BY_NAME.containsKey(name)) continue; // known already: same class
-                register(name, () -> newInstance(p.type()));
+            for (int i = 0; i < jarFiles.size(); i++) {
+                // the jar's own classes first (two students' com.example.MyBuilder stay two), the others for what it uses
+                List<URL> order = new ArrayList<>(jars);
+                order.add(0, order.remove(i));
+                URLClassLoader loader = new URLClassLoader(order.toArray(URL[]::new), Builders.class.getClassLoader());
+                Set<String> ownClasses = PluginJar.listedClasses(jarFiles.get(i));
+                for (ServiceLoader.Provider<KdTreeBuilder> p : ServiceLoader.load(KdTreeBuilder.class, loader).stream().toList()) {
+                    if (!ownClasses.contains(p.type().getName())) continue; // another jar's, or the library's seen through the parent
+                    String name = p.get().name();
+                    Class<? extends KdTreeBuilder> before = found.putIfAbsent(name, p.type());
+                    if (before != null && before != p.type())
+                        throw new IllegalArgumentException("--plugin " + jarOrFolder + ": two jars register the builder '" + name + "': "
+                                + from.get(name) + " and " + jarFiles.get(i) + "; keep one of them, or give one builder another name()");
+                    from.putIfAbsent(name, jarFiles.get(i));
+                    if (!listed.contains(name)) listed.add(name);
+                }
             }
         } catch (java.util.ServiceConfigurationError | LinkageError e) {
             throw new IllegalArgumentException("--plugin " + jarOrFolder + ": " + unloadable(e), e);
         }
         if (listed.isEmpty()) throw new IllegalArgumentException("--plugin " + jarOrFolder + ": " + noBuilder(jarFiles));
+        List<String> registered = new ArrayList<>();
+        for (var e : found.entrySet()) {
+            Class<? extends KdTreeBuilder> type = e.getValue();
+            if (type.getClassLoader() == Builders.class.getClassLoader() && BY_NAME.containsKey(e.getKey())) continue; // known already: same class
+            register(e.getKey(), () -> newInstance(type));
+            registered.add(e.getKey());
+        }
         try {
             SettingsTable.all();   // a plug-in's rows must not take another row's option
         } catch (IllegalArgumentException e) {
-            listed.forEach(BY_NAME::remove);
+            registered.forEach(BY_NAME::remove);
             throw new IllegalArgumentException("--plugin " + jarOrFolder + ": " + e.getMessage());
         }
         return listed;
+    }
+
+    /**
+     * The jar each plug-in builder name came from, for the command line to refuse one name given
+     * by two {@code --plugin}s.
+     *
+     * @param jarOrFolder what {@link #loadPlugins} was given
+     * @param names the names it returned
+     * @param seen the names loaded before, each with the jar or folder that gave it; updated
+     * @throws IllegalArgumentException if one of {@code names} came from another jar or folder before
+     */
+    public static void requireDistinct(Path jarOrFolder, List<String> names, Map<String, Path> seen) {
+        for (String name : names) {
+            Path before = seen.putIfAbsent(name, jarOrFolder);
+            if (before != null && !before.toAbsolutePath().normalize().equals(jarOrFolder.toAbsolutePath().normalize()))
+                throw new IllegalArgumentException("--plugin: two plug-ins register the builder '" + name + "': " + before + " and "
+                        + jarOrFolder + "; keep one of them, or give one builder another name()");
+        }
     }
 
     /** Why a listed builder could not be loaded, from the deepest cause, with what to do. */
@@ -129,25 +163,6 @@ public final class Builders {
         if (without.size() == jars.size())
             return "no jar in the folder lists a builder; " + PluginJar.missingServices(jars.get(0), "your builder's jar");
         return "no builder listed in " + PluginJar.SERVICES + " could be loaded";
-    }
-
-    /** The builder classes the plug-in jars themselves list (not their parent class loader's). */
-    private static Set<String> listedClasses(URLClassLoader loader) {
-        Set<String> names = new java.util.HashSet<>();
-        try {
-            var files = loader.findResources("META-INF/services/" + KdTreeBuilder.class.getName());
-            while (files.hasMoreElements()) {
-                try (var in = files.nextElement().openStream()) {
-                    for (String line : new String(in.readAllBytes(), java.nio.charset.StandardCharsets.UTF_8).split("\\R")) {
-                        String name = line.replaceFirst("#.*", "").strip();
-                        if (!name.isEmpty()) names.add(name);
-                    }
-                }
-            }
-        } catch (IOException e) {
-            throw new UncheckedIOException(e);
-        }
-        return names;
     }
 
     /**

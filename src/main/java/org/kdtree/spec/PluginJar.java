@@ -4,12 +4,15 @@ import java.io.IOException;
 import java.net.MalformedURLException;
 import java.net.URL;
 import java.net.URLClassLoader;
+import java.nio.charset.StandardCharsets;
 import java.nio.file.AccessDeniedException;
 import java.nio.file.Files;
 import java.nio.file.Path;
 import java.util.ArrayList;
 import java.util.Collections;
+import java.util.HashSet;
 import java.util.List;
+import java.util.Set;
 import java.util.zip.ZipException;
 import java.util.zip.ZipFile;
 import org.kdtree.kdtree.KdTreeBuilder;
@@ -48,6 +51,24 @@ final class PluginJar {
         } catch (IOException e) {
             return false;
         }
+    }
+
+    /** {@return the class names the jar's own service file lists}, none if it has none or cannot be read. */
+    static Set<String> listedClasses(Path jar) {
+        Set<String> names = new HashSet<>();
+        try (ZipFile zip = new ZipFile(jar.toFile())) {
+            var entry = zip.getEntry(SERVICES);
+            if (entry == null) return names;
+            try (var in = zip.getInputStream(entry)) {
+                for (String line : new String(in.readAllBytes(), StandardCharsets.UTF_8).split("\\R")) {
+                    String name = line.replaceFirst("#.*", "").strip();
+                    if (!name.isEmpty()) names.add(name);
+                }
+            }
+        } catch (IOException e) {
+            return names;
+        }
+        return names;
     }
 
     /**

@@ -61,6 +61,16 @@ public final class SettingsTable {
     }
 
     /**
+     * {@return whether some kd-tree builder takes {@code row}} (a command that needs a kd-tree offers only those)
+     *
+     * @param row a row of the table
+     */
+    public static boolean takenByKdTrees(Setting<?> row) {
+        for (String name : Builders.names()) if (Builders.create(name).settingRows().contains(row)) return true;
+        return false;
+    }
+
+    /**
      * {@return whether every builder known by name takes {@code row}}
      *
      * @param row a row of the table

@@ -11,6 +11,8 @@ import java.util.Map;
 import org.junit.jupiter.api.Test;
 import org.junit.jupiter.api.io.TempDir;
 import org.kdtree.testing.PluginJars;
+import org.kdtree.testing.ReadOnlyFolder;
+import org.kdtree.testing.StudentJars;
 
 /** grade-class over a folder of ten students' jars, good and broken in every way: one complete table, in bounded time and memory. */
 class ClassGradeCommandTest {
@@ -57,6 +59,53 @@ class ClassGradeCommandTest {
         for (String bad : List.of("carol.jar", "dan.jar", "erin.jar", "frank.jar", "grace.jar", "heidi.jar", "ivan.jar", "judy.jar"))
             assertThat(rows.get(bad).get("verdict")).as(bad).isEqualTo("FAIL");
         assertThat(Files.readString(md)).contains("10 jars: 8 FAIL").contains("| alice.jar | Alice | plugin-midpoint |");
+    }
+
+    /** Issue 34, item 3: a builder's System.exit(n) is told from running out of memory by what the JVM said, for any n. */
+    @Test void aBuildersExitIsNeverReportedAsOutOfMemoryWhateverItsCode(@TempDir Path dir) throws Exception {
+        Path jars = Files.createDirectory(dir.resolve("jars"));
+        for (int code : new int[] {2, 3, 4, 42})
+            StudentJars.compile(jars, "exit" + code + ".jar", "my-builder", 2, "System.exit(" + code + "); return null;");
+        Path csv = dir.resolve("class.csv");
+        CliRun run = CliRun.of("grade-class", jars.toString(), "--csv", csv.toString(), "--markdown", dir.resolve("class.md").toString(),
+                "-q", "--jobs", "2", "--student-heap", "128", "--student-deadline", "60");
+        assertThat(run.code()).as(run.err()).isZero();
+        Map<String, Map<String, String>> rows = rows(Files.readString(csv, StandardCharsets.UTF_8));
+        for (int code : new int[] {2, 3, 4, 42})
+            assertThat(rows.get("exit" + code + ".jar").get("problem")).as("exit " + code)
+                    .isEqualTo("crashed: the JVM exited with code " + code + " before the grade was done (System.exit(" + code
+                            + ") in the builder?)");
+    }
+
+    /** Issue 34, item 2: the table's default place, the current folder, read-only: refused at once, before any student is graded. */
+    @Test void aTableThatCannotBeWrittenIsRefusedBeforeAnyGrading(@TempDir Path dir) throws Exception {
+        Path jars = Files.createDirectory(dir.resolve("jars"));
+        StudentJars.compile(jars, "alice.jar", "my-builder", 2, null);
+        try (ReadOnlyFolder ro = ReadOnlyFolder.make(dir, "ro")) {
+            Process p = new ProcessBuilder(Path.of(System.getProperty("java.home"), "bin", "java").toString(), "-cp",
+                    System.getProperty("java.class.path"), Main.class.getName(), "grade-class", jars.toString(), "-q")
+                    .directory(ro.path().toFile()).start();
+            String out = new String(p.getInputStream().readAllBytes(), StandardCharsets.UTF_8);
+            String err = new String(p.getErrorStream().readAllBytes(), StandardCharsets.UTF_8);
+            assertThat(p.waitFor()).as(err).isEqualTo(Failure.USAGE);
+            assertThat(err.strip()).isEqualTo("error: --csv class-grades.csv: permission denied (no file can be written in " + ro.path() + ")");
+            assertThat(out).isEmpty();
+        }
+    }
+
+    /** Issue 34, item 2: a table file that fails at the end (its folder made read-only meanwhile) is kept elsewhere, and said where. */
+    @Test void aTableThatFailsAtTheEndIsKeptInATemporaryFile(@TempDir Path dir) throws Exception {
+        ClassTable table = new ClassTable(List.of(StudentRow.failed("alice.jar", "Alice", "crashed: for the test", 1.5)), List.of());
+        try (ReadOnlyFolder ro = ReadOnlyFolder.make(dir, "ro")) {
+            Path csv = ro.path().resolve("class.csv");
+            List<String> lost = ClassGradeCommand.save(table, csv, dir.resolve("class.md"));
+            assertThat(lost).hasSize(1);
+            assertThat(lost.get(0)).startsWith("error: " + csv + ": permission denied").contains("; the table is kept in ");
+            Path kept = Path.of(lost.get(0).substring(lost.get(0).indexOf("kept in ") + "kept in ".length()));
+            assertThat(Files.readString(kept)).isEqualTo(table.csv()).contains("alice.jar", "Alice");
+            assertThat(Files.readString(dir.resolve("class.md"))).isEqualTo(table.markdown());
+            Files.delete(kept);
+        }
     }
 
     @Test void aFolderWithoutJarsIsOneLine(@TempDir Path dir) {

@@ -30,7 +30,7 @@ class FailureTest {
         for (String command : new String[] {"raycast", "tradeoff"}) {
             CliRun r = CliRun.of(command, empty.toString());
             assertThat(r.code()).isEqualTo(2);
-            assertThat(r.err().strip()).isEqualTo("error: " + empty + ": the mesh has no triangles (no 'f' lines)");
+            assertThat(r.err().strip()).isEqualTo("error: " + empty + ": no triangles (no 'f' lines): not an OBJ mesh, or an empty one");
         }
     }
 

@@ -26,7 +26,7 @@ class GuiCommandTest {
         assertThat(java.awt.GraphicsEnvironment.isHeadless()).isTrue();
         int[] code = new int[1];
         String[] r = run(code);
-        assertThat(code[0]).isZero();
+        assertThat(code[0]).as("issue 34, item 11: as gui does").isEqualTo(2);
         assertThat(r[0]).contains("Usage: kdtree").contains("gui").contains("stats");
         assertThat(r[1]).contains("no display");
         r = run(code, "gui");

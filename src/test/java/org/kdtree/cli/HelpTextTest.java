@@ -7,7 +7,8 @@ import org.junit.jupiter.api.Test;
 
 /** What a newcomer reads first: every command's help, whole and unbroken. */
 class HelpTextTest {
-    private static final List<String> COMMANDS = List.of("gui", "stats", "raycast", "render", "tradeoff", "knn", "knn-study", "grade");
+    private static final List<String> COMMANDS = List.of("gui", "stats", "raycast", "render", "tradeoff", "knn", "knn-study", "grade",
+            "grade-class");
 
     @Test void everyCommandsHelpFitsAnEightyColumnTerminalAndEndsWell() {
         for (String c : COMMANDS) {
@@ -52,5 +53,42 @@ class HelpTextTest {
         String help = CliRun.of("stats", "--help").out().replaceAll("\\s+", " ");
         assertThat(help).contains("NAIVE, SORTED and EVENT build the same tree in different times; BINNED builds another")
                 .doesNotContain("(same tree, different time)");
+    }
+
+    /** Issue 34, item 12: the help texts a newcomer reads, each as it should be. */
+    @Test void theHelpTextsSayWhatAppliesInOneNotation() {
+        for (String c : COMMANDS) {
+            String help = CliRun.of(c, "--help").out();
+            String flat = help.replaceAll("\\s+", " ");
+            assertThat(help).as("%s: placeholders are N, X, FILE, NAME, not <name>", c).doesNotContainPattern("=<\\w+>");
+            assertThat(flat).as("%s: ranges are written 'a to b'", c).doesNotContainPattern("\\d\\.\\.\\d");
+            assertThat(flat).as("%s: which deadline default applies", c).doesNotContain("default: 60, grade: 10");
+            assertThat(flat).as(c).doesNotContain("leaves below 1 references");
+            assertThat(CliRun.of(c, "-q", "--help").code()).as("%s takes -q", c).isZero();
+        }
+        for (String c : List.of("knn", "knn-study", "grade")) {
+            String help = CliRun.of(c, "--help").out();
+            assertThat(help).as("%s needs a kd-tree: no bvh offered", c).doesNotContain("--bvh-width").doesNotContain(", or bvh");
+        }
+        assertThat(CliRun.of("stats", "--help").out()).contains("--bvh-width");
+        assertThat(CliRun.of("raycast", "--help").out().replaceAll("\\s+", " ")).contains("threads: threads building the tree and tracing each ray set");
+        assertThat(CliRun.of("stats", "--help").out().replaceAll("\\s+", " "))
+                .contains("exact (exact, no leaf without a plane search)")
+                .contains("(default: 60 s; grade and grade-class: 10 s; 0.1 to 3600)");
+        CliRun unknown = CliRun.of("stats", "scenes:talk-figures", "-b", "nosuch");
+        assertThat(unknown.err().strip()).startsWith("error: unknown builder 'nosuch' (known: sah, ").endsWith(", bvh)");
+    }
+
+    @Test void theVersionIsThePoms() throws Exception {
+        String pom = java.nio.file.Files.readString(java.nio.file.Path.of("pom.xml"));
+        String version = pom.replaceFirst("(?s).*?<artifactId>kdtree</artifactId>\\s*<version>([^<]+)</version>.*", "$1");
+        assertThat(version).isEqualTo("0.1.0-SNAPSHOT");
+        assertThat(CliRun.of("--version").out().strip()).isEqualTo("kdtree " + version);
+        assertThat(CliRun.of("raycast", "--version").out().strip()).isEqualTo("kdtree " + version);
+    }
+
+    @Test void theReadmesOptionListNamesEverySetting() throws Exception {
+        String readme = java.nio.file.Files.readString(java.nio.file.Path.of("README.md"));
+        for (org.kdtree.accel.Setting<?> s : org.kdtree.spec.SettingsTable.all()) assertThat(readme).as(s.option()).contains("`" + s.option());
     }
 }

@@ -1,6 +1,7 @@
 package org.kdtree.examples;
 
 import static org.assertj.core.api.Assertions.assertThat;
+import static org.assertj.core.api.Assertions.assertThatThrownBy;
 
 import java.io.ByteArrayOutputStream;
 import java.io.PrintStream;
@@ -24,6 +25,28 @@ class LibraryExampleTest {
             System.setOut(old);
         }
         assertThat(out.toString()).startsWith("hit triangle ").contains("nodes: 33629", "expected cost: 210.75");
+    }
+
+    /** Issue 34, item 5: the example's Javadoc invites a bundled scene; the Cornell box (a JSON scene) is one. */
+    @Test void runsOnTheCornellBox() throws Exception {
+        assertThat(run("scenes:cornell-box")).startsWith("hit triangle ").contains("nodes: ");
+    }
+
+    @Test void aTwoDimensionalSceneIsOneClearError() {
+        assertThatThrownBy(() -> run("scenes:talk-figures")).isInstanceOf(org.kdtree.io.SceneFormatException.class)
+                .hasMessageEndingWith("talk-figures.scene2d: a 2-D scene (.scene2d) has no triangles; give an .obj mesh or a .json scene");
+    }
+
+    private static String run(String... args) throws Exception {
+        PrintStream old = System.out;
+        ByteArrayOutputStream out = new ByteArrayOutputStream();
+        try {
+            System.setOut(new PrintStream(out, true));
+            LibraryExample.main(args);
+        } finally {
+            System.setOut(old);
+        }
+        return out.toString();
     }
 
     @Test void theReadmeQuotesTheWholeExample() throws Exception {

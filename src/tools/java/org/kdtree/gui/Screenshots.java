@@ -21,6 +21,10 @@ public final class Screenshots {
     public static void main(String[] args) throws Exception {
         Path out = Path.of(args.length > 0 ? args[0] : "docs/images");
         Files.createDirectories(out);
+        if (args.length > 2 && args[1].equals("--screen")) {
+            screen(out, args[2], args.length > 3 && args[3].equals("bvh"));
+            return;
+        }
         Workbench[] w = new Workbench[1];
         SwingUtilities.invokeAndWait(() -> {
             w[0] = new Workbench();
@@ -135,6 +139,33 @@ public final class Screenshots {
         }
         shot(out, "view3d.png");
         on(b::dispose);
+        System.exit(0);
+    }
+
+    /**
+     * The whole screen (Xvfb's, e.g. 1024 x 768) with the workbench as the command line opens it
+     * (fitted to the screen), a ray cast and stepped to its middle: {@code workbench-NAME.png}.
+     */
+    private static void screen(Path out, String name, boolean bvh) throws Exception {
+        Workbench[] w = new Workbench[1];
+        SwingUtilities.invokeAndWait(() -> {
+            w[0] = new Workbench();
+            w[0].setVisible(true);
+        });
+        WorkbenchModel m = w[0].model();
+        on(() -> {
+            if (bvh) m.setSettings(m.settings().forBuilder("bvh"));
+            m.setRay(0.2, 2.0, 9.8, 7.0);
+            StepperPanel s = w[0].stepper();
+            s.controls().first();
+            if (bvh) s.controls().last();   // the end: nothing current, nothing lit as if tested
+            else for (int i = 0; i < s.trace().size() / 2; i++) s.controls().forward();
+        });
+        Thread.sleep(1500);
+        java.awt.Rectangle all = new java.awt.Rectangle(java.awt.Toolkit.getDefaultToolkit().getScreenSize());
+        java.awt.image.BufferedImage img = new java.awt.Robot().createScreenCapture(all);
+        javax.imageio.ImageIO.write(img, "png", out.resolve("workbench-" + name + (bvh ? "-bvh" : "") + ".png").toFile());
+        on(w[0]::dispose);
         System.exit(0);
     }
 

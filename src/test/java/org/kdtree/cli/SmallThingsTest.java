@@ -1,0 +1,66 @@
+package org.kdtree.cli;
+
+import static org.assertj.core.api.Assertions.assertThat;
+
+import java.nio.file.Files;
+import java.nio.file.Path;
+import org.junit.jupiter.api.Test;
+import org.junit.jupiter.api.io.TempDir;
+
+/** Issue 34, item 11: the smaller things a newcomer trips on, each as a first-day user would expect. */
+class SmallThingsTest {
+    @TempDir Path dir;
+
+    @Test void anEmptyObjIsRefusedByStatsNotCountedAsZeroPrimitives() throws Exception {
+        Path empty = Files.writeString(dir.resolve("empty.obj"), "");
+        CliRun r = CliRun.of("stats", empty.toString());
+        assertThat(r.code()).isEqualTo(Failure.USAGE);
+        assertThat(r.err().strip()).isEqualTo("error: " + empty + ": no triangles (no 'f' lines): not an OBJ mesh, or an empty one");
+    }
+
+    @Test void aCommentAfterAFaceIsRead() throws Exception {
+        Path obj = Files.writeString(dir.resolve("c.obj"), "v 0 0 0\nv 1 0 0\nv 0 1 0\nf 1 2 3 # a comment\n");
+        CliRun r = CliRun.of("stats", obj.toString());
+        assertThat(r.code()).as(r.err()).isZero();
+        assertThat(r.out()).contains("(1 primitive, 3-D)");
+    }
+
+    @Test void aFolderGivenAsAFileReadsTheSameInEveryCommand() throws Exception {
+        Path folder = Files.createDirectory(dir.resolve("data.obj"));
+        Path pts = Files.writeString(dir.resolve("p.csv"), "0,0\n1,1\n");
+        String[][] runs = {
+            {"SCENE", "stats", folder.toString()},
+            {"MESH", "raycast", folder.toString()},
+            {"MESH", "tradeoff", folder.toString(), "--csv", dir.resolve("t.csv").toString(), "--chart", dir.resolve("t.png").toString()},
+            {"POINTS", "knn", folder.toString(), "--queries", pts.toString(), "--k", "1", "--out", dir.resolve("o.csv").toString()},
+            {"--queries", "knn", pts.toString(), "--queries", folder.toString(), "--k", "1", "--out", dir.resolve("o.csv").toString()},
+            {"POINTS", "knn-study", folder.toString(), "--queries", pts.toString(), "--k", "1", "--csv", dir.resolve("s.csv").toString(),
+                "--chart", dir.resolve("s.png").toString()},
+        };
+        for (String[] run : runs) {
+            CliRun r = CliRun.of(java.util.Arrays.copyOfRange(run, 1, run.length));
+            assertThat(r.code()).as(String.join(" ", run)).isEqualTo(Failure.USAGE);
+            assertThat(r.err().strip()).as(run[1]).isEqualTo("error: " + run[0] + " " + folder + ": is a folder, not a file");
+        }
+    }
+
+    @Test void renderIntoALogSaysWhatItRendersBeforeItIsDone() throws Exception {
+        Path png = dir.resolve("c.png");
+        CliRun r = CliRun.of("render", "scenes:cornell-box", "-o", png.toString(), "--spp", "1", "--width", "64", "--height", "48");
+        assertThat(r.code()).as(r.err()).isZero();
+        assertThat(r.out()).startsWith("rendering scenes:cornell-box: 64 x 48, 1 sample per pixel, into " + png + "\n");
+        assertThat(r.out().indexOf("rendering scenes:cornell-box")).isLessThan(r.out().indexOf("build time"));
+    }
+
+    @Test void knnStudyOnATinyInputWarnsThatItsSpeedsAreNoise() throws Exception {
+        CliRun r = CliRun.of("knn-study", "--generate", "uniform", "--n", "200", "--query-count", "10", "--k", "3", "--runs", "1",
+                "--csv", dir.resolve("s.csv").toString(), "--chart", dir.resolve("s.png").toString(), "-q");
+        assertThat(r.code()).as(r.err()).isZero();
+        assertThat(r.out()).containsPattern("warning: a timed pass took only [0-9.]+ ms \\(10 queries\\): too short to time well");
+    }
+
+    @Test void theReadmeGivesTheQuickBenchmarkCommandAndSaysTheWholeRunTakesHours() throws Exception {
+        String readme = Files.readString(Path.of("README.md"));
+        assertThat(readme).contains("java -jar target/benchmarks.jar TraversalBenchmark -f 1").contains("about three hours");
+    }
+}
