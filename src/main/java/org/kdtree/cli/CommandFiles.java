@@ -5,6 +5,7 @@ import java.nio.file.Path;
 import java.util.Locale;
 import org.kdtree.files.AtomicFile;
 import org.kdtree.files.SameFile;
+import org.kdtree.io.FileKind;
 import org.kdtree.io.ObjMeshReader;
 import org.kdtree.shape.TriangleMesh;
 
@@ -26,7 +27,7 @@ final class CommandFiles {
     /** The triangle mesh {@code command} traces rays through: an OBJ file with at least one triangle. */
     static TriangleMesh readMesh(Path mesh, String command) throws IOException {
         requireNotFolder("MESH", mesh);
-        if (!mesh.getFileName().toString().toLowerCase(Locale.ROOT).endsWith(".obj"))
+        if (FileKind.of(mesh) != FileKind.OBJ)
             throw new IllegalArgumentException(mesh + ": " + command + " traces rays through a triangle mesh; give an OBJ file");
         TriangleMesh m = ObjMeshReader.read(mesh);
         if (m.size() == 0) throw new IllegalArgumentException(mesh + ": the mesh has no triangles (no 'f' lines)");

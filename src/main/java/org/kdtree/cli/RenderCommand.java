@@ -4,6 +4,7 @@ import java.nio.file.Path;
 import java.util.concurrent.Callable;
 import org.kdtree.accel.SharedSettings;
 import org.kdtree.io.BundledScenes;
+import org.kdtree.io.FileKind;
 import org.kdtree.io.SceneReader;
 import org.kdtree.limits.Limits;
 import org.kdtree.render.RenderJob;
@@ -88,19 +89,19 @@ final class RenderCommand implements Callable<Integer> {
 
     /** The bundled scenes render takes: the JSON ones. */
     private static String jsonScenes() {
-        return String.join(", ", BundledScenes.FILES.stream().filter(f -> f.endsWith(".json"))
-                .map(f -> BundledScenes.PREFIX + f.substring(0, f.length() - ".json".length())).toList());
+        return String.join(", ", BundledScenes.FILES.stream().filter(f -> FileKind.of(f) == FileKind.JSON)
+                .map(f -> BundledScenes.PREFIX + f.substring(0, f.length() - FileKind.JSON.extension().length())).toList());
     }
 
     /** Refuses a SCENE that is not a JSON scene, naming it as the user gave it and saying what render takes. */
     private void requireJsonScene(Path sceneFile) {
-        String n = sceneFile.getFileName() == null ? "" : sceneFile.getFileName().toString().toLowerCase(java.util.Locale.ROOT);
-        if (n.endsWith(".json") && !java.nio.file.Files.isDirectory(sceneFile)) return;
+        FileKind kind = FileKind.of(sceneFile);
+        if (kind != null && kind.renders() && !java.nio.file.Files.isDirectory(sceneFile)) return;
         String what;
         if (java.nio.file.Files.isDirectory(sceneFile)) what = "is a folder, not a file";
-        else if (n.endsWith(".obj")) what = "is an OBJ mesh, with no camera or lights; put it in a JSON scene as an object "
+        else if (kind == FileKind.OBJ) what = "is an OBJ mesh, with no camera or lights; put it in a JSON scene as an object "
                 + "{\"type\": \"obj\", \"file\": \"" + sceneFile.getFileName() + "\"} (docs/scene-format.md), or trace it with stats or raycast";
-        else if (n.endsWith(".scene2d")) what = "is a 2-D scene; open it in the workbench (gui) or give it to stats";
+        else if (kind == FileKind.SCENE2D) what = "is a 2-D scene; open it in the workbench (gui) or give it to stats";
         else if (!java.nio.file.Files.exists(sceneFile)) return; // the reader names a missing file
         else what = "is not a JSON scene (.json)";
         throw new IllegalArgumentException("SCENE " + scene + ": " + what + ". render takes a JSON scene (camera, lights, materials, "

@@ -28,6 +28,7 @@ import javax.swing.JTextArea;
 import javax.swing.SwingUtilities;
 import javax.swing.Timer;
 import org.kdtree.io.BundledScenes;
+import org.kdtree.io.FileKind;
 import org.kdtree.io.PrimitivesReader;
 import org.kdtree.io.SceneReader;
 import org.kdtree.kdtree.Supervisor;
@@ -162,8 +163,8 @@ final class View3D extends JPanel {
         if (!Files.isDirectory(dir)) return List.of();
         try (Stream<Path> s = Files.list(dir)) {
             List<String> names = s.map(p -> p.getFileName().toString()).sorted().toList();
-            List<String> out = new ArrayList<>(names.stream().filter(View3D::isJson).toList());
-            out.addAll(names.stream().filter(n -> n.toLowerCase(Locale.ROOT).endsWith(".obj")).toList());
+            List<String> out = new ArrayList<>(names.stream().filter(n -> FileKind.of(n) == FileKind.JSON).toList());
+            out.addAll(names.stream().filter(n -> FileKind.of(n) == FileKind.OBJ).toList());
             return out;
         } catch (IOException e) {
             return List.of();
@@ -192,12 +193,12 @@ final class View3D extends JPanel {
 
     /** {@return whether {@code name} is a JSON scene or an OBJ mesh} */
     static boolean is3D(String name) {
-        String n = name.toLowerCase(Locale.ROOT);
-        return n.endsWith(".json") || n.endsWith(".obj");
+        FileKind kind = FileKind.of(name);
+        return kind != null && kind.hasTriangles();
     }
 
     private static boolean isJson(String name) {
-        return name != null && name.toLowerCase(Locale.ROOT).endsWith(".json");
+        return name != null && FileKind.of(name) == FileKind.JSON;
     }
 
     /** Renders (JSON) or builds (OBJ) the chosen scene in the background. */

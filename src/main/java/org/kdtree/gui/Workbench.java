@@ -28,6 +28,7 @@ import javax.swing.KeyStroke;
 import javax.swing.SwingUtilities;
 import javax.swing.filechooser.FileNameExtensionFilter;
 import org.kdtree.examples.CentreMidpointBuilder;
+import org.kdtree.io.FileKind;
 import org.kdtree.spec.BuilderSpec;
 import org.kdtree.spec.Builders;
 
@@ -370,9 +371,11 @@ public final class Workbench extends JFrame {
     }
 
     private void openScene() {
-        JFileChooser c = chooser("scene2d", "2-D scenes (.scene2d)");
-        c.addChoosableFileFilter(new FileNameExtensionFilter("3-D scenes (.json, .obj)", "json", "obj"));
-        c.addChoosableFileFilter(new FileNameExtensionFilter("All scenes (.scene2d, .json, .obj)", "scene2d", "json", "obj"));
+        JFileChooser c = chooser(FileKind.SCENE2D.bareExtension(), "2-D scenes (" + FileKind.SCENE2D.extension() + ")");
+        c.addChoosableFileFilter(new FileNameExtensionFilter("3-D scenes (" + FileKind.JSON.extension() + ", " + FileKind.OBJ.extension() + ")",
+                FileKind.JSON.bareExtension(), FileKind.OBJ.bareExtension()));
+        c.addChoosableFileFilter(new FileNameExtensionFilter("All scenes (.scene2d, .json, .obj)",
+                java.util.Arrays.stream(FileKind.values()).map(FileKind::bareExtension).toArray(String[]::new)));
         if (c.showOpenDialog(this) != JFileChooser.APPROVE_OPTION) return;
         try {
             open(c.getSelectedFile().toPath());
@@ -399,9 +402,9 @@ public final class Workbench extends JFrame {
     }
 
     private void saveScene() {
-        JFileChooser c = chooser("scene2d", "2-D scenes (.scene2d)");
+        JFileChooser c = chooser(FileKind.SCENE2D.bareExtension(), "2-D scenes (" + FileKind.SCENE2D.extension() + ")");
         if (c.showSaveDialog(this) != JFileChooser.APPROVE_OPTION) return;
-        Path p = withExtension(c.getSelectedFile().toPath(), ".scene2d");
+        Path p = withExtension(c.getSelectedFile().toPath(), FileKind.SCENE2D.extension());
         try {
             model.save(p);
         } catch (IOException e) {

@@ -1,7 +1,5 @@
 package org.kdtree.io;
 
-import org.kdtree.limits.Limit;
-
 import com.google.gson.stream.JsonReader;
 import com.google.gson.stream.JsonToken;
 import com.google.gson.stream.MalformedJsonException;
@@ -15,6 +13,7 @@ import java.util.Map;
 import java.util.Set;
 import java.util.regex.Matcher;
 import java.util.regex.Pattern;
+import org.kdtree.limits.Limit;
 
 /**
  * A parsed JSON value that remembers where it came from (file, line, and its path such as

@@ -67,7 +67,7 @@ public final class ObjMeshReader {
      *         the reader that fits it), or holds no triangle (no {@code f} line: no OBJ mesh)
      */
     public static TriangleMesh read(Path file) throws IOException {
-        FileKinds.require(file, FileKinds.OBJ);
+        FileKind.OBJ.require(file);
         TriangleMesh m = TextLines.read(file, ObjMeshReader::mesh);
         if (m.size() == 0) throw new SceneFormatException(file.toString(), 0, NO_TRIANGLES);
         return m;

@@ -21,10 +21,14 @@ public final class PrimitivesReader {
      * @throws IOException if the file cannot be read, is malformed or has another extension
      */
     public static Primitives read(Path file) throws IOException {
-        String name = file.getFileName().toString().toLowerCase(Locale.ROOT);
-        if (name.endsWith(".obj")) return ObjMeshReader.read(file);
-        if (name.endsWith(".scene2d")) return Scene2DReader.read(file);
-        if (name.endsWith(".json")) return SceneReader.read(file).mesh();
+        FileKind kind = FileKind.of(file);
+        if (kind != null && !java.nio.file.Files.isDirectory(file)) {
+            return switch (kind) {
+                case OBJ -> ObjMeshReader.read(file);
+                case SCENE2D -> Scene2DReader.read(file);
+                case JSON -> SceneReader.read(file).mesh();
+            };
+        }
         throw new SceneFormatException(file.toString(), 0, java.nio.file.Files.isDirectory(file)
                 ? "is a folder, not a scene file (.obj, .scene2d or .json)" : "unknown file type (expected .obj, .scene2d or .json)");
     }
@@ -37,11 +41,11 @@ public final class PrimitivesReader {
      *         no triangles), has another extension, or holds no triangle
      */
     public static TriangleMesh readMesh(Path file) throws IOException {
-        String kind = FileKinds.of(file);
-        if (FileKinds.OBJ.equals(kind)) return ObjMeshReader.read(file);
-        if (FileKinds.SCENE2D.equals(kind))
+        FileKind kind = FileKind.of(file);
+        if (kind == FileKind.OBJ) return ObjMeshReader.read(file);
+        if (kind == FileKind.SCENE2D)
             throw new SceneFormatException(file.toString(), 0, "a 2-D scene (.scene2d) has no triangles; give an .obj mesh or a .json scene");
-        if (!FileKinds.JSON.equals(kind))
+        if (kind != FileKind.JSON)
             throw new SceneFormatException(file.toString(), 0, "unknown file type (expected an .obj mesh or a .json scene)");
         TriangleMesh m = SceneReader.read(file).mesh();
         if (m.size() == 0) throw new SceneFormatException(file.toString(), 0, "the scene has no triangles");

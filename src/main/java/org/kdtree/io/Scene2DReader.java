@@ -30,7 +30,7 @@ public final class Scene2DReader {
      * @throws IOException if the file cannot be read or is malformed
      */
     public static Scene2D read(Path file) throws IOException {
-        FileKinds.require(file, FileKinds.SCENE2D);
+        FileKind.SCENE2D.require(file);
         return TextLines.read(file, Scene2DReader::read);
     }
 

@@ -44,7 +44,7 @@ public final class SceneReader {
      * @throws IOException if a file cannot be read or is malformed
      */
     public static Scene read(Path path) throws IOException {
-        FileKinds.require(path, FileKinds.JSON);
+        FileKind.JSON.require(path);
         try (Reader r = new StringReader(TextLines.readAll(path))) {
             Path dir = path.toAbsolutePath().getParent();
             return new SceneReader(path.toString(), dir).parse(JsonNode.read(r, path.toString()),

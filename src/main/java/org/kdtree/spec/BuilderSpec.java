@@ -68,6 +68,13 @@ public final class BuilderSpec {
         return Builders.create(name);
     }
 
+    /** The rows the builder {@code name} takes, without making one each time (the registry keeps them). */
+    static List<Setting<?>> settingRows(String name) {
+        return name.equals(BvhBuilder.NAME) ? BVH_ROWS : Builders.settingRows(name);
+    }
+
+    private static final List<Setting<?>> BVH_ROWS = new BvhBuilder().settingRows();
+
     /**
      * {@return this spec with {@code setting} given as {@code value}, or no longer given if {@code value} is null}
      *
@@ -99,8 +106,7 @@ public final class BuilderSpec {
     public <T> T value(Setting<T> setting) {
         T v = get(setting);
         if (v != null) return v;
-        StructureBuilder b = newBuilder(builder);
-        return b.settingRows().contains(setting) ? b.settings().get(setting) : null;
+        return settingRows(builder).contains(setting) ? setting.defaultValue() : null;
     }
 
     /**
@@ -109,7 +115,8 @@ public final class BuilderSpec {
      * @param name another builder's name
      */
     public BuilderSpec forBuilder(String name) {
-        return new BuilderSpec(name, given.only(newBuilder(name).settingRows()));
+        newBuilder(name);   // an unknown name: one line listing every name
+        return new BuilderSpec(name, given.only(settingRows(name)));
     }
 
     /**
@@ -129,7 +136,7 @@ public final class BuilderSpec {
      * @param name    a registered builder's name
      */
     public static boolean applies(Setting<?> setting, String name) {
-        return newBuilder(name).settingRows().contains(setting);
+        return settingRows(name).contains(setting);
     }
 
     /**

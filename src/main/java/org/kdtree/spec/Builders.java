@@ -12,6 +12,7 @@ import java.util.Map;
 import java.util.ServiceLoader;
 import java.util.Set;
 import java.util.function.Supplier;
+import org.kdtree.accel.Setting;
 import org.kdtree.kdtree.KdTreeBuilder;
 import org.kdtree.kdtree.MedianPlaneBuilder;
 import org.kdtree.kdtree.ObjectMedianBuilder;
@@ -29,6 +30,8 @@ import org.kdtree.kdtree.SlidingMidpointBuilder;
  */
 public final class Builders {
     private static final Map<String, Supplier<? extends KdTreeBuilder>> BY_NAME = new LinkedHashMap<>();
+    /** Each registered builder's setting rows, asked once (a plug-in's constructor runs once for them, not at every look). */
+    private static final Map<String, List<Setting<?>>> ROWS = new java.util.HashMap<>();
 
     static {
         register("sah", SahBuilder::new);
@@ -59,6 +62,7 @@ public final class Builders {
      */
     public static synchronized void register(String name, Supplier<? extends KdTreeBuilder> factory) {
         BY_NAME.put(name, factory);
+        ROWS.remove(name);
     }
 
     /**
@@ -172,6 +176,7 @@ public final class Builders {
      */
     public static synchronized void remove(String name) {
         BY_NAME.remove(name);
+        ROWS.remove(name);
     }
 
     /** {@return the registered names, in registration order} */
@@ -191,5 +196,21 @@ public final class Builders {
         if (f == null)
             throw new IllegalArgumentException("unknown builder '" + name + "' (known: " + String.join(", ", BY_NAME.keySet()) + ")");
         return f.get();
+    }
+
+    /**
+     * {@return the setting rows of the builder registered as {@code name}}, asked of a new builder
+     * once and kept until the name is registered again or removed
+     *
+     * @param name a registered name
+     * @throws IllegalArgumentException if no builder has that name
+     */
+    public static synchronized List<Setting<?>> settingRows(String name) {
+        List<Setting<?>> rows = ROWS.get(name);
+        if (rows == null) {
+            rows = List.copyOf(create(name).settingRows());
+            ROWS.put(name, rows);
+        }
+        return rows;
     }
 }

@@ -28,7 +28,7 @@ public final class SettingsTable {
         Set<Setting<?>> rows = new LinkedHashSet<>();
         Map<String, String> ownerOfOption = new HashMap<>();
         for (String name : BuilderSpec.names()) {
-            for (Setting<?> row : BuilderSpec.newBuilder(name).settingRows()) {
+            for (Setting<?> row : BuilderSpec.settingRows(name)) {
                 if (!rows.add(row)) continue;
                 String before = ownerOfOption.putIfAbsent(row.option(), name);
                 if (before != null)
@@ -42,7 +42,7 @@ public final class SettingsTable {
     /** {@return the names of the builders known by name that take {@code row}} */
     static List<String> takers(Setting<?> row) {
         List<String> names = new ArrayList<>();
-        for (String name : BuilderSpec.names()) if (BuilderSpec.newBuilder(name).settingRows().contains(row)) names.add(name);
+        for (String name : BuilderSpec.names()) if (BuilderSpec.settingRows(name).contains(row)) names.add(name);
         return names;
     }
 
@@ -66,7 +66,7 @@ public final class SettingsTable {
      * @param row a row of the table
      */
     public static boolean takenByKdTrees(Setting<?> row) {
-        for (String name : Builders.names()) if (Builders.create(name).settingRows().contains(row)) return true;
+        for (String name : Builders.names()) if (Builders.settingRows(name).contains(row)) return true;
         return false;
     }
 

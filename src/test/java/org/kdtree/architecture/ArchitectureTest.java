@@ -218,6 +218,17 @@ class ArchitectureTest {
         return found;
     }
 
+    /** File kinds are known in one place, {@code io.FileKind}: no other code tests a file name's extension. */
+    @Test void fileKindsAreKnownOnlyToTheirRegistry() {
+        Pattern extension = Pattern.compile("\"\\.(obj|json|scene2d|mtl)\"");
+        List<String> found = new ArrayList<>();
+        for (Path f : SourceFiles.all()) {
+            if (f.endsWith(Path.of("io", "FileKind.java"))) continue;
+            for (Matcher m = extension.matcher(SourceFiles.read(f)); m.find(); ) found.add(f + ": " + m.group());
+        }
+        assertThat(found).as("file extensions tested outside io.FileKind").isEmpty();
+    }
+
     /** The check above on the hand decodings it replaced (the traversal's and the point queries'), and on their fix. */
     @Test void theNodeCheckFindsHandDecoding() {
         String generic = """
