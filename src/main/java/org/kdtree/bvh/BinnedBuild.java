@@ -174,7 +174,7 @@ final class BinnedBuild {
         double[] c = centroids;                 // k minima, then k maxima
         // Past this depth only halving reaches leaves of leafSize before the cap: halve.
         if (depthCap - depth <= ceilLog2((n + leafSize - 1) / leafSize)) return children(from, median(from, to, c), to, left, right);
-        int nb = Math.min(bins, n);
+        int nb = Math.min(bins, Math.max(4, n / 2));   // fewer bins in small nodes: about two references a bin
         bin(from, to, nb, c, s);
         double area = BoxArea.of(box, 0, k);
         double best = Double.POSITIVE_INFINITY;
