@@ -16,7 +16,9 @@ import org.kdtree.shape.Primitives;
  *
  * <p>The primitives' bounds are kept in the order being partitioned (a reference per primitive:
  * its k minima, its k maxima, and its index beside), so that each node reads its stretch in
- * sequence, and one pass bins every axis. The inner loops allocate nothing.
+ * sequence, and one pass bins every axis. They are floats rounded outwards ({@link #lower},
+ * {@link #upper}): a box only grows, so no primitive is lost, and each pass moves half the bytes
+ * doubles would. The inner loops allocate nothing.
  */
 final class BinnedBuild {
     /** Nodes of at least this many primitives are built as tasks of their own when threads build. */
@@ -27,17 +29,25 @@ final class BinnedBuild {
      * cost is 1 % higher (docs/bvh.md).
      */
     private static final int SMALL_NODE = 32;
+    /**
+     * Primitives a leaf tests together, priced as one test: the SAH counts a child's and a leaf's
+     * primitives in blocks of this many ({@code ceil(n / 4)} tests), as Embree's builders count
+     * them for its four-triangle leaves. Leaves of up to four cost one Ki, so nodes below five
+     * primitives stop being split for a saving of a fraction of a test, and the node count falls
+     * towards Embree's (docs/bvh.md).
+     */
+    static final int LEAF_BLOCK = 4;
 
     private final int k;
-    /** Per reference, in partition order: k minima then k maxima; twice a centroid is min + max. */
-    private final double[] bounds;
+    /** Per reference, in partition order: k minima then k maxima, as floats rounded outwards; twice a centroid is min + max. */
+    private final float[] bounds;
     /** The primitive of each reference, partitioned in place with it: each node owns one stretch. */
     private final int[] order;
     private final CostModel cost;
     private final int bins, leafSize, depthCap;
     private final boolean parallel;
 
-    private BinnedBuild(int k, double[] bounds, int[] order, BvhBuilder settings) {
+    private BinnedBuild(int k, float[] bounds, int[] order, BvhBuilder settings) {
         this.k = k;
         this.bounds = bounds;
         this.order = order;
@@ -50,7 +60,7 @@ final class BinnedBuild {
 
     static Bvh build(Primitives prims, BvhBuilder settings) {
         int k = prims.dimension(), n = prims.size();
-        double[] bounds = new double[2 * k * n];
+        float[] bounds = new float[2 * k * n];
         int[] order = new int[n];
         Box b = new Box(k);
         int m = 0;
@@ -58,8 +68,8 @@ final class BinnedBuild {
             prims.bounds(i, b);
             if (b.isEmpty()) continue;          // nothing of it can be hit
             for (int a = 0; a < k; a++) {
-                bounds[2 * k * m + a] = b.min(a);
-                bounds[2 * k * m + k + a] = b.max(a);
+                bounds[2 * k * m + a] = lower(b.min(a));
+                bounds[2 * k * m + k + a] = upper(b.max(a));
             }
             order[m++] = i;
         }
@@ -77,6 +87,18 @@ final class BinnedBuild {
             run.node(root, 0, m, 0, run.new Scratch());
         }
         return Bvh.of(k, root, run.order, settings);
+    }
+
+    /** {@return the greatest float at or below {@code x}} */
+    static float lower(double x) {
+        float f = (float) x;
+        return f > x ? Math.nextDown(f) : f;
+    }
+
+    /** {@return the least float at or above {@code x}} */
+    static float upper(double x) {
+        float f = (float) x;
+        return f < x ? Math.nextUp(f) : f;
     }
 
     /** The scratch of one task: bin counts and boxes per axis, the sweep's suffix areas. */
@@ -131,10 +153,10 @@ final class BinnedBuild {
         double[] box = node.box, c = node.centroids = new double[2 * k];
         clear(box);
         clear(c);
-        double[] r = bounds;
+        float[] r = bounds;
         for (int o = 2 * k * from, end = 2 * k * to; o < end; o += 2 * k) {
             for (int a = 0; a < k; a++) {
-                double lo = r[o + a], hi = r[o + k + a], x = lo + hi;
+                double lo = r[o + a], hi = r[o + k + a], x = lo + hi;   // a float sum in double: exact
                 if (lo < box[a]) box[a] = lo;
                 if (hi > box[k + a]) box[k + a] = hi;
                 if (x < c[a]) c[a] = x;
@@ -152,7 +174,7 @@ final class BinnedBuild {
         double[] c = centroids;                 // k minima, then k maxima
         // Past this depth only halving reaches leaves of leafSize before the cap: halve.
         if (depthCap - depth <= ceilLog2((n + leafSize - 1) / leafSize)) return children(from, median(from, to, c), to, left, right);
-        int nb = Math.min(bins, n);
+        int nb = Math.min(bins, Math.max(4, n / 2));   // fewer bins in small nodes: about two references a bin
         bin(from, to, nb, c, s);
         double area = BoxArea.of(box, 0, k);
         double best = Double.POSITIVE_INFINITY;
@@ -167,7 +189,7 @@ final class BinnedBuild {
             }
         }
         if (bestAxis < 0) return n > leafSize ? children(from, median(from, to, c), to, left, right) : -1;
-        if (n <= leafSize && best >= this.cost.ki() * n) return -1;
+        if (n <= leafSize && best >= this.cost.ki() * blocks(n)) return -1;
         if (k == 3) {
             binBoxes(bestAxis, 0, bestBin, s, left.box);
             binBoxes(bestAxis, bestBin, nb, s, right.box);
@@ -181,6 +203,11 @@ final class BinnedBuild {
         enclose(from, mid, left);
         enclose(mid, to, right);
         return mid;
+    }
+
+    /** {@return the tests a leaf of {@code n} primitives costs: n in blocks of {@link #LEAF_BLOCK}} */
+    static int blocks(int n) {
+        return (n + LEAF_BLOCK - 1) / LEAF_BLOCK;
     }
 
     private static int ceilLog2(int n) {
@@ -199,7 +226,8 @@ final class BinnedBuild {
      */
     private void bin(int from, int to, int nb, double[] c, Scratch s) {
         int[] count = s.count;
-        double[] box = s.box, scale = s.scale, r = bounds;
+        double[] box = s.box, scale = s.scale;
+        float[] r = bounds;
         int kk = 2 * k;
         int widest = 0;
         for (int a = 1; a < k; a++) if (c[k + a] - c[a] > c[k + widest] - c[widest]) widest = a;
@@ -221,7 +249,7 @@ final class BinnedBuild {
         for (int o = kk * from, end = kk * to; o < end; o += kk) {
             for (int a = 0; a < k; a++) {
                 if (scale[a] == 0) continue;
-                int b = binOf(r[o + a] + r[o + k + a], c[a], scale[a], nb);
+                int b = binOf((double) r[o + a] + r[o + k + a], c[a], scale[a], nb);
                 count[a * bins + b]++;
                 int d = kk * (a * bins + b);
                 for (int x = 0; x < kk; x += 1) {
@@ -235,7 +263,8 @@ final class BinnedBuild {
     /** {@link #bin}'s pass in 3-D, unrolled: the build's hottest loop. */
     private void bin3(int from, int to, int nb, double[] c, Scratch s) {
         int[] count = s.count;
-        double[] box = s.box, r = bounds;
+        double[] box = s.box;
+        float[] r = bounds;
         double sx = s.scale[0], sy = s.scale[1], sz = s.scale[2], lx = c[0], ly = c[1], lz = c[2];
         int by = bins, bz = 2 * bins;
         for (int a = 0; a < 3; a++) {
@@ -291,8 +320,8 @@ final class BinnedBuild {
             n += count[cb + b - 1];
             int right = s.suffixCount[b];
             if (n == 0 || right == 0) continue;
-            double c = area > 0 ? cost.kt() + cost.ki() * (BoxArea.of(acc, 0, k) * n + s.suffixArea[b] * right) * norm
-                    : cost.kt() + cost.ki() * Math.max(n, right);
+            double c = area > 0 ? cost.kt() + cost.ki() * (BoxArea.of(acc, 0, k) * blocks(n) + s.suffixArea[b] * blocks(right)) * norm
+                    : cost.kt() + cost.ki() * blocks(Math.max(n, right));
             if (c < best) {
                 best = c;
                 s.sweepBin = b;
@@ -329,7 +358,7 @@ final class BinnedBuild {
             int right = suffixCount[b];
             if (n == 0 || right == 0) continue;
             double dx = x1 - x0, dy = y1 - y0, dz = z1 - z0;
-            double c = kt + ((dx * dy + dy * dz + dz * dx) * n + suffixArea[b] * right) * norm;
+            double c = kt + ((dx * dy + dy * dz + dz * dx) * blocks(n) + suffixArea[b] * blocks(right)) * norm;
             if (c < best) {
                 best = c;
                 s.sweepBin = b;
@@ -354,7 +383,7 @@ final class BinnedBuild {
 
     /** Twice the centroid of reference {@code i} on {@code axis}. */
     private double centre(int i, int axis) {
-        return bounds[2 * k * i + axis] + bounds[2 * k * i + k + axis];
+        return (double) bounds[2 * k * i + axis] + bounds[2 * k * i + k + axis];
     }
 
     /** Moves the references whose centroid bin on {@code axis} is below {@code bin} first; returns where the rest start. */
@@ -394,9 +423,9 @@ final class BinnedBuild {
 
     /** Grows a centroid box by reference {@code i}'s (doubled) centroid. */
     private void growCentroids(double[] c, int i) {
-        double[] r = bounds;
+        float[] r = bounds;
         int o = 6 * i;
-        double cx = r[o] + r[o + 3], cy = r[o + 1] + r[o + 4], cz = r[o + 2] + r[o + 5];
+        double cx = (double) r[o] + r[o + 3], cy = (double) r[o + 1] + r[o + 4], cz = (double) r[o + 2] + r[o + 5];
         c[0] = Math.min(c[0], cx); c[1] = Math.min(c[1], cy); c[2] = Math.min(c[2], cz);
         c[3] = Math.max(c[3], cx); c[4] = Math.max(c[4], cy); c[5] = Math.max(c[5], cz);
     }
@@ -441,7 +470,7 @@ final class BinnedBuild {
         order[j] = t;
         int kk = 2 * k;
         for (int x = 0, a = kk * i, b = kk * j; x < kk; x++) {
-            double v = bounds[a + x];
+            float v = bounds[a + x];
             bounds[a + x] = bounds[b + x];
             bounds[b + x] = v;
         }

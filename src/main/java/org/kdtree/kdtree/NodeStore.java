@@ -63,9 +63,8 @@ final class NodeStore {
     private int[] minBin = new int[0], maxBin = new int[0];
     private EventSplit eventSplit;
     private BoundsSplit boundsSplit;
-    /** What the SAH keeps per thread: its cost of the current voxel and its best plane. */
-    SahCost sahCost;
-    final SahSplit best = new SahSplit();
+    /** What a builder keeps with this store ({@link BuildNode#state}): one object, of the builder's own type. */
+    Object state;
 
     NodeStore(Primitives prims) {
         this.prims = prims;

@@ -20,10 +20,11 @@ import org.kdtree.limits.Limits;
  *
  * <p>Deciding terminate needs the best plane, so {@link #terminate} searches for it and keeps it,
  * and {@link #findPlane} returns what was kept: one search per node, by whichever
- * {@link Algorithm} is set. (A student's builder keeps its plane with {@link BuildNode#keepPlane};
- * this one keeps it in its search state, one per thread of the build, so that no plane object is
- * made per node.) A subclass gets the same searches over the same node store as this class:
- * there is no other path.
+ * {@link Algorithm} is set. It keeps that plane with {@link BuildNode#keepPlane}, as a student's
+ * builder does, and its search state (cost function, best plane) in {@link BuildNode#keepState}, the
+ * door any builder has; the exact search sweeps the node's sorted events, which a
+ * student's builder reads through {@link BuildNode#eventCount} and its neighbours. A subclass gets the same
+ * searches over the same node store as this class: there is no other path.
  *
  * <p>Its settings and their defaults are rows of {@link Setting} (docs/limits.md lists them):
  * those of every builder, and {@link SahBuilder#LAMBDA}, {@link SahBuilder#ALGORITHM},
@@ -103,23 +104,28 @@ public class SahBuilder extends KdTreeBuilder {
      */
     @Override protected boolean terminate(BuildContext context, BuildNode node) {
         if (node.size() < leafBelow() || node.depth() >= context.depthCap()) return true;
-        NodeStore store = node.store();
-        if (store.sahCost == null) store.sahCost = new SahCost(costModel(), lambda(), node.dimension());
-        SahCost sah = store.sahCost.set(store.voxel(node.level()), 2 * node.dimension() * node.child());
+        Search s = node.state(Search.class);
+        if (s == null) node.keepState(s = new Search(new SahCost(costModel(), lambda(), node.dimension())));
+        SahCost sah = s.cost.set(node.store().voxel(node.level()), 2 * node.dimension() * node.child());
         if (!(sah.halfArea() > 0)) return true;
-        SahSplit best = store.best;
+        SahSplit best = s.best;
         best.reset();
         search().search(node, sah, best);
         if (!best.found() || best.cost() >= sah.leafCost(node.size())) return true;
-        node.searched = true;
+        node.keepPlane(best.plane());
         return false;
     }
 
     /** The plane {@link #terminate} found and kept (searching now if this node's terminate did not). */
     @Override protected SplitPlane findPlane(BuildContext context, BuildNode node) {
-        if (!node.searched && terminate(context, node))
+        if (node.keptPlane() == null && terminate(context, node))
             throw new IllegalStateException("findPlane called on a node the SAH would make a leaf");
-        return node.store().best.plane();
+        return node.keptPlane();
+    }
+
+    /** What the SAH keeps from node to node on one thread ({@link BuildNode#state}): its cost function and its best plane. */
+    private record Search(SahCost cost, SahSplit best) {
+        Search(SahCost cost) { this(cost, new SahSplit()); }
     }
 
     /** The plane search of {@code a} under this builder's bins and exact threshold. */
