@@ -69,6 +69,7 @@ public abstract class TreeTape {
     public static final class Mismatch extends Error {
         private static final long serialVersionUID = 1L;
 
+        /** Whether the tape just ended early. */
         private final boolean early;
 
         Mismatch(String message) {
