@@ -119,7 +119,7 @@ final class StudentBox {
         cmd.addAll(inside());
         cmd.add("/box/jdk/bin/java");
         cmd.addAll(jvmOptions);
-        cmd.addAll(List.of("-Duser.home=/tmp", "-Djava.io.tmpdir=/tmp", "-XX:-UsePerfData", "-cp", String.join(File.pathSeparator, inside)));
+        cmd.addAll(List.of("-Duser.home=/tmp", "-Djava.io.tmpdir=/tmp", "-cp", String.join(File.pathSeparator, inside)));
         cmd.addAll(mainAndArgs);
         return cmd;
     }

@@ -157,7 +157,9 @@ record StudentJvm(Deadlines deadlines, double seconds, int heapMb, StudentBox bo
     /** The child's command line: this JVM's java, the library's class path, the student's jar and nothing else; in its box if there is one. */
     private List<String> command(Path jar) {
         // the JVM's own warnings (a thread it could not start) go to standard error: standard output is the report channel
-        List<String> jvm = List.of("-Xmx" + heapMb + "m", "-Djava.awt.headless=true", "-Xlog:disable", "-Xlog:all=warning:stderr");
+        // and no performance data file (hsperfdata) in the temporary folder, in the box or not
+        List<String> jvm = List.of("-Xmx" + heapMb + "m", "-Djava.awt.headless=true", "-Xlog:disable", "-Xlog:all=warning:stderr",
+                "-XX:-UsePerfData");
         List<String> args = List.of("--in-box", "--quiet", "--call-deadline", Double.toString(deadlines.callSeconds()),
                 "--build-deadline", Double.toString(deadlines.buildSeconds()));
         String name = jar.getFileName().toString();
