@@ -88,12 +88,12 @@ record StudentJvm(Deadlines deadlines, double seconds, int heapMb, StudentBox bo
             long after = rest.completeOnTimeout(-1L, 5, TimeUnit.SECONDS).get(); // -1: a process it started still holds the channel
             if (report != null && after > 0) notes.add("wrote " + after + " bytes into its report channel after the report: ignored");
             double took = (System.nanoTime() - t0) / 1e9;
-            String said = err.get(5, TimeUnit.SECONDS), last = said.substring(said.lastIndexOf('\n') + 1).strip();
+            String said = err.completeOnTimeout("", 5, TimeUnit.SECONDS).get(), last = said.substring(said.lastIndexOf('\n') + 1).strip();
             StudentRow row;
             if (report != null) row = StudentRow.parse(file, student, report.csv(), took, boxed);
             else if (killed.get()) row = StudentRow.failed(file, student, String.format(Locale.ROOT,
                     "crashed: killed at the student deadline of %.0f s", seconds), took, boxed);
-            else if (mismatch.early() && p.exitValue() != 0) row = StudentRow.failed(file, student, why(p.exitValue(), last, jar), took, boxed);
+            else if (mismatch.early()) row = StudentRow.failed(file, student, why(p.exitValue(), last, jar), took, boxed);
             else row = StudentRow.failed(file, student, "its report does not match the checks made of it (" + mismatch.getMessage()
                     + "): its code wrote into the report channel?", took, boxed);
             if (box != null) {
@@ -102,7 +102,7 @@ record StudentJvm(Deadlines deadlines, double seconds, int heapMb, StudentBox bo
             }
             for (String n : notes) row = row.withNote(n);
             return new Graded(row, report);
-        } catch (java.util.concurrent.ExecutionException | java.util.concurrent.TimeoutException e) {
+        } catch (java.util.concurrent.ExecutionException e) {
             return new Graded(StudentRow.failed(file, student, "not graded: " + e.getMessage(), (System.nanoTime() - t0) / 1e9, boxed), null);
         } catch (InterruptedException e) {
             Thread.currentThread().interrupt();
