@@ -23,12 +23,14 @@ import picocli.CommandLine.Parameters;
 
 /**
  * {@code grade-class FOLDER}: every jar of a folder graded as {@code grade} grades one builder,
- * each in a JVM of its own (see {@link StudentJvm}), several at once, into one table.
+ * each in a JVM of its own in a box (see {@link StudentJvm}, {@link StudentBox}), several at once, into one table.
  */
 @Command(name = "grade-class", mixinStandardHelpOptions = true,
         description = {"Grade a class: every .jar in FOLDER graded alone in a JVM of its own (a hang, System.exit or "
                 + "unbounded allocation ends only that student's run), several at once, into one table (CSV and Markdown): "
                 + "one row per jar, failures first.",
+                "Each JVM runs in a box (bubblewrap): no network, no file but the system, the JDK, the library and its own jar, "
+                        + "a 64 MB scratch folder, at most 256 threads; the grade is made outside it, from the trees it sends.",
                 "Exit code 0 once the table is written, whatever the verdicts; 2 if a file of it could not be written "
                         + "(the table is then printed, and kept in a temporary file the error names)."})
 final class ClassGradeCommand implements Callable<Integer> {
@@ -53,6 +55,10 @@ final class ClassGradeCommand implements Callable<Integer> {
     @Option(names = "--student-heap", paramLabel = "MB", description = "Each student's JVM's heap, -Xmx (default: 512; 64 to 65536).")
     Integer heapMb;
 
+    @Option(names = "--no-sandbox", description = "Run the students' JVMs without a box (where bubblewrap cannot run); "
+            + "every row says so.")
+    boolean noSandbox;
+
     @Mixin
     ProgressOption progress;
 
@@ -62,7 +68,7 @@ final class ClassGradeCommand implements Callable<Integer> {
     @Override public Integer call() throws IOException, InterruptedException {
         List<Path> jars = jars();
         for (Path out : List.of(csv, markdown)) CommandFiles.requireWritable(out == csv ? "--csv" : "--markdown", out);
-        StudentJvm jvm = new StudentJvm(deadlines.deadlines(Deadlines.GRADE), seconds(), heap());
+        StudentJvm jvm = new StudentJvm(deadlines.deadlines(Deadlines.GRADE), seconds(), heap(), box(noSandbox, "grade-class"));
         int n = jobs == null ? defaultJobs(jvm.heapMb()) : jobs;
         Limits.THREADS.check("--jobs", n);
         long t0 = System.nanoTime();
@@ -128,6 +134,17 @@ final class ClassGradeCommand implements Callable<Integer> {
             List<Path> jars = files.filter(f -> f.getFileName().toString().toLowerCase(Locale.ROOT).endsWith(".jar")).sorted().toList();
             if (jars.isEmpty()) throw new IllegalArgumentException("grade-class " + folder + ": the folder holds no .jar");
             return jars;
+        }
+    }
+
+    /** The box the students' JVMs run in, none if {@code unboxed}; refused in one line where none can be made. */
+    static StudentBox box(boolean unboxed, String command) {
+        if (unboxed) return null;
+        try {
+            return StudentBox.find();
+        } catch (StudentBox.Unavailable e) {
+            throw new IllegalArgumentException(command + " runs each student's code in a box, and none can be made here: "
+                    + e.getMessage() + " (or grade without a box: --no-sandbox)");
         }
     }
 

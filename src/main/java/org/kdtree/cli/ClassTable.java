@@ -10,6 +10,8 @@ import java.util.TreeMap;
 /** {@code grade-class}'s table: one row per jar, failures first, then by file name; as CSV and as Markdown with a summary. */
 final class ClassTable {
     private static final List<String> ORDER = List.of("FAIL", "CORRECT", "GOOD");
+    /** The note of every row graded without a box. */
+    static final String UNBOXED = "not boxed (--no-sandbox)";
     private final List<StudentRow> rows;
     private final List<String> scenes;
 
@@ -36,13 +38,13 @@ final class ClassTable {
 
     String csv() {
         StringBuilder s = new StringBuilder("file,student,builder,verdict,first_failure,quality_failed,problem,"
-                + "cost_vs_median,cost_vs_sah,build_ms,seconds");
+                + "cost_vs_median,cost_vs_sah,build_ms,seconds,box");
         for (String scene : scenes) s.append(',').append(quote("vs_median " + scene)).append(',').append(quote("vs_sah " + scene));
         s.append('\n');
         for (StudentRow r : rows) {
             s.append(String.join(",", quote(r.file()), quote(r.student()), quote(r.builder()), r.verdict(), quote(r.failure()),
                     quote(r.quality()), quote(r.problem()), num(r.meanRatio(0)), num(r.meanRatio(1)),
-                    r.ratios().isEmpty() ? "" : String.format(Locale.ROOT, "%.1f", r.buildMs()), String.format(Locale.ROOT, "%.1f", r.seconds())));
+                    r.ratios().isEmpty() ? "" : String.format(Locale.ROOT, "%.1f", r.buildMs()), String.format(Locale.ROOT, "%.1f", r.seconds()), r.box()));
             for (String scene : scenes) {
                 double[] q = r.ratios().get(scene);
                 s.append(',').append(q == null ? "" : num(q[0])).append(',').append(q == null ? "" : num(q[1]));
@@ -58,7 +60,8 @@ final class ClassTable {
                 + "| --- | --- | --- | --- | ---: | ---: | ---: | --- |\n");
         for (StudentRow r : rows) {
             List<String> notes = new ArrayList<>();
-            for (String n : List.of(r.failure(), r.quality().isEmpty() ? "" : "quality: " + r.quality(), r.problem()))
+            for (String n : List.of(r.failure(), r.quality().isEmpty() ? "" : "quality: " + r.quality(), r.problem(),
+                    r.unboxed() ? UNBOXED : ""))
                 if (!n.isEmpty()) notes.add(StudentRow.shortened(n));
             s.append("| ").append(String.join(" | ", cell(r.file()), cell(r.student()), cell(r.builder()), r.verdict(), num(r.meanRatio(0)),
                     num(r.meanRatio(1)), r.ratios().isEmpty() ? "" : String.format(Locale.ROOT, "%.0f", r.buildMs()),

@@ -3,56 +3,144 @@ package org.kdtree.cli;
 import java.io.File;
 import java.io.IOException;
 import java.io.InputStream;
-import java.io.UncheckedIOException;
 import java.net.URISyntaxException;
 import java.nio.charset.StandardCharsets;
 import java.nio.file.Files;
 import java.nio.file.Path;
 import java.util.ArrayList;
-import java.util.Comparator;
+import java.util.Arrays;
 import java.util.List;
 import java.util.Locale;
 import java.util.concurrent.CompletableFuture;
 import java.util.concurrent.TimeUnit;
+import java.util.concurrent.atomic.AtomicBoolean;
 import java.util.jar.JarFile;
+import org.kdtree.check.TreeTape;
 import org.kdtree.limits.Deadlines;
 
 /**
- * One student's grade in a JVM of its own ({@code grade --student-jar JAR -o grade.csv}), so that
- * students' builders of the same name never meet, and one that hangs, calls System.exit or fills
- * its heap ends only its own JVM: killed at the student deadline, bounded by {@code -Xmx}.
+ * One student's grade: the student's builder runs in a JVM of its own ({@code grade --student-jar
+ * JAR --in-box}), in an operating-system box ({@link StudentBox}) unless there is none, and the
+ * grade is made here, outside it. So students' builders of the same name never meet; one that
+ * hangs, calls System.exit or fills its heap ends only its own JVM (killed at the student deadline,
+ * bounded by {@code -Xmx}); and whatever its code writes cannot change its verdict: its JVM sends
+ * each tree it built (a {@link TreeTape}), and this JVM replays the same checks on those trees,
+ * building the scenes' built-ins itself. A report that does not match the checks is the builder's
+ * fault, named in its row.
  *
  * @param deadlines the per-call and per-build deadlines the child enforces itself
  * @param seconds   the student deadline: the child is killed past it
  * @param heapMb    the child's heap
+ * @param box       the box each child runs in, or null for none ({@code --no-sandbox})
  */
-record StudentJvm(Deadlines deadlines, double seconds, int heapMb) {
+record StudentJvm(Deadlines deadlines, double seconds, int heapMb, StudentBox box) {
+    /** How long a child may take to end once its report is done, before it is killed. */
+    static final double GRACE_SECONDS = 5;
+    /** A graded jar: its row, and the report made here (null if the jar was not graded to the end). */
+    record Graded(StudentRow row, Report report) {
+    }
 
     /** Grades {@code jar}; never throws for a bad jar or a bad builder: the row says what happened. */
     StudentRow grade(Path jar) {
+        return run(jar).row();
+    }
+
+    /** Grades {@code jar}, with the report made here. */
+    Graded run(Path jar) {
         String file = jar.getFileName().toString(), student = student(jar);
+        String boxed = box == null ? "none (--no-sandbox)" : "bubblewrap";
         long t0 = System.nanoTime();
-        Path dir = null;
+        Process p;
         try {
-            dir = Files.createTempDirectory("kdtree-grade-");
-            Path csv = dir.resolve("grade.csv");
-            Process p = new ProcessBuilder(command(jar, csv)).redirectOutput(ProcessBuilder.Redirect.DISCARD).start();
-            CompletableFuture<String> err = tail(p.getErrorStream());
-            boolean finished = p.waitFor((long) (seconds * 1000), TimeUnit.MILLISECONDS);
-            if (!finished) kill(p);
+            ProcessBuilder pb = new ProcessBuilder(command(jar));
+            pb.redirectInput(box == null ? ProcessBuilder.Redirect.from(StudentBox.nullDevice()) : ProcessBuilder.Redirect.from(jar.toFile()));
+            p = pb.start();
+        } catch (IOException e) {
+            return new Graded(StudentRow.failed(file, student, "not graded: " + e.getMessage(), 0, boxed), null);
+        }
+        AtomicBoolean killed = new AtomicBoolean();
+        Thread dog = watchdog(p, killed);
+        CompletableFuture<String> err = tail(p.getErrorStream());
+        Report report = null;
+        TreeTape.Mismatch mismatch = null;
+        TreeTape.Player tape = null;
+        try {
+            tape = new TreeTape.Player(p.getInputStream());
+            TreeTape.Player replay = tape;
+            report = new GradeRun(replay::builder, replay).run(replay.builderName(), deadlines, new ProgressBar(null, 1, "checks"));
+            tape.end();
+        } catch (TreeTape.Mismatch m) {
+            mismatch = m;
+            report = null;
+        } catch (RuntimeException | Error ours) { // a bug of ours: the child is not left running
+            killQuietly(p);
+            throw ours;
+        }
+        List<String> notes = new ArrayList<>();
+        try {
+            CompletableFuture<Long> rest = drain(tape, p);
+            if (mismatch != null && !mismatch.early()) kill(p); // its grade is void: no need to wait for the rest
+            if (report != null && !p.waitFor((long) (GRACE_SECONDS * 1000), TimeUnit.MILLISECONDS)) {
+                kill(p);
+                notes.add(String.format(Locale.ROOT, "its JVM did not end within %.0f s of its report: killed", GRACE_SECONDS));
+            }
+            dog.join(); // the child has ended, or was killed at the deadline
+            long after = rest.completeOnTimeout(-1L, 5, TimeUnit.SECONDS).get(); // -1: a process it started still holds the channel
+            if (report != null && after > 0) notes.add("wrote " + after + " bytes into its report channel after the report: ignored");
             double took = (System.nanoTime() - t0) / 1e9;
-            if (!finished) return StudentRow.failed(file, student, String.format(Locale.ROOT,
-                    "crashed: killed at the student deadline of %.0f s", seconds), took);
-            if (Files.isRegularFile(csv)) return StudentRow.parse(file, student, Files.readString(csv), took);
-            return StudentRow.failed(file, student, why(p.exitValue(), err.get(5, TimeUnit.SECONDS), jar), took);
-        } catch (IOException | java.util.concurrent.ExecutionException | java.util.concurrent.TimeoutException e) {
-            return StudentRow.failed(file, student, "not graded: " + e.getMessage(), (System.nanoTime() - t0) / 1e9);
+            String said = err.completeOnTimeout("", 5, TimeUnit.SECONDS).get(), last = said.substring(said.lastIndexOf('\n') + 1).strip();
+            StudentRow row;
+            if (report != null) row = StudentRow.parse(file, student, report.csv(), took, boxed);
+            else if (killed.get()) row = StudentRow.failed(file, student, String.format(Locale.ROOT,
+                    "crashed: killed at the student deadline of %.0f s", seconds), took, boxed);
+            else if (mismatch.early()) row = StudentRow.failed(file, student, why(p.exitValue(), said, jar), took, boxed);
+            else row = StudentRow.failed(file, student, "its report does not match the checks made of it (" + mismatch.getMessage()
+                    + "): its code wrote into the report channel?", took, boxed);
+            if (box != null) {
+                String stopped = StudentBox.stopped(String.join(" ", row.failure(), row.quality(), row.problem(), said));
+                if (!stopped.isEmpty()) notes.add(stopped);
+            }
+            for (String n : notes) row = row.withNote(n);
+            return new Graded(row, report);
+        } catch (java.util.concurrent.ExecutionException e) {
+            return new Graded(StudentRow.failed(file, student, "not graded: " + e.getMessage(), (System.nanoTime() - t0) / 1e9, boxed), null);
         } catch (InterruptedException e) {
             Thread.currentThread().interrupt();
-            return StudentRow.failed(file, student, "not graded: interrupted", (System.nanoTime() - t0) / 1e9);
-        } finally {
-            removeQuietly(dir);
+            killQuietly(p);
+            return new Graded(StudentRow.failed(file, student, "not graded: interrupted", (System.nanoTime() - t0) / 1e9, boxed), null);
         }
+    }
+
+    /** Kills the child at the student deadline (noting it in {@code killed}); ends when the child has. */
+    private Thread watchdog(Process p, AtomicBoolean killed) {
+        Thread t = new Thread(() -> {
+            try {
+                if (!p.waitFor((long) (seconds * 1000), TimeUnit.MILLISECONDS)) {
+                    killed.set(true);
+                    kill(p);
+                }
+            } catch (InterruptedException e) {
+                killQuietly(p);
+            }
+        }, "student-deadline");
+        t.setDaemon(true);
+        t.start();
+        return t;
+    }
+
+    /** Reads the child's standard output to its end on a thread of its own (a child blocks on a full pipe); yields how many bytes followed the tape's end. */
+    private static CompletableFuture<Long> drain(TreeTape.Player tape, Process p) {
+        CompletableFuture<Long> f = new CompletableFuture<>();
+        Thread t = new Thread(() -> {
+            try {
+                f.complete(tape != null ? tape.drainRest() : p.getInputStream().transferTo(java.io.OutputStream.nullOutputStream()));
+            } catch (IOException e) {
+                f.complete(0L);
+            }
+        }, "student-stdout");
+        t.setDaemon(true);
+        t.start();
+        return f;
     }
 
     /**
@@ -65,7 +153,8 @@ record StudentJvm(Deadlines deadlines, double seconds, int heapMb) {
         String last = err.strip();
         last = last.substring(last.lastIndexOf('\n') + 1).strip();
         boolean ours = last.startsWith("error: ");
-        String said = last.replaceFirst("^error: ", "").replace("--plugin " + jar.toAbsolutePath() + ": ", "");
+        String said = last.replaceFirst("^error: ", "").replace("--plugin " + jar.toAbsolutePath() + ": ", "")
+                .replace("--plugin " + StudentBox.jarInside(jar.getFileName().toString()) + ": ", "");
         if (ours && code == Failure.MEMORY && said.startsWith("out of memory") || err.contains("java.lang.OutOfMemoryError"))
             return "crashed: out of memory (heap " + heapMb + " MB)";
         if (ours && code == Failure.USAGE) return "not graded: " + StudentRow.oneLine(said);
@@ -76,12 +165,25 @@ record StudentJvm(Deadlines deadlines, double seconds, int heapMb) {
                 + (last.isBlank() ? "" : ": " + StudentRow.oneLine(last));
     }
 
-    /** The child's command line: this JVM's java, the library's class path, the student's jar and nothing else. */
-    private List<String> command(Path jar, Path csv) {
-        return List.of(Path.of(System.getProperty("java.home"), "bin", "java").toString(),
-                "-Xmx" + heapMb + "m", "-Djava.awt.headless=true", "-cp", classPath(), Main.class.getName(), "grade",
-                "--student-jar", jar.toAbsolutePath().toString(), "-o", csv.toString(), "--quiet",
-                "--call-deadline", Double.toString(deadlines.callSeconds()), "--build-deadline", Double.toString(deadlines.buildSeconds()));
+    /** The child's command line: this JVM's java, the library's class path, the student's jar and nothing else; in its box if there is one. */
+    private List<String> command(Path jar) {
+        // the JVM's own warnings (a thread it could not start) go to standard error: standard output is the report channel
+        // and no performance data file (hsperfdata) in the temporary folder, in the box or not
+        List<String> jvm = List.of("-Xmx" + heapMb + "m", "-Djava.awt.headless=true", "-Xlog:disable", "-Xlog:all=warning:stderr",
+                "-XX:-UsePerfData");
+        List<String> args = List.of("--in-box", "--quiet", "--call-deadline", Double.toString(deadlines.callSeconds()),
+                "--build-deadline", Double.toString(deadlines.buildSeconds()));
+        String name = jar.getFileName().toString();
+        if (box != null) {
+            List<String> main = new ArrayList<>(List.of(Main.class.getName(), "grade", "--student-jar", StudentBox.jarInside(name)));
+            main.addAll(args);
+            return box.command(Arrays.asList(classPath().split(File.pathSeparator)), jvm, name, main);
+        }
+        List<String> cmd = new ArrayList<>(List.of(Path.of(System.getProperty("java.home"), "bin", "java").toString()));
+        cmd.addAll(jvm);
+        cmd.addAll(List.of("-cp", classPath(), Main.class.getName(), "grade", "--student-jar", jar.toAbsolutePath().toString()));
+        cmd.addAll(args);
+        return cmd;
     }
 
     /**
@@ -139,38 +241,36 @@ record StudentJvm(Deadlines deadlines, double seconds, int heapMb) {
         p.waitFor();
     }
 
-    /**
-     * Reads the stream to its end on a thread of its own (a child blocks on a full pipe); yields
-     * its last 64 KB (a student's builder may print without bound).
-     */
+    private static void killQuietly(Process p) {
+        p.descendants().forEach(ProcessHandle::destroyForcibly);
+        p.destroyForcibly();
+    }
+
+    /** The most of a child's standard error kept: its end, where its last line is. */
+    private static final int TAIL = 64 << 10;
+
+    /** Reads the stream to its end on a thread of its own (a child blocks on a full pipe), keeping only its tail (its last {@value #TAIL} bytes). */
     private static CompletableFuture<String> tail(InputStream in) {
         CompletableFuture<String> f = new CompletableFuture<>();
         Thread t = new Thread(() -> {
+            byte[] ring = new byte[TAIL];
+            long total = 0;
             try (in) {
-                byte[] ring = new byte[1 << 16];
-                long total = 0;
                 byte[] buf = new byte[8192];
-                for (int n; (n = in.read(buf)) > 0; total += n)
-                    for (int i = 0; i < n; i++) ring[(int) ((total + i) % ring.length)] = buf[i];
-                int len = (int) Math.min(total, ring.length), start = (int) ((total - len) % ring.length);
-                byte[] last = new byte[len];
-                for (int i = 0; i < len; i++) last[i] = ring[(start + i) % ring.length];
-                f.complete(new String(last, StandardCharsets.UTF_8));
-            } catch (IOException e) {
-                f.complete("");
+                for (int k; (k = in.read(buf)) >= 0; ) {
+                    for (int i = 0; i < k; i++) ring[(int) ((total + i) % TAIL)] = buf[i];
+                    total += k;
+                }
+            } catch (IOException ended) {
+                // what was read is what there is
             }
+            int n = (int) Math.min(total, TAIL);
+            byte[] last = new byte[n];
+            for (int i = 0; i < n; i++) last[i] = ring[(int) ((total - n + i) % TAIL)];
+            f.complete(new String(last, StandardCharsets.UTF_8).strip());
         }, "student-stderr");
         t.setDaemon(true);
         t.start();
         return f;
-    }
-
-    private static void removeQuietly(Path dir) {
-        if (dir == null) return;
-        try (var files = Files.walk(dir)) {
-            for (Path f : files.sorted(Comparator.reverseOrder()).toList()) Files.deleteIfExists(f);
-        } catch (IOException | UncheckedIOException leftInTemp) {
-            // a temporary folder left behind is harmless
-        }
     }
 }

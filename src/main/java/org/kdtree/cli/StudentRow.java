@@ -6,8 +6,8 @@ import java.util.List;
 import java.util.Map;
 
 /**
- * One student's line of {@code grade-class}'s table: read from the CSV report that the student's
- * own grading JVM wrote ({@code grade -o}), or, where that JVM wrote none, the reason why.
+ * One student's line of {@code grade-class}'s table: read from the CSV report made of the student's
+ * builds (outside the box: {@link StudentJvm}), or, where there is none, the reason why.
  *
  * @param file        the jar's file name
  * @param student     the student's name from the jar's manifest, or ""
@@ -19,18 +19,30 @@ import java.util.Map;
  * @param buildMs     the student's builds of the course scenes, in all
  * @param problem     "hung ...", "crashed: ..." or "not graded: ...", or ""
  * @param seconds     how long the student's JVM ran
+ * @param box         what the student's JVM ran in: "bubblewrap", or "none (--no-sandbox)"
  */
 record StudentRow(String file, String student, String builder, String verdict, String failure, String quality,
-                  Map<String, double[]> ratios, double buildMs, String problem, double seconds) {
+                  Map<String, double[]> ratios, double buildMs, String problem, double seconds, String box) {
     private static final int LONGEST = 200;
 
     /** A row for a jar that was not graded to the end: {@code problem} says why. */
-    static StudentRow failed(String file, String student, String problem, double seconds) {
-        return new StudentRow(file, student, "", "FAIL", "", "", Map.of(), 0, problem, seconds);
+    static StudentRow failed(String file, String student, String problem, double seconds, String box) {
+        return new StudentRow(file, student, "", "FAIL", "", "", Map.of(), 0, problem, seconds, box);
+    }
+
+    /** This row with {@code note} added to its problem column. */
+    StudentRow withNote(String note) {
+        return new StudentRow(file, student, builder, verdict, failure, quality, ratios, buildMs,
+                problem.isEmpty() ? note : problem + "; " + note, seconds, box);
+    }
+
+    /** Whether the student's JVM ran without a box ({@code --no-sandbox}). */
+    boolean unboxed() {
+        return box.startsWith("none");
     }
 
     /** The row of a finished grade, from its CSV report ({@link Report#csv}). */
-    static StudentRow parse(String file, String student, String csv, double seconds) {
+    static StudentRow parse(String file, String student, String csv, double seconds, String box) {
         String builder = "", verdict = "", failure = "", problem = "";
         List<String> quality = new ArrayList<>();
         List<List<String>> scenes = new ArrayList<>();
@@ -50,7 +62,7 @@ record StudentRow(String file, String student, String builder, String verdict, S
             }
         }
         return new StudentRow(file, student, builder, verdict.isEmpty() ? "FAIL" : verdict, failure, String.join("; ", quality),
-                ratios(scenes), ownMs(scenes), problem, seconds);
+                ratios(scenes), ownMs(scenes), problem, seconds, box);
     }
 
     /** Each scene's rows are the student's, then the built-ins' in {@link GradeCommand#BUILT_INS} order. */

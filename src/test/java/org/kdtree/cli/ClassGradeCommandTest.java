@@ -95,7 +95,7 @@ class ClassGradeCommandTest {
 
     /** Issue 34, item 2: a table file that fails at the end (its folder made read-only meanwhile) is kept elsewhere, and said where. */
     @Test void aTableThatFailsAtTheEndIsKeptInATemporaryFile(@TempDir Path dir) throws Exception {
-        ClassTable table = new ClassTable(List.of(StudentRow.failed("alice.jar", "Alice", "crashed: for the test", 1.5)), List.of());
+        ClassTable table = new ClassTable(List.of(StudentRow.failed("alice.jar", "Alice", "crashed: for the test", 1.5, "bubblewrap")), List.of());
         try (ReadOnlyFolder ro = ReadOnlyFolder.make(dir, "ro")) {
             Path csv = ro.path().resolve("class.csv");
             List<String> lost = ClassGradeCommand.save(table, csv, dir.resolve("class.md"));

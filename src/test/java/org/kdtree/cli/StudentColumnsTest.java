@@ -44,7 +44,7 @@ class StudentColumnsTest {
         String failure = "builder x: findPlane returned a plane outside the voxel " + "at depth 3 ".repeat(40) + "(the end)";
         String csv = "section,case,builder,result,a,b,c,d\ncontract,talk figures,x,\"FAIL: " + failure + "\",,,,\n"
                 + "verdict,,x,FAIL: breaks the contract,,,,\n";
-        StudentRow row = StudentRow.parse("x.jar", "X", csv, 1);
+        StudentRow row = StudentRow.parse("x.jar", "X", csv, 1, "bubblewrap");
         assertThat(row.failure()).isEqualTo(failure);
         ClassTable table = new ClassTable(List.of(row), List.of());
         assertThat(table.csv()).contains("(the end)").doesNotContain("...");

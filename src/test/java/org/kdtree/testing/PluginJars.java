@@ -28,6 +28,12 @@ public final class PluginJars {
      * {@code helpers} is null: a jar for this JVM, whose class path has them).
      */
     public static Path student(Path dir, String name, String student, String[] listed, String[] helpers) throws IOException {
+        return student(dir, name, student, listed, helpers, java.util.Map.of());
+    }
+
+    /** {@link #student(Path, String, String, String[], String[])} with {@code resources} too: entry name to content. */
+    public static Path student(Path dir, String name, String student, String[] listed, String[] helpers,
+                               java.util.Map<String, String> resources) throws IOException {
         Path jar = dir.resolve(name);
         Manifest m = new Manifest();
         m.getMainAttributes().put(Attributes.Name.MANIFEST_VERSION, "1.0");
@@ -41,6 +47,11 @@ public final class PluginJars {
             if (helpers != null) {
                 for (String c : listed) copyClass(j, c);
                 for (String c : helpers) copyClass(j, c);
+            }
+            for (var r : resources.entrySet()) {
+                j.putNextEntry(new JarEntry(r.getKey()));
+                j.write(r.getValue().getBytes(StandardCharsets.UTF_8));
+                j.closeEntry();
             }
         }
         return jar;
