@@ -68,8 +68,8 @@ final class BinnedBuild {
             prims.bounds(i, b);
             if (b.isEmpty()) continue;          // nothing of it can be hit
             for (int a = 0; a < k; a++) {
-                bounds[2 * k * m + a] = lower(b.min(a));
-                bounds[2 * k * m + k + a] = upper(b.max(a));
+                bounds[2 * k * m + a] = WideNodes.down(b.min(a));   // rounded outwards: a box never shrinks
+                bounds[2 * k * m + k + a] = WideNodes.up(b.max(a));
             }
             order[m++] = i;
         }
@@ -87,18 +87,6 @@ final class BinnedBuild {
             run.node(root, 0, m, 0, run.new Scratch());
         }
         return Bvh.of(k, root, run.order, settings);
-    }
-
-    /** {@return the greatest float at or below {@code x}} */
-    static float lower(double x) {
-        float f = (float) x;
-        return f > x ? Math.nextDown(f) : f;
-    }
-
-    /** {@return the least float at or above {@code x}} */
-    static float upper(double x) {
-        float f = (float) x;
-        return f < x ? Math.nextUp(f) : f;
     }
 
     /** The scratch of one task: bin counts and boxes per axis, the sweep's suffix areas. */

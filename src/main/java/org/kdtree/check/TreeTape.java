@@ -382,16 +382,7 @@ public abstract class TreeTape {
 
     /** The root voxel as {@link KdTreeBuilder#build} computes it: computed here, on the trusted side, not read. */
     static Box rootVoxel(Primitives primitives) {
-        int k = primitives.dimension();
-        Box all = new Box(k), b = new Box(k);
-        for (int i = 0; i < primitives.size(); i++) {
-            primitives.bounds(i, b);
-            if (!b.isFinite() || b.isEmpty())
-                throw new InvalidGeometryException(primitives.describe(i) + " has non-finite or empty bounds " + b);
-            all.grow(b);
-        }
-        if (all.isEmpty()) for (int a = 0; a < k; a++) all.setMin(a, 0).setMax(a, 0);
-        return all;
+        return KdTreeBuilder.rootVoxel(primitives);
     }
 
     private static String clip(String s) {

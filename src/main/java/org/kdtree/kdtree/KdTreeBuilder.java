@@ -200,7 +200,14 @@ public abstract class KdTreeBuilder implements StructureBuilder {
      */
     protected abstract SplitPlane findPlane(BuildContext context, BuildNode node);
 
-    private static Box rootVoxel(Primitives primitives) {
+    /**
+     * {@return the root voxel a build over {@code primitives} starts from}: the bounds of them all
+     * (a point at the origin for none); static and final, so that a checker may compute it on its own
+     *
+     * @param primitives the scene's primitives
+     * @throws InvalidGeometryException naming the first primitive with non-finite or empty bounds
+     */
+    public static Box rootVoxel(Primitives primitives) {
         int k = primitives.dimension();
         Box all = new Box(k), b = new Box(k);
         for (int i = 0; i < primitives.size(); i++) {
