@@ -25,6 +25,9 @@ public interface AccelerationStructure {
     /** {@return the bounds of the primitives it holds} */
     Box bounds();
 
+    /** {@return Kt and Ki: the cost model it was built and is judged by} */
+    CostModel costModel();
+
     /** {@return its statistics}: nodes, leaves, depth, references, memory, expected cost under its cost model */
     TreeStats stats();
 

@@ -85,7 +85,7 @@ public final class Bvh implements AccelerationStructure {
     public int maxDepth() { return maxDepth; }
 
     /** {@return Kt and Ki, with which it was built and its expected cost is counted} */
-    public CostModel costModel() { return costModel; }
+    @Override public CostModel costModel() { return costModel; }
 
     /**
      * {@return whether {@code node} is a leaf}

@@ -50,13 +50,13 @@ interface Built {
     boolean testsBoxes();
 
     /** {@return its number of nodes} */
-    int nodeCount();
+    default int nodeCount() { return stats().nodes(); }
 
     /** {@return Kt, the cost of one node visited under its cost model} */
-    double kt();
+    default double kt() { return structure().costModel().kt(); }
 
     /** {@return Ki, the cost of one object tested} */
-    double ki();
+    default double ki() { return structure().costModel().ki(); }
 
     /** {@return whether {@code node} is a leaf} */
     boolean isLeaf(int node);

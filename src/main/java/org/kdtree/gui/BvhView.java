@@ -18,9 +18,6 @@ record BvhView(Bvh bvh) implements Built {
     @Override public String builderName() { return BvhBuilder.NAME; }
     @Override public String nodesLabel() { return "nodes (boxes)"; }
     @Override public boolean testsBoxes() { return true; }
-    @Override public int nodeCount() { return bvh.nodeCount(); }
-    @Override public double kt() { return bvh.costModel().kt(); }
-    @Override public double ki() { return bvh.costModel().ki(); }
     @Override public boolean isLeaf(int node) { return bvh.isLeaf(node); }
     @Override public Box[] regions() { return BvhPainter.boxes(bvh); }
     @Override public TreeNodeView.Nodes treeNodes() { return new BvhTreeModel(bvh); }

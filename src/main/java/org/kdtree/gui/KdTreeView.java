@@ -19,9 +19,6 @@ record KdTreeView(KdTree tree) implements Built {
     @Override public KdTree kdTree() { return tree; }
     @Override public String nodesLabel() { return "nodes"; }
     @Override public boolean testsBoxes() { return false; }
-    @Override public int nodeCount() { return tree.nodeCount(); }
-    @Override public double kt() { return tree.costModel().kt(); }
-    @Override public double ki() { return tree.costModel().ki(); }
     @Override public boolean isLeaf(int node) { return tree.isLeaf(node); }
     @Override public Box[] regions() { return StepperVoxels.of(tree); }
     @Override public TreeNodeView.Nodes treeNodes() { return new KdTreeModel(tree); }

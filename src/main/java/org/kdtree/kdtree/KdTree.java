@@ -71,7 +71,7 @@ public final class KdTree implements AccelerationStructure {
     public Box bounds() { return bounds.copy(); }
 
     /** {@return the Kt and Ki used for {@link TreeStats#expectedCost()}} */
-    public CostModel costModel() { return cost; }
+    @Override public CostModel costModel() { return cost; }
 
     /** {@return the name of the builder that made this tree} */
     public String builderName() { return builderName; }
