@@ -32,6 +32,19 @@ class ArchitectureTest {
                 .containsExactlyInAnyOrderElementsOf(USES.keySet());
     }
 
+    /** architecture.md says how many top-level types of src/main are public, counted as here. */
+    @Test void theDocumentCountsThePublicTypes() throws java.io.IOException {
+        Pattern publicType = Pattern.compile("(?m)^public (final |abstract |sealed )?(class|interface|record|enum) ");
+        int all = 0, open = 0;
+        for (Path f : SourceFiles.all()) {
+            if (f.getFileName().toString().equals("package-info.java")) continue;
+            all++;
+            if (publicType.matcher(SourceFiles.read(f)).find()) open++;
+        }
+        assertThat(java.nio.file.Files.readString(Layers.DOCUMENT)).as("the count of public types in " + Layers.DOCUMENT)
+                .contains(open + " of the " + all + " top-level");
+    }
+
     /** The README's "What is here" and architecture.md's table name every package of src/main, and no other. */
     @Test void theReadmeAndTheArchitectureTableNameEveryPackage() throws java.io.IOException {
         java.util.Set<String> packages = new java.util.TreeSet<>(Layers.read().keySet());
