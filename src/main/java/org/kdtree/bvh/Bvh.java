@@ -39,6 +39,7 @@ public final class Bvh implements AccelerationStructure {
     private TreeStats stats;
     /** The corner array last copied into leaf order, and its copy ({@link #leafOrderedCorners}). */
     private double[] cornerSource, leafCorners;
+    private PairNodes pairs;
 
     private Bvh(int k, int nodes, int[] primitives, CostModel costModel, BuildNode root, int width) {
         this.k = k;
@@ -166,6 +167,12 @@ public final class Bvh implements AccelerationStructure {
     int[] primitiveArray() { return primitives; }
     WideNodes wide() { return wide; }
 
+    /** The compact binary layout ({@link PairNodes}), made on the first triangle query. */
+    synchronized PairNodes pairs() {
+        if (pairs == null) pairs = new PairNodes(this);
+        return pairs;
+    }
+
     /**
      * The triangles' corners (9 per triangle, as {@link TriangleIntersector#cornerArray()}) copied
      * into leaf order, so that the wide traversal reads a leaf's triangles from one stretch of
@@ -197,7 +204,7 @@ public final class Bvh implements AccelerationStructure {
      */
     @Override public RayQuery query(Intersector prims) {
         requireDimension(prims);
-        if (prims instanceof TriangleIntersector t) return new WideTraversal(this, t);
+        if (prims instanceof TriangleIntersector t) return width() == 2 ? new PairTraversal(this, t) : new WideTraversal(this, t);
         return new BvhTraverser(this, prims, TraversalListener.NONE);
     }
 

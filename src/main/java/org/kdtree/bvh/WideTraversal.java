@@ -72,7 +72,7 @@ final class WideTraversal implements RayQuery {
      * starts at t >= 0 (so that the slack can be a factor). Others, rare, take the binary
      * traversal, which handles both.
      */
-    private static boolean suits(Ray ray, double tMin) {
+    static boolean suits(Ray ray, double tMin) {
         return tMin >= 0 && ray.dimension() == 3 && Double.isFinite(ray.inverseDirection(0))
                 && Double.isFinite(ray.inverseDirection(1)) && Double.isFinite(ray.inverseDirection(2));
     }
