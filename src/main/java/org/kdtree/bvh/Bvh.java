@@ -199,12 +199,13 @@ public final class Bvh implements AccelerationStructure {
     }
 
     /**
-     * The fastest query: over a triangle mesh, the wide layout's traversal with the triangle
-     * test inlined; otherwise the binary layout's, with any {@link Intersector}.
+     * The fastest query: over a triangle mesh, the wide layout's traversal (the compact binary one at width 2) with the triangle test inlined, which also traces packets of coherent rays
+     * ({@link org.kdtree.accel.PacketQuery}); otherwise the binary layout's, with any {@link Intersector}.
      */
     @Override public RayQuery query(Intersector prims) {
         requireDimension(prims);
-        if (prims instanceof TriangleIntersector t) return width() == 2 ? new PairTraversal(this, t) : new WideTraversal(this, t);
+        if (prims instanceof TriangleIntersector t)
+            return new PacketTraversal(this, t, width() == 2 ? new PairTraversal(this, t) : new WideTraversal(this, t));
         return new BvhTraverser(this, prims, TraversalListener.NONE);
     }
 
