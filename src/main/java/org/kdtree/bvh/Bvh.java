@@ -40,6 +40,7 @@ public final class Bvh implements AccelerationStructure {
     /** The corner array last copied into leaf order, and its copy ({@link #leafOrderedCorners}). */
     private double[] cornerSource, leafCorners;
     private PairNodes pairs;
+    private WideNodes laneNodes;
 
     private Bvh(int k, int nodes, int[] primitives, CostModel costModel, BuildNode root, int width) {
         this.k = k;
@@ -49,7 +50,7 @@ public final class Bvh implements AccelerationStructure {
         this.primitives = primitives;
         this.costModel = costModel;
         this.maxDepth = layOut(root, 0, 1, 0);
-        this.wide = new WideNodes(k, width, root);
+        this.wide = new WideNodes(this, width);
     }
 
     static Bvh of(int k, BuildNode root, int[] primitives, BvhBuilder settings) {
@@ -167,6 +168,12 @@ public final class Bvh implements AccelerationStructure {
     int[] primitiveArray() { return primitives; }
     WideNodes wide() { return wide; }
 
+    /** The wide layout at {@code lanes} children per node, as the vector traversal reads it: made once, on its first query. */
+    synchronized WideNodes lanes(int lanes) {
+        if (laneNodes == null || laneNodes.width != lanes) laneNodes = lanes == width() ? wide : new WideNodes(this, lanes);
+        return laneNodes;
+    }
+
     /** The compact binary layout ({@link PairNodes}), made on the first triangle query. */
     synchronized PairNodes pairs() {
         if (pairs == null) pairs = new PairNodes(this);
@@ -199,13 +206,16 @@ public final class Bvh implements AccelerationStructure {
     }
 
     /**
-     * The fastest query: over a triangle mesh, the wide layout's traversal (the compact binary one at width 2) with the triangle test inlined, which also traces packets of coherent rays
+     * The fastest query: over a triangle mesh, the vector traversal when this JVM has the Vector
+     * API ({@link org.kdtree.accel.Vectorization}; as many children per node as its lanes), else
+     * the wide layout's traversal (the compact binary one at width 2) with the triangle test inlined, which also traces packets of coherent rays
      * ({@link org.kdtree.accel.PacketQuery}); otherwise the binary layout's, with any {@link Intersector}.
      */
     @Override public RayQuery query(Intersector prims) {
         requireDimension(prims);
         if (prims instanceof TriangleIntersector t)
-            return new PacketTraversal(this, t, width() == 2 ? new PairTraversal(this, t) : new WideTraversal(this, t));
+            return new PacketTraversal(this, t, VectorPath.enabled() && k == 3 ? VectorPath.query(this, t)
+                    : width() == 2 ? new PairTraversal(this, t) : new WideTraversal(this, t));
         return new BvhTraverser(this, prims, TraversalListener.NONE);
     }
 

@@ -36,7 +36,11 @@ final class WideTraversal implements RayQuery {
     private static final double SHRINK = 1 - SLACK, GROW = 1 + SLACK;
 
     WideTraversal(Bvh bvh, TriangleIntersector tris) {
-        WideNodes w = bvh.wide();
+        this(bvh, bvh.wide(), tris);
+    }
+
+    /** The traversal of {@code w}, a wide layout of {@code bvh} (the vector path's width, for comparing the two). */
+    WideTraversal(Bvh bvh, WideNodes w, TriangleIntersector tris) {
         width = w.width;
         stride = w.stride;
         refs = w.refs;
