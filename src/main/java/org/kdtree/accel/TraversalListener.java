@@ -4,8 +4,8 @@ package org.kdtree.accel;
  * Watches one ray's traversal step by step: the hook for the workbench's traversal stepper and
  * for per-ray statistics ({@link TraversalStats} is a listener that counts).
  *
- * <p>Events arrive in this order for a query ({@link Traverser#closestHit(org.kdtree.geom.Ray,
- * double, double, Hit, TraversalListener)} and its siblings):
+ * <p>Events arrive in this order for a query (the kd-tree's {@code Traverser.closestHit(ray,
+ * tMin, tMax, hit, listener)} and its siblings):
  * <ol>
  * <li>{@link #begin}: the ray's interval clipped to the scene box (or {@link #missedScene} and
  * then {@link #end}, when the ray misses the box);</li>

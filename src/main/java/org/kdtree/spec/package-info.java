@@ -1,6 +1,6 @@
 /**
  * Picking a structure by name: the one table of builder settings
- * ({@link org.kdtree.spec.Setting}), what a structure is to be built with
+ * ({@link org.kdtree.accel.Setting}), what a structure is to be built with
  * ({@link org.kdtree.spec.BuilderSpec}), and the registry of builders by name
  * ({@link org.kdtree.spec.Builders}: the library's, those a jar on the class path lists through
  * {@link java.util.ServiceLoader}, and plug-in jars named at run time). This is the only layer
