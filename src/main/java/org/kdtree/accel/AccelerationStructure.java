@@ -25,6 +25,12 @@ public interface AccelerationStructure {
     /** {@return the bounds of the primitives it holds} */
     Box bounds();
 
+    /**
+     * {@return which loop its fast queries run, in a few words}, for the benchmark's report: a
+     * structure with a Vector API path says whether this JVM takes it ({@link Vectorization})
+     */
+    default String describePath() { return "scalar (the Java 17 loop; no vector path for this structure)"; }
+
     /** {@return Kt and Ki: the cost model it was built and is judged by} */
     CostModel costModel();
 

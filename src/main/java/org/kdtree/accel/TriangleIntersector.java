@@ -76,7 +76,8 @@ public final class TriangleIntersector implements Intersector {
     /**
      * The test proper, on corners {@code c[b .. b+9)}, with the origin's coordinates given in the
      * sheared frame's axis order and the per-ray shear constants. Records a hit with
-     * {@code tMin <= t <= tMax} and {@code t < hit.t} in {@code hit}. (The kd-tree's fast path
+     * {@code tMin <= t <= tMax} and {@code t < hit.t} in {@code hit} (or {@code t == hit.t} and
+     * {@code prim < hit.primitive}: of two hits equally close the lower index wins, in any order). (The kd-tree's fast path
      * inlines a copy; the BVH's wide traversal calls this.)
      *
      * @param c    corner coordinates, 9 per triangle
@@ -107,7 +108,9 @@ public final class TriangleIntersector implements Intersector {
         double det = u + v + w;
         if (det == 0) return false; // edge-on, or NaN corners never get here as hits (below)
         double t = (u * az + v * bz + w * cz) * sz / det;
-        if (!(t >= tMin && t <= tMax && t < hit.t)) return false; // also rejects NaN
+        // Also rejects NaN. Of two hits equally close the lower index wins, whatever the order they
+        // were tested in, so that single rays, packets and brute force give the same answer.
+        if (!(t >= tMin && t <= tMax && (t < hit.t || t == hit.t && prim < hit.primitive))) return false;
         return record(hit, prim, t, v / det, w / det);
     }
 

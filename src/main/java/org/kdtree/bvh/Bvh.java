@@ -8,6 +8,7 @@ import org.kdtree.accel.RayQuery;
 import org.kdtree.accel.TraversalListener;
 import org.kdtree.accel.TreeStats;
 import org.kdtree.accel.TriangleIntersector;
+import org.kdtree.accel.Vectorization;
 import org.kdtree.geom.Box;
 
 /**
@@ -39,6 +40,8 @@ public final class Bvh implements AccelerationStructure {
     private TreeStats stats;
     /** The corner array last copied into leaf order, and its copy ({@link #leafOrderedCorners}). */
     private double[] cornerSource, leafCorners;
+    private PairNodes pairs;
+    private WideNodes laneNodes;
 
     private Bvh(int k, int nodes, int[] primitives, CostModel costModel, BuildNode root, int width) {
         this.k = k;
@@ -48,7 +51,7 @@ public final class Bvh implements AccelerationStructure {
         this.primitives = primitives;
         this.costModel = costModel;
         this.maxDepth = layOut(root, 0, 1, 0);
-        this.wide = new WideNodes(k, width, root);
+        this.wide = new WideNodes(this, width);
     }
 
     static Bvh of(int k, BuildNode root, int[] primitives, BvhBuilder settings) {
@@ -85,6 +88,9 @@ public final class Bvh implements AccelerationStructure {
     public int maxDepth() { return maxDepth; }
 
     /** {@return Kt and Ki, with which it was built and its expected cost is counted} */
+    /** {@return the Vector API path where this JVM takes it (else the scalar wide loop), and set P in 8 x 8 packets} */
+    @Override public String describePath() { return Vectorization.describe() + "; set P in 8 x 8 packets"; }
+
     @Override public CostModel costModel() { return costModel; }
 
     /**
@@ -166,6 +172,18 @@ public final class Bvh implements AccelerationStructure {
     int[] primitiveArray() { return primitives; }
     WideNodes wide() { return wide; }
 
+    /** The wide layout at {@code lanes} children per node, as the vector traversal reads it: made once, on its first query. */
+    synchronized WideNodes lanes(int lanes) {
+        if (laneNodes == null || laneNodes.width != lanes) laneNodes = lanes == width() ? wide : new WideNodes(this, lanes);
+        return laneNodes;
+    }
+
+    /** The compact binary layout ({@link PairNodes}), made on the first triangle query. */
+    synchronized PairNodes pairs() {
+        if (pairs == null) pairs = new PairNodes(this);
+        return pairs;
+    }
+
     /**
      * The triangles' corners (9 per triangle, as {@link TriangleIntersector#cornerArray()}) copied
      * into leaf order, so that the wide traversal reads a leaf's triangles from one stretch of
@@ -192,12 +210,16 @@ public final class Bvh implements AccelerationStructure {
     }
 
     /**
-     * The fastest query: over a triangle mesh, the wide layout's traversal with the triangle
-     * test inlined; otherwise the binary layout's, with any {@link Intersector}.
+     * The fastest query: over a triangle mesh, the vector traversal when this JVM has the Vector
+     * API ({@link org.kdtree.accel.Vectorization}; as many children per node as its lanes), else
+     * the wide layout's traversal (the compact binary one at width 2) with the triangle test inlined, which also traces packets of coherent rays
+     * ({@link org.kdtree.accel.PacketQuery}); otherwise the binary layout's, with any {@link Intersector}.
      */
     @Override public RayQuery query(Intersector prims) {
         requireDimension(prims);
-        if (prims instanceof TriangleIntersector t) return new WideTraversal(this, t);
+        if (prims instanceof TriangleIntersector t)
+            return new PacketTraversal(this, t, VectorPath.enabled() && k == 3 ? VectorPath.query(this, t)
+                    : width() == 2 ? new PairTraversal(this, t) : new WideTraversal(this, t));
         return new BvhTraverser(this, prims, TraversalListener.NONE);
     }
 

@@ -25,36 +25,40 @@ final class WideNodes {
     int[] words;
     private int nodes;
 
-    WideNodes(int k, int width, BuildNode root) {
-        this.k = k;
+    /** The binary tree collapsed from. */
+    private final Bvh bvh;
+
+    WideNodes(Bvh bvh, int width) {
+        this.bvh = bvh;
+        this.k = bvh.dimension();
         this.width = width;
         this.refs = 2 * k * width;
         this.stride = refs + 2 * width;
         // A wide node takes the place of up to width - 1 binary interior nodes: start from that, grow if needed.
-        words = new int[stride * (root.size() / 2 / (width - 1) + 16)];
-        add(root);
+        words = new int[stride * (bvh.nodeCount() / 2 / (width - 1) + 16)];
+        add(0);
         words = Arrays.copyOf(words, stride * nodes);
     }
 
-    /** Lays out the wide node whose children are those of {@code n}'s collapsed subtree; returns its index. */
-    private int add(BuildNode n) {
+    /** Lays out the wide node whose children are those of binary node {@code n}'s collapsed subtree; returns its index. */
+    private int add(int n) {
         int id = nodes++;
         if (stride * nodes > words.length) words = Arrays.copyOf(words, Math.max(stride * nodes, words.length + words.length / 2));
-        BuildNode[] kids = new BuildNode[width];
+        int[] kids = new int[width];
         int m = collapse(n, kids);
         int base = stride * id;
         for (int i = 0; i < width; i++) {
-            boolean unused = i >= m || kids[i].isLeaf() && kids[i].count == 0;
+            boolean unused = i >= m || bvh.isLeaf(kids[i]) && bvh.leafSize(kids[i]) == 0;
             for (int a = 0; a < k; a++) {
-                words[base + 2 * width * a + i] = Float.floatToRawIntBits(unused ? Float.POSITIVE_INFINITY : down(kids[i].box[a]));
-                words[base + 2 * width * a + width + i] = Float.floatToRawIntBits(unused ? Float.NEGATIVE_INFINITY : up(kids[i].box[k + a]));
+                words[base + 2 * width * a + i] = Float.floatToRawIntBits(unused ? Float.POSITIVE_INFINITY : down(bvh.min(kids[i], a)));
+                words[base + 2 * width * a + width + i] = Float.floatToRawIntBits(unused ? Float.NEGATIVE_INFINITY : up(bvh.max(kids[i], a)));
             }
             int ref = base + refs + i, count = ref + width;
             if (unused) {
                 words[count] = -1;
-            } else if (kids[i].isLeaf()) {
-                words[ref] = kids[i].first;
-                words[count] = kids[i].count;
+            } else if (bvh.isLeaf(kids[i])) {
+                words[ref] = bvh.leafStart(kids[i]);
+                words[count] = bvh.leafSize(kids[i]);
             } else {
                 int child = add(kids[i]);     // first: it may grow the array, which words[ref] = add(..) would have read before
                 words[ref] = child;
@@ -77,33 +81,34 @@ final class WideNodes {
     }
 
     /**
-     * The children of a wide node: starting from {@code n}'s two (or {@code n} itself if it is a
-     * leaf), the interior child of largest surface area is replaced by its own two until there
-     * are {@code width} or only leaves. Returns how many.
+     * The children of a wide node: starting from binary node {@code n}'s two (or {@code n} itself
+     * if it is a leaf), the interior child of largest surface area is replaced by its own two
+     * until there are {@code width} or only leaves. Returns how many.
      */
-    private int collapse(BuildNode n, BuildNode[] kids) {
-        if (n.isLeaf()) {
+    private int collapse(int n, int[] kids) {
+        if (bvh.isLeaf(n)) {
             kids[0] = n;
             return 1;
         }
-        kids[0] = n.left;
-        kids[1] = n.right;
+        kids[0] = bvh.left(n);
+        kids[1] = bvh.right(n);
         int m = 2;
+        double[] box = bvh.boxArray();
         while (m < width) {
             int open = -1;
             double largest = -1;
             for (int i = 0; i < m; i++) {
-                if (kids[i].isLeaf()) continue;
-                double a = BoxArea.of(kids[i].box, 0, k);
+                if (bvh.isLeaf(kids[i])) continue;
+                double a = BoxArea.of(box, 2 * k * kids[i], k);
                 if (a > largest) {
                     largest = a;
                     open = i;
                 }
             }
             if (open < 0) break;
-            BuildNode o = kids[open];
-            kids[open] = o.left;
-            kids[m++] = o.right;
+            int o = kids[open];
+            kids[open] = bvh.left(o);
+            kids[m++] = bvh.right(o);
         }
         return m;
     }

@@ -36,7 +36,11 @@ final class WideTraversal implements RayQuery {
     private static final double SHRINK = 1 - SLACK, GROW = 1 + SLACK;
 
     WideTraversal(Bvh bvh, TriangleIntersector tris) {
-        WideNodes w = bvh.wide();
+        this(bvh, bvh.wide(), tris);
+    }
+
+    /** The traversal of {@code w}, a wide layout of {@code bvh} (the vector path's width, for comparing the two). */
+    WideTraversal(Bvh bvh, WideNodes w, TriangleIntersector tris) {
         width = w.width;
         stride = w.stride;
         refs = w.refs;
@@ -72,7 +76,7 @@ final class WideTraversal implements RayQuery {
      * starts at t >= 0 (so that the slack can be a factor). Others, rare, take the binary
      * traversal, which handles both.
      */
-    private static boolean suits(Ray ray, double tMin) {
+    static boolean suits(Ray ray, double tMin) {
         return tMin >= 0 && ray.dimension() == 3 && Double.isFinite(ray.inverseDirection(0))
                 && Double.isFinite(ray.inverseDirection(1)) && Double.isFinite(ray.inverseDirection(2));
     }

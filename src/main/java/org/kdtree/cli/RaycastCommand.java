@@ -131,6 +131,8 @@ final class RaycastCommand implements Callable<Integer> {
                 rr.value().hits(), rr.value().tSum(), r.size() / rr.seconds() / 1e6));
         System.err.println(String.format(Locale.ROOT, "# %s, %d thread(s); references per non-empty leaf %.2f",
                 settings, threads, st.averageRefsPerLeaf()));
+        // Which path traced: the BVH's vector traversal when the JVM has the Vector API, else the Java 17 one.
+        System.err.println("# path: " + tree.describePath());
         if (verifyStride > 0) {
             BruteCheck check = new BruteCheck(tris, tree, verifyStride, threads);
             System.err.println("# verify P: " + check.compare(p));

@@ -139,7 +139,7 @@ final class MeshTraversal {
                 double det = u + v + e;
                 if (det == 0) continue;
                 double t = (u * az + v * bz + e * cz) * sz / det;
-                if (!(t >= tMin && t <= tMax && t < hit.t)) continue;
+                if (!(t >= tMin && t <= tMax && (t < hit.t || t == hit.t && p < hit.primitive))) continue;   // as TriangleIntersector.test
                 if (any) return true;
                 found = true;
                 hit.primitive = p;

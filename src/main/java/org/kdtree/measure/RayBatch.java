@@ -9,6 +9,8 @@ import java.util.function.Supplier;
 import org.kdtree.accel.AccelerationStructure;
 import org.kdtree.accel.Hit;
 import org.kdtree.accel.Intersector;
+import org.kdtree.accel.PacketQuery;
+import org.kdtree.accel.RayPacket;
 import org.kdtree.accel.RayQuery;
 import org.kdtree.accel.TraversalStats;
 import org.kdtree.geom.Ray;
@@ -21,7 +23,9 @@ import org.kdtree.limits.Limits;
  * t in (0, +infinity), as docs/benchmark-spec.md defines it ({@link #T_MIN}).
  *
  * <p>Rays are handed out in blocks of 4096; hit counts and t sums are kept per block and added in
- * block order, so the checksum is the same for any thread count.
+ * block order, so the checksum is the same for any thread count. The rays of an image (set P)
+ * are traced in tiles of 8 x 8 as packets when the structure's query traces packets
+ * ({@link PacketQuery}), and summed in the same order: the same checksum either way.
  */
 public final class RayBatch implements AutoCloseable {
     /**
@@ -31,6 +35,8 @@ public final class RayBatch implements AutoCloseable {
     public static final double T_MIN = Double.MIN_VALUE;
 
     private static final int BLOCK = 4096;
+    /** The edge of a tile of an image's rays traced as one packet: 8 x 8 measured best (docs/performance.md). */
+    static final int TILE = 8;
 
     /**
      * The spec's checksum of one pass.
@@ -72,19 +78,36 @@ public final class RayBatch implements AutoCloseable {
         long[] hits = new long[blocks];
         double[] sums = new double[blocks];
         AtomicInteger next = new AtomicInteger();
-        if (pool == null) work(queries[0], rays, next, hits, sums);
-        else parallel(rays, next, hits, sums);
+        if (packets(rays)) {
+            double[] t = new double[n];
+            run(q -> tiles(q, rays, next, t));
+            sumInBlocks(t, hits, sums);
+        } else {
+            run(q -> work(q, rays, next, hits, sums));
+        }
         long h = 0;
         double s = 0;
         for (int b = 0; b < blocks; b++) { h += hits[b]; s += sums[b]; }
         return new Checksum(h, s);
     }
 
-    private void parallel(RaySet rays, AtomicInteger next, long[] hits, double[] sums) {
+    /** Whether the set is traced in tiles of packets: an image, and every query traces packets. */
+    private boolean packets(RaySet rays) {
+        if (rays.imageWidth() <= 0) return false;
+        for (RayQuery q : queries) if (!(q instanceof PacketQuery)) return false;
+        return true;
+    }
+
+    /** Runs {@code job} with each query, on the pool's threads or this one. */
+    private void run(java.util.function.Consumer<RayQuery> job) {
+        if (pool == null) {
+            job.accept(queries[0]);
+            return;
+        }
         Future<?>[] f = new Future<?>[queries.length];
         for (int i = 0; i < queries.length; i++) {
             RayQuery q = queries[i];
-            f[i] = pool.submit(() -> work(q, rays, next, hits, sums));
+            f[i] = pool.submit(() -> job.accept(q));
         }
         try {
             for (Future<?> x : f) x.get();
@@ -93,6 +116,49 @@ public final class RayBatch implements AutoCloseable {
         } catch (InterruptedException e) {
             Thread.currentThread().interrupt();
             throw new java.util.concurrent.CancellationException("tracing interrupted");
+        }
+    }
+
+    /**
+     * Traces an image's rays in tiles of {@link #TILE} x {@link #TILE} pixels, one packet each,
+     * bands of {@link #TILE} rows handed out in turn; writes each ray's hit distance (NaN for a miss) to {@code t}.
+     */
+    private static void tiles(RayQuery q, RaySet rays, AtomicInteger next, double[] t) {
+        PacketQuery pq = (PacketQuery) q;
+        RayPacket packet = new RayPacket();
+        double[] r = rays.rays();
+        int w = rays.imageWidth(), h = rays.size() / w;
+        for (int band; (band = next.getAndIncrement()) * TILE < h; ) {
+            int y0 = band * TILE, y1 = Math.min(h, y0 + TILE);
+            for (int x0 = 0; x0 < w; x0 += TILE) {
+                int x1 = Math.min(w, x0 + TILE);
+                packet.clear();
+                for (int y = y0; y < y1; y++)
+                    for (int x = x0; x < x1; x++) {
+                        int o = 6 * (y * w + x);
+                        packet.add(r[o], r[o + 1], r[o + 2], r[o + 3], r[o + 4], r[o + 5], T_MIN, Double.POSITIVE_INFINITY);
+                    }
+                pq.closestHits(packet);
+                int i = 0;
+                for (int y = y0; y < y1; y++)
+                    for (int x = x0; x < x1; x++, i++) t[y * w + x] = packet.found(i) ? packet.t[i] : Double.NaN;
+            }
+        }
+    }
+
+    /** The checksum of each block from the rays' hit distances, added in ray order as {@link #work} adds them. */
+    private static void sumInBlocks(double[] t, long[] hits, double[] sums) {
+        for (int b = 0; b < hits.length; b++) {
+            long h = 0;
+            double s = 0;
+            for (int i = b * BLOCK, end = Math.min(t.length, i + BLOCK); i < end; i++) {
+                if (t[i] == t[i]) {
+                    h++;
+                    s += t[i];
+                }
+            }
+            hits[b] = h;
+            sums[b] = s;
         }
     }
 

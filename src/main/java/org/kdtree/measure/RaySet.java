@@ -19,11 +19,19 @@ public final class RaySet {
 
     private final String name;
     private final double[] rays;
+    private final int imageWidth;
 
-    private RaySet(String name, double[] rays) {
+    private RaySet(String name, double[] rays, int imageWidth) {
         this.name = name;
         this.rays = rays;
+        this.imageWidth = imageWidth;
     }
+
+    /**
+     * {@return the width of the image whose pixels the rays are, row by row (set P), or 0 when they
+     * are no image (set R)}: coherent rays, which {@link RayBatch} traces in tiles of packets
+     */
+    public int imageWidth() { return imageWidth; }
 
     /** {@return the set's name, "P" or "R"} */
     public String name() { return name; }
@@ -89,7 +97,7 @@ public final class RaySet {
                 r[at++] = dir[0]; r[at++] = dir[1]; r[at++] = dir[2];
             }
         }
-        return new RaySet("P", r);
+        return new RaySet("P", r, res);
     }
 
     /**
@@ -113,7 +121,7 @@ public final class RaySet {
             r[6 * i + 4] = rad * Math.sin(phi);
             r[6 * i + 5] = zc;
         }
-        return new RaySet("R", r);
+        return new RaySet("R", r, 0);
     }
 
     private static double[] normalize(double[] v) {

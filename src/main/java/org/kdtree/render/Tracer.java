@@ -10,6 +10,8 @@ import static org.kdtree.scene.Vectors.set;
 
 import java.util.List;
 import org.kdtree.accel.Hit;
+import org.kdtree.accel.PacketQuery;
+import org.kdtree.accel.RayPacket;
 import org.kdtree.accel.RayQuery;
 import org.kdtree.geom.Ray;
 import org.kdtree.geom.Tolerance;
@@ -45,6 +47,8 @@ public final class Tracer {
     private final PixelSampler sampler;
     private final RayCounts counts = new RayCounts();
     private final Ray ray = new Ray(3);
+    /** Camera rays traced together ({@link #cameraPacket}). */
+    private final RayPacket packet = new RayPacket();
     private final Hit hit = new Hit();
     private final double[] st = new double[2];
     private final double[] eye, background;
@@ -129,12 +133,72 @@ public final class Tracer {
         rgb[2] = b * mean;
     }
 
+    /**
+     * {@return whether camera rays are traced in packets ({@link #cameraPacket}, {@link #packetPixel})}:
+     * when the query traces packets ({@link PacketQuery}) and a pixel has one sample (its centre,
+     * drawing no random number, so that every pixel's random numbers stay its own, in the same order)
+     */
+    public boolean tracesPackets() {
+        return query instanceof PacketQuery && scene.samplesPerPixel() == 1;
+    }
+
+    /**
+     * Traces the camera rays of the pixels {@code [x0, x1) x [y0, y1)} (at most
+     * {@link RayPacket#CAPACITY}, row by row) as one packet; {@link #packetPixel} shades them.
+     * Only when {@link #tracesPackets}.
+     *
+     * @param x0 the block's first column
+     * @param y0 its first row
+     * @param x1 one past its last column
+     * @param y1 one past its last row
+     */
+    public void cameraPacket(int x0, int y0, int x1, int y1) {
+        packet.clear();
+        for (int y = y0; y < y1; y++)
+            for (int x = x0; x < x1; x++) {
+                scene.camera().direction(x + 0.5, y + 0.5, cameraDir);
+                packet.add(eye[0], eye[1], eye[2], cameraDir[0], cameraDir[1], cameraDir[2], 0, Double.POSITIVE_INFINITY);
+            }
+        ((PacketQuery) query).closestHits(packet);
+    }
+
+    /**
+     * Writes pixel (x, y)'s radiance to {@code rgb}, as {@link #pixel} does, from its camera ray's
+     * hit in the last {@link #cameraPacket}.
+     *
+     * @param i   the pixel's index in the packet (row by row within the block)
+     * @param x   the pixel's column
+     * @param y   the pixel's row
+     * @param rgb receives the linear red, green and blue radiance
+     */
+    public void packetPixel(int i, int x, int y, double[] rgb) {
+        sampler.startPixel(x, y);
+        counts.add(RayKind.CAMERA);
+        cameraDir[0] = packet.dx[i];
+        cameraDir[1] = packet.dy[i];
+        cameraDir[2] = packet.dz[i];
+        hit.primitive = packet.primitive[i];
+        hit.t = packet.t[i];
+        hit.u = packet.u[i];
+        hit.v = packet.v[i];
+        double[] c = shade(packet.found(i), cameraDir, 0, 1);
+        double r = 0 + c[0], g = 0 + c[1], b = 0 + c[2];       // pixel's sum and mean over its one sample
+        rgb[0] = r * 1.0;
+        rgb[1] = g * 1.0;
+        rgb[2] = b * 1.0;
+    }
+
     /** Radiance arriving at {@code origin} from direction {@code -dir}; {@code weight} is the path's. Returns its bounce's colour. */
     private double[] trace(double[] origin, double[] dir, int depth, double weight, RayKind kind) {
-        Bounce s = bounces[depth];
         counts.add(kind);
         ray.set(origin[0], origin[1], origin[2], dir[0], dir[1], dir[2]);
-        if (!query.closestHit(ray, 0, Double.POSITIVE_INFINITY, hit)) {
+        return shade(query.closestHit(ray, 0, Double.POSITIVE_INFINITY, hit), dir, depth, weight);
+    }
+
+    /** The colour of bounce {@code depth} from the ray's closest hit in {@link #hit} ({@code found}: whether there is one). */
+    private double[] shade(boolean found, double[] dir, int depth, double weight) {
+        Bounce s = bounces[depth];
+        if (!found) {
             System.arraycopy(background, 0, s.color, 0, 3);
             return s.color;
         }

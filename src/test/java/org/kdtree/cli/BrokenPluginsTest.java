@@ -1,5 +1,6 @@
 package org.kdtree.cli;
 
+import static org.junit.jupiter.api.Assumptions.assumeTrue;
 import static org.assertj.core.api.Assertions.assertThat;
 
 import java.nio.file.Path;
@@ -116,6 +117,8 @@ class BrokenPluginsTest {
     }
 
     @Test void aHungBuilderIsStoppedAndTheRestOfGradingIsNotRun() {
+        // Stopping a hung builder's thread needs Thread.stop, which JDK 20 removed: CI's JDK 17 run checks it.
+        assumeTrue(Runtime.version().feature() < 20, "Thread.stop works up to JDK 19");
         for (String b : List.of("loops-in-terminate", "loops-in-findplane")) {
             statsSaysOneLine(b);
             String method = b.endsWith("terminate") ? "terminate" : "findPlane";

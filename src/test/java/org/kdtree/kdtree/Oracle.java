@@ -47,9 +47,14 @@ final class Oracle {
         this.name = name;
     }
 
-    /** One oracle per registered builder, and one for the BVH. */
+    /**
+     * One oracle per registered builder, one for the BVH (traced 4 wide), and one for the BVH
+     * traced on its compact binary layout (width 2: one cache line per node).
+     */
     static List<Oracle> allBuilders(Primitives scene, Intersector prims) {
-        return BuilderSpec.names().stream().map(b -> new Oracle(scene, prims, b)).toList();
+        List<Oracle> all = new java.util.ArrayList<>(BuilderSpec.names().stream().map(b -> new Oracle(scene, prims, b)).toList());
+        all.add(new Oracle(prims, new BvhBuilder().width(2).build(scene), BvhBuilder.NAME + "-width2"));
+        return List.copyOf(all);
     }
 
     /** Checks closest hit (fast and generic paths), any hit and all hits; returns whether it hit. */

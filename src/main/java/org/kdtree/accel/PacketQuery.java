@@ -1,0 +1,34 @@
+package org.kdtree.accel;
+
+import org.kdtree.geom.Ray;
+
+/**
+ * A ray query that also traces coherent rays together: a packet's rays share the structure's
+ * node reads, and a box or cell that no ray of the packet can enter is skipped for all of them
+ * at once. Each ray's answer is exactly its {@link RayQuery#closestHit} answer (primitive, t,
+ * barycentrics). Not thread safe: one per thread, like the query.
+ */
+public interface PacketQuery extends RayQuery {
+    /**
+     * The closest hit of every ray of the packet, written to the packet's results.
+     *
+     * @param packet the rays; receives their hits
+     */
+    void closestHits(RayPacket packet);
+
+    /**
+     * The closest hits of a packet's rays one at a time, with {@code query}: what a query without
+     * packets does, and what a packet query does with rays it cannot trace together.
+     *
+     * @param query  the single-ray query
+     * @param packet the rays; receives their hits
+     * @param ray    scratch, a 3-D ray
+     * @param hit    scratch
+     */
+    static void oneByOne(RayQuery query, RayPacket packet, Ray ray, Hit hit) {
+        for (int i = 0, n = packet.size(); i < n; i++) {
+            query.closestHit(packet.ray(i, ray), packet.tMin[i], packet.tMax[i], hit);
+            packet.record(i, hit);
+        }
+    }
+}

@@ -1,0 +1,93 @@
+package org.kdtree.accel;
+
+/**
+ * Up to {@link #CAPACITY} rays traced together, and their closest hits: structure-of-arrays,
+ * reused between packets (a renderer's tile of camera rays, a block of the benchmark's primary
+ * rays). A {@link PacketQuery} fills {@link #primitive}, {@link #t}, {@link #u} and {@link #v}
+ * for each ray exactly as {@link RayQuery#closestHit} answers that ray alone.
+ */
+public final class RayPacket {
+    /** The most rays a packet holds: an 8 x 8 tile. */
+    public static final int CAPACITY = 64;
+
+    /** The rays' origins, directions and 1 / direction, per axis. */
+    public final double[] ox = new double[CAPACITY], oy = new double[CAPACITY], oz = new double[CAPACITY],
+            dx = new double[CAPACITY], dy = new double[CAPACITY], dz = new double[CAPACITY],
+            ix = new double[CAPACITY], iy = new double[CAPACITY], iz = new double[CAPACITY];
+    /** The rays' intervals of t. */
+    public final double[] tMin = new double[CAPACITY], tMax = new double[CAPACITY];
+    /** Each ray's closest hit: the primitive (-1 for none), t (+infinity for none) and barycentrics (as {@link Hit}). */
+    public final int[] primitive = new int[CAPACITY];
+    /** See {@link #primitive}. */
+    public final double[] t = new double[CAPACITY], u = new double[CAPACITY], v = new double[CAPACITY];
+    private int size;
+
+    /** {@return how many rays it holds} */
+    public int size() { return size; }
+
+    /**
+     * Empties it.
+     *
+     * @return this packet
+     */
+    public RayPacket clear() {
+        size = 0;
+        return this;
+    }
+
+    /**
+     * Adds a 3-D ray.
+     *
+     * @param ox   origin x
+     * @param oy   origin y
+     * @param oz   origin z
+     * @param dx   direction x
+     * @param dy   direction y
+     * @param dz   direction z
+     * @param tMin the start of its interval
+     * @param tMax its end
+     * @return the ray's index in the packet
+     * @throws IllegalStateException if the packet is full
+     */
+    public int add(double ox, double oy, double oz, double dx, double dy, double dz, double tMin, double tMax) {
+        if (size == CAPACITY) throw new IllegalStateException("a packet holds " + CAPACITY + " rays");
+        int i = size++;
+        this.ox[i] = ox; this.oy[i] = oy; this.oz[i] = oz;
+        this.dx[i] = dx; this.dy[i] = dy; this.dz[i] = dz;
+        ix[i] = 1.0 / dx; iy[i] = 1.0 / dy; iz[i] = 1.0 / dz;     // as Ray.set
+        this.tMin[i] = tMin;
+        this.tMax[i] = tMax;
+        return i;
+    }
+
+    /**
+     * {@return whether ray {@code i} hit}
+     *
+     * @param i a ray's index
+     */
+    public boolean found(int i) { return primitive[i] >= 0; }
+
+    /**
+     * Copies ray {@code i} into {@code ray}.
+     *
+     * @param i   a ray's index
+     * @param ray a 3-D ray, overwritten
+     * @return {@code ray}
+     */
+    public org.kdtree.geom.Ray ray(int i, org.kdtree.geom.Ray ray) {
+        return ray.set(ox[i], oy[i], oz[i], dx[i], dy[i], dz[i]);
+    }
+
+    /**
+     * Records ray {@code i}'s answer from a single-ray query's hit.
+     *
+     * @param i   a ray's index
+     * @param hit its closest hit, or none
+     */
+    public void record(int i, Hit hit) {
+        primitive[i] = hit.primitive;
+        t[i] = hit.t;
+        u[i] = hit.u;
+        v[i] = hit.v;
+    }
+}

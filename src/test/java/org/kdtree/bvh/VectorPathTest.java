@@ -1,0 +1,71 @@
+package org.kdtree.bvh;
+
+import static org.assertj.core.api.Assertions.assertThat;
+import static org.junit.jupiter.api.Assumptions.assumeTrue;
+
+import java.util.List;
+import java.util.Random;
+import org.junit.jupiter.api.Test;
+import org.kdtree.accel.Hit;
+import org.kdtree.accel.RayQuery;
+import org.kdtree.accel.TriangleIntersector;
+import org.kdtree.accel.Vectorization;
+import org.kdtree.generate.HardMeshes;
+import org.kdtree.generate.Meshes;
+import org.kdtree.geom.Ray;
+import org.kdtree.shape.TriangleMesh;
+
+/**
+ * The two paths agree bit for bit: the vector traversal (JDK 25 with {@code jdk.incubator.vector},
+ * as CI's second test run has it) against the scalar wide traversal at the same width and the
+ * compact binary one, on random rays, rays from far away, rays grazing box faces and aimed at
+ * shared vertices and edges. On the Java 17 path it checks that the JVM says so.
+ */
+class VectorPathTest {
+    @Test void theJvmSaysWhichPath() {
+        boolean jdk25 = Runtime.version().feature() >= Vectorization.JDK
+                && ModuleLayer.boot().findModule(Vectorization.MODULE).isPresent() && !"false".equals(System.getProperty("kdtree.vector"));
+        assertThat(VectorPath.enabled()).isEqualTo(jdk25);
+        assertThat(Vectorization.describe()).startsWith(jdk25 ? "vector" : "scalar");
+    }
+
+    @Test void vectorAndScalarGiveTheSameHits() {
+        assumeTrue(VectorPath.enabled(), "the vector path: JDK 25 with --add-modules jdk.incubator.vector");
+        for (TriangleMesh mesh : List.of(Meshes.clustered(3000, 1), Meshes.surface(2000, 2), HardMeshes.cubeGrid(6),
+                Meshes.planarAndDegenerate(3), HardMeshes.scaled(HardMeshes.cubeGrid(3), 1e30), HardMeshes.scaled(Meshes.clustered(500, 4), 1e-30))) {
+            Bvh bvh = new BvhBuilder().build(mesh);
+            TriangleIntersector tris = new TriangleIntersector(mesh);
+            RayQuery vector = VectorPath.query(bvh, tris);
+            RayQuery wide = new WideTraversal(bvh, bvh.lanes(VectorPath.LANES), tris);
+            RayQuery pair = new PairTraversal(bvh, tris);
+            Random rnd = new Random(17);
+            Ray ray = new Ray(3);
+            Hit a = new Hit(), b = new Hit(), c = new Hit();
+            var box = bvh.bounds();
+            for (int n = 0; n < 20_000; n++) {
+                double[] o = new double[3], d = new double[3];
+                for (int k = 0; k < 3; k++) {
+                    double lo = box.min(k), ext = box.max(k) - lo;
+                    switch (n % 4) {
+                        case 0 -> o[k] = lo + rnd.nextDouble() * ext;                         // inside
+                        case 1 -> o[k] = lo + (rnd.nextDouble() - 0.5) * ext * 1e6;          // far away
+                        case 2 -> o[k] = rnd.nextBoolean() ? box.min(k) : box.max(k);        // on the box's faces
+                        default -> o[k] = lo + Math.floor(rnd.nextDouble() * 8) * ext / 8;   // on a lattice
+                    }
+                    d[k] = rnd.nextGaussian();
+                }
+                if (n % 4 == 1) for (int k = 0; k < 3; k++) d[k] = box.min(k) + rnd.nextDouble() * (box.max(k) - box.min(k)) - o[k];
+                ray.set(o[0], o[1], o[2], d[0], d[1], d[2]);
+                double tMin = n % 7 == 0 ? rnd.nextDouble() : 0, tMax = n % 5 == 0 ? 1 + rnd.nextDouble() * 10 : Double.POSITIVE_INFINITY;
+                boolean fa = vector.closestHit(ray, tMin, tMax, a), fb = wide.closestHit(ray, tMin, tMax, b), fc = pair.closestHit(ray, tMin, tMax, c);
+                String what = mesh.size() + " triangles, ray " + ray + " [" + tMin + ", " + tMax + "]";
+                assertThat(fa).as(what).isEqualTo(fb).isEqualTo(fc);
+                assertThat(a.primitive).as(what).isEqualTo(b.primitive).isEqualTo(c.primitive);
+                assertThat(Double.doubleToLongBits(a.t)).as(what).isEqualTo(Double.doubleToLongBits(b.t)).isEqualTo(Double.doubleToLongBits(c.t));
+                assertThat(a.u).as(what).isEqualTo(b.u);
+                assertThat(a.v).as(what).isEqualTo(b.v);
+                assertThat(vector.anyHit(ray, tMin, tMax)).as(what).isEqualTo(fb);
+            }
+        }
+    }
+}
