@@ -69,6 +69,7 @@ public final class ChartFile {
         chart.getStyler().setXAxisLogarithmic(true).setYAxisLogarithmic(true);
         chart.getStyler().setXAxisLogarithmicDecadeOnly(true).setYAxisLogarithmicDecadeOnly(true);
         chart.getStyler().setXAxisDecimalPattern(NUMBER_PATTERN).setYAxisDecimalPattern(NUMBER_PATTERN);
+        chart.getStyler().setAxisTickLabelsColor(HIDDEN);   // every label drawn by intermediateLabels, in one way
     }
 
     /**
@@ -247,20 +248,83 @@ public final class ChartFile {
         double y0 = chart.getScreenYFromChart(y[0]), y1 = chart.getScreenYFromChart(y[1]);
         double axisY = y0 + (y0 - y1) * pad, axisX = x0 - (x1 - x0) * pad;
         g.setFont(chart.getStyler().getAxisTickLabelsFont());
-        g.setColor(chart.getStyler().getAxisTickLabelsColor());
+        boolean all = HIDDEN.equals(chart.getStyler().getAxisTickLabelsColor());   // XChart draws none: draw the decades too
+        g.setColor(all ? LABELS : chart.getStyler().getAxisTickLabelsColor());
         var fm = g.getFontMetrics();
-        for (double v : chart.getStyler().isXAxisLogarithmic() ? intermediateTicks(x[0], x[1]) : List.<Double>of()) {
+        // Every label of a log axis, the decades too, drawn here in one font on one baseline, over
+        // the whole axis (the data's range and the plot's padding on either side), not just the data's.
+        for (double v : !chart.getStyler().isXAxisLogarithmic() ? List.<Double>of() : all ? axisTicks(padded(x, pad), x) : intermediateTicks(x[0], x[1])) {
             int sx = (int) Math.round(chart.getScreenXFromChart(v));
             g.drawLine(sx, (int) axisY, sx, (int) axisY + 3);
             String t = tickLabel(v);
             g.drawString(t, sx - fm.stringWidth(t) / 2, (int) axisY + 5 + fm.getAscent());
         }
-        for (double v : chart.getStyler().isYAxisLogarithmic() ? intermediateTicks(y[0], y[1]) : List.<Double>of()) {
+        for (double v : !chart.getStyler().isYAxisLogarithmic() ? List.<Double>of() : all ? axisTicks(padded(y, pad), y) : intermediateTicks(y[0], y[1])) {
             int sy = (int) Math.round(chart.getScreenYFromChart(v));
             g.drawLine((int) axisX - 3, sy, (int) axisX, sy);
             String t = tickLabel(v);
             g.drawString(t, (int) axisX - 5 - fm.stringWidth(t), sy + fm.getAscent() / 2 - 1);
         }
+    }
+
+    /** The colour of the axes' labels, which this class draws on a log axis (XChart's own are made transparent there). */
+    private static final Color LABELS = Color.BLACK;
+    private static final Color HIDDEN = new Color(0, 0, 0, 0);
+
+    /** A log axis's ends: the data's range widened by the plot's padding on either side, in log space, as XChart lays it out. */
+    private static double[] padded(double[] range, double pad) {
+        if (!(range[0] > 0) || range[1] <= range[0]) return range;
+        double lo = Math.log10(range[0]), hi = Math.log10(range[1]), span = hi - lo;
+        return new double[] {Math.pow(10, lo - pad * span), Math.pow(10, hi + pad * span)};
+    }
+
+    /**
+     * Every labelled tick of a log axis over {@code axis}: its decades and {@link #intermediateTicks},
+     * ascending; and, where the data reach beyond the outermost of those, one more round value
+     * (1 to 9 times a power of ten) past the data's extreme, or failing that the roundest before
+     * the axis's end, so that no point stands beyond every label.
+     *
+     * @param axis the axis's ends, > 0
+     * @param data the data's smallest and largest value on it
+     * @return the ticks, ascending
+     */
+    static List<Double> axisTicks(double[] axis, double[] data) {
+        List<Double> ticks = new java.util.ArrayList<>(intermediateTicks(axis[0], axis[1]));
+        if (!(axis[0] > 0)) return ticks;
+        for (int e = (int) Math.ceil(Math.log10(axis[0]) - 1e-9); Math.pow(10, e) <= axis[1] * (1 + 1e-9); e++)
+            ticks.add(Double.parseDouble("1e" + e));
+        ticks.sort(null);
+        if (ticks.isEmpty() || ticks.get(ticks.size() - 1) < data[1]) {
+            Double up = roundAtLeast(data[1]);
+            if (up <= axis[1]) ticks.add(up);
+            else if (roundAtMost(axis[1]) > (ticks.isEmpty() ? 0 : ticks.get(ticks.size() - 1))) ticks.add(roundAtMost(axis[1]));
+        }
+        if (ticks.get(0) > data[0]) {
+            Double down = roundAtMost(data[0]);
+            if (down >= axis[0]) ticks.add(0, down);
+            else if (roundAtLeast(axis[0]) < ticks.get(0)) ticks.add(0, roundAtLeast(axis[0]));
+        }
+        return ticks;
+    }
+
+    /** The least m times a power of ten (m in 1..9) at or above {@code v} > 0. */
+    private static double roundAtLeast(double v) {
+        int e = (int) Math.floor(Math.log10(v));
+        for (int m = 1; m <= 10; m++) {
+            double r = Double.parseDouble(m + "e" + e);
+            if (r >= v) return r;
+        }
+        return Double.parseDouble("1e" + (e + 1));
+    }
+
+    /** The greatest m times a power of ten (m in 1..9) at or below {@code v} > 0. */
+    private static double roundAtMost(double v) {
+        int e = (int) Math.floor(Math.log10(v));
+        for (int m = 9; m >= 1; m--) {
+            double r = Double.parseDouble(m + "e" + e);
+            if (r <= v) return r;
+        }
+        return Double.parseDouble("9e" + (e - 1));
     }
 
     /** The smallest and largest x (or y) over all series, or null when there is no data. */

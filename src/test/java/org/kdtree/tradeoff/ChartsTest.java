@@ -15,6 +15,7 @@ import javax.imageio.ImageIO;
 import org.junit.jupiter.api.Test;
 import org.junit.jupiter.api.io.TempDir;
 import org.knowm.xchart.XYChart;
+import org.knowm.xchart.XYChartBuilder;
 import org.knowm.xchart.XYSeries;
 
 /** Every chart the project writes, rendered headless and read back from its model: ticks, markers, caption, files. */
@@ -34,6 +35,23 @@ class ChartsTest {
         assertThat(ChartFile.tickLabel(0.05)).isEqualTo("0.05");
         assertThat(ChartFile.tickLabel(5000)).isEqualTo("5,000");
         assertThat(ChartFile.tickLabel(2e6)).isEqualTo("2,000,000");
+    }
+
+    /**
+     * Issue 34, item 11: a log axis's labels are all drawn alike (the decades too, which XChart drew
+     * in its own way, lower and larger), over the whole axis, and a point beyond the outermost
+     * decade or 2-and-5 tick gets one more round label past it.
+     */
+    @Test void everyLabelOfALogAxisIsDrawnAlikeAndNoPointStandsBeyondThemAll() {
+        // the bunny's R chart: y data 580 .. 7,600 on an axis padded to about 540 .. 8,200
+        assertThat(ChartFile.axisTicks(new double[] {540, 8200}, new double[] {580, 7600}))
+                .containsExactly(600.0, 1000.0, 2000.0, 5000.0, 8000.0);
+        // a round label past the data where the axis has room for one (300 <= 320), none beyond the axis's end (200 > 140)
+        assertThat(ChartFile.axisTicks(new double[] {9, 320}, new double[] {10, 260})).containsExactly(10.0, 20.0, 50.0, 100.0, 200.0, 300.0);
+        assertThat(ChartFile.axisTicks(new double[] {9, 140}, new double[] {10, 130})).containsExactly(10.0, 20.0, 50.0, 100.0);
+        XYChart chart = new XYChartBuilder().width(400).height(300).build();
+        ChartFile.logAxes(chart);
+        assertThat(chart.getStyler().getAxisTickLabelsColor().getAlpha()).as("XChart's own labels hidden: ChartFile draws them all").isZero();
     }
 
     @Test void theTradeoffChartHasLabelledLogAxesDistinctMarkersAndUnits() throws Exception {
