@@ -291,8 +291,11 @@ public final class ChartFile {
     static List<Double> axisTicks(double[] axis, double[] data) {
         List<Double> ticks = new java.util.ArrayList<>(intermediateTicks(axis[0], axis[1]));
         if (!(axis[0] > 0)) return ticks;
-        for (int e = (int) Math.ceil(Math.log10(axis[0]) - 1e-9); Math.pow(10, e) <= axis[1] * (1 + 1e-9); e++)
-            ticks.add(Double.parseDouble("1e" + e));
+        for (int e = (int) Math.floor(Math.log10(axis[0])); ; e++) {   // from a decade at or below the axis: log10 may round
+            double decade = Double.parseDouble("1e" + e);
+            if (decade > axis[1]) break;
+            if (decade >= axis[0]) ticks.add(decade);
+        }
         ticks.sort(null);
         if (ticks.isEmpty() || ticks.get(ticks.size() - 1) < data[1]) {
             Double up = roundAtLeast(data[1]);
