@@ -83,17 +83,18 @@ public final class OldAgainstNew {
 
     /** A class of the kd-tree's package: {@code org.kdtree.kdtree} since the packages by structure, {@code org.kdtree.build} in older jars. */
     private static Class<?> kdtreeClass(ClassLoader cl, String name) throws ClassNotFoundException {
-        try {
-            return cl.loadClass("org.kdtree.kdtree." + name);
-        } catch (ClassNotFoundException older) {
-            return cl.loadClass("org.kdtree.build." + name);
-        }
+        return movedClass(cl, "kdtree", name);
     }
 
     /** The registry's class: {@code org.kdtree.spec} since the packages by structure, {@code org.kdtree.build} in older jars. */
     private static Class<?> specClass(ClassLoader cl, String name) throws ClassNotFoundException {
+        return movedClass(cl, "spec", name);
+    }
+
+    /** {@code org.kdtree.PKG.NAME}, or in a jar from before the packages by structure {@code org.kdtree.build.NAME}. */
+    private static Class<?> movedClass(ClassLoader cl, String pkg, String name) throws ClassNotFoundException {
         try {
-            return cl.loadClass("org.kdtree.spec." + name);
+            return cl.loadClass("org.kdtree." + pkg + "." + name);
         } catch (ClassNotFoundException older) {
             return cl.loadClass("org.kdtree.build." + name);
         }

@@ -259,7 +259,7 @@ public abstract class TreeTape {
                 settings(builder, record);
                 Box root;
                 try {
-                    root = rootVoxel(prims);
+                    root = KdTreeBuilder.rootVoxel(prims);
                 } catch (InvalidGeometryException e) { // the scene is invalid: only the library's own refusal may be recorded
                     if (in.readByte() != GEOMETRY) throw new Mismatch("build " + record + " (of " + scene + ") did not refuse invalid geometry");
                     throw e;
@@ -380,10 +380,6 @@ public abstract class TreeTape {
         }
     }
 
-    /** The root voxel as {@link KdTreeBuilder#build} computes it: computed here, on the trusted side, not read. */
-    static Box rootVoxel(Primitives primitives) {
-        return KdTreeBuilder.rootVoxel(primitives);
-    }
 
     private static String clip(String s) {
         return s.length() <= 4000 ? s : s.substring(0, 4000);

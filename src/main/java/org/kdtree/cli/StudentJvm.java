@@ -88,7 +88,7 @@ record StudentJvm(Deadlines deadlines, double seconds, int heapMb, StudentBox bo
             long after = rest.completeOnTimeout(-1L, 5, TimeUnit.SECONDS).get(); // -1: a process it started still holds the channel
             if (report != null && after > 0) notes.add("wrote " + after + " bytes into its report channel after the report: ignored");
             double took = (System.nanoTime() - t0) / 1e9;
-            String said = err.completeOnTimeout("", 5, TimeUnit.SECONDS).get(), last = said.substring(said.lastIndexOf('\n') + 1).strip();
+            String said = err.completeOnTimeout("", 5, TimeUnit.SECONDS).get();
             StudentRow row;
             if (report != null) row = StudentRow.parse(file, student, report.csv(), took, boxed);
             else if (killed.get()) row = StudentRow.failed(file, student, String.format(Locale.ROOT,

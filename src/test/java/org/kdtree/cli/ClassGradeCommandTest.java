@@ -122,7 +122,7 @@ class ClassGradeCommandTest {
     }
 
     /** The CSV's rows by file name, each a map from column to value. */
-    private static Map<String, Map<String, String>> rows(String csv) {
+    static Map<String, Map<String, String>> rows(String csv) {
         String[] lines = csv.split("\n");
         List<String> head = StudentRow.fields(lines[0]);
         Map<String, Map<String, String>> rows = new HashMap<>();

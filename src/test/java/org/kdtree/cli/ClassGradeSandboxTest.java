@@ -13,7 +13,6 @@ import java.nio.file.Files;
 import java.nio.file.Path;
 import java.security.MessageDigest;
 import java.util.ArrayList;
-import java.util.HashMap;
 import java.util.HexFormat;
 import java.util.List;
 import java.util.Map;
@@ -86,7 +85,7 @@ class ClassGradeSandboxTest {
         assertThat(run.code()).as(run.err()).isZero();
         table = Files.readString(md);
         System.out.println(table);
-        rows = rows(Files.readString(csv, StandardCharsets.UTF_8));
+        rows = ClassGradeCommandTest.rows(Files.readString(csv, StandardCharsets.UTF_8));
     }
 
     @AfterAll static void closeListener() throws IOException {
@@ -162,7 +161,7 @@ class ClassGradeSandboxTest {
         assertThat(unboxed.code()).as(unboxed.err()).isZero();
         assertThat(home.resolve(IntrudingBuilder.MARKER)).as("the attempt the box stops, unboxed").exists();
         assertThat(Files.readString(other.resolve("c.md"))).contains("not boxed (--no-sandbox)");
-        assertThat(rows(Files.readString(other.resolve("c.csv"))).get("write.jar").get("box")).isEqualTo("none (--no-sandbox)");
+        assertThat(ClassGradeCommandTest.rows(Files.readString(other.resolve("c.csv"))).get("write.jar").get("box")).isEqualTo("none (--no-sandbox)");
     }
 
     @Test void withoutBubblewrapGradeClassRefusesInOneLineSayingWhatToInstall(@TempDir Path other) throws Exception {
@@ -218,19 +217,5 @@ class ClassGradeSandboxTest {
         } catch (java.security.NoSuchAlgorithmException e) {
             throw new IllegalStateException(e);
         }
-    }
-
-    /** The CSV's rows by file name, each a map from column to value. */
-    static Map<String, Map<String, String>> rows(String csv) {
-        String[] lines = csv.split("\n");
-        List<String> head = StudentRow.fields(lines[0]);
-        Map<String, Map<String, String>> rows = new HashMap<>();
-        for (int i = 1; i < lines.length; i++) {
-            List<String> f = StudentRow.fields(lines[i]);
-            Map<String, String> row = new HashMap<>();
-            for (int c = 0; c < head.size(); c++) row.put(head.get(c), f.get(c));
-            rows.put(row.get("file"), row);
-        }
-        return new HashMap<>(rows);
     }
 }
