@@ -41,7 +41,7 @@ public final class OldAgainstNew {
             URL[] urls = new URL[parts.length];
             for (int p = 0; p < parts.length; p++) urls[p] = Path.of(parts[p]).toUri().toURL();
             ClassLoader cl = new URLClassLoader(urls, ClassLoader.getPlatformClassLoader());
-            meshes[i] = cl.loadClass("org.kdtree.io.ObjMeshReader").getMethod("read", Path.class).invoke(null, Path.of(args[2]));
+            meshes[i] = cl.loadClass("org.kdtree.io.PrimitivesReader").getMethod("read", Path.class).invoke(null, Path.of(args[2]));
             builders[i] = builder(cl, args[4], args.length > 5 ? args[5] : null);
             build[i] = builders[i].getClass().getMethod("build", cl.loadClass("org.kdtree.shape.Primitives"));   // a kd-tree's or the BVH's
             if (threads > 1) builders[i].getClass().getMethod("threads", int.class).invoke(builders[i], threads);

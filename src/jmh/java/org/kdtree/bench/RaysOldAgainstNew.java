@@ -36,17 +36,21 @@ public final class RaysOldAgainstNew {
         Method[] trace = new Method[2];
         for (int i = 0; i < 2; i++) {
             ClassLoader cl = new URLClassLoader(new URL[] {Path.of(args[i]).toUri().toURL()}, ClassLoader.getPlatformClassLoader());
-            Object mesh = cl.loadClass("org.kdtree.io.ObjMeshReader").getMethod("read", Path.class).invoke(null, Path.of(args[2]));
+            Object mesh = cl.loadClass("org.kdtree.io.PrimitivesReader").getMethod("read", Path.class).invoke(null, Path.of(args[2]));
             Class<?> meshClass = cl.loadClass("org.kdtree.shape.TriangleMesh");
             Object structure = structure(cl, args[5 + i], mesh);
-            Object tris = cl.loadClass("org.kdtree.accel.TriangleIntersector").getConstructor(meshClass).newInstance(mesh);
-            Method query = cl.loadClass("org.kdtree.accel.AccelerationStructure").getMethod("query", cl.loadClass("org.kdtree.accel.Intersector"));
+            // Before the mesh was bound at build time, a query took the triangles' intersector.
+            Class<?> as = cl.loadClass("org.kdtree.accel.AccelerationStructure");
+            Method bound = findQuery(as);
+            Object[] queryArgs = bound.getParameterCount() == 0 ? new Object[0]
+                    : new Object[] {cl.loadClass("org.kdtree.accel.TriangleIntersector").getConstructor(meshClass).newInstance(mesh)};
+            Method query = bound;
             Class<?> raySet = cl.loadClass("org.kdtree.measure.RaySet");
             sets[i] = args[4].equals("P") ? raySet.getMethod("primary", meshClass, int.class).invoke(null, mesh, 1024)
                     : raySet.getMethod("random", meshClass, int.class).invoke(null, mesh, 1_000_000);
             Supplier<Object> queries = () -> {
                 try {
-                    return query.invoke(structure, tris);
+                    return query.invoke(structure, queryArgs);
                 } catch (ReflectiveOperationException e) {
                     throw new IllegalStateException(e);
                 }
@@ -82,5 +86,13 @@ public final class RaysOldAgainstNew {
         }
         Object b = cl.loadClass("org.kdtree.spec.Builders").getMethod("create", String.class).invoke(null, spec);
         return cl.loadClass("org.kdtree.kdtree.KdTreeBuilder").getMethod("build", prims).invoke(b, mesh);
+    }
+
+    /** {@return the structure's silent query method}: {@code query()} now, {@code query(Intersector)} in older jars */
+    private static Method findQuery(Class<?> structure) throws NoSuchMethodException {
+        for (Method m : structure.getMethods())
+            if (m.getName().equals("query") && (m.getParameterCount() == 0
+                    || m.getParameterCount() == 1 && m.getParameterTypes()[0].getSimpleName().equals("Intersector"))) return m;
+        throw new NoSuchMethodException("query");
     }
 }

@@ -6,8 +6,7 @@ import java.nio.file.Path;
 import java.util.ArrayList;
 import java.util.List;
 import java.util.function.ToDoubleFunction;
-import org.kdtree.tradeoff.TradeoffChart;
-import org.kdtree.tradeoff.TradeoffResult;
+import org.kdtree.tradeoff.Tradeoff;
 
 /**
  * Redraws a trade-off chart from the CSV the {@code tradeoff} command wrote, so that a chart can
@@ -31,18 +30,18 @@ public final class TradeoffChartFromCsv {
             System.exit(2);
         }
         int triangles = Integer.parseInt(args[1]);
-        List<TradeoffResult> results = new ArrayList<>();
+        List<Tradeoff.Result> results = new ArrayList<>();
         List<String> lines = Files.readAllLines(Path.of(args[0]));
         // Columns by name: files written before boxes_per_ray was added have none (a kd-tree's 0).
         List<String> header = List.of(lines.get(0).split(","));
         for (String line : lines.subList(1, lines.size())) {
             String[] f = line.split(",", header.size());   // the last field, the settings, is quoted and may hold commas
             ToDoubleFunction<String> col = name -> header.contains(name) ? Double.parseDouble(f[header.indexOf(name)]) : 0;
-            results.add(new TradeoffResult(f[0], f[header.size() - 1], col.applyAsDouble("build_ms"), col.applyAsDouble("expected_cost"),
+            results.add(new Tradeoff.Result(f[0], f[header.size() - 1], col.applyAsDouble("build_ms"), col.applyAsDouble("expected_cost"),
                     (int) col.applyAsDouble("nodes"), (int) col.applyAsDouble("leaves"), (long) col.applyAsDouble("memory_bytes"),
                     col.applyAsDouble("nodes_per_ray"), col.applyAsDouble("tests_per_ray"), col.applyAsDouble("boxes_per_ray"),
                     col.applyAsDouble("mrays_per_s") * 1e6, triangles));
         }
-        TradeoffChart.write(results, args[2], 10, args[3] + " · data: " + Path.of(args[0]).getFileName(), Path.of(args[4]));
+        Tradeoff.writeChart(results, args[2], 10, args[3] + " · data: " + Path.of(args[0]).getFileName(), Path.of(args[4]));
     }
 }

@@ -32,7 +32,7 @@ import org.openjdk.jmh.annotations.Warmup;
 @OutputTimeUnit(TimeUnit.MILLISECONDS)
 @Warmup(iterations = 2)
 @Measurement(iterations = 5)
-// The module lets a JDK 25 fork take the vector path (org.kdtree.accel.Vectorization); JDK 17 stays scalar.
+// The module lets a JDK 25 fork take the vector path (org.kdtree.bvh.Vectorization); JDK 17 stays scalar.
 @Fork(value = 1, jvmArgsAppend = {"-Xmx6g", "--add-modules=jdk.incubator.vector"})
 public class TraversalBenchmark {
     @Param({"surface"})
@@ -53,7 +53,7 @@ public class TraversalBenchmark {
     @Setup(Level.Trial)
     public void setUp() {
         TriangleMesh m = BenchScenes.make(mesh, n);
-        RayQuery query = BuildBenchmark.structure(builder, m).query(new TriangleIntersector(m));
+        RayQuery query = BuildBenchmark.structure(builder, m).query();
         batch = new RayBatch(1, () -> query);
         set = rays.equals("P") ? RaySet.primary(m, RaySet.SPEC_IMAGE) : RaySet.random(m, RaySet.SPEC_RANDOM_RAYS);
     }

@@ -38,20 +38,22 @@ public interface AccelerationStructure {
     TreeStats stats();
 
     /**
-     * A new query object for one thread, the fastest this structure has (silent: it reports nothing).
+     * A new query object for one thread, the fastest this structure has (silent: it reports
+     * nothing), over the primitives it was built over (bound once, at build time: a query takes
+     * no second copy of them).
      *
-     * @param prims the intersector of the primitives it was built over
      * @return the query
+     * @throws IllegalArgumentException if it was built over primitives no ray is traced against (points)
      */
-    RayQuery query(Intersector prims);
+    RayQuery query();
 
     /**
      * A new query object for one thread that reports every step to {@code listener} (the
-     * statistics per ray, the workbench's stepper); slower than {@link #query}.
+     * statistics per ray, the workbench's stepper); slower than {@link #query()}.
      *
-     * @param prims    the intersector of the primitives it was built over
      * @param listener is told each step of each query
      * @return the query
+     * @throws IllegalArgumentException if it was built over primitives no ray is traced against (points)
      */
-    RayQuery query(Intersector prims, TraversalListener listener);
+    RayQuery query(TraversalListener listener);
 }

@@ -27,7 +27,7 @@ import org.kdtree.shape.ShapeKind;
  * <p>{@code Hit.u} is the parameter along a hit segment or edge (0 at its first end); for a hit
  * from inside, u and v are 0.
  */
-public final class Shape2DIntersector implements Intersector {
+final class Shape2DIntersector implements Intersector {
 
     private final int[] kind;
     /** Up to three vertices (x, y) per shape; rectangles store their two corners. */

@@ -3,6 +3,7 @@ package org.kdtree.accel;
 import java.math.BigDecimal;
 import org.kdtree.geom.Ray;
 import org.kdtree.geom.Tolerance;
+import org.kdtree.shape.Primitives;
 import org.kdtree.shape.TriangleMesh;
 
 /**
@@ -33,15 +34,24 @@ public final class TriangleIntersector implements Intersector {
      * @param mesh the triangles
      */
     public TriangleIntersector(TriangleMesh mesh) {
-        this.size = mesh.size();
-        this.corners = flatCorners(mesh);
+        this(corners(mesh));
+    }
+
+    /**
+     * An intersector over corners as {@link #corners(TriangleMesh)} makes them, read in place:
+     * a structure that also inlines the test over the same array (its hot loop) keeps one copy.
+     *
+     * @param corners nine doubles per triangle, NaN for a degenerate one; the caller never changes them
+     */
+    public TriangleIntersector(double[] corners) {
+        if (corners.length % 9 != 0) throw new IllegalArgumentException("corners come nine per triangle, not " + corners.length);
+        this.size = corners.length / 9;
+        this.corners = corners;
     }
 
     @Override public int dimension() { return 3; }
     @Override public int size() { return size; }
 
-    /** {@return x, y, z of corners 0, 1, 2 per triangle (NaN for degenerate ones)}; do not modify. */
-    public double[] cornerArray() { return corners; }
 
     /**
      * {@return whether triangle {@code t} has zero area and is therefore never hit}
@@ -147,7 +157,20 @@ public final class TriangleIntersector implements Intersector {
         return found;
     }
 
-    private static double[] flatCorners(TriangleMesh mesh) {
+    /**
+     * {@return a new array of the corners ({@link #corners(TriangleMesh)}) if {@code primitives} is a mesh, else null}
+     * @param primitives any primitives
+     */
+    public static double[] cornersOf(Primitives primitives) {
+        return primitives instanceof TriangleMesh mesh ? corners(mesh) : null;
+    }
+
+    /**
+     * {@return a new array of the mesh's corners}: x, y, z of corners 0, 1, 2 per triangle, in
+     * triangle order, NaN for a zero-area triangle (which then fails every comparison of {@link #test})
+     * @param mesh the triangles
+     */
+    public static double[] corners(TriangleMesh mesh) {
         int n = mesh.size();
         double[] c = new double[9 * n];
         for (int t = 0; t < n; t++) {

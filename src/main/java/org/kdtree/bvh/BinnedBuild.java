@@ -86,7 +86,7 @@ final class BinnedBuild {
         } else {
             run.node(root, 0, m, 0, run.new Scratch());
         }
-        return Bvh.of(k, root, run.order, settings);
+        return Bvh.of(prims, root, run.order, settings);
     }
 
     /** The scratch of one task: bin counts and boxes per axis, the sweep's suffix areas. */

@@ -8,8 +8,8 @@ import org.kdtree.accel.RayQuery;
 import org.kdtree.accel.TraversalListener;
 import org.kdtree.accel.TreeStats;
 import org.kdtree.accel.TriangleIntersector;
-import org.kdtree.accel.Vectorization;
 import org.kdtree.geom.Box;
+import org.kdtree.shape.Primitives;
 
 /**
  * A bounding volume hierarchy, immutable, in two layouts of flat arrays:
@@ -38,12 +38,16 @@ public final class Bvh implements AccelerationStructure {
     private final CostModel costModel;
     private final WideNodes wide;
     private TreeStats stats;
-    /** The corner array last copied into leaf order, and its copy ({@link #leafOrderedCorners}). */
-    private double[] cornerSource, leafCorners;
+    /** What it was built over; its ray tests are made from them once, on the first query. */
+    private final Primitives built;
+    private Intersector intersector;
+    /** A mesh's corners in leaf order ({@link #leafCorners}), made with {@link #intersector}. */
+    private double[] leafCorners;
     private PairNodes pairs;
     private WideNodes laneNodes;
 
-    private Bvh(int k, int nodes, int[] primitives, CostModel costModel, BuildNode root, int width) {
+    private Bvh(Primitives built, int k, int nodes, int[] primitives, CostModel costModel, BuildNode root, int width) {
+        this.built = built;
         this.k = k;
         this.box = new double[2 * k * nodes];
         this.link = new int[nodes];
@@ -54,8 +58,8 @@ public final class Bvh implements AccelerationStructure {
         this.wide = new WideNodes(this, width);
     }
 
-    static Bvh of(int k, BuildNode root, int[] primitives, BvhBuilder settings) {
-        return new Bvh(k, root.size(), primitives, settings.costModel(), root, settings.width());
+    static Bvh of(Primitives built, BuildNode root, int[] primitives, BvhBuilder settings) {
+        return new Bvh(built, built.dimension(), root.size(), primitives, settings.costModel(), root, settings.width());
     }
 
     /** Writes {@code n} at {@code index}, its children at {@code next}; returns the subtree's depth. */
@@ -185,17 +189,27 @@ public final class Bvh implements AccelerationStructure {
     }
 
     /**
-     * The triangles' corners (9 per triangle, as {@link TriangleIntersector#cornerArray()}) copied
-     * into leaf order, so that the wide traversal reads a leaf's triangles from one stretch of
-     * memory; made once per corner array and shared by every query over it.
+     * The ray tests of the primitives it was built over, made once; over a mesh, also its corners
+     * ({@link TriangleIntersector#corners}) copied into leaf order ({@link #leafCorners}).
      */
-    synchronized double[] leafOrderedCorners(double[] corners) {
-        if (cornerSource != corners) {
-            double[] c = new double[9 * primitives.length];
-            for (int r = 0; r < primitives.length; r++) System.arraycopy(corners, 9 * primitives[r], c, 9 * r, 9);
-            leafCorners = c;
-            cornerSource = corners;
+    synchronized Intersector intersector() {
+        if (intersector == null) {
+            double[] corners = TriangleIntersector.cornersOf(built);
+            intersector = Intersector.of(built, corners);
+            if (corners != null) {
+                leafCorners = new double[9 * primitives.length];
+                for (int r = 0; r < primitives.length; r++) System.arraycopy(corners, 9 * primitives[r], leafCorners, 9 * r, 9);
+            }
         }
+        return intersector;
+    }
+
+    /**
+     * {@return the triangles' corners, 9 per triangle, in leaf order}, so that the fast traversals
+     * read a leaf's triangles from one stretch of memory; null unless built over a mesh
+     */
+    synchronized double[] leafCorners() {
+        intersector();
         return leafCorners;
     }
 
@@ -211,25 +225,19 @@ public final class Bvh implements AccelerationStructure {
 
     /**
      * The fastest query: over a triangle mesh, the vector traversal when this JVM has the Vector
-     * API ({@link org.kdtree.accel.Vectorization}; as many children per node as its lanes), else
+     * API ({@link org.kdtree.bvh.Vectorization}; as many children per node as its lanes), else
      * the wide layout's traversal (the compact binary one at width 2) with the triangle test inlined, which also traces packets of coherent rays
      * ({@link org.kdtree.accel.PacketQuery}); otherwise the binary layout's, with any {@link Intersector}.
      */
-    @Override public RayQuery query(Intersector prims) {
-        requireDimension(prims);
-        if (prims instanceof TriangleIntersector t)
-            return new PacketTraversal(this, t, VectorPath.enabled() && k == 3 ? VectorPath.query(this, t)
-                    : width() == 2 ? new PairTraversal(this, t) : new WideTraversal(this, t));
-        return new BvhTraverser(this, prims, TraversalListener.NONE);
+    @Override public RayQuery query() {
+        Intersector prims = intersector();
+        if (prims instanceof TriangleIntersector)
+            return new PacketTraversal(this, VectorPath.enabled() ? VectorPath.query(this)
+                    : width() == 2 ? new PairTraversal(this) : new WideTraversal(this));
+        return new BvhTraverser(this, TraversalListener.NONE);
     }
 
-    @Override public RayQuery query(Intersector prims, TraversalListener listener) {
-        requireDimension(prims);
-        return new BvhTraverser(this, prims, Objects.requireNonNull(listener, "listener"));
-    }
-
-    private void requireDimension(Intersector prims) {
-        if (prims.dimension() != k)
-            throw new IllegalArgumentException("a " + k + "-D hierarchy cannot trace " + prims.dimension() + "-D primitives");
+    @Override public RayQuery query(TraversalListener listener) {
+        return new BvhTraverser(this, Objects.requireNonNull(listener, "listener"));
     }
 }

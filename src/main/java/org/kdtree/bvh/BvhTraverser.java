@@ -32,9 +32,10 @@ final class BvhTraverser implements RayQuery {
     private double enter, exit;
     private final double[] interval = new double[2];
 
-    BvhTraverser(Bvh bvh, Intersector prims, TraversalListener listener) {
+    /** A traversal of {@code bvh} over the primitives it was built over, telling {@code listener} each step. */
+    BvhTraverser(Bvh bvh, TraversalListener listener) {
         this.bvh = bvh;
-        this.prims = prims;
+        this.prims = bvh.intersector();
         this.listener = listener;
         this.k = bvh.dimension();
         this.box = bvh.boxArray();

@@ -56,11 +56,11 @@ final class PacketTraversal implements PacketQuery {
     private final Hit hit = new Hit();
     private final Ray ray = new Ray(3);
 
-    PacketTraversal(Bvh bvh, TriangleIntersector tris, RayQuery single) {
+    PacketTraversal(Bvh bvh, RayQuery single) {
         this.single = single;
         words = bvh.pairs().words;
         prim = bvh.primitiveArray();
-        corners = bvh.leafOrderedCorners(tris.cornerArray());
+        corners = bvh.leafCorners();
         empty = bvh.primitiveCount() == 0;
         int depth = bvh.maxDepth() + 2;
         stackEntry = new int[depth];

@@ -16,7 +16,7 @@ import org.kdtree.geom.Tolerance;
  * beyond the closest hit is dropped when it is popped. Intervals combine with plain compares
  * (no {@code Math.max}/{@code min}: with no NaN bound and t &gt;= 0 a compare is exact, and
  * cheaper). Leaves test their triangles from the corners in leaf order
- * ({@link Bvh#leafOrderedCorners}) with the one watertight test.
+ * ({@link Bvh#leafCorners}) with the one watertight test.
  *
  * <p>Box intervals are widened by {@link Tolerance#TRAVERSAL_SLACK} as factors on a
  * non-negative interval, as in {@link WideTraversal}; rays with a zero direction component or a
@@ -37,14 +37,14 @@ final class PairTraversal implements RayQuery {
     private final Hit scratch = new Hit();
     private final BvhTraverser general;
 
-    PairTraversal(Bvh bvh, TriangleIntersector tris) {
+    PairTraversal(Bvh bvh) {
         words = bvh.pairs().words;
         prim = bvh.primitiveArray();
-        corners = bvh.leafOrderedCorners(tris.cornerArray());
+        corners = bvh.leafCorners();
         empty = bvh.primitiveCount() == 0;
         stackEntry = new int[bvh.maxDepth() + 2];
         stackT = new double[bvh.maxDepth() + 2];
-        general = new BvhTraverser(bvh, tris, TraversalListener.NONE);
+        general = new BvhTraverser(bvh, TraversalListener.NONE);
     }
 
     @Override public boolean closestHit(Ray ray, double tMin, double tMax, Hit hit) {

@@ -4,8 +4,6 @@ import java.lang.invoke.MethodHandle;
 import java.lang.invoke.MethodHandles;
 import java.lang.invoke.MethodType;
 import org.kdtree.accel.RayQuery;
-import org.kdtree.accel.TriangleIntersector;
-import org.kdtree.accel.Vectorization;
 
 /**
  * The BVH's vector traversal, found at run time: {@code VectorTraversal} lives in its own source
@@ -14,7 +12,7 @@ import org.kdtree.accel.Vectorization;
  * Java 17 bytecode and runs without it.
  */
 final class VectorPath {
-    /** {@code VectorTraversal(Bvh, TriangleIntersector)}, or null on the Java 17 path. */
+    /** {@code VectorTraversal(Bvh)}, or null on the Java 17 path. */
     private static final MethodHandle MAKE = find();
     /** How many children the vector traversal tests at once (its lanes), or 0. */
     static final int LANES = lanes();
@@ -26,7 +24,7 @@ final class VectorPath {
         if (!Vectorization.enabled()) return null;
         try {
             Class<?> c = Class.forName("org.kdtree.bvh.VectorTraversal");
-            return MethodHandles.lookup().findConstructor(c, MethodType.methodType(void.class, Bvh.class, TriangleIntersector.class));
+            return MethodHandles.lookup().findConstructor(c, MethodType.methodType(void.class, Bvh.class));
         } catch (ReflectiveOperationException | LinkageError e) {
             Vectorization.unavailable("the vector traversal did not load: " + e);
             return null;
@@ -48,10 +46,10 @@ final class VectorPath {
         return LANES > 0;
     }
 
-    /** {@return the vector traversal of {@code bvh} over {@code tris}}; only when {@link #enabled}. */
-    static RayQuery query(Bvh bvh, TriangleIntersector tris) {
+    /** {@return the vector traversal of {@code bvh} over its triangles}; only when {@link #enabled}. */
+    static RayQuery query(Bvh bvh) {
         try {
-            return (RayQuery) MAKE.invoke(bvh, tris);
+            return (RayQuery) MAKE.invoke(bvh);
         } catch (RuntimeException | Error e) {
             throw e;
         } catch (Throwable e) {

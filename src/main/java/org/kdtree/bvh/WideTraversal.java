@@ -20,7 +20,7 @@ final class WideTraversal implements RayQuery {
 
     private final int width, stride, refs;
     private final int[] words, prim;
-    /** The triangles' corners in leaf order ({@link Bvh#leafOrderedCorners}). */
+    /** The triangles' corners in leaf order ({@link Bvh#leafCorners}). */
     private final double[] corners;
     private final boolean empty;
     /** Saved entries: a wide node's index, or {@code -1 - word} for a leaf child (the word of its reference); where the ray enters it. */
@@ -35,25 +35,25 @@ final class WideTraversal implements RayQuery {
     /** The slack as factors on a non-negative interval: {@code t0 (1 - slack) <= t1 (1 + slack)}. */
     private static final double SHRINK = 1 - SLACK, GROW = 1 + SLACK;
 
-    WideTraversal(Bvh bvh, TriangleIntersector tris) {
-        this(bvh, bvh.wide(), tris);
+    WideTraversal(Bvh bvh) {
+        this(bvh, bvh.wide());
     }
 
     /** The traversal of {@code w}, a wide layout of {@code bvh} (the vector path's width, for comparing the two). */
-    WideTraversal(Bvh bvh, WideNodes w, TriangleIntersector tris) {
+    WideTraversal(Bvh bvh, WideNodes w) {
         width = w.width;
         stride = w.stride;
         refs = w.refs;
         words = w.words;
         prim = bvh.primitiveArray();
-        corners = bvh.leafOrderedCorners(tris.cornerArray());
+        corners = bvh.leafCorners();
         empty = bvh.primitiveCount() == 0;
         int stack = (bvh.maxDepth() + 1) * (width - 1) + 2;
         stackEntry = new int[stack];
         stackT = new double[stack];
         hitEntry = new int[width];
         hitT = new double[width];
-        general = new BvhTraverser(bvh, tris, org.kdtree.accel.TraversalListener.NONE);
+        general = new BvhTraverser(bvh, org.kdtree.accel.TraversalListener.NONE);
     }
 
     @Override public boolean closestHit(Ray ray, double tMin, double tMax, Hit hit) {

@@ -45,8 +45,8 @@ final class TreeInspector {
                 interiors.add(new Interior(node, depth, voxel.copy(), axis, split));
             }
 
-            @Override public void leaf(int node, int depth, Box voxel, int[] refs, int from, int to) {
-                Leaf l = new Leaf(node, depth, voxel.copy(), java.util.Arrays.copyOfRange(refs, from, to));
+            @Override public void leaf(int node, int depth, Box voxel, int from, int to) {
+                Leaf l = new Leaf(node, depth, voxel.copy(), tree.leafPrimitives(node));
                 leaves.add(l);
                 leafByNode.put(node, l);
             }

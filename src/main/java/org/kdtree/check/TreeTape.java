@@ -272,7 +272,7 @@ public abstract class TreeTape {
                         if (budgetLeaves < 0 || budgetLeaves > MOST_NODES) throw new Mismatch("build " + record + " is malformed");
                         for (int i = 0; i < budgetLeaves; i++) w.budgetLeaf();
                         readNode(w, prims.dimension(), 0, new int[2], record);
-                        return w.finish(root, builder.costModel(), builder.name());
+                        return w.finish(prims, root, builder.costModel(), builder.name());
                     }
                     case FAULT -> throw fault(record);
                     case OTHER -> {

@@ -39,7 +39,7 @@ final class BruteCheck {
             Future<?>[] f = new Future<?>[threads];
             for (int th = 0; th < threads; th++) {
                 int id = th;
-                var own = tree.query(tris);
+                var own = tree.query();
                 f[th] = pool.submit(() -> {
                     Ray ray = new Ray(3);
                     Hit a = new Hit(), b = new Hit();

@@ -4,9 +4,8 @@ import java.io.IOException;
 import java.nio.file.Path;
 import java.util.Locale;
 import org.kdtree.files.AtomicFile;
-import org.kdtree.files.SameFile;
 import org.kdtree.io.FileKind;
-import org.kdtree.io.ObjMeshReader;
+import org.kdtree.io.PrimitivesReader;
 import org.kdtree.shape.TriangleMesh;
 
 /** The files the commands read and write, checked before any work so that a mistake costs one line, not a run. */
@@ -29,7 +28,7 @@ final class CommandFiles {
         requireNotFolder("MESH", mesh);
         if (FileKind.of(mesh) != FileKind.OBJ)
             throw new IllegalArgumentException(mesh + ": " + command + " traces rays through a triangle mesh; give an OBJ file");
-        TriangleMesh m = ObjMeshReader.read(mesh);
+        TriangleMesh m = PrimitivesReader.readMesh(mesh);
         if (m.size() == 0) throw new IllegalArgumentException(mesh + ": the mesh has no triangles (no 'f' lines)");
         return m;
     }

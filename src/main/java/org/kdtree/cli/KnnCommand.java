@@ -5,7 +5,7 @@ import java.nio.file.Path;
 import java.util.Locale;
 import java.util.concurrent.Callable;
 import org.kdtree.files.AtomicFile;
-import org.kdtree.io.PointCsvReader;
+import org.kdtree.io.PrimitivesReader;
 import org.kdtree.kdtree.KdTreeBuilder;
 import org.kdtree.limits.Limits;
 import org.kdtree.points.NearestQuery;
@@ -59,8 +59,8 @@ final class KnnCommand implements Callable<Integer> {
         CommandFiles.requireWritable("--out", outFile);
         CommandFiles.requireNotInput("--out", outFile, "POINTS", pointsFile);
         CommandFiles.requireNotInput("--out", outFile, "--queries", queriesFile);
-        PointsKd points = PointCsvReader.read(CommandFiles.requireNotFolder("POINTS", pointsFile));
-        PointsKd queries = PointCsvReader.read(CommandFiles.requireNotFolder("--queries", queriesFile));
+        PointsKd points = PrimitivesReader.readPoints(CommandFiles.requireNotFolder("POINTS", pointsFile));
+        PointsKd queries = PrimitivesReader.readPoints(CommandFiles.requireNotFolder("--queries", queriesFile));
         if (queries.dimension() != points.dimension())
             throw new IllegalArgumentException(queriesFile + ": the queries are " + queries.dimension() + "-D, the points "
                     + points.dimension() + "-D (" + pointsFile + ")");

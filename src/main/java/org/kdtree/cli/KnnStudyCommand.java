@@ -5,18 +5,14 @@ import java.util.ArrayList;
 import java.util.List;
 import java.util.Locale;
 import java.util.concurrent.Callable;
-import org.kdtree.io.PointCsvReader;
+import org.kdtree.io.PrimitivesReader;
 import org.kdtree.kdtree.KdTreeBuilder;
 import org.kdtree.limits.Limits;
 import org.kdtree.points.PointTree;
 import org.kdtree.shape.PointsKd;
 import org.kdtree.tradeoff.ChartFile;
-import org.kdtree.tradeoff.DimensionChart;
-import org.kdtree.tradeoff.DimensionResult;
 import org.kdtree.tradeoff.DimensionSweep;
 import org.kdtree.tradeoff.GeneratedPoints;
-import org.kdtree.tradeoff.NeighbourChart;
-import org.kdtree.tradeoff.NeighbourResult;
 import org.kdtree.tradeoff.NeighbourStudy;
 import picocli.CommandLine.Command;
 import picocli.CommandLine.Mixin;
@@ -93,9 +89,9 @@ final class KnnStudyCommand implements Callable<Integer> {
         KdTreeBuilder b = options.spec().create();
         if (dimensions != null) return sweep(b);
         PointsKd points = generate != null ? kind().points(n, dimension, seed)
-                : PointCsvReader.read(CommandFiles.requireNotFolder("POINTS", pointsFile));
+                : PrimitivesReader.readPoints(CommandFiles.requireNotFolder("POINTS", pointsFile));
         PointsKd queries = generate != null ? kind().queries(queryCount, dimension, seed)
-                : PointCsvReader.read(CommandFiles.requireNotFolder("--queries", queriesFile));
+                : PrimitivesReader.readPoints(CommandFiles.requireNotFolder("--queries", queriesFile));
         if (queries.dimension() != points.dimension())
             throw new IllegalArgumentException(queriesFile + ": the queries are " + queries.dimension() + "-D, the points "
                     + points.dimension() + "-D (" + pointsFile + ")");
@@ -157,7 +153,7 @@ final class KnnStudyCommand implements Callable<Integer> {
         System.out.printf(Locale.ROOT, "data: %s, %,d points, %,d queries, %d-D, k %d, builder %s, %d run(s), one thread%n",
                 dataName(), tree.size(), queries.size(), tree.dimension(), k, b.name(), runs);
         int steps = 3 + budgets.size() + (epsilons == null ? 0 : epsilons.size());
-        List<NeighbourResult> results = new ArrayList<>();
+        List<NeighbourStudy.Result> results = new ArrayList<>();
         StudyFile table = new StudyFile(csvFile());
         try (ProgressBar bar = progress.bar(steps, "steps")) {
             bar.step(0, "exact answers (brute force)");
@@ -178,7 +174,7 @@ final class KnnStudyCommand implements Callable<Integer> {
         table.finish(NeighbourStudy.csv(results));
         String caption = ChartFile.caption(String.format(Locale.ROOT, "%s: %,d points, %d-D, %,d queries, k %d, builder %s; median of %d run%s",
                 dataName(), tree.size(), tree.dimension(), queries.size(), k, b.name(), runs, runs == 1 ? "" : "s"), 1);
-        ChartFile.write(NeighbourChart.chart(results, dataName() + ": recall at k = " + k + " against queries per second"), caption, chartFile());
+        NeighbourStudy.writeChart(results, dataName() + ": recall at k = " + k + " against queries per second", caption, chartFile());
         System.out.println("wrote " + csvFile() + " and " + chartFile());
         String warning = tooShortToTime(results, queries.size());
         if (warning != null) System.out.println(warning);
@@ -192,9 +188,9 @@ final class KnnStudyCommand implements Callable<Integer> {
      * {@return a warning if a timed pass of some search took under {@link #SHORTEST_PASS_SECONDS}}
      * (a small input: its queries per second and speed-ups mislead), or null
      */
-    static String tooShortToTime(List<NeighbourResult> results, int queries) {
+    static String tooShortToTime(List<NeighbourStudy.Result> results, int queries) {
         double shortest = Double.POSITIVE_INFINITY;
-        for (NeighbourResult r : results)
+        for (NeighbourStudy.Result r : results)
             if (r.queriesPerSecond() > 0) shortest = Math.min(shortest, queries / r.queriesPerSecond());
         if (!(shortest < SHORTEST_PASS_SECONDS)) return null;
         return String.format(Locale.ROOT, "warning: a timed pass took only %.2f ms (%,d queries): too short to time well, so the "
@@ -203,10 +199,10 @@ final class KnnStudyCommand implements Callable<Integer> {
     }
 
     /** Announces step {@code step} on the bar, measures it, keeps its row, and prints its line above the bar. */
-    private static void measure(ProgressBar bar, int step, String name, List<NeighbourResult> results,
-                                java.util.function.Supplier<NeighbourResult> what, StudyFile table) throws java.io.IOException {
+    private static void measure(ProgressBar bar, int step, String name, List<NeighbourStudy.Result> results,
+                                java.util.function.Supplier<NeighbourStudy.Result> what, StudyFile table) throws java.io.IOException {
         bar.step(step, name);
-        NeighbourResult r = what.get();
+        NeighbourStudy.Result r = what.get();
         results.add(r);
         table.progress(NeighbourStudy.csv(results));
         bar.print(System.out, String.format(Locale.ROOT, "%-24s %8.4f %14.0f %10.2f %12.1f", r.name(), r.recall(),
@@ -218,12 +214,12 @@ final class KnnStudyCommand implements Callable<Integer> {
                 kind().label(), n, queryCount, k, b.name(), runs);
         System.out.printf(Locale.ROOT, "%9s %14s %14s %10s %12s%n", "dimension", "exact q/s", "brute q/s", "speed-up", "leaves/query");
         DimensionSweep sweep = new DimensionSweep(kind(), n, queryCount, k, runs, seed, b);
-        List<DimensionResult> results = new ArrayList<>();
+        List<DimensionSweep.Result> results = new ArrayList<>();
         StudyFile table = new StudyFile(csvFile());
         try (ProgressBar bar = progress.bar(dimensions.size(), "dimensions")) {
             for (int i = 0; i < dimensions.size(); i++) {
                 bar.step(i, dimensions.get(i) + "-D");
-                DimensionResult r = sweep.measure(dimensions.get(i));
+                DimensionSweep.Result r = sweep.measure(dimensions.get(i));
                 results.add(r);
                 table.progress(DimensionSweep.csv(results));
                 bar.print(System.out, String.format(Locale.ROOT, "%9d %14.0f %14.0f %10.2f %12.1f", r.dimension(),
@@ -233,8 +229,7 @@ final class KnnStudyCommand implements Callable<Integer> {
         table.finish(DimensionSweep.csv(results));
         String caption = ChartFile.caption(String.format(Locale.ROOT, "%s points: %,d, %,d queries, k %d, builder %s; median of %d run%s",
                 kind().label(), n, queryCount, k, b.name(), runs, runs == 1 ? "" : "s"), 1);
-        ChartFile.write(DimensionChart.chart(results, "Where kd-trees stop helping: exact search against brute force ("
-                + kind().label() + ")"), caption, chartFile());
+        sweep.writeChart(results, caption, chartFile());
         System.out.println("wrote " + csvFile() + " and " + chartFile());
         return 0;
     }

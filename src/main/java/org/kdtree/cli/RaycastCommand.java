@@ -96,7 +96,7 @@ final class RaycastCommand implements Callable<Integer> {
             bar.step(0, "build");
             tree = spec.build(scene, deadlines.supervisor());
         }
-        RayQuery traverser = tree.query(new TriangleIntersector(scene));
+        RayQuery traverser = tree.query();
         try (BufferedReader in = Files.newBufferedReader(raysFile, StandardCharsets.UTF_8)) {
             if (hitsFile.toString().equals("-")) RayFile.trace(in, raysFile.toString(), traverser, new PrintWriter(System.out));
             else AtomicFile.writeText(hitsFile, out -> RayFile.trace(in, raysFile.toString(), traverser, new PrintWriter(out)));
@@ -109,14 +109,13 @@ final class RaycastCommand implements Callable<Integer> {
         Timing.Timed<AccelerationStructure> build;
         Timing.Timed<RayBatch.Checksum> pr, rr;
         RaySet p, r;
-        TriangleIntersector tris = new TriangleIntersector(scene);
         Supervisor supervisor = deadlines.supervisor();
         try (ProgressBar bar = progress.bar(3 * passes, "steps")) {
             build = Timing.median(timed.warmup, timed.runs, steps(bar, 0, "build"), () -> spec.build(scene, supervisor));
             p = RaySet.primary(scene, RaySet.SPEC_IMAGE);
             r = RaySet.random(scene, RaySet.SPEC_RANDOM_RAYS);
             AccelerationStructure built = build.value();
-            try (RayBatch batch = new RayBatch(threads, () -> built.query(tris))) {
+            try (RayBatch batch = new RayBatch(threads, built::query)) {
                 pr = Timing.median(timed.warmup, timed.runs, steps(bar, passes, "P rays"), () -> batch.trace(p));
                 rr = Timing.median(timed.warmup, timed.runs, steps(bar, 2 * passes, "R rays"), () -> batch.trace(r));
             }
@@ -134,7 +133,7 @@ final class RaycastCommand implements Callable<Integer> {
         // Which path traced: the BVH's vector traversal when the JVM has the Vector API, else the Java 17 one.
         System.err.println("# path: " + tree.describePath());
         if (verifyStride > 0) {
-            BruteCheck check = new BruteCheck(tris, tree, verifyStride, threads);
+            BruteCheck check = new BruteCheck(new TriangleIntersector(scene), tree, verifyStride, threads);
             System.err.println("# verify P: " + check.compare(p));
             System.err.println("# verify R: " + check.compare(r));
         }

@@ -5,7 +5,7 @@ import java.util.concurrent.Callable;
 import org.kdtree.accel.SharedSettings;
 import org.kdtree.io.BundledScenes;
 import org.kdtree.io.FileKind;
-import org.kdtree.io.SceneReader;
+import org.kdtree.io.PrimitivesReader;
 import org.kdtree.limits.Limits;
 import org.kdtree.render.RenderJob;
 import org.kdtree.render.Renderer;
@@ -56,7 +56,7 @@ final class RenderCommand implements Callable<Integer> {
         Path sceneFile = BundledScenes.resolve(scene);
         requireJsonScene(sceneFile);
         CommandFiles.requireNotInput("-o", output, "SCENE", sceneFile);
-        Scene s = SceneReader.read(sceneFile);
+        Scene s = PrimitivesReader.readScene(sceneFile);
         if (spp != null) s = s.withSamplesPerPixel(Limits.SAMPLES_PER_PIXEL.check("--spp", spp));
         if (rayDepth != null) s = s.withMaxDepth(Limits.RAY_DEPTH.check("--ray-depth", rayDepth));
         if (width != null || height != null) {

@@ -13,8 +13,6 @@ import org.kdtree.measure.RaySet;
 import org.kdtree.shape.TriangleMesh;
 import org.kdtree.tradeoff.ChartFile;
 import org.kdtree.tradeoff.Tradeoff;
-import org.kdtree.tradeoff.TradeoffChart;
-import org.kdtree.tradeoff.TradeoffResult;
 import org.kdtree.tradeoff.Variant;
 import picocli.CommandLine.Command;
 import picocli.CommandLine.Mixin;
@@ -123,11 +121,11 @@ final class TradeoffCommand implements Callable<Integer> {
                 "nodes", "nodes/r", "tests/r", "boxes/r", "Mrays/s", "1 r/tri ms", "10 r/tri", "100 r/tri");
         Tradeoff t = new Tradeoff(m, set, runs, threads, countedRays).supervisedBy(deadlines.supervisor());
         List<String> skipped = new ArrayList<>();
-        List<TradeoffResult> results = measureAll(t, variants, table, csvOut, skipped);
+        List<Tradeoff.Result> results = measureAll(t, variants, table, csvOut, skipped);
         table.finish(Tradeoff.csv(results));
         String caption = ChartFile.caption(String.format(Locale.ROOT, "%s, %,d triangles; %s rays x %,d; median of %d run%s",
                 base, m.size(), set.name(), set.size(), runs, runs == 1 ? "" : "s"), threads);
-        TradeoffChart.write(results, base + ": build time vs trace time (" + set.name() + " rays)", chartRaysPerTriangle,
+        Tradeoff.writeChart(results, base + ": build time vs trace time (" + set.name() + " rays)", chartRaysPerTriangle,
                 caption, pngOut);
         System.out.println("wrote " + csvOut + " and " + pngOut);
         if (!skipped.isEmpty())
@@ -142,14 +140,14 @@ final class TradeoffCommand implements Callable<Integer> {
      * its one line, its name added to {@code skipped}. A study stopped otherwise says where its
      * finished rows are.
      */
-    private List<TradeoffResult> measureAll(Tradeoff t, List<Variant> variants, StudyFile table, Path csvOut, List<String> skipped)
+    private List<Tradeoff.Result> measureAll(Tradeoff t, List<Variant> variants, StudyFile table, Path csvOut, List<String> skipped)
             throws java.io.IOException {
-        List<TradeoffResult> results = new ArrayList<>();
+        List<Tradeoff.Result> results = new ArrayList<>();
         BuilderFault firstFault = null;
         try (ProgressBar bar = progress.bar(variants.size(), "variants")) {
             for (int i = 0; i < variants.size(); i++) {
                 bar.step(i, variants.get(i).name());
-                TradeoffResult r;
+                Tradeoff.Result r;
                 try {
                     r = t.run(variants.get(i));
                 } catch (BuilderFault fault) {

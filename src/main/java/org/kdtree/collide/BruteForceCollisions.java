@@ -5,7 +5,7 @@ package org.kdtree.collide;
  * against, and the baseline whose cost ({@code size()} tests per query) they save. Same exact
  * tests, same tie rule (the smallest index among equally early contacts).
  */
-public final class BruteForceCollisions {
+final class BruteForceCollisions {
     private final Collider prims;
 
     /** @param prims the primitives and their exact tests */

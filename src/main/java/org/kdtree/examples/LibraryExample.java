@@ -2,7 +2,6 @@ package org.kdtree.examples;
 
 import java.nio.file.Path;
 import org.kdtree.accel.Hit;
-import org.kdtree.accel.TriangleIntersector;
 import org.kdtree.geom.Ray;
 import org.kdtree.io.BundledScenes;
 import org.kdtree.io.PrimitivesReader;
@@ -27,7 +26,7 @@ public final class LibraryExample {
         Path file = BundledScenes.resolve(args.length > 0 ? args[0] : "scenes:clustered-spheres");  // any folder
         TriangleMesh mesh = PrimitivesReader.readMesh(file);                                // .obj or .json: its triangles
         KdTree tree = new SahBuilder().quality(Quality.EXACT).build(mesh);                 // the talk's Kt, Ki, lambda
-        Traverser rays = new Traverser(tree, new TriangleIntersector(mesh));              // one per thread
+        Traverser rays = new Traverser(tree);                                              // one per thread
         double[] aim = new double[3];                                                       // triangle 0's centre
         for (int a = 0; a < 3; a++) aim[a] = (mesh.corner(0, 0, a) + mesh.corner(0, 1, a) + mesh.corner(0, 2, a)) / 3;
         Ray ray = new Ray(new double[] {aim[0], aim[1], aim[2] - 100}, new double[] {0, 0, 1});

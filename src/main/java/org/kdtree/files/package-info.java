@@ -1,8 +1,8 @@
 /**
  * How the library writes a user's files: whole or not at all ({@link org.kdtree.files.AtomicFile}:
  * a temporary file beside the target, moved into place atomically, so that an error, an
- * interruption or a second writer never leaves a mixed or half-written file), and whether an
- * output would overwrite an input ({@link org.kdtree.files.SameFile}).
+ * interruption or a second writer never leaves a mixed or half-written file). Whether an output
+ * would overwrite an input is the command line's check, before any work (its {@code SameFile}).
  *
  * <p>Layer 1 of docs/architecture.md: it uses no other package of the library, so that every
  * package that writes a file (io, render, tradeoff, gui, cli) may use it.

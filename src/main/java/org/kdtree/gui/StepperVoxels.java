@@ -66,7 +66,7 @@ final class StepperVoxels {
         Box[] out = new Box[tree.nodeCount()];
         tree.walk(new org.kdtree.kdtree.TreeVisitor() {
             @Override public void interior(int node, int depth, Box voxel, int axis, double split) { out[node] = voxel.copy(); }
-            @Override public void leaf(int node, int depth, Box voxel, int[] refs, int from, int to) { out[node] = voxel.copy(); }
+            @Override public void leaf(int node, int depth, Box voxel, int from, int to) { out[node] = voxel.copy(); }
         });
         return out;
     }

@@ -5,7 +5,6 @@ import java.util.List;
 import org.kdtree.accel.AccelerationStructure;
 import org.kdtree.accel.Hit;
 import org.kdtree.accel.RayQuery;
-import org.kdtree.accel.Shape2DIntersector;
 import org.kdtree.accel.TraversalListener;
 import org.kdtree.accel.TraversalStats;
 import org.kdtree.geom.Ray;
@@ -57,7 +56,7 @@ final class TraversalRecorder implements TraversalListener {
         TraversalRecorder rec = new TraversalRecorder();
         TraversalStats stats = new TraversalStats();
         Hit hit = new Hit();
-        RayQuery query = structure.query(new Shape2DIntersector(scene), new Both(rec, stats));
+        RayQuery query = structure.query(new Both(rec, stats));
         boolean found = query.closestHit(new Ray(2).set(ray[0], ray[1], ray[2], ray[3]), 0, Double.POSITIVE_INFINITY, hit);
         return new TraversalTrace(List.copyOf(rec.steps), stats.nodes, stats.leaves, stats.primitiveTests, stats.boxTests,
                 found ? hit.primitive : -1, found ? hit.t : Double.NaN);

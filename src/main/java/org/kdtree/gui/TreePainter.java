@@ -132,10 +132,10 @@ final class TreePainter {
                 }
             }
 
-            @Override public void leaf(int node, int depth, Box voxel, int[] refs, int from, int to) {
+            @Override public void leaf(int node, int depth, Box voxel, int from, int to) {
                 if (node == selected) {
                     found[0] = voxel.copy();
-                    for (int i = from; i < to; i++) highlighted.set(refs[i]);
+                    for (int i = from; i < to; i++) highlighted.set(tree.ref(i));
                 } else if (from == to) {
                     int x0 = (int) Math.round(v.screenX(voxel.min(0))), x1 = (int) Math.round(v.screenX(voxel.max(0)));
                     int y0 = (int) Math.round(v.screenY(voxel.max(1))), y1 = (int) Math.round(v.screenY(voxel.min(1)));
@@ -283,7 +283,7 @@ final class TreePainter {
                 if (n == node) out[0] = voxel.copy();
             }
 
-            @Override public void leaf(int n, int depth, Box voxel, int[] refs, int from, int to) {
+            @Override public void leaf(int n, int depth, Box voxel, int from, int to) {
                 if (n == node) out[0] = voxel.copy();
             }
         });

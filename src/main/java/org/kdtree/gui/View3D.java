@@ -30,14 +30,12 @@ import javax.swing.Timer;
 import org.kdtree.io.BundledScenes;
 import org.kdtree.io.FileKind;
 import org.kdtree.io.PrimitivesReader;
-import org.kdtree.io.SceneReader;
 import org.kdtree.kdtree.Supervisor;
 import org.kdtree.kdtree.Traverser;
 import org.kdtree.limits.Deadlines;
 import org.kdtree.render.Image;
 import org.kdtree.render.RenderJob;
 import org.kdtree.render.Renderer;
-import org.kdtree.render.Tracer;
 import org.kdtree.scene.Scene;
 import org.kdtree.shape.Primitives;
 import org.kdtree.spec.BuilderSpec;
@@ -45,7 +43,7 @@ import org.kdtree.spec.BuilderSpec;
 /**
  * The 3-D view: pick a scene (the bundled ones, those of a scenes folder, or a file opened with
  * File &gt; Open) and a builder. A JSON scene is rendered with the
- * library's ray tracer ({@link Tracer} over a {@link Traverser} per thread), tile by tile, the
+ * library's ray tracer ({@code render.Tracer} over a ray query per thread), tile by tile, the
  * image shown as it fills in, then the render's statistics (rays by kind, times, the tree). An
  * OBJ mesh, which has no camera, gets its tree built and its statistics shown.
  */
@@ -292,7 +290,7 @@ final class View3D extends JPanel {
      * cores; the picture shows the image as tiles complete, and Stop ends it after the tiles under way.
      */
     private String render(Path file, BuilderSpec b, int w) throws IOException {
-        Scene s = SceneReader.read(file);
+        Scene s = PrimitivesReader.readScene(file);
         int h = Math.max(1, (int) Math.round(w * (double) s.camera().height() / s.camera().width()));
         AtomicReference<Image> growing = new AtomicReference<>();
         AtomicInteger done = new AtomicInteger(), total = new AtomicInteger(1);

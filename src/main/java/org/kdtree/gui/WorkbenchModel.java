@@ -117,7 +117,7 @@ final class WorkbenchModel {
      * @throws java.io.IOException if the file cannot be read or is malformed
      */
     public void load(java.nio.file.Path file) throws java.io.IOException {
-        setScene(file.getFileName().toString(), org.kdtree.io.Scene2DReader.read(file).shapes());
+        setScene(file.getFileName().toString(), org.kdtree.io.PrimitivesReader.readScene2D(file).shapes());
     }
 
     /**

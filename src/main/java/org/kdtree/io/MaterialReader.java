@@ -39,7 +39,7 @@ import org.kdtree.scene.Vec3;
  * <p>The library itself is parsed by de.javagl:obj's {@link MtlReader}; a line-by-line check of
  * our own runs first, because that reader does not report where a malformed value is.
  */
-public final class MaterialReader {
+final class MaterialReader {
     private static final Set<String> COLORS = Set.of("Ka", "Kd", "Ks", "Ke", "Tf");
     private static final Set<String> SCALARS = Set.of("Ns", "Ni", "d", "Tr", "sharpness");
 

@@ -22,7 +22,7 @@ import org.kdtree.shape.TriangleMesh;
  * straight from the line into the receiver's flat arrays (a {@link Sink}), a million triangles
  * without an object per vertex, and every error names the file and line.
  */
-public final class ObjMeshReader {
+final class ObjMeshReader {
     private ObjMeshReader() {
     }
 

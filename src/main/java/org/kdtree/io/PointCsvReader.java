@@ -16,7 +16,7 @@ import org.kdtree.shape.PointsKd;
  * non-finite one) is an error naming the file and the line. Points are numbered from 0 in file
  * order. See docs/points.md.
  */
-public final class PointCsvReader {
+final class PointCsvReader {
     private PointCsvReader() {
     }
 

@@ -3,12 +3,17 @@ package org.kdtree.io;
 import java.io.IOException;
 import java.nio.file.Path;
 import java.util.Locale;
+import org.kdtree.scene.Scene;
+import org.kdtree.shape.PointsKd;
 import org.kdtree.shape.Primitives;
+import org.kdtree.shape.Scene2D;
 import org.kdtree.shape.TriangleMesh;
 
 /**
- * Reads the primitives of a file by its extension: {@code .obj} meshes, {@code .scene2d} 2-D
- * scenes and {@code .json} render scenes (their triangles).
+ * Every file the library reads, read by its kind ({@link FileKind}): the primitives of
+ * {@code .obj} meshes, {@code .scene2d} 2-D scenes and {@code .json} render scenes (their
+ * triangles), a render scene whole, and point sets ({@code .csv}). The one door to the readers of
+ * this package: each format has one reader, and every command and the workbench come through here.
  */
 public final class PrimitivesReader {
     private PrimitivesReader() {
@@ -41,6 +46,42 @@ public final class PrimitivesReader {
      *         no triangles), has another extension, or holds no triangle
      */
     public static TriangleMesh readMesh(Path file) throws IOException {
+        return mesh(file);
+    }
+
+    /**
+     * {@return the render scene of a {@code .json} file}: camera, lights, materials and the
+     * triangles of its objects (OBJ files it names are read relative to it)
+     *
+     * @param file the scene file (a bundled one too: {@link BundledScenes#resolve})
+     * @throws IOException if it cannot be read or is malformed, naming the file, line and field
+     */
+    public static Scene readScene(Path file) throws IOException {
+        return SceneReader.read(file);
+    }
+
+    /**
+     * {@return the 2-D scene of a {@code .scene2d} file}
+     *
+     * @param file the file
+     * @throws IOException if it cannot be read or is malformed, naming the file and line
+     */
+    public static Scene2D readScene2D(Path file) throws IOException {
+        return Scene2DReader.read(file);
+    }
+
+    /**
+     * {@return the points of a CSV file}: one point per line, comma-separated coordinates; blank
+     * lines and lines starting with {@code #} are skipped
+     *
+     * @param file the file
+     * @throws IOException if it cannot be read or is malformed, naming the file and line
+     */
+    public static PointsKd readPoints(Path file) throws IOException {
+        return PointCsvReader.read(file);
+    }
+
+    private static TriangleMesh mesh(Path file) throws IOException {
         FileKind kind = FileKind.of(file);
         if (kind == FileKind.OBJ) return ObjMeshReader.read(file);
         if (kind == FileKind.SCENE2D)

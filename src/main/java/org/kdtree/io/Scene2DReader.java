@@ -19,7 +19,7 @@ import org.kdtree.shape.Shape2D;
  * </pre>
  * Files end in {@code .scene2d} ({@link Scene2DWriter} writes them). See docs/scene-format.md.
  */
-public final class Scene2DReader {
+final class Scene2DReader {
     private Scene2DReader() {
     }
 

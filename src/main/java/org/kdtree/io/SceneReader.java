@@ -23,7 +23,7 @@ import org.kdtree.scene.Vec3;
  * Reads a JSON scene (docs/scene-format.md) into a {@link Scene}: all triangles of all objects
  * in one mesh with a material per triangle. Every error names the file, the line and the field.
  */
-public final class SceneReader {
+final class SceneReader {
     /** Generated triangles allowed in one scene (about 1.5 GB with the tree): a typo must not exhaust memory. */
     static final long MAX_TRIANGLES = 20_000_000;
     private final String file;

@@ -7,8 +7,10 @@ import org.kdtree.accel.Intersector;
 import org.kdtree.accel.RayQuery;
 import org.kdtree.accel.TraversalListener;
 import org.kdtree.accel.TreeStats;
+import org.kdtree.accel.TriangleIntersector;
 import org.kdtree.geom.Box;
 import org.kdtree.geom.Ray;
+import org.kdtree.shape.Primitives;
 
 /**
  * A built kd-tree: immutable flat arrays, in the spirit of pbrt's compact nodes.
@@ -19,9 +21,10 @@ import org.kdtree.geom.Ray;
  * partitioned with (a float would move it off the primitive bounds the builder chose, see
  * docs/traversal.md). {@link Nodes} is the layout, and the only code that decodes it.
  *
- * <p>The methods below answer node by node. Hot paths (traversal, point queries) hold the raw
- * {@link #nodeArray()} and {@link #refArray()} instead, read-only by convention, and decode them
- * with {@link Nodes} and this tree's {@link #axisBits()}.
+ * <p>The methods below answer node by node. Hot paths decode the flat arrays with {@link Nodes}
+ * and this tree's {@link #axisBits()} instead: the traversal reads them in place (this package),
+ * the point queries a copy they keep ({@link #nodeArray()}, {@link #refArray()}); no method hands
+ * out the tree's own arrays, so it is immutable.
  *
  * <p>As an {@link AccelerationStructure}, a sibling of the bounding volume hierarchy, its ray
  * queries are {@link Traverser}s.
@@ -33,13 +36,21 @@ public final class KdTree implements AccelerationStructure {
     private final Box bounds;
     private final CostModel cost;
     private final String builderName;
-    private final int[] nodes;
-    private final int[] refs;
+    /** The nodes, {@link Nodes}'s layout; read in place by this package's hot loops, never changed. */
+    final int[] nodes;
+    /** The leaves' primitive references, in leaf order; read in place by this package, never changed. */
+    final int[] refs;
     private final int budgetLeaves;
     private final int axisBits;
+    /** What it was built over; its ray tests are made from them once, on the first query. */
+    private final Primitives primitives;
+    private Intersector intersector;
+    /** A mesh's corners ({@link TriangleIntersector#corners}), read in place by the intersector and {@link MeshTraversal}. */
+    private double[] corners;
     private TreeStats stats;
 
-    KdTree(Box bounds, CostModel cost, String builderName, int[] nodes, int[] refs, int budgetLeaves) {
+    KdTree(Primitives primitives, Box bounds, CostModel cost, String builderName, int[] nodes, int[] refs, int budgetLeaves) {
+        this.primitives = primitives;
         this.budgetLeaves = budgetLeaves;
         this.bounds = bounds;
         this.cost = cost;
@@ -47,6 +58,24 @@ public final class KdTree implements AccelerationStructure {
         this.nodes = nodes;
         this.refs = refs;
         this.axisBits = Nodes.axisBits(bounds.dimension());
+    }
+
+    /**
+     * The ray tests of the primitives it was built over, made once (a mesh's corners are copied
+     * then, not during the build).
+     */
+    synchronized Intersector intersector() {
+        if (intersector == null) {
+            corners = TriangleIntersector.cornersOf(primitives);
+            intersector = Intersector.of(primitives, corners);
+        }
+        return intersector;
+    }
+
+    /** {@return the corners {@link MeshTraversal} inlines the triangle test over}, null unless built over a mesh */
+    synchronized double[] corners() {
+        intersector();
+        return corners;
     }
 
     /** {@return the width of the axis field of this tree's node words}: what {@link Nodes} decodes a word with */
@@ -135,11 +164,12 @@ public final class KdTree implements AccelerationStructure {
     public int ref(int i) { return refs[i]; }
 
     /**
-     * {@return the nodes, three ints each, as {@link Nodes} lays them out}: the raw array for flat hot loops; never modify it.
+     * {@return a copy of the nodes, three ints each, as {@link Nodes} lays them out}: for another
+     * package's flat hot loops (the point queries), which keep it
      */
-    public int[] nodeArray() { return nodes; }
-    /** {@return the shared leaf reference array (primitive indices), in leaf order}: the raw array; never modify it. */
-    public int[] refArray() { return refs; }
+    public int[] nodeArray() { return nodes.clone(); }
+    /** {@return a copy of the shared leaf reference array (primitive indices), in leaf order} */
+    public int[] refArray() { return refs.clone(); }
 
     /**
      * {@return the primitives referenced by a leaf node, as a new array}
@@ -160,7 +190,7 @@ public final class KdTree implements AccelerationStructure {
 
     private void walk(int node, int depth, Box voxel, TreeVisitor v) {
         if (isLeaf(node)) {
-            v.leaf(node, depth, voxel, refs, leafStart(node), leafEnd(node));
+            v.leaf(node, depth, voxel, leafStart(node), leafEnd(node));
             return;
         }
         int axis = axis(node);
@@ -195,12 +225,12 @@ public final class KdTree implements AccelerationStructure {
     /** {@return "kd-tree"} */
     @Override public String kind() { return "kd-tree"; }
 
-    /** {@return a {@link Traverser} over this tree and {@code prims}} */
-    @Override public RayQuery query(Intersector prims) { return new Traverser(this, prims); }
+    /** {@return a {@link Traverser} over this tree and the primitives it was built over} */
+    @Override public RayQuery query() { return new Traverser(this); }
 
-    /** {@return a {@link Traverser} over this tree and {@code prims} that reports every step to {@code listener}} */
-    @Override public RayQuery query(Intersector prims, TraversalListener listener) {
-        Traverser t = new Traverser(this, prims);
+    /** {@return a {@link Traverser} over this tree and its primitives that reports every step to {@code listener}} */
+    @Override public RayQuery query(TraversalListener listener) {
+        Traverser t = new Traverser(this);
         return new RayQuery() {
             @Override public boolean closestHit(Ray ray, double tMin, double tMax, Hit hit) {
                 return t.closestHit(ray, tMin, tMax, hit, listener);

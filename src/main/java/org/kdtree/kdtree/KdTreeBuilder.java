@@ -106,7 +106,7 @@ public abstract class KdTreeBuilder implements StructureBuilder {
                 pool.shutdown();
             }
         }
-        return out.finish(rootVoxel, costModel, name());
+        return out.finish(primitives, rootVoxel, costModel, name());
     }
 
     /** The root: every primitive with its own bounds, in the scene's box, with the whole reference budget. */

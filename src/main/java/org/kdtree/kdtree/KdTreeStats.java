@@ -46,7 +46,7 @@ final class KdTreeStats {
             weightedCost += cost.kt() * probability(voxel);
         }
 
-        @Override public void leaf(int node, int depth, Box voxel, int[] r, int from, int to) {
+        @Override public void leaf(int node, int depth, Box voxel, int from, int to) {
             leaves++;
             int n = to - from;
             if (n == 0) empty++;

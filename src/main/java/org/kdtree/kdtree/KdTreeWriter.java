@@ -3,6 +3,7 @@ package org.kdtree.kdtree;
 import java.util.Arrays;
 import org.kdtree.accel.CostModel;
 import org.kdtree.geom.Box;
+import org.kdtree.shape.Primitives;
 
 /**
  * Writes a kd-tree into flat arrays in depth-first order, as a builder's recursion emits it:
@@ -136,16 +137,19 @@ public final class KdTreeWriter {
     /**
      * Finishes the tree.
      *
+     * @param primitives what it was built over: its ray queries trace them
      * @param rootVoxel the scene box, the root's voxel
      * @param cost the Kt and Ki the tree reports its expected cost with
      * @param builderName the name of the builder, for reports
      * @return the tree
      */
-    public KdTree finish(Box rootVoxel, CostModel cost, String builderName) {
+    public KdTree finish(Primitives primitives, Box rootVoxel, CostModel cost, String builderName) {
+        if (primitives.dimension() != dimension)
+            throw new IllegalArgumentException(primitives.dimension() + "-D primitives for a writer of another dimension");
         if (rootVoxel.dimension() != dimension)
             throw new IllegalArgumentException("a " + rootVoxel.dimension() + "-D root for a writer of another dimension");
         if (nodeCount == 0) leaf(new int[0], 0);
-        return new KdTree(rootVoxel.copy(), cost, builderName, Arrays.copyOf(nodes, Nodes.INTS * nodeCount),
+        return new KdTree(primitives, rootVoxel.copy(), cost, builderName, Arrays.copyOf(nodes, Nodes.INTS * nodeCount),
                 Arrays.copyOf(refs, refCount), budgetLeaves);
     }
 

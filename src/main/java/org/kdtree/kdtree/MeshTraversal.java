@@ -16,7 +16,7 @@ final class MeshTraversal {
     private static final int BITS = Nodes.axisBits(3);
     private static final double SLACK = Traverser.SLACK;
 
-    /** The tree's nodes ({@link KdTree#nodeArray()}), read with {@link Nodes}. */
+    /** The tree's nodes, read with {@link Nodes}. */
     private final int[] nodes;
     private final int[] refs;
     private final double[] corners;
@@ -27,11 +27,11 @@ final class MeshTraversal {
     private final double[] org = new double[3], inv = new double[3];
     private final Hit scratch = new Hit();
 
-    MeshTraversal(KdTree tree, TriangleIntersector tris, Mailbox mailbox, int stackSize) {
+    MeshTraversal(KdTree tree, Mailbox mailbox, int stackSize) {
         if (tree.axisBits() != BITS) throw new IllegalArgumentException("a 3-D tree's axis field is " + BITS + " bits");
-        nodes = tree.nodeArray();
-        refs = tree.refArray();
-        corners = tris.cornerArray();
+        nodes = tree.nodes;
+        refs = tree.refs;
+        corners = tree.corners();
         Box b = tree.bounds();
         lx = b.min(0); ly = b.min(1); lz = b.min(2);
         hx = b.max(0); hy = b.max(1); hz = b.max(2);

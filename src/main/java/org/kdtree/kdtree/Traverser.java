@@ -35,7 +35,7 @@ import org.kdtree.geom.Tolerance;
  *
  * <p>An instance keeps per-ray scratch state (stack, mailbox) and allocates nothing per ray in
  * {@link #closestHit} and {@link #anyHit}: use one instance per thread (the tree and the
- * intersector are shared). For a {@link TriangleIntersector} without a listener, the queries run
+ * intersector are shared). Over a triangle mesh without a listener, the queries run
  * a specialised 3-D loop with the triangle test inlined; every other case runs the generic
  * k-dimensional loop, which reports each step to a {@link TraversalListener}.
  */
@@ -47,7 +47,7 @@ public final class Traverser implements RayQuery {
 
     private final KdTree tree;
     private final Intersector prims;
-    /** The tree's nodes ({@link KdTree#nodeArray()}), read with {@link Nodes}. */
+    /** The tree's nodes, read with {@link Nodes}. */
     private final int[] nodes;
     /** The tree's {@link KdTree#axisBits()}, which {@link Nodes} decodes a word with. */
     private final int bits;
@@ -64,19 +64,17 @@ public final class Traverser implements RayQuery {
     private double enter, exit;
 
     /**
-     * A traverser of {@code tree} over {@code prims}, the primitives it was built over.
+     * A traverser of {@code tree} over the primitives it was built over.
      *
      * @param tree the tree
-     * @param prims the intersector for the tree's primitives
-     * @throws IllegalArgumentException if their dimensions differ
+     * @throws IllegalArgumentException if it was built over points, which no ray is traced against
      */
-    public Traverser(KdTree tree, Intersector prims) {
-        tree.requireDimension(prims.dimension(), "primitives");
+    public Traverser(KdTree tree) {
         this.tree = tree;
-        this.prims = prims;
-        nodes = tree.nodeArray();
+        this.prims = tree.intersector();
+        nodes = tree.nodes;
         bits = tree.axisBits();
-        refs = tree.refArray();
+        refs = tree.refs;
         Box b = tree.bounds();
         int k = b.dimension();
         scene = new double[2 * k];
@@ -87,7 +85,7 @@ public final class Traverser implements RayQuery {
         mailbox = new Mailbox(prims.size());
         int depth = tree.stats().maxDepth() + 2;
         stack = new TraversalStack(depth);
-        fast = prims instanceof TriangleIntersector t ? new MeshTraversal(tree, t, mailbox, depth) : null;
+        fast = prims instanceof TriangleIntersector ? new MeshTraversal(tree, mailbox, depth) : null;
     }
 
     /** {@return the tree} */

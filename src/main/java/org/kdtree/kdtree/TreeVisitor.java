@@ -16,14 +16,14 @@ public interface TreeVisitor {
     void interior(int node, int depth, Box voxel, int axis, double split);
 
     /**
-     * A leaf: its primitives are {@code refs[from .. to)}. The arrays are the tree's own; do
-     * not modify them. The voxel box is reused between calls; copy it to keep it.
+     * A leaf: its primitives are the tree's {@link KdTree#ref(int) ref(from)} to {@code ref(to - 1)}
+     * ({@link KdTree#leafPrimitives(int)} copies them). The voxel box is reused between calls;
+     * copy it to keep it.
      * @param node the node's index
      * @param depth its depth; the root has depth 0
      * @param voxel its voxel
-     * @param refs the tree's shared reference array
      * @param from the first of the leaf's references
      * @param to the end (exclusive) of the leaf's references
      */
-    void leaf(int node, int depth, Box voxel, int[] refs, int from, int to);
+    void leaf(int node, int depth, Box voxel, int from, int to);
 }

@@ -8,7 +8,6 @@ import java.util.concurrent.atomic.AtomicInteger;
 import java.util.function.Supplier;
 import org.kdtree.accel.AccelerationStructure;
 import org.kdtree.accel.Hit;
-import org.kdtree.accel.Intersector;
 import org.kdtree.accel.PacketQuery;
 import org.kdtree.accel.RayPacket;
 import org.kdtree.accel.RayQuery;
@@ -188,12 +187,11 @@ public final class RayBatch implements AutoCloseable {
      * visited, primitive tests and box tests (same interval as {@link #trace}).
      *
      * @param structure the kd-tree or bounding volume hierarchy that finds each ray's closest hit
-     * @param prims     the intersector of the primitives it was built over
      * @param set       the rays to sample, every {@code size / limit}-th one
      * @param limit     about how many rays to trace
      * @return the counts summed over the rays traced
      */
-    public static TraversalStats count(AccelerationStructure structure, Intersector prims, RaySet set, int limit) {
+    public static TraversalStats count(AccelerationStructure structure, RaySet set, int limit) {
         double[] r = set.rays();
         int n = set.size();
         // Every stride-th ray, so the sample spans the whole set: the first rows of the primary
@@ -202,7 +200,7 @@ public final class RayBatch implements AutoCloseable {
         Ray ray = new Ray(3);
         Hit hit = new Hit();
         TraversalStats stats = new TraversalStats();
-        RayQuery counting = structure.query(prims, stats);
+        RayQuery counting = structure.query(stats);
         for (int i = 0; i < n; i += stride) {
             int o = 6 * i;
             ray.set(r[o], r[o + 1], r[o + 2], r[o + 3], r[o + 4], r[o + 5]);

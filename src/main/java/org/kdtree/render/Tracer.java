@@ -32,7 +32,7 @@ import org.kdtree.scene.Vec3;
  * {@link #OFFSET} times the hit's magnitude, to the side the new ray leaves on: no
  * self-intersection at any scale, and no visible gap either.
  */
-public final class Tracer {
+final class Tracer {
     /** Relative offset of secondary ray origins ({@link Tolerance#RAY_OFFSET}). */
     public static final double OFFSET = Tolerance.RAY_OFFSET;
     /** Shadow rays toward a point stop short of it ({@link Tolerance#SHADOW_SHORTFALL}), so a light's own panel does not occlude it. */

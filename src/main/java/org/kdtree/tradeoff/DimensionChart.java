@@ -10,7 +10,7 @@ import org.knowm.xchart.XYSeries;
  * against the dimension (x, linear: on uniform data the speed-up falls about exponentially with
  * it, a straight line here), with the break-even line at 1 where the tree stops helping.
  */
-public final class DimensionChart {
+final class DimensionChart {
     private DimensionChart() {
     }
 
@@ -21,14 +21,14 @@ public final class DimensionChart {
      * @param title   the chart's title
      * @return the chart
      */
-    public static XYChart chart(List<DimensionResult> results, String title) {
+    static XYChart chart(List<DimensionSweep.Result> results, String title) {
         XYChart chart = ChartFile.newLogYChart(title, "dimension", "speed-up of the exact kd-tree search over brute force");
-        double[] dims = results.stream().mapToDouble(DimensionResult::dimension).toArray();
+        double[] dims = results.stream().mapToDouble(DimensionSweep.Result::dimension).toArray();
         List<XYSeries> series = new ArrayList<>();
         series.add(chart.addSeries("exact kd-tree / brute force", dims,
-                results.stream().mapToDouble(DimensionResult::speedUp).toArray()));
-        double lo = results.stream().mapToInt(DimensionResult::dimension).min().orElse(1);
-        double hi = results.stream().mapToInt(DimensionResult::dimension).max().orElse(1);
+                results.stream().mapToDouble(DimensionSweep.Result::speedUp).toArray()));
+        double lo = results.stream().mapToInt(DimensionSweep.Result::dimension).min().orElse(1);
+        double hi = results.stream().mapToInt(DimensionSweep.Result::dimension).max().orElse(1);
         XYSeries even = chart.addSeries("break-even (1)", new double[] {lo, hi}, new double[] {1, 1});
         series.add(even);
         ChartFile.distinctMarkers(series);

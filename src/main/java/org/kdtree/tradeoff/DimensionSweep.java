@@ -1,6 +1,7 @@
 package org.kdtree.tradeoff;
 
 import java.util.List;
+import java.util.Locale;
 import org.kdtree.kdtree.KdTreeBuilder;
 import org.kdtree.points.PointTree;
 
@@ -26,11 +27,11 @@ public record DimensionSweep(GeneratedPoints kind, int n, int queryCount, int k,
      * @param dimension the points' dimension
      * @return the two speeds and the tree's leaves
      */
-    public DimensionResult measure(int dimension) {
+    public Result measure(int dimension) {
         PointTree tree = PointTree.build(kind.points(n, dimension, seed), builder);
         NeighbourStudy study = new NeighbourStudy(tree, kind.queries(queryCount, dimension, seed), k, runs);
-        NeighbourResult exact = study.exact();
-        return new DimensionResult(dimension, exact.queriesPerSecond(), study.bruteQueriesPerSecond(),
+        NeighbourStudy.Result exact = study.exact();
+        return new Result(dimension, exact.queriesPerSecond(), study.bruteQueriesPerSecond(),
                 exact.leavesPerQuery(), tree.tree().stats().leaves());
     }
 
@@ -40,9 +41,51 @@ public record DimensionSweep(GeneratedPoints kind, int n, int queryCount, int k,
      * @param results the measurements
      * @return the header and one line per result
      */
-    public static String csv(List<DimensionResult> results) {
-        StringBuilder sb = new StringBuilder(DimensionResult.csvHeader()).append('\n');
-        for (DimensionResult r : results) sb.append(r.csvRow()).append('\n');
+    public static String csv(List<Result> results) {
+        StringBuilder sb = new StringBuilder(Result.csvHeader()).append('\n');
+        for (Result r : results) sb.append(r.csvRow()).append('\n');
         return sb.toString();
+    }
+
+    /**
+     * Draws the sweep's chart, titled by its kind of points: the exact search's speed-up over brute
+     * force against the dimension, with the break-even line.
+     *
+     * @param results what {@link #measure} returned, dimension by dimension
+     * @param caption the text under the chart ({@link ChartFile#caption})
+     * @param file    the chart file, PNG or SVG
+     * @throws java.io.IOException if it cannot be written
+     */
+    public void writeChart(List<Result> results, String caption, java.nio.file.Path file) throws java.io.IOException {
+        String title = "Where kd-trees stop helping: exact search against brute force (" + kind.label() + ")";
+        ChartFile.write(DimensionChart.chart(results, title), caption, file);
+    }
+
+    /**
+     * The exact kd-tree search against brute force at one dimension of a sweep.
+     *
+     * @param dimension      the points' dimension
+     * @param exactQps       the exact search's queries per second, one thread
+     * @param bruteQps       brute force's queries per second, one thread
+     * @param leavesPerQuery leaves the exact search scanned per query on average
+     * @param leaves         leaves of the tree
+     */
+    public record Result(int dimension, double exactQps, double bruteQps, double leavesPerQuery, int leaves) {
+
+        /** {@return how many times faster the tree answers than brute force; below 1 it no longer helps} */
+        public double speedUp() {
+            return exactQps / bruteQps;
+        }
+
+        /** {@return the CSV header matching {@link #csvRow}} */
+        public static String csvHeader() {
+            return "dimension,exact_queries_per_s,brute_force_queries_per_s,speed_up,leaves_per_query,leaves";
+        }
+
+        /** {@return this result as one CSV row, without a line end} */
+        public String csvRow() {
+            return String.format(Locale.ROOT, "%d,%.1f,%.1f,%.4f,%.2f,%d", dimension, exactQps, bruteQps, speedUp(),
+                    leavesPerQuery, leaves);
+        }
     }
 }

@@ -10,7 +10,7 @@ import org.knowm.xchart.XYSeries;
  * (y, log), one line per approximate search (best-bin-first budgets, epsilon values), and the
  * exact kd-tree search and brute force as horizontal reference lines ending at recall 1.
  */
-public final class NeighbourChart {
+final class NeighbourChart {
     private NeighbourChart() {
     }
 
@@ -21,15 +21,15 @@ public final class NeighbourChart {
      * @param title   the chart's title
      * @return the chart
      */
-    public static XYChart chart(List<NeighbourResult> results, String title) {
+    static XYChart chart(List<NeighbourStudy.Result> results, String title) {
         XYChart chart = ChartFile.newLogYChart(title, "recall at k (fraction of the true k nearest found)", "queries per second");
         double left = leftEdge(results);
         chart.getStyler().setXAxisMin(left).setXAxisMax(1.0);
         List<XYSeries> series = new ArrayList<>();
         for (NeighbourSearch s : List.of(NeighbourSearch.BEST_BIN_FIRST, NeighbourSearch.EPSILON)) {
-            List<NeighbourResult> rows = results.stream().filter(r -> r.search() == s).toList();
-            if (!rows.isEmpty()) series.add(chart.addSeries(s.label(), rows.stream().mapToDouble(NeighbourResult::recall).toArray(),
-                    rows.stream().mapToDouble(NeighbourResult::queriesPerSecond).toArray()));
+            List<NeighbourStudy.Result> rows = results.stream().filter(r -> r.search() == s).toList();
+            if (!rows.isEmpty()) series.add(chart.addSeries(s.label(), rows.stream().mapToDouble(NeighbourStudy.Result::recall).toArray(),
+                    rows.stream().mapToDouble(NeighbourStudy.Result::queriesPerSecond).toArray()));
         }
         for (NeighbourSearch s : List.of(NeighbourSearch.EXACT, NeighbourSearch.BRUTE_FORCE))
             results.stream().filter(r -> r.search() == s).findFirst().ifPresent(r ->
@@ -47,8 +47,8 @@ public final class NeighbourChart {
     }
 
     /** The x axis starts at the lowest recall rounded down to a tenth, and shows at least 0.9 .. 1. */
-    private static double leftEdge(List<NeighbourResult> results) {
-        double lowest = results.stream().mapToDouble(NeighbourResult::recall).min().orElse(1);
+    private static double leftEdge(List<NeighbourStudy.Result> results) {
+        double lowest = results.stream().mapToDouble(NeighbourStudy.Result::recall).min().orElse(1);
         return Math.min(0.9, Math.floor(lowest * 10) / 10);
     }
 }

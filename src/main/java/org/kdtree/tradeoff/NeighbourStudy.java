@@ -1,6 +1,7 @@
 package org.kdtree.tradeoff;
 
 import java.util.List;
+import java.util.Locale;
 import org.kdtree.measure.Timing;
 import org.kdtree.points.NearestQuery;
 import org.kdtree.points.PointTree;
@@ -50,12 +51,12 @@ public final class NeighbourStudy {
     }
 
     /** {@return the queries answered by scanning every point: the baseline (recall 1, speed-up 1)} */
-    public NeighbourResult bruteForce() {
-        return new NeighbourResult(NeighbourSearch.BRUTE_FORCE, "", 1, bruteQueriesPerSecond(), 0, 1);
+    public Result bruteForce() {
+        return new Result(NeighbourSearch.BRUTE_FORCE, "", 1, bruteQueriesPerSecond(), 0, 1);
     }
 
     /** {@return the kd-tree's exact search, measured} */
-    public NeighbourResult exact() {
+    public Result exact() {
         return measure(NeighbourSearch.EXACT, "", new NearestQuery(tree));
     }
 
@@ -65,7 +66,7 @@ public final class NeighbourStudy {
      * @param maxLeaves the budget of leaves per query, >= 1
      * @return the search's recall and speed
      */
-    public NeighbourResult budget(int maxLeaves) {
+    public Result budget(int maxLeaves) {
         String setting = maxLeaves == NearestQuery.UNLIMITED ? "unlimited" : Integer.toString(maxLeaves);
         return measure(NeighbourSearch.BEST_BIN_FIRST, setting, new NearestQuery(tree).maxLeaves(maxLeaves));
     }
@@ -76,7 +77,7 @@ public final class NeighbourStudy {
      * @param eps the allowed relative error, finite and >= 0
      * @return the search's recall and speed
      */
-    public NeighbourResult epsilon(double eps) {
+    public Result epsilon(double eps) {
         return measure(NeighbourSearch.EPSILON, org.kdtree.limits.Limit.format(eps), new NearestQuery(tree).epsilon(eps));
     }
 
@@ -91,7 +92,7 @@ public final class NeighbourStudy {
         return queries.length;
     }
 
-    private NeighbourResult measure(NeighbourSearch search, String setting, NearestQuery knn) {
+    private Result measure(NeighbourSearch search, String setting, NearestQuery knn) {
         int[] found = new int[kk];
         double recall = 0;
         long leaves = 0;
@@ -101,7 +102,7 @@ public final class NeighbourStudy {
             leaves += knn.leavesVisited();
         }
         double qps = queries.length / medianSeconds(() -> treePass(knn, found));
-        return new NeighbourResult(search, setting, recall / queries.length, qps, leaves / (double) queries.length,
+        return new Result(search, setting, recall / queries.length, qps, leaves / (double) queries.length,
                 qps / bruteQueriesPerSecond());
     }
 
@@ -141,9 +142,54 @@ public final class NeighbourStudy {
      * @param results the measurements
      * @return the header and one line per result
      */
-    public static String csv(List<NeighbourResult> results) {
-        StringBuilder sb = new StringBuilder(NeighbourResult.csvHeader()).append('\n');
-        for (NeighbourResult r : results) sb.append(r.csvRow()).append('\n');
+    public static String csv(List<Result> results) {
+        StringBuilder sb = new StringBuilder(Result.csvHeader()).append('\n');
+        for (Result r : results) sb.append(r.csvRow()).append('\n');
         return sb.toString();
+    }
+
+    /**
+     * Draws the study's accuracy chart: recall at k against queries per second, one line per
+     * approximate search, the exact search and brute force as reference lines.
+     *
+     * @param results the measurements
+     * @param title   the chart's title
+     * @param caption the text under the chart ({@link ChartFile#caption})
+     * @param file    the chart file, PNG or SVG
+     * @throws java.io.IOException if it cannot be written
+     */
+    public static void writeChart(List<Result> results, String title, String caption, java.nio.file.Path file) throws java.io.IOException {
+        ChartFile.write(NeighbourChart.chart(results, title), caption, file);
+    }
+
+    /**
+     * What one way of answering the queries of a nearest-neighbour study buys and costs.
+     *
+     * @param search           how the queries were answered
+     * @param setting          the budget or epsilon ("16", "0.5"), or "" for brute force and the exact search
+     * @param recall           the mean over the queries of the fraction of the true k nearest found
+     *                         (a point as near as the true k-th counts), in [0, 1]
+     * @param queriesPerSecond queries answered per second, one thread (median of the timed runs)
+     * @param leavesPerQuery   leaves scanned per query on average (0 for brute force)
+     * @param speedUp          queries per second over those of brute force
+     */
+    public record Result(NeighbourSearch search, String setting, double recall, double queriesPerSecond,
+                                  double leavesPerQuery, double speedUp) {
+
+        /** {@return the CSV header matching {@link #csvRow}} */
+        public static String csvHeader() {
+            return "search,setting,recall,queries_per_s,leaves_per_query,speed_up";
+        }
+
+        /** {@return this result as one CSV row, without a line end} */
+        public String csvRow() {
+            return String.format(Locale.ROOT, "%s,%s,%.6f,%.1f,%.2f,%.4f", search.label(), setting, recall,
+                    queriesPerSecond, leavesPerQuery, speedUp);
+        }
+
+        /** {@return the name of this row in a table: the search and its setting} */
+        public String name() {
+            return setting.isEmpty() ? search.label() : search.label() + " " + setting;
+        }
     }
 }

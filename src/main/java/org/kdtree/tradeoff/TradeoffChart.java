@@ -10,7 +10,7 @@ import org.knowm.xchart.XYSeries;
 import org.knowm.xchart.style.markers.SeriesMarkers;
 
 /** The trade-off chart: build time against trace time per variant, with the Pareto front drawn as a line. */
-public final class TradeoffChart {
+final class TradeoffChart {
     private TradeoffChart() {
     }
 
@@ -25,13 +25,13 @@ public final class TradeoffChart {
      * @param png             the chart file, PNG or SVG ({@link ChartFile#write})
      * @throws IOException if a file cannot be written
      */
-    public static void write(List<TradeoffResult> results, String title, double raysPerTriangle, String caption, Path png)
+    static void write(List<Tradeoff.Result> results, String title, double raysPerTriangle, String caption, Path png)
             throws IOException {
         ChartFile.write(chart(results, title, raysPerTriangle), caption, png);
     }
 
     /** The chart itself (tests read its series and axes). */
-    static XYChart chart(List<TradeoffResult> results, String title, double raysPerTriangle) {
+    static XYChart chart(List<Tradeoff.Result> results, String title, double raysPerTriangle) {
         XYChart chart = ChartFile.newChart(title, "build time (ms)",
                 "trace time for " + fmt(raysPerTriangle) + " rays per triangle (ms)");
         chart.getStyler().setDefaultSeriesRenderStyle(XYSeries.XYSeriesRenderStyle.Scatter);
@@ -39,16 +39,16 @@ public final class TradeoffChart {
         ChartFile.logAxes(chart);
         chart.getStyler().setLegendPosition(org.knowm.xchart.style.Styler.LegendPosition.OutsideE);
         List<XYSeries> points = new ArrayList<>();
-        for (TradeoffResult r : results)
+        for (Tradeoff.Result r : results)
             points.add(chart.addSeries(r.variant(), new double[] {r.buildMs()}, new double[] {r.traceMs(raysPerTriangle)}));
         ChartFile.distinctMarkers(points);
         boolean[] front = Tradeoff.paretoFront(results);
-        List<TradeoffResult> onFront = new ArrayList<>();
+        List<Tradeoff.Result> onFront = new ArrayList<>();
         for (int i = 0; i < front.length; i++) if (front[i]) onFront.add(results.get(i));
-        onFront.sort(Comparator.comparingDouble(TradeoffResult::buildMs));
+        onFront.sort(Comparator.comparingDouble(Tradeoff.Result::buildMs));
         if (!onFront.isEmpty()) {
             XYSeries line = chart.addSeries("Pareto front",
-                    onFront.stream().mapToDouble(TradeoffResult::buildMs).toArray(),
+                    onFront.stream().mapToDouble(Tradeoff.Result::buildMs).toArray(),
                     onFront.stream().mapToDouble(r -> r.traceMs(raysPerTriangle)).toArray());
             line.setXYSeriesRenderStyle(XYSeries.XYSeriesRenderStyle.Line);
             line.setMarker(SeriesMarkers.NONE);

@@ -10,7 +10,6 @@ import org.kdtree.accel.BruteForce;
 import org.kdtree.accel.Hit;
 import org.kdtree.accel.Intersector;
 import org.kdtree.accel.RayQuery;
-import org.kdtree.accel.Shape2DIntersector;
 import org.kdtree.accel.TraversalStats;
 import org.kdtree.accel.TreeStats;
 import org.kdtree.accel.TriangleIntersector;
@@ -131,17 +130,17 @@ class BvhTest {
         for (int width = 2; width <= 8; width++)
             agreesWithBruteForce(m, x, new BvhBuilder().width(width).leafSize(4).build(m), 400, width);
         Scene2D s = Shapes.mixed(300, 12);
-        agreesWithBruteForce(s, new Shape2DIntersector(s), new BvhBuilder().build(s), 800, 13);
+        agreesWithBruteForce(s, Intersector.of(s), new BvhBuilder().build(s), 800, 13);
     }
 
     @Test void anEmptySceneIsMissedAndStatisticsCountTheBoxesTested() {
         TriangleMesh empty = new TriangleMesh(new double[0], new int[0]);
         Bvh h = new BvhBuilder().build(empty);
         Ray ray = new Ray(3).set(0, 0, 0, 1, 0, 0);
-        assertThat(h.query(new TriangleIntersector(empty)).closestHit(ray, 0, Double.POSITIVE_INFINITY, new Hit())).isFalse();
+        assertThat(h.query().closestHit(ray, 0, Double.POSITIVE_INFINITY, new Hit())).isFalse();
         TriangleMesh m = Meshes.uniform(500, 3);
         TraversalStats stats = new TraversalStats();
-        RayQuery q = new BvhBuilder().build(m).query(new TriangleIntersector(m), stats);
+        RayQuery q = new BvhBuilder().build(m).query(stats);
         Box b = m.bounds();
         ray.set(b.min(0) - 1, (b.min(1) + b.max(1)) / 2, (b.min(2) + b.max(2)) / 2, 1, 0, 0);
         q.closestHit(ray, 0, Double.POSITIVE_INFINITY, new Hit());
@@ -153,7 +152,7 @@ class BvhTest {
     /** Random rays from around and inside the scene, each closest hit and any hit against brute force. */
     static void agreesWithBruteForce(Primitives p, Intersector x, Bvh h, int rays, long seed) {
         BruteForce brute = new BruteForce(x);
-        RayQuery fast = h.query(x), listened = h.query(x, new TraversalStats());
+        RayQuery fast = h.query(), listened = h.query(new TraversalStats());
         Box b = p.bounds();
         int k = p.dimension();
         Random r = new Random(seed);

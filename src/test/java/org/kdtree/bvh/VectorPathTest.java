@@ -9,7 +9,6 @@ import org.junit.jupiter.api.Test;
 import org.kdtree.accel.Hit;
 import org.kdtree.accel.RayQuery;
 import org.kdtree.accel.TriangleIntersector;
-import org.kdtree.accel.Vectorization;
 import org.kdtree.generate.HardMeshes;
 import org.kdtree.generate.Meshes;
 import org.kdtree.geom.Ray;
@@ -35,9 +34,9 @@ class VectorPathTest {
                 Meshes.planarAndDegenerate(3), HardMeshes.scaled(HardMeshes.cubeGrid(3), 1e30), HardMeshes.scaled(Meshes.clustered(500, 4), 1e-30))) {
             Bvh bvh = new BvhBuilder().build(mesh);
             TriangleIntersector tris = new TriangleIntersector(mesh);
-            RayQuery vector = VectorPath.query(bvh, tris);
-            RayQuery wide = new WideTraversal(bvh, bvh.lanes(VectorPath.LANES), tris);
-            RayQuery pair = new PairTraversal(bvh, tris);
+            RayQuery vector = VectorPath.query(bvh);
+            RayQuery wide = new WideTraversal(bvh, bvh.lanes(VectorPath.LANES));
+            RayQuery pair = new PairTraversal(bvh);
             Random rnd = new Random(17);
             Ray ray = new Ray(3);
             Hit a = new Hit(), b = new Hit(), c = new Hit();

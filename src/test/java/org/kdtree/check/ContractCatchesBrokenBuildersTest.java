@@ -23,10 +23,10 @@ class ContractCatchesBrokenBuildersTest {
      * what a broken partition would have built. A builder can no longer partition for itself (the
      * recursion does), but the checks must still catch such trees.
      */
-    private static KdTree rewritten(KdTree tree, java.util.function.BiFunction<Integer, int[], int[]> leaf) {
+    private KdTree rewritten(KdTree tree, java.util.function.BiFunction<Integer, int[], int[]> leaf) {
         KdTreeWriter out = new KdTreeWriter(tree.dimension());
         copy(tree, 0, out, leaf);
-        return out.finish(tree.bounds(), tree.costModel(), tree.builderName());
+        return out.finish(scene, tree.bounds(), tree.costModel(), tree.builderName());
     }
 
     private static void copy(KdTree tree, int node, KdTreeWriter out, java.util.function.BiFunction<Integer, int[], int[]> leaf) {

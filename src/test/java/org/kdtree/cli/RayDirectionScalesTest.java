@@ -31,7 +31,7 @@ class RayDirectionScalesTest {
 
     private static String trace(TriangleMesh mesh, String rays) throws IOException {
         StringWriter out = new StringWriter();
-        Traverser traverser = new Traverser(new SahBuilder().build(mesh), new TriangleIntersector(mesh));
+        Traverser traverser = new Traverser(new SahBuilder().build(mesh));
         RayFile.trace(new BufferedReader(new StringReader(rays)), "rays.txt", traverser, new PrintWriter(out));
         return out.toString().strip();
     }

@@ -17,6 +17,6 @@ public final class RayFileAccess {
     /** Traces the rays of {@code in} through a one-triangle scene. */
     public static long trace(BufferedReader in, String name, PrintWriter out) throws IOException {
         TriangleIntersector tris = new TriangleIntersector(MESH);
-        return RayFile.trace(in, name, new Traverser(new org.kdtree.kdtree.SahBuilder().build(MESH), tris), out);
+        return RayFile.trace(in, name, new Traverser(new org.kdtree.kdtree.SahBuilder().build(MESH)), out);
     }
 }

@@ -17,7 +17,7 @@ import org.kdtree.accel.TriangleIntersector;
 import org.kdtree.generate.MeshGrid;
 import org.kdtree.geom.Box;
 import org.kdtree.geom.Ray;
-import org.kdtree.io.ObjMeshReader;
+import org.kdtree.io.PrimitivesReader;
 import org.kdtree.measure.RaySet;
 import org.kdtree.shape.TriangleMesh;
 
@@ -71,7 +71,7 @@ class RaycastCommandTest {
             Run r = run("raycast", obj.toString(), "--builder", builder, "--rays", rays.toString(), "--hits", hits.toString());
             assertThat(r.code()).as(r.err()).isZero();
             List<String> got = Files.readAllLines(hits);
-            TriangleMesh mesh = ObjMeshReader.read(obj);
+            TriangleMesh mesh = PrimitivesReader.readMesh(obj);
             assertThat(mesh.size()).isEqualTo(12);
             BruteForce brute = new BruteForce(new TriangleIntersector(mesh));
             int k = 0;
@@ -126,7 +126,7 @@ class RaycastCommandTest {
         assertThat(f[0]).isEqualTo("kdtree-sah");
         assertThat(f[1]).isEqualTo("cube");
         assertThat(f[2]).isEqualTo("12");
-        TriangleMesh mesh = ObjMeshReader.read(obj);
+        TriangleMesh mesh = PrimitivesReader.readMesh(obj);
         long[] counts = bruteForceHits(mesh, RaySet.primary(mesh, RaySet.SPEC_IMAGE), RaySet.random(mesh, RaySet.SPEC_RANDOM_RAYS));
         assertThat(Long.parseLong(f[7])).isEqualTo(counts[0]);
         assertThat(Long.parseLong(f[10])).isEqualTo(counts[1]);
@@ -149,7 +149,7 @@ class RaycastCommandTest {
     }
 
     @Test void gridRepeatsTheMeshSixteenTimes() throws Exception {
-        TriangleMesh mesh = ObjMeshReader.read(cube());
+        TriangleMesh mesh = PrimitivesReader.readMesh(cube());
         TriangleMesh grid = MeshGrid.grid(mesh, 4);
         assertThat(grid.size()).isEqualTo(16 * 12);
         Box b = MeshGrid.vertexBounds(grid);

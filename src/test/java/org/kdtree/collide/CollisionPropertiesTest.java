@@ -12,7 +12,6 @@ import net.jqwik.api.Property;
 import net.jqwik.api.Provide;
 import net.jqwik.api.constraints.IntRange;
 import org.kdtree.accel.Hit;
-import org.kdtree.accel.Shape2DIntersector;
 import org.kdtree.accel.TriangleIntersector;
 import org.kdtree.generate.HardMeshes;
 import org.kdtree.generate.Meshes;
@@ -115,7 +114,7 @@ class CollisionPropertiesTest {
     @Property(tries = 20)
     void radiusZeroIsTheSegmentsFirstHit3D(@ForAll @IntRange(max = 100000) int seed) {
         TriangleMesh mesh = Meshes.uniform(300, 0.1, seed);
-        Traverser rays = new Traverser(Builders.create("sah").build(mesh), new TriangleIntersector(mesh));
+        Traverser rays = new Traverser(Builders.create("sah").build(mesh));
         Random rnd = new Random(~seed); // not the scene's sequence: its first point is a vertex
         Hit hit = new Hit();
         Contact contact = new Contact();
@@ -134,7 +133,7 @@ class CollisionPropertiesTest {
     @Property(tries = 20)
     void radiusZeroIsTheSegmentsFirstHit2D(@ForAll @IntRange(max = 100000) int seed) {
         Scene2D scene = Shapes.mixed(200, seed);
-        Traverser rays = new Traverser(Builders.create("sah").build(scene), new Shape2DIntersector(scene));
+        Traverser rays = new Traverser(Builders.create("sah").build(scene));
         Random rnd = new Random(~seed); // not the scene's sequence: its first point is a vertex
         Hit hit = new Hit();
         Contact contact = new Contact();

@@ -12,7 +12,6 @@ import org.junit.jupiter.api.BeforeEach;
 import org.junit.jupiter.api.Tag;
 import org.junit.jupiter.api.Test;
 import org.kdtree.accel.Hit;
-import org.kdtree.accel.Shape2DIntersector;
 import org.kdtree.accel.TraversalStats;
 import org.kdtree.bvh.Bvh;
 import org.kdtree.geom.Ray;
@@ -50,7 +49,7 @@ class BvhGuiTest {
         static Expected of(Scene2D scene) {
             Bvh bvh = new org.kdtree.bvh.BvhBuilder().build(scene);
             TraversalStats stats = new TraversalStats();
-            bvh.query(new Shape2DIntersector(scene), stats).closestHit(
+            bvh.query(stats).closestHit(
                     new Ray(2).set(RAY[0], RAY[1], RAY[2] - RAY[0], RAY[3] - RAY[1]), 0, Double.POSITIVE_INFINITY, new Hit());
             return new Expected(bvh, stats);
         }

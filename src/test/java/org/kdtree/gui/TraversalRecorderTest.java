@@ -6,7 +6,7 @@ import java.util.Random;
 import org.junit.jupiter.api.Test;
 import org.kdtree.accel.BruteForce;
 import org.kdtree.accel.Hit;
-import org.kdtree.accel.Shape2DIntersector;
+import org.kdtree.accel.Intersector;
 import org.kdtree.generate.Shapes;
 import org.kdtree.geom.Ray;
 import org.kdtree.kdtree.KdTree;
@@ -20,7 +20,7 @@ class TraversalRecorderTest {
         Random r = new Random(2);
         for (String b : CompareView.DEFAULT_BUILDERS) {
             KdTree tree = BuilderSpec.of(b).create().build(scene);
-            BruteForce brute = new BruteForce(new Shape2DIntersector(scene));
+            BruteForce brute = new BruteForce(Intersector.of(scene));
             for (int i = 0; i < 200; i++) {
                 double[] ray = {r.nextDouble() * 12 - 1, r.nextDouble() * 12 - 1, r.nextGaussian(), r.nextGaussian()};
                 TraversalTrace t = TraversalRecorder.record(tree, scene, ray);
@@ -59,7 +59,7 @@ class TraversalRecorderTest {
     @Test void aHierarchysTraceStepsThroughItsBoxesToTheBruteForceHit() {
         Scene2D scene = new Scene2D(Shapes.clustered(300, 5).shapes());
         org.kdtree.bvh.Bvh bvh = new org.kdtree.bvh.BvhBuilder().build(scene);
-        BruteForce brute = new BruteForce(new Shape2DIntersector(scene));
+        BruteForce brute = new BruteForce(Intersector.of(scene));
         Random r = new Random(3);
         for (int i = 0; i < 200; i++) {
             double[] ray = {r.nextDouble() * 12 - 1, r.nextDouble() * 12 - 1, r.nextGaussian(), r.nextGaussian()};

@@ -47,7 +47,7 @@ class TreePainterTest {
                         : new double[] {0.5 * (v.min(0) + v.max(0)), split, 1});
             }
 
-            @Override public void leaf(int node, int depth, Box v, int[] refs, int from, int to) { }
+            @Override public void leaf(int node, int depth, Box v, int from, int to) { }
         });
         assertThat(mids).hasSizeGreaterThanOrEqualTo(3);
         for (double[] m : mids) {
@@ -68,7 +68,7 @@ class TreePainterTest {
         p.tree().walk(new TreeVisitor() {
             @Override public void interior(int node, int depth, Box v, int axis, double split) { }
 
-            @Override public void leaf(int node, int depth, Box v, int[] refs, int from, int to) {
+            @Override public void leaf(int node, int depth, Box v, int from, int to) {
                 double cx = 0.5 * (v.min(0) + v.max(0)), cy = 0.5 * (v.min(1) + v.max(1));
                 if (from == to) {
                     assertThat(p.at(cx, cy)).as("empty leaf %d", node).isEqualTo(Palette.EMPTY_VOXEL);

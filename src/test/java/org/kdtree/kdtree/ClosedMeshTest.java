@@ -19,7 +19,7 @@ class ClosedMeshTest {
     private static final int MILLION = 1_000_000;
 
     private static long leaks(TriangleMesh mesh, double[] lo, double[] hi, int rays, long seed) {
-        Traverser t = new Traverser(Builders.create("sah").build(mesh), new TriangleIntersector(mesh));
+        Traverser t = new Traverser(Builders.create("sah").build(mesh));
         SplittableRandom rnd = new SplittableRandom(seed);
         Ray ray = new Ray(3);
         Hit hit = new Hit();

@@ -8,7 +8,6 @@ import org.junit.jupiter.api.Test;
 import org.kdtree.accel.Hit;
 import org.kdtree.accel.TraversalListener.Visit;
 import org.kdtree.accel.TraversalListener;
-import org.kdtree.accel.TriangleIntersector;
 import org.kdtree.geom.Ray;
 import org.kdtree.shape.TriangleMesh;
 import org.kdtree.spec.Builders;
@@ -47,7 +46,7 @@ class DecideTest {
     @Test void theThreeDLoopDecidesAsDecideDoes() {
         TriangleMesh mesh = HardCases3DTest.boxes();
         KdTree tree = Builders.create("sah").build(mesh);
-        Traverser t = new Traverser(tree, new TriangleIntersector(mesh));
+        Traverser t = new Traverser(tree);
         Map<Visit, Integer> seen = new EnumMap<>(Visit.class);
         TraversalListener counting = new TraversalListener() {
             @Override public void interior(int node, int axis, double split, double tMin, double tMax, double tSplit,

@@ -5,7 +5,7 @@ import static org.assertj.core.api.Assertions.assertThat;
 import java.util.ArrayList;
 import java.util.List;
 import org.junit.jupiter.api.Test;
-import org.kdtree.accel.Shape2DIntersector;
+import org.kdtree.accel.Intersector;
 import org.kdtree.geom.Ray;
 import org.kdtree.shape.Scene2D;
 import org.kdtree.shape.Shape2D;
@@ -13,7 +13,7 @@ import org.kdtree.shape.Shape2D;
 /** The hard cases in 2-D (segments, filled rectangles and triangles, points), for every builder, against brute force. */
 class HardCases2DTest {
     private static List<Oracle> oracles(Scene2D scene) {
-        return Oracle.allBuilders(scene, new Shape2DIntersector(scene));
+        return Oracle.allBuilders(scene, Intersector.of(scene));
     }
 
     private static List<double[]> directions() {

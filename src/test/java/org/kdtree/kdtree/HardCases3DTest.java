@@ -196,7 +196,7 @@ class HardCases3DTest {
         assertThat(x.isDegenerate(n - 1)).isTrue();
         assertThat(x.isDegenerate(n - 2)).isTrue();
         assertThat(x.isDegenerate(n - 3)).isTrue();
-        Traverser t = new Traverser(org.kdtree.spec.Builders.create("sah").build(m), x);
+        Traverser t = new Traverser(org.kdtree.spec.Builders.create("sah").build(m));
         Ray ray = new Ray(3);
         for (double[] d : directions()) {
             for (double[] p : new double[][] {{1, 3, 1}, {2, 3, 1}, {2.5, 3, 1}, {3, 1, 3}, {3, 1.5, 3}, {1, 1, 3}}) {

@@ -22,7 +22,7 @@ class KdTreeWriterTest {
     @Test void depthFirstLayoutWithRightChildIndices() {
         KdTreeWriter w = new KdTreeWriter(2);
         writeSample(w);
-        KdTree t = w.finish(Box.of2(0, 0, 4, 4), CostModel.WALD_HAVRAN, "test");
+        KdTree t = w.finish(points(2), Box.of2(0, 0, 4, 4), CostModel.WALD_HAVRAN, "test");
         assertThat(t.nodeCount()).isEqualTo(5);
         assertThat(t.isLeaf(0)).isFalse();
         assertThat(t.axis(0)).isZero();
@@ -43,7 +43,7 @@ class KdTreeWriterTest {
     @Test void expectedCostFollowsTheRecursiveFormula() {
         KdTreeWriter w = new KdTreeWriter(2);
         writeSample(w);
-        KdTree t = w.finish(Box.of2(0, 0, 4, 4), new CostModel(15, 20), "test");
+        KdTree t = w.finish(points(2), Box.of2(0, 0, 4, 4), new CostModel(15, 20), "test");
         // perimeters: root 16; left [0,1]x[0,4] 10; right [1,4]x[0,4] 14; its children [1,4]x[0,2] 10 and [1,4]x[2,4] 10
         double right = 15 + 10.0 / 14 * (2 * 20) + 10.0 / 14 * 0;
         double expected = 15 + 10.0 / 16 * (1 * 20) + 14.0 / 16 * right;
@@ -58,7 +58,7 @@ class KdTreeWriterTest {
         w.leaf(new int[] {7}, 1);
         w.setRightChild(root);
         w.append(sub);
-        KdTree t = w.finish(Box.of2(0, 0, 4, 4), CostModel.WALD_HAVRAN, "test");
+        KdTree t = w.finish(points(2), Box.of2(0, 0, 4, 4), CostModel.WALD_HAVRAN, "test");
         int r = t.rightChild(0);
         assertThat(t.split(r)).isEqualTo(1);
         assertThat(t.leafPrimitives(t.leftChild(r))).containsExactly(0);
@@ -93,8 +93,8 @@ class KdTreeWriterTest {
             top.append(sub);
             double[] lo = new double[k], hi = new double[k];
             java.util.Arrays.fill(hi, 1);
-            KdTree expected = whole.finish(new Box(lo, hi), CostModel.WALD_HAVRAN, "whole");
-            KdTree spliced = top.finish(new Box(lo, hi), CostModel.WALD_HAVRAN, "spliced");
+            KdTree expected = whole.finish(points(lo.length), new Box(lo, hi), CostModel.WALD_HAVRAN, "whole");
+            KdTree spliced = top.finish(points(lo.length), new Box(lo, hi), CostModel.WALD_HAVRAN, "spliced");
             assertThat(spliced.nodeArray()).as("%d-D nodes", k).isEqualTo(expected.nodeArray());
             assertThat(spliced.refArray()).as("%d-D references", k).isEqualTo(expected.refArray());
             int last = Nodes.rightChild(Nodes.word(spliced.nodeArray(), spliced.nodeCount() - 3), spliced.axisBits());
@@ -122,7 +122,7 @@ class KdTreeWriterTest {
         w.leaf(new int[] {0}, 1);
         w.setRightChild(root);
         w.leaf(new int[] {1}, 1);
-        KdTree t = w.finish(new Box(lo, hi), CostModel.WALD_HAVRAN, "test");
+        KdTree t = w.finish(points(lo.length), new Box(lo, hi), CostModel.WALD_HAVRAN, "test");
         assertThat(t.isLeaf(0)).isFalse();
         assertThat(t.axis(0)).isEqualTo(63);
         assertThat(t.leafPrimitives(t.rightChild(0))).containsExactly(1);
@@ -139,12 +139,17 @@ class KdTreeWriterTest {
         w.leaf(new int[] {1, 2}, 2);
         w.setRightChild(inner);
         w.leaf(new int[0], 0);
-        KdTree t = w.finish(Box.of2(-1, -1, 4, 4), CostModel.WALD_HAVRAN, "test");
+        KdTree t = w.finish(points(2), Box.of2(-1, -1, 4, 4), CostModel.WALD_HAVRAN, "test");
         assertThat(t.split(0)).isEqualTo(0.1);
         assertThat(Double.doubleToRawLongBits(t.split(t.rightChild(0)))).isEqualTo(Double.doubleToRawLongBits(-0.0));
         assertThat(Nodes.split(t.nodeArray(), 0)).isEqualTo(0.1);
         assertThat(t.memoryBytes()).isEqualTo(2 * 16 + 12L * 5 + 4L * 3);
         assertThat(t.leafStart(t.leftChild(t.rightChild(0)))).isEqualTo(1);
         assertThat(t.leafSize(t.leftChild(t.rightChild(0)))).isEqualTo(2);
+    }
+
+    /** Points of dimension {@code k} for a hand-written tree to be over (ten of them: the samples reference indices 0 to 9). */
+    private static org.kdtree.shape.PointsKd points(int k) {
+        return new org.kdtree.shape.PointsKd(k, new double[10 * k]);
     }
 }

@@ -41,9 +41,9 @@ final class Oracle {
     Oracle(Intersector prims, AccelerationStructure structure, String name) {
         this.prims = prims;
         this.brute = new BruteForce(prims);
-        this.traverser = structure instanceof KdTree kd ? new Traverser(kd, prims) : null;
-        this.fast = structure.query(prims);
-        this.listened = structure.query(prims, stats);
+        this.traverser = structure instanceof KdTree kd ? new Traverser(kd) : null;
+        this.fast = structure.query();
+        this.listened = structure.query(stats);
         this.name = name;
     }
 

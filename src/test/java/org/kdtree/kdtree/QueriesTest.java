@@ -26,7 +26,7 @@ class QueriesTest {
         Ray ray = new Ray(3);
         int total = 0;
         for (String b : Builders.names()) {
-            Traverser t = new Traverser(Builders.create(b).build(mesh), tris);
+            Traverser t = new Traverser(Builders.create(b).build(mesh));
             for (int i = 0; i < 300; i++) {
                 ray.set(rnd.nextDouble(), rnd.nextDouble(), rnd.nextDouble(), rnd.nextGaussian(), rnd.nextGaussian(),
                         rnd.nextGaussian());
@@ -42,7 +42,7 @@ class QueriesTest {
     }
 
     @Test void statisticsCountAndMailboxingTestsEachPrimitiveOncePerRay() {
-        Traverser t = new Traverser(Builders.create("sah").build(mesh), tris);
+        Traverser t = new Traverser(Builders.create("sah").build(mesh));
         Random rnd = new Random(5);
         Ray ray = new Ray(3);
         for (int i = 0; i < 200; i++) {
@@ -64,7 +64,7 @@ class QueriesTest {
     }
 
     @Test void listenerReplaysAConsistentTraversal() {
-        Traverser t = new Traverser(Builders.create("sah").build(mesh), tris);
+        Traverser t = new Traverser(Builders.create("sah").build(mesh));
         Ray ray = new Ray(3).set(-0.5, 0.4, 0.3, 1, 0.1, 0.05);
         List<String> events = new ArrayList<>();
         int[] depth = {0};
@@ -84,7 +84,7 @@ class QueriesTest {
     }
 
     @Test void anyHitStopsEarlyAndRespectsTheRange() {
-        Traverser t = new Traverser(Builders.create("sah").build(mesh), tris);
+        Traverser t = new Traverser(Builders.create("sah").build(mesh));
         Ray ray = new Ray(3).set(-1, 0.5, 0.5, 1, 0, 0);
         Hit closest = new Hit();
         assertThat(t.closestHit(ray, 0, Double.POSITIVE_INFINITY, closest)).isTrue();
@@ -98,7 +98,7 @@ class QueriesTest {
     }
 
     @Test void invalidRaysAreRejectedClearly() {
-        Traverser t = new Traverser(Builders.create("sah").build(mesh), tris);
+        Traverser t = new Traverser(Builders.create("sah").build(mesh));
         assertThatThrownBy(() -> t.closestHit(new Ray(3).set(0, 0, 0, 0, 0, 0), 0, 1, new Hit()))
                 .isInstanceOf(IllegalArgumentException.class).hasMessageContaining("zero");
         assertThatThrownBy(() -> t.anyHit(new Ray(3).set(Double.NaN, 0, 0, 1, 0, 0), 0, 1))
@@ -108,7 +108,7 @@ class QueriesTest {
 
     @Test void emptySceneMissesEverything() {
         TriangleMesh none = new TriangleMesh(new double[0], new int[0]);
-        Traverser t = new Traverser(Builders.create("sah").build(none), new TriangleIntersector(none));
+        Traverser t = new Traverser(Builders.create("sah").build(none));
         assertThat(t.closestHit(new Ray(3).set(0, 0, 0, 1, 0, 0), 0, Double.POSITIVE_INFINITY, new Hit())).isFalse();
         assertThat(t.anyHit(new Ray(3).set(0, 0, 0, 1, 0, 0), 0, Double.POSITIVE_INFINITY)).isFalse();
     }

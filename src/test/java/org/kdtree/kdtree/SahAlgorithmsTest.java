@@ -49,7 +49,7 @@ class SahAlgorithmsTest {
     /** A real (bundled) scene of 10,370 triangles: too big for NAIVE in a unit test, so SORTED is the reference. */
     @org.junit.jupiter.api.Test
     void sortedAndEventBuildTheSameTreeOnTheBundledScene() throws java.io.IOException {
-        Primitives scene = org.kdtree.io.ObjMeshReader.read(java.nio.file.Path.of("scenes/clustered-spheres.obj"));
+        Primitives scene = org.kdtree.io.PrimitivesReader.readMesh(java.nio.file.Path.of("scenes/clustered-spheres.obj"));
         KdTree sorted = new SahBuilder().algorithm(SahBuilder.Algorithm.SORTED).build(scene);
         assertThat(sorted.nodeCount()).isGreaterThan(1000);
         assertSameTree(new SahBuilder().algorithm(SahBuilder.Algorithm.EVENT).build(scene), sorted, "clustered-spheres");

@@ -11,7 +11,7 @@ import net.jqwik.api.Property;
 import net.jqwik.api.Provide;
 import net.jqwik.api.constraints.IntRange;
 import org.kdtree.accel.Hit;
-import org.kdtree.accel.Shape2DIntersector;
+import org.kdtree.accel.Intersector;
 import org.kdtree.accel.TriangleIntersector;
 import org.kdtree.geom.Ray;
 import org.kdtree.shape.Scene2D;
@@ -85,7 +85,7 @@ class TraversalPropertiesTest {
         if (dir[0] == 0 && dir[1] == 0) return;
         Scene2D scene = new Scene2D(shapes);
         Ray ray = new Ray(2).set(ox, oy, dir[0], dir[1]);
-        for (Oracle o : Oracle.allBuilders(scene, new Shape2DIntersector(scene))) {
+        for (Oracle o : Oracle.allBuilders(scene, Intersector.of(scene))) {
             o.check(ray);
             o.check(ray, 0.5, 2);
         }

@@ -8,7 +8,7 @@ import java.nio.file.Path;
 import java.util.List;
 import org.junit.jupiter.api.Test;
 import org.kdtree.accel.CostModel;
-import org.kdtree.io.SceneReader;
+import org.kdtree.io.PrimitivesReader;
 import org.kdtree.kdtree.SahBuilder;
 import org.kdtree.scene.Tessellation;
 
@@ -47,7 +47,7 @@ class LimitsTest {
                 {"camera": {"eye": [0, 0, 5], "lookAt": [0, 0, 0], "fov": 40, "width": 20000, "height": 10},
                  "objects": []}
                 """);
-        assertThatThrownBy(() -> SceneReader.read(f)).hasMessageEndingWith(
+        assertThatThrownBy(() -> PrimitivesReader.readScene(f)).hasMessageEndingWith(
                 "$.camera.width: " + Limits.IMAGE_SIDE.requirement() + ", got 20000");
     }
 

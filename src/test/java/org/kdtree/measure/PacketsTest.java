@@ -87,10 +87,10 @@ class PacketsTest {
     /** Traces the image's rays in 8 x 8 tiles as packets and one by one; every answer the same bits. */
     private static void agree(AccelerationStructure s, TriangleMesh mesh, double[] rays, int w, double tMin, double tMax) {
         TriangleIntersector tris = new TriangleIntersector(mesh);
-        RayQuery q = s.query(tris);
+        RayQuery q = s.query();
         assertThat(q).as(s.kind()).isInstanceOf(PacketQuery.class);
         PacketQuery pq = (PacketQuery) q;
-        RayQuery single = s.query(tris);
+        RayQuery single = s.query();
         RayPacket packet = new RayPacket();
         Ray ray = new Ray(3);
         Hit hit = new Hit();

@@ -19,9 +19,9 @@ class PacketRenderTest {
             Scene s = TestRenders.scene(file, 61, 45, 1);
             TriangleIntersector tris = new TriangleIntersector(s.mesh());
             AccelerationStructure bvh = new BvhBuilder().build(s.mesh());
-            assertThat(bvh.query(tris)).isInstanceOf(PacketQuery.class);
-            RenderResult packets = Renderer.render(s, () -> bvh.query(tris), Renderer.Options.defaults().withThreads(2).recordingPixelRays());
-            RenderResult single = Renderer.render(s, () -> alone(bvh.query(tris)), Renderer.Options.defaults().withThreads(2).recordingPixelRays());
+            assertThat(bvh.query()).isInstanceOf(PacketQuery.class);
+            RenderResult packets = Renderer.render(s, () -> bvh.query(), Renderer.Options.defaults().withThreads(2).recordingPixelRays());
+            RenderResult single = Renderer.render(s, () -> alone(bvh.query()), Renderer.Options.defaults().withThreads(2).recordingPixelRays());
             for (int y = 0; y < 45; y++)
                 for (int x = 0; x < 61; x++)
                     for (int c = 0; c < 3; c++)

@@ -66,7 +66,7 @@ class SameImageTest {
     @Test void whereTheBvhAndTheKdTreeDisagreeTheHitsAreTies() throws Exception {
         Scene s = TestRenders.scene("cornell-box.json", 24, 18, 1);
         TriangleIntersector in = new TriangleIntersector(s.mesh());
-        RayQuery kd = BuilderSpec.of("sah").build(s.mesh(), null).query(in), bvh = BuilderSpec.of("bvh").build(s.mesh(), null).query(in);
+        RayQuery kd = BuilderSpec.of("sah").build(s.mesh(), null).query(), bvh = BuilderSpec.of("bvh").build(s.mesh(), null).query();
         int[] asked = new int[1];
         RayQuery both = new RayQuery() {
             private final Hit other = new Hit(), probe = new Hit();

@@ -1,11 +1,11 @@
 package org.kdtree.render;
 
 import java.io.IOException;
-import java.io.StringReader;
+import java.nio.file.Files;
 import java.nio.file.Path;
 import org.kdtree.accel.BruteForce;
 import org.kdtree.accel.TriangleIntersector;
-import org.kdtree.io.SceneReader;
+import org.kdtree.io.PrimitivesReader;
 import org.kdtree.scene.Scene;
 
 /** Scene loading and rendering shortcuts for the render tests. */
@@ -14,11 +14,18 @@ final class TestRenders {
     }
 
     static Scene scene(String file, int w, int h, int spp) throws IOException {
-        return SceneReader.read(Path.of("scenes", file)).withImageSize(w, h).withSamplesPerPixel(spp);
+        return PrimitivesReader.readScene(Path.of("scenes", file)).withImageSize(w, h).withSamplesPerPixel(spp);
     }
 
+    /** A scene from its JSON text, read as a user's file is (through a temporary file). */
     static Scene json(String text) throws IOException {
-        return SceneReader.read(new StringReader(text), "test.json", Path.of("."));
+        Path file = Files.createTempFile("test", ".json");
+        try {
+            Files.writeString(file, text);
+            return PrimitivesReader.readScene(file);
+        } finally {
+            Files.delete(file);
+        }
     }
 
     /** Renders with brute force over the watertight triangle test (the oracle), recording per-pixel rays. */

@@ -5,7 +5,6 @@ import static org.assertj.core.api.Assertions.assertThat;
 import java.lang.management.ManagementFactory;
 import org.junit.jupiter.api.Assumptions;
 import org.junit.jupiter.api.Test;
-import org.kdtree.accel.TriangleIntersector;
 import org.kdtree.kdtree.Traverser;
 import org.kdtree.scene.Scene;
 import org.kdtree.spec.Builders;
@@ -23,7 +22,7 @@ class TracerAllocationTest {
         var counting = (com.sun.management.ThreadMXBean) threads;
         Scene scene = TestRenders.scene("cornell-box.json", 32, 32, 4);
         Tracer tracer = new Tracer(scene, new EffectPlan(scene),
-                new Traverser(Builders.create("sah").build(scene.mesh()), new TriangleIntersector(scene.mesh())));
+                new Traverser(Builders.create("sah").build(scene.mesh())));
         double[] rgb = new double[3];
         render(tracer, rgb);                       // first touches: class loading, lazily built tables
         long rays = tracer.counts().total();

@@ -55,9 +55,9 @@ class ChartsTest {
     }
 
     @Test void theTradeoffChartHasLabelledLogAxesDistinctMarkersAndUnits() throws Exception {
-        List<TradeoffResult> results = new ArrayList<>();
+        List<Tradeoff.Result> results = new ArrayList<>();
         for (int i = 0; i < 12; i++)
-            results.add(new TradeoffResult("variant-" + i, "", 30 + 40 * i, 100, 1, 1, 1, 1, 1, 0, 1e5 * (1 + i % 5), 1000));
+            results.add(new Tradeoff.Result("variant-" + i, "", 30 + 40 * i, 100, 1, 1, 1, 1, 1, 0, 1e5 * (1 + i % 5), 1000));
         XYChart chart = TradeoffChart.chart(results, "test", 10);
         assertLabelledLogAxes(chart, 30, 470, 10, 100);
         assertThat(chart.getXAxisTitle()).contains("(ms)");
@@ -82,13 +82,13 @@ class ChartsTest {
     }
 
     @Test void theNeighbourChartHasRecallAcrossAndLogQueriesPerSecond() throws Exception {
-        List<NeighbourResult> results = new ArrayList<>();
-        results.add(new NeighbourResult(NeighbourSearch.BRUTE_FORCE, "", 1, 2e3, 0, 1));
-        results.add(new NeighbourResult(NeighbourSearch.EXACT, "", 1, 5e4, 40, 25));
+        List<NeighbourStudy.Result> results = new ArrayList<>();
+        results.add(new NeighbourStudy.Result(NeighbourSearch.BRUTE_FORCE, "", 1, 2e3, 0, 1));
+        results.add(new NeighbourStudy.Result(NeighbourSearch.EXACT, "", 1, 5e4, 40, 25));
         for (int b = 1; b <= 64; b *= 2)
-            results.add(new NeighbourResult(NeighbourSearch.BEST_BIN_FIRST, "" + b, 1 - 0.4 / b, 4e5 / b, b, 200.0 / b));
+            results.add(new NeighbourStudy.Result(NeighbourSearch.BEST_BIN_FIRST, "" + b, 1 - 0.4 / b, 4e5 / b, b, 200.0 / b));
         for (double e : new double[] {0.5, 1, 2})
-            results.add(new NeighbourResult(NeighbourSearch.EPSILON, "" + e, 1 - 0.05 * e, 1e5 * e, 10 / e, 50 * e));
+            results.add(new NeighbourStudy.Result(NeighbourSearch.EPSILON, "" + e, 1 - 0.05 * e, 1e5 * e, 10 / e, 50 * e));
         XYChart chart = NeighbourChart.chart(results, "test");
         assertThat(chart.getStyler().isXAxisLogarithmic()).as("recall is a fraction: linear").isFalse();
         assertLogY(chart);
@@ -100,8 +100,8 @@ class ChartsTest {
     }
 
     @Test void theDimensionChartHasTheSpeedUpOnALogAxisAndTheBreakEvenLine() throws Exception {
-        List<DimensionResult> results = new ArrayList<>();
-        for (int d : new int[] {2, 4, 8, 16, 31}) results.add(new DimensionResult(d, 1e6 / d / d, 2e4 / d, d * d, 600));
+        List<DimensionSweep.Result> results = new ArrayList<>();
+        for (int d : new int[] {2, 4, 8, 16, 31}) results.add(new DimensionSweep.Result(d, 1e6 / d / d, 2e4 / d, d * d, 600));
         XYChart chart = DimensionChart.chart(results, "test");
         assertLogY(chart);
         assertThat(chart.getSeriesMap().get("break-even (1)").getYData()).containsOnly(1.0);

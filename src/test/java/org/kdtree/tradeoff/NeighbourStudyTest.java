@@ -52,7 +52,7 @@ class NeighbourStudyTest {
 
     @Test void theCsvHasOneRowPerMeasurementWithItsColumns() {
         NeighbourStudy s = study(GeneratedPoints.CLUSTERED, 500, 3, 4);
-        List<NeighbourResult> results = List.of(s.bruteForce(), s.exact(), s.budget(1), s.budget(8), s.epsilon(0.5));
+        List<NeighbourStudy.Result> results = List.of(s.bruteForce(), s.exact(), s.budget(1), s.budget(8), s.epsilon(0.5));
         List<String> lines = NeighbourStudy.csv(results).lines().toList();
         assertThat(lines.get(0)).isEqualTo("search,setting,recall,queries_per_s,leaves_per_query,speed_up");
         assertThat(lines).hasSize(6);

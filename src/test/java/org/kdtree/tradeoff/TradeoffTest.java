@@ -22,13 +22,13 @@ class TradeoffTest {
     @TempDir Path dir;
 
     @Test void paretoFrontKeepsOnlyUndominatedVariants() {
-        List<TradeoffResult> rs = List.of(result("fast-build", 10, 1e5), result("fast-trace", 100, 1e6),
+        List<Tradeoff.Result> rs = List.of(result("fast-build", 10, 1e5), result("fast-trace", 100, 1e6),
                 result("dominated", 120, 5e5), result("balanced", 50, 6e5));
         assertThat(Tradeoff.paretoFront(rs)).containsExactly(true, true, false, true);
     }
 
     @Test void totalTimeIsBuildPlusTrace() {
-        TradeoffResult r = result("x", 100, 1e6);     // 1000 triangles, 1e6 rays/s
+        Tradeoff.Result r = result("x", 100, 1e6);     // 1000 triangles, 1e6 rays/s
         assertThat(r.totalMs(10)).isEqualTo(100 + 10.0);
     }
 
@@ -38,7 +38,7 @@ class TradeoffTest {
         var tree = new org.kdtree.kdtree.SahBuilder().build(m);
         for (RaySet set : new RaySet[] {RaySet.primary(m, 30), RaySet.random(m, 500)}) {
             RayBatch.Checksum kd, brute;
-            try (RayBatch batch = new RayBatch(2, () -> new Traverser(tree, tri))) {
+            try (RayBatch batch = new RayBatch(2, () -> new Traverser(tree))) {
                 kd = batch.trace(set);
             }
             try (RayBatch batch = new RayBatch(1, () -> new BruteForce(tri))) {
@@ -84,9 +84,9 @@ class TradeoffTest {
     @Test void aBvhIsMeasuredByTheSameHarness() {
         TriangleMesh m = Meshes.surface(300, 7);
         Tradeoff t = new Tradeoff(m, RaySet.random(m, 2000), 1, 1, 300);
-        List<TradeoffResult> rs = Variant.all().stream().filter(v -> List.of("sah-exact-l0.8", "bvh", "bvh-width8").contains(v.name()))
+        List<Tradeoff.Result> rs = Variant.all().stream().filter(v -> List.of("sah-exact-l0.8", "bvh", "bvh-width8").contains(v.name()))
                 .map(t::run).toList();
-        TradeoffResult kd = rs.get(0), bvh = rs.get(1), wide = rs.get(2);
+        Tradeoff.Result kd = rs.get(0), bvh = rs.get(1), wide = rs.get(2);
         assertThat(kd.boxesPerRay()).as("a kd-tree tests no boxes").isZero();
         assertThat(bvh.boxesPerRay()).isPositive();
         assertThat(bvh.testsPerRay()).isPositive();
@@ -117,8 +117,8 @@ class TradeoffTest {
         assertThat(Main.run("tradeoff", obj.toString(), "--variants", "nonsense")).isEqualTo(2);
     }
 
-    private static TradeoffResult result(String name, double buildMs, double raysPerSecond) {
-        return new TradeoffResult(name, "", buildMs, 1, 1, 1, 1, 1, 1, 0, raysPerSecond, 1000);
+    private static Tradeoff.Result result(String name, double buildMs, double raysPerSecond) {
+        return new Tradeoff.Result(name, "", buildMs, 1, 1, 1, 1, 1, 1, 0, raysPerSecond, 1000);
     }
 
     private Path writeObj(TriangleMesh m) throws IOException {

@@ -4,7 +4,7 @@ import java.nio.file.Path;
 import java.util.Arrays;
 import java.util.Locale;
 import org.kdtree.accel.TriangleIntersector;
-import org.kdtree.io.SceneReader;
+import org.kdtree.io.PrimitivesReader;
 import org.kdtree.kdtree.KdTree;
 import org.kdtree.kdtree.Traverser;
 import org.kdtree.scene.Scene;
@@ -20,7 +20,7 @@ import org.kdtree.spec.Builders;
  */
 public final class RenderScaling {
     public static void main(String[] args) throws Exception {
-        Scene scene = SceneReader.read(Path.of(args.length > 0 ? args[0] : "scenes/sphereflake.json"));
+        Scene scene = PrimitivesReader.readScene(Path.of(args.length > 0 ? args[0] : "scenes/sphereflake.json"));
         int runs = args.length > 1 ? Integer.parseInt(args[1]) : 3;
         int[] counts = Arrays.stream((args.length > 2 ? args[2] : "1,2").split(",")).mapToInt(Integer::parseInt).toArray();
         if (args.length > 3) {
@@ -33,13 +33,12 @@ public final class RenderScaling {
         System.out.printf(Locale.ROOT, "%s: %d triangles, %d x %d, %d spp, sah build %.1f s%n", scene.name(),
                 scene.mesh().size(), scene.camera().width(), scene.camera().height(), scene.samplesPerPixel(),
                 (System.nanoTime() - t0) / 1e9);
-        TriangleIntersector triangles = new TriangleIntersector(scene.mesh());
-        Renderer.render(scene.withImageSize(160, 120), () -> new Traverser(tree, triangles), Renderer.Options.defaults());
+        Renderer.render(scene.withImageSize(160, 120), () -> new Traverser(tree), Renderer.Options.defaults());
         double[][] seconds = new double[counts.length][runs];
         final Scene timed = scene;
         for (int r = 0; r < runs; r++) {
             for (int c = 0; c < counts.length; c++) {
-                RenderResult res = Renderer.render(timed, () -> new Traverser(tree, triangles),
+                RenderResult res = Renderer.render(timed, () -> new Traverser(tree),
                         Renderer.Options.defaults().withThreads(counts[c]));
                 seconds[c][r] = res.renderNanos() / 1e9;
             }

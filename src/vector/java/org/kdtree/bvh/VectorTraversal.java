@@ -50,14 +50,14 @@ final class VectorTraversal implements RayQuery {
         return S.length();
     }
 
-    VectorTraversal(Bvh bvh, TriangleIntersector tris) {
+    VectorTraversal(Bvh bvh) {
         WideNodes w = bvh.lanes(S.length());
         width = w.width;
         stride = w.stride;
         refs = w.refs;
         words = w.words;
         prim = bvh.primitiveArray();
-        corners = bvh.leafOrderedCorners(tris.cornerArray());
+        corners = bvh.leafCorners();
         empty = bvh.primitiveCount() == 0;
         int stack = (bvh.maxDepth() + 1) * (width - 1) + 2;
         stackEntry = new int[stack];
@@ -65,7 +65,7 @@ final class VectorTraversal implements RayQuery {
         hitEntry = new int[width];
         hitT = new double[width];
         lane = new double[width];
-        general = new BvhTraverser(bvh, tris, TraversalListener.NONE);
+        general = new BvhTraverser(bvh, TraversalListener.NONE);
     }
 
     @Override public boolean closestHit(Ray ray, double tMin, double tMax, Hit hit) {

@@ -1,4 +1,4 @@
-package org.kdtree.fuzz;
+package org.kdtree.io;
 
 import static org.assertj.core.api.Assertions.assertThat;
 
@@ -18,10 +18,6 @@ import net.jqwik.api.Property;
 import net.jqwik.api.lifecycle.AfterContainer;
 import org.junit.jupiter.api.Assertions;
 import org.kdtree.cli.RayFileAccess;
-import org.kdtree.io.MaterialReader;
-import org.kdtree.io.ObjMeshReader;
-import org.kdtree.io.Scene2DReader;
-import org.kdtree.io.SceneReader;
 import org.kdtree.kdtree.SahBuilder;
 import org.kdtree.shape.InvalidGeometryException;
 

@@ -1,4 +1,4 @@
-package org.kdtree.fuzz;
+package org.kdtree.io;
 
 import java.io.ByteArrayOutputStream;
 import java.nio.charset.StandardCharsets;

@@ -1,4 +1,4 @@
-package org.kdtree.files;
+package org.kdtree.cli;
 
 import static org.assertj.core.api.Assertions.assertThat;
 

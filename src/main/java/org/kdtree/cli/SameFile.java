@@ -1,4 +1,4 @@
-package org.kdtree.files;
+package org.kdtree.cli;
 
 import java.io.IOException;
 import java.nio.file.Files;
@@ -9,7 +9,7 @@ import java.nio.file.Path;
  * symbolic link to it, or a hard link of it. Used to refuse an output that would overwrite an
  * input before any work is done.
  */
-public final class SameFile {
+final class SameFile {
     private SameFile() {
     }
 
@@ -21,7 +21,7 @@ public final class SameFile {
      * @param a one path
      * @param b the other
      */
-    public static boolean same(Path a, Path b) {
+    static boolean same(Path a, Path b) {
         try {
             if (Files.exists(a) && Files.exists(b)) return Files.isSameFile(a, b);
         } catch (IOException unreadable) {

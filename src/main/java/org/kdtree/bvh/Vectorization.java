@@ -1,4 +1,4 @@
-package org.kdtree.accel;
+package org.kdtree.bvh;
 
 /**
  * Whether the traversals may use the Vector API (Apache Lucene's {@code VectorizationProvider}
@@ -10,7 +10,7 @@ package org.kdtree.accel;
  * for bit. A structure whose vector code fails to load reports it here ({@link #unavailable}),
  * and traces on the Java 17 path.
  */
-public final class Vectorization {
+final class Vectorization {
     /** The incubator module the vector path needs. */
     public static final String MODULE = "jdk.incubator.vector";
     /** The JDK the vector code is compiled for, and the oldest that loads it. */
