@@ -27,7 +27,7 @@ public interface AccelerationStructure {
 
     /**
      * {@return which loop its fast queries run, in a few words}, for the benchmark's report: a
-     * structure with a Vector API path says whether this JVM takes it ({@link Vectorization})
+     * structure with a Vector API path says whether this JVM takes it (the BVH: whether the JDK has the Vector API)
      */
     default String describePath() { return "scalar (the Java 17 loop; no vector path for this structure)"; }
 

@@ -10,7 +10,6 @@ import org.kdtree.accel.Setting;
 import org.kdtree.accel.SharedSettings;
 import org.kdtree.limits.Limit;
 import org.kdtree.spec.BuilderSpec;
-import org.kdtree.spec.SettingsTable;
 import picocli.CommandLine.Command;
 import picocli.CommandLine.IModelTransformer;
 import picocli.CommandLine.Model.CommandSpec;
@@ -146,8 +145,8 @@ final class BuilderOptions {
             command.addOption(OptionSpec.builder("-b", "--builder").type(String.class).paramLabel("NAME")
                     .description(which + (o.role != null ? "(" + o.role + ")." : "(default: " + o.defaultBuilder + ")."))
                     .setter(setter(v -> o.builder = (String) v)).build());
-            for (Setting<?> s : SettingsTable.all())
-                if (!o.kdTreesOnly || SettingsTable.takenByKdTrees(s)) command.addOption(option(s, o));
+            for (Setting<?> s : BuilderSpec.allSettingRows())
+                if (!o.kdTreesOnly || BuilderSpec.takenByKdTrees(s)) command.addOption(option(s, o));
             return command;
         }
 
@@ -171,7 +170,7 @@ final class BuilderOptions {
 
         /** The description of {@code s} with {@code help} for its first part. */
         static String description(Setting<?> s, String help) {
-            String only = SettingsTable.appliesToEvery(s) ? "." : "; " + SettingsTable.ownerName(s) + " only.";
+            String only = BuilderSpec.appliesToEvery(s) ? "." : "; " + BuilderSpec.ownerName(s) + " only.";
             if (s.type() == Boolean.class)
                 return "Turn " + s.name() + " " + s.format(!(Boolean) s.defaultValue()) + " (default " + s.format(s.defaultValue())
                         + "): " + help + only;

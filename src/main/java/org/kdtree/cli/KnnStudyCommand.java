@@ -5,6 +5,7 @@ import java.util.ArrayList;
 import java.util.List;
 import java.util.Locale;
 import java.util.concurrent.Callable;
+import org.kdtree.generate.Points;
 import org.kdtree.io.PrimitivesReader;
 import org.kdtree.kdtree.KdTreeBuilder;
 import org.kdtree.limits.Limits;
@@ -12,7 +13,6 @@ import org.kdtree.points.PointTree;
 import org.kdtree.shape.PointsKd;
 import org.kdtree.tradeoff.ChartFile;
 import org.kdtree.tradeoff.DimensionSweep;
-import org.kdtree.tradeoff.GeneratedPoints;
 import org.kdtree.tradeoff.NeighbourStudy;
 import picocli.CommandLine.Command;
 import picocli.CommandLine.Mixin;
@@ -88,9 +88,9 @@ final class KnnStudyCommand implements Callable<Integer> {
         checkOptions();
         KdTreeBuilder b = options.spec().create();
         if (dimensions != null) return sweep(b);
-        PointsKd points = generate != null ? kind().points(n, dimension, seed)
+        PointsKd points = generate != null ? Points.named(kind(), n, dimension, seed)
                 : PrimitivesReader.readPoints(CommandFiles.requireNotFolder("POINTS", pointsFile));
-        PointsKd queries = generate != null ? kind().queries(queryCount, dimension, seed)
+        PointsKd queries = generate != null ? Points.namedQueries(kind(), queryCount, dimension, seed)
                 : PrimitivesReader.readPoints(CommandFiles.requireNotFolder("--queries", queriesFile));
         if (queries.dimension() != points.dimension())
             throw new IllegalArgumentException(queriesFile + ": the queries are " + queries.dimension() + "-D, the points "
@@ -130,14 +130,17 @@ final class KnnStudyCommand implements Callable<Integer> {
         CommandFiles.requireNotInput(option, out, "--queries", queriesFile);
     }
 
-    private GeneratedPoints kind() {
-        return generate == null ? GeneratedPoints.UNIFORM : GeneratedPoints.named(generate);
+    /** The generated set's name ({@link Points#named}), lower case; uniform unless {@code --generate} says. */
+    private String kind() {
+        String name = generate == null ? "uniform" : generate.toLowerCase(Locale.ROOT);
+        if (!Points.NAMES.contains(name)) throw new IllegalArgumentException("--generate must be uniform or clustered, got '" + generate + "'");
+        return name;
     }
 
     /** The data's name in file names and captions. */
     private String dataName() {
-        if (dimensions != null) return kind().label() + "-dimensions";
-        if (generate != null) return kind().label() + "-" + dimension + "d";
+        if (dimensions != null) return kind() + "-dimensions";
+        if (generate != null) return kind() + "-" + dimension + "d";
         return pointsFile.getFileName().toString().replaceFirst("\\.[^.]*$", "");
     }
 
@@ -211,7 +214,7 @@ final class KnnStudyCommand implements Callable<Integer> {
 
     private int sweep(KdTreeBuilder b) throws Exception {
         System.out.printf(Locale.ROOT, "data: %s, %,d points, %,d queries, k %d, builder %s, %d run(s), one thread%n",
-                kind().label(), n, queryCount, k, b.name(), runs);
+                kind(), n, queryCount, k, b.name(), runs);
         System.out.printf(Locale.ROOT, "%9s %14s %14s %10s %12s%n", "dimension", "exact q/s", "brute q/s", "speed-up", "leaves/query");
         DimensionSweep sweep = new DimensionSweep(kind(), n, queryCount, k, runs, seed, b);
         List<DimensionSweep.Result> results = new ArrayList<>();
@@ -228,7 +231,7 @@ final class KnnStudyCommand implements Callable<Integer> {
         }
         table.finish(DimensionSweep.csv(results));
         String caption = ChartFile.caption(String.format(Locale.ROOT, "%s points: %,d, %,d queries, k %d, builder %s; median of %d run%s",
-                kind().label(), n, queryCount, k, b.name(), runs, runs == 1 ? "" : "s"), 1);
+                kind(), n, queryCount, k, b.name(), runs, runs == 1 ? "" : "s"), 1);
         sweep.writeChart(results, caption, chartFile());
         System.out.println("wrote " + csvFile() + " and " + chartFile());
         return 0;

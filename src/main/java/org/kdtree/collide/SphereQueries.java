@@ -26,14 +26,4 @@ final class SphereQueries {
         for (int a = 0; a < k; a++) m = Math.max(m, Math.abs(s[a]) + (d == null ? 0 : Math.abs(d[a])));
         return m * Tolerance.VOXEL_PAD;
     }
-
-    /** The largest finite magnitude of the tree's bounds (0 for an empty scene). */
-    static double scale(org.kdtree.geom.Box b) {
-        double m = 0;
-        for (int a = 0; a < b.dimension(); a++) {
-            if (Double.isFinite(b.min(a))) m = Math.max(m, Math.abs(b.min(a)));
-            if (Double.isFinite(b.max(a))) m = Math.max(m, Math.abs(b.max(a)));
-        }
-        return m;
-    }
 }

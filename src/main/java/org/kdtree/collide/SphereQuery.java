@@ -25,7 +25,7 @@ abstract class SphereQuery {
         Box b = tree.bounds();
         lo = b.minCorner();
         hi = b.maxCorner();
-        sceneScale = SphereQueries.scale(b);
+        sceneScale = b.magnitude();
         tested = new Mailbox(prims.size());
     }
 }

@@ -13,7 +13,46 @@ public final class Points {
     private static final int CLUSTERS = 10;
     private static final double SPREAD = 0.02;
 
+    /** The names of {@link #named}'s sets, as {@code --generate} takes them. */
+    public static final java.util.List<String> NAMES = java.util.List.of("uniform", "clustered");
+
     private Points() {
+    }
+
+    /**
+     * The set of a name, one per name as {@link Shapes#named} and {@link Meshes#named} have theirs:
+     * a nearest-neighbour study draws its data from here when the user has none.
+     *
+     * @param name "uniform" ({@link #uniform}) or "clustered" ({@link #clustered}), any case
+     * @param n    how many points
+     * @param k    coordinates per point
+     * @param seed the seed; the same seed gives the same points
+     * @return the points
+     * @throws IllegalArgumentException naming both sets if {@code name} names neither
+     */
+    public static PointsKd named(String name, int n, int k, long seed) {
+        return clustered(name) ? clustered(n, k, seed) : uniform(n, k, seed);
+    }
+
+    /**
+     * Query points drawn like {@link #named}'s set of the same name and seed, from a stream of their own.
+     *
+     * @param name  "uniform" or "clustered", any case
+     * @param count how many points
+     * @param k     coordinates per point
+     * @param seed  the data's seed
+     * @return the query points
+     * @throws IllegalArgumentException naming both sets if {@code name} names neither
+     */
+    public static PointsKd namedQueries(String name, int count, int k, long seed) {
+        return clustered(name) ? clusteredQueries(count, k, seed) : uniformQueries(count, k, seed);
+    }
+
+    private static boolean clustered(String name) {
+        String lower = name.toLowerCase(java.util.Locale.ROOT);
+        if (!NAMES.contains(lower))
+            throw new IllegalArgumentException("the kind of generated points must be uniform or clustered, got '" + name + "'");
+        return lower.equals("clustered");
     }
 
     /**

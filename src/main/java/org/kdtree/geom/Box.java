@@ -132,6 +132,19 @@ public final class Box {
     /** {@return a new box with the same corners} */
     public Box copy() { return new Box(min, max); }
 
+    /**
+     * {@return the largest finite magnitude of its bounds} (0 for an empty or unbounded box): the
+     * scale that tolerances relative to a scene are taken of
+     */
+    public double magnitude() {
+        double m = 0;
+        for (int a = 0; a < dimension(); a++) {
+            if (Double.isFinite(min[a])) m = Math.max(m, Math.abs(min[a]));
+            if (Double.isFinite(max[a])) m = Math.max(m, Math.abs(max[a]));
+        }
+        return m;
+    }
+
     /** {@return the lower corner, as a new array} (for hot loops that keep the box in locals) */
     public double[] minCorner() { return min.clone(); }
 

@@ -16,7 +16,6 @@ import org.kdtree.accel.Setting;
 import org.kdtree.accel.SharedSettings;
 import org.kdtree.kdtree.SahBuilder;
 import org.kdtree.spec.BuilderSpec;
-import org.kdtree.spec.SettingsTable;
 
 /**
  * The builder controls, an editor of the model's {@link BuilderSpec}: which builder, then one
@@ -72,7 +71,7 @@ final class BuilderPanel extends JPanel {
         rejection.setForeground(new java.awt.Color(170, 0, 0));
         int y = 0;
         row(y++, "Builder", builder);
-        for (Setting<?> s : SettingsTable.all()) {
+        for (Setting<?> s : BuilderSpec.allSettingRows()) {
             if (NOT_OFFERED.contains(s)) continue;
             // the plane search's O(N^2) naive algorithm is too slow to be live
             SettingControl c = SettingControl.of(s, this::reject, v -> v != SahBuilder.Algorithm.NAIVE);

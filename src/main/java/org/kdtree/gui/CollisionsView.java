@@ -20,7 +20,6 @@ import javax.swing.JLabel;
 import javax.swing.JPanel;
 import javax.swing.JSpinner;
 import javax.swing.Timer;
-import org.kdtree.collide.BallSimulation;
 import org.kdtree.geom.Box;
 import org.kdtree.kdtree.KdTree;
 import org.kdtree.shape.Scene2D;

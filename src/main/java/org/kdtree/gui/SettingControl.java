@@ -12,7 +12,6 @@ import javax.swing.JList;
 import javax.swing.JSpinner;
 import org.kdtree.accel.Setting;
 import org.kdtree.spec.BuilderSpec;
-import org.kdtree.spec.SettingsTable;
 
 /**
  * The workbench's control of one builder {@link Setting}, made from its row: a spinner over the
@@ -73,7 +72,7 @@ final class SettingControl {
 
     /** "lambda: the SAH's weight of ... (1 = no bonus); the sah builder only; allowed: 0.01..1". */
     private static String tooltip(Setting<?> s) {
-        return s.name() + ": " + s.help() + (SettingsTable.appliesToEvery(s) ? "" : "; " + SettingsTable.ownerName(s) + " only")
+        return s.name() + ": " + s.help() + (BuilderSpec.appliesToEvery(s) ? "" : "; " + BuilderSpec.ownerName(s) + " only")
                 + (s.limit() != null ? "; " + LimitedSpinner.allowed(s.limit()) : "");
     }
 

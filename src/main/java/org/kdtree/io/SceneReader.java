@@ -16,7 +16,6 @@ import org.kdtree.scene.GeometryBuilder;
 import org.kdtree.scene.Light;
 import org.kdtree.scene.Material;
 import org.kdtree.scene.Scene;
-import org.kdtree.scene.Tessellation;
 import org.kdtree.scene.Vec3;
 
 /**
@@ -153,21 +152,21 @@ final class SceneReader {
                 int seg = o.has("segments") ? o.get("segments").integer(Limits.SPHERE_SEGMENTS) : 48;
                 int rings = o.has("rings") ? o.get("rings").integer(Limits.SPHERE_RINGS) : Math.max(2, seg / 2);
                 limit(o, 2L * seg * (rings - 1));
-                Tessellation.sphere(geometry, vec(o.get("center")), positive(o.get("radius")), seg, rings, materialOf(o));
+                geometry.sphere(vec(o.get("center")), positive(o.get("radius")), seg, rings, materialOf(o));
                 return true;
             }
             case "box" -> {
                 o.allowOnly("type", "min", "max", "material", "transform");
                 Vec3 min = vec(o.get("min")), max = vec(o.get("max"));
                 if (min.x() > max.x() || min.y() > max.y() || min.z() > max.z()) throw o.get("max").error("must not be below min");
-                Tessellation.box(geometry, min, max, materialOf(o));
+                geometry.box(min, max, materialOf(o));
                 return true;
             }
             case "plane" -> {
                 o.allowOnly("type", "center", "normal", "size", "material", "transform");
                 double[] size = o.get("size").isNumber() ? new double[] {o.get("size").number(), o.get("size").number()}
                         : pair(o.get("size"));
-                Tessellation.plane(geometry, vec(o.get("center")), unit(o.get("normal")), size[0], size[1], materialOf(o));
+                geometry.plane(vec(o.get("center")), unit(o.get("normal")), size[0], size[1], materialOf(o));
                 return true;
             }
             case "sphereflake" -> {
@@ -176,7 +175,7 @@ final class SceneReader {
                 int rings = o.has("rings") ? o.get("rings").integer(Limits.SPHERE_RINGS) : Math.max(2, seg / 2);
                 int levels = o.get("levels").integer(Limits.FLAKE_LEVELS);
                 limit(o, ((long) Math.pow(9, levels + 1) - 1) / 8 * 2L * seg * (rings - 1));
-                Tessellation.sphereflake(geometry, vec(o.get("center")), positive(o.get("radius")), levels, seg, rings,
+                geometry.sphereflake(vec(o.get("center")), positive(o.get("radius")), levels, seg, rings,
                         materialOf(o));
                 return false;
             }

@@ -174,4 +174,63 @@ public final class GeometryBuilder {
         return new SceneGeometry(mesh, Arrays.copyOf(materials, triangleCount),
                 Arrays.copyOf(normals, 3 * vertexCount), Arrays.copyOf(smooth, triangleCount));
     }
+
+    /**
+     * A UV sphere with {@code segments} slices around and {@code rings} stacks from pole to pole,
+     * smoothly shaded: {@code 2 * segments * (rings - 1)} triangles.
+     * @param center the centre
+     * @param radius the radius
+     * @param segments slices around
+     * @param rings stacks from pole to pole
+     * @param material the material index
+     * @return this builder
+     */
+    public GeometryBuilder sphere(Vec3 center, double radius, int segments, int rings, int material) {
+        Tessellation.sphere(this, center, radius, segments, rings, material);
+        return this;
+    }
+
+    /**
+     * An axis-aligned box from {@code min} to {@code max}, twelve flat triangles facing outward.
+     *
+     * @param min the lower corner
+     * @param max the upper corner
+     * @param material the material index
+     * @return this builder
+     */
+    public GeometryBuilder box(Vec3 min, Vec3 max, int material) {
+        Tessellation.box(this, min, max, material);
+        return this;
+    }
+
+    /**
+     * A width x height rectangle centred at {@code center}, facing {@code normal}: two triangles.
+     *
+     * @param center the centre
+     * @param normal the side it faces
+     * @param width the extent along its first in-plane axis
+     * @param height the extent along its second in-plane axis
+     * @param material the material index
+     * @return this builder
+     */
+    public GeometryBuilder plane(Vec3 center, Vec3 normal, double width, double height, int material) {
+        Tessellation.plane(this, center, normal, width, height, material);
+        return this;
+    }
+
+    /**
+     * Haines' sphereflake: a sphere with nine spheres of a third its radius touching it, each
+     * with nine of its own, {@code levels} deep: {@code (9^(levels+1) - 1) / 8} spheres.
+     * @param center the centre sphere's centre
+     * @param radius the centre sphere's radius
+     * @param levels how many generations of child spheres
+     * @param segments slices around each sphere
+     * @param rings stacks from pole to pole of each sphere
+     * @param material the material index
+     * @return this builder
+     */
+    public GeometryBuilder sphereflake(Vec3 center, double radius, int levels, int segments, int rings, int material) {
+        Tessellation.sphereflake(this, center, radius, levels, segments, rings, material);
+        return this;
+    }
 }

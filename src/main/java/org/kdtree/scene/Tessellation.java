@@ -2,22 +2,13 @@ package org.kdtree.scene;
 
 import org.kdtree.limits.Limits;
 
-/** The built-in shapes, tessellated into a {@link GeometryBuilder}: spheres, boxes, planes, sphereflakes. */
-public final class Tessellation {
+/** The built-in shapes, tessellated into a {@link GeometryBuilder}, whose methods of the same names are their public door. */
+final class Tessellation {
     private Tessellation() {
     }
 
-    /**
-     * A UV sphere with {@code segments} slices around and {@code rings} stacks from pole to pole,
-     * smoothly shaded: {@code 2 * segments * (rings - 1)} triangles.
-     * @param g receives the triangles
-     * @param center the centre
-     * @param radius the radius
-     * @param segments slices around
-     * @param rings stacks from pole to pole
-     * @param material the material index
-     */
-    public static void sphere(GeometryBuilder g, Vec3 center, double radius, int segments, int rings, int material) {
+    /** {@link GeometryBuilder#sphere}, into {@code g}. */
+    static void sphere(GeometryBuilder g, Vec3 center, double radius, int segments, int rings, int material) {
         Limits.SPHERE_SEGMENTS.check("segments", segments);
         Limits.SPHERE_RINGS.check("rings", rings);
         int north = g.vertex(center.plus(new Vec3(0, radius, 0)), new Vec3(0, 1, 0));
@@ -45,15 +36,8 @@ public final class Tessellation {
         }
     }
 
-    /**
-     * An axis-aligned box from {@code min} to {@code max}, twelve flat triangles facing outward.
-     *
-     * @param g receives the triangles
-     * @param min the lower corner
-     * @param max the upper corner
-     * @param material the material index
-     */
-    public static void box(GeometryBuilder g, Vec3 min, Vec3 max, int material) {
+    /** {@link GeometryBuilder#box}, into {@code g}. */
+    static void box(GeometryBuilder g, Vec3 min, Vec3 max, int material) {
         double x0 = min.x(), y0 = min.y(), z0 = min.z(), x1 = max.x(), y1 = max.y(), z1 = max.z();
         g.quad(new Vec3(x0, y0, z1), new Vec3(x1, y0, z1), new Vec3(x1, y1, z1), new Vec3(x0, y1, z1), material); // +z
         g.quad(new Vec3(x1, y0, z0), new Vec3(x0, y0, z0), new Vec3(x0, y1, z0), new Vec3(x1, y1, z0), material); // -z
@@ -63,17 +47,8 @@ public final class Tessellation {
         g.quad(new Vec3(x0, y0, z0), new Vec3(x1, y0, z0), new Vec3(x1, y0, z1), new Vec3(x0, y0, z1), material); // -y
     }
 
-    /**
-     * A width x height rectangle centred at {@code center}, facing {@code normal}: two triangles.
-     *
-     * @param g receives the triangles
-     * @param center the centre
-     * @param normal the side it faces
-     * @param width the extent along its first in-plane axis
-     * @param height the extent along its second in-plane axis
-     * @param material the material index
-     */
-    public static void plane(GeometryBuilder g, Vec3 center, Vec3 normal, double width, double height, int material) {
+    /** {@link GeometryBuilder#plane}, into {@code g}. */
+    static void plane(GeometryBuilder g, Vec3 center, Vec3 normal, double width, double height, int material) {
         Vec3 n = normal.normalized();
         Vec3 a = Math.abs(n.y()) < 0.9 ? new Vec3(0, 1, 0) : new Vec3(0, 0, -1);
         Vec3 u = a.cross(n).normalized().times(width / 2);
@@ -82,18 +57,8 @@ public final class Tessellation {
                 material);
     }
 
-    /**
-     * Haines' sphereflake: a sphere with nine spheres of a third its radius touching it, each
-     * with nine of its own, {@code levels} deep: {@code (9^(levels+1) - 1) / 8} spheres.
-     * @param g receives the triangles
-     * @param center the centre sphere's centre
-     * @param radius the centre sphere's radius
-     * @param levels how many generations of child spheres
-     * @param segments slices around each sphere
-     * @param rings stacks from pole to pole of each sphere
-     * @param material the material index
-     */
-    public static void sphereflake(GeometryBuilder g, Vec3 center, double radius, int levels, int segments,
+    /** {@link GeometryBuilder#sphereflake}, into {@code g}. */
+    static void sphereflake(GeometryBuilder g, Vec3 center, double radius, int levels, int segments,
                                    int rings, int material) {
         Limits.FLAKE_LEVELS.check("levels", levels);
         flake(g, center, radius, new Vec3(0, 1, 0), levels, segments, rings, material);

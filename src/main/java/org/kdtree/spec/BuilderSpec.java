@@ -130,6 +130,32 @@ public final class BuilderSpec {
     }
 
     /**
+     * {@return every row of every builder known by name, once each, the SAH's preset first}: the
+     * one table of builder settings, which the command line's options, the workbench's controls
+     * and docs/limits.md are made from (a loaded plug-in's rows join it)
+     */
+    public static List<Setting<?>> allSettingRows() { return SettingsTable.all(); }
+
+    /**
+     * {@return the builders {@code row} applies to, as a message says it}: "every builder", "the
+     * kd-tree builders", "the sah builder", "the sah and bvh builders"
+     * @param row a row of {@link #allSettingRows()}
+     */
+    public static String ownerName(Setting<?> row) { return SettingsTable.ownerName(row); }
+
+    /**
+     * {@return whether some kd-tree builder takes {@code row}} (a command that needs a kd-tree offers only those)
+     * @param row a row of {@link #allSettingRows()}
+     */
+    public static boolean takenByKdTrees(Setting<?> row) { return SettingsTable.takenByKdTrees(row); }
+
+    /**
+     * {@return whether every builder known by name takes {@code row}}
+     * @param row a row of {@link #allSettingRows()}
+     */
+    public static boolean appliesToEvery(Setting<?> row) { return SettingsTable.appliesToEvery(row); }
+
+    /**
      * {@return whether the builder {@code name} takes {@code setting}}
      *
      * @param setting the setting

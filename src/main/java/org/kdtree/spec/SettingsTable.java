@@ -14,8 +14,9 @@ import org.kdtree.accel.Setting;
  * {@code accel.SharedSettings}, the SAH's in {@code SahBuilder}, the BVH's width in
  * {@code BvhBuilder}, a plug-in's in its own class). The command line's options, the workbench's
  * controls and docs/limits.md are made from it, so a plug-in's rows join them when it is loaded.
+ * {@link BuilderSpec} is its public face.
  */
-public final class SettingsTable {
+final class SettingsTable {
     private SettingsTable() {
     }
 
@@ -24,7 +25,7 @@ public final class SettingsTable {
      * order the builders are known and list them, so the SAH's preset comes first (a spec applies
      * it first, and the other rows override it)
      */
-    public static List<Setting<?>> all() {
+    static List<Setting<?>> all() {
         Set<Setting<?>> rows = new LinkedHashSet<>();
         Map<String, String> ownerOfOption = new HashMap<>();
         for (String name : BuilderSpec.names()) {
@@ -52,7 +53,7 @@ public final class SettingsTable {
      *
      * @param row a row of the table
      */
-    public static String ownerName(Setting<?> row) {
+    static String ownerName(Setting<?> row) {
         List<String> takers = takers(row);
         if (takers.size() == BuilderSpec.names().size()) return "every builder";
         if (takers.equals(new ArrayList<>(Builders.names()))) return "the kd-tree builders";
@@ -65,7 +66,7 @@ public final class SettingsTable {
      *
      * @param row a row of the table
      */
-    public static boolean takenByKdTrees(Setting<?> row) {
+    static boolean takenByKdTrees(Setting<?> row) {
         for (String name : Builders.names()) if (Builders.settingRows(name).contains(row)) return true;
         return false;
     }
@@ -75,7 +76,7 @@ public final class SettingsTable {
      *
      * @param row a row of the table
      */
-    public static boolean appliesToEvery(Setting<?> row) {
+    static boolean appliesToEvery(Setting<?> row) {
         return takers(row).size() == BuilderSpec.names().size();
     }
 }

@@ -2,6 +2,7 @@ package org.kdtree.tradeoff;
 
 import java.util.List;
 import java.util.Locale;
+import org.kdtree.generate.Points;
 import org.kdtree.kdtree.KdTreeBuilder;
 import org.kdtree.points.PointTree;
 
@@ -11,7 +12,7 @@ import org.kdtree.points.PointTree;
  * dimension grows, a query's ball reaches more and more cells, until the tree scans nearly
  * every leaf and its bookkeeping makes it slower than the plain scan.
  *
- * @param kind       the data
+ * @param kind       the data: a set of {@link Points#named} (uniform or clustered)
  * @param n          points per dimension measured
  * @param queryCount query points, drawn as the data
  * @param k          neighbours per query
@@ -19,7 +20,7 @@ import org.kdtree.points.PointTree;
  * @param seed       the data's seed (the same for every dimension)
  * @param builder    builds each tree
  */
-public record DimensionSweep(GeneratedPoints kind, int n, int queryCount, int k, int runs, long seed, KdTreeBuilder builder) {
+public record DimensionSweep(String kind, int n, int queryCount, int k, int runs, long seed, KdTreeBuilder builder) {
 
     /**
      * Builds the tree at {@code dimension} and times its exact search and brute force.
@@ -28,8 +29,8 @@ public record DimensionSweep(GeneratedPoints kind, int n, int queryCount, int k,
      * @return the two speeds and the tree's leaves
      */
     public Result measure(int dimension) {
-        PointTree tree = PointTree.build(kind.points(n, dimension, seed), builder);
-        NeighbourStudy study = new NeighbourStudy(tree, kind.queries(queryCount, dimension, seed), k, runs);
+        PointTree tree = PointTree.build(Points.named(kind, n, dimension, seed), builder);
+        NeighbourStudy study = new NeighbourStudy(tree, Points.namedQueries(kind, queryCount, dimension, seed), k, runs);
         NeighbourStudy.Result exact = study.exact();
         return new Result(dimension, exact.queriesPerSecond(), study.bruteQueriesPerSecond(),
                 exact.leavesPerQuery(), tree.tree().stats().leaves());
@@ -57,7 +58,7 @@ public record DimensionSweep(GeneratedPoints kind, int n, int queryCount, int k,
      * @throws java.io.IOException if it cannot be written
      */
     public void writeChart(List<Result> results, String caption, java.nio.file.Path file) throws java.io.IOException {
-        String title = "Where kd-trees stop helping: exact search against brute force (" + kind.label() + ")";
+        String title = "Where kd-trees stop helping: exact search against brute force (" + kind.toLowerCase(java.util.Locale.ROOT) + ")";
         ChartFile.write(DimensionChart.chart(results, title), caption, file);
     }
 

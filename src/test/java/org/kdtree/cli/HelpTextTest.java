@@ -89,6 +89,6 @@ class HelpTextTest {
 
     @Test void theReadmesOptionListNamesEverySetting() throws Exception {
         String readme = java.nio.file.Files.readString(java.nio.file.Path.of("README.md"));
-        for (org.kdtree.accel.Setting<?> s : org.kdtree.spec.SettingsTable.all()) assertThat(readme).as(s.option()).contains("`" + s.option());
+        for (org.kdtree.accel.Setting<?> s : org.kdtree.spec.BuilderSpec.allSettingRows()) assertThat(readme).as(s.option()).contains("`" + s.option());
     }
 }

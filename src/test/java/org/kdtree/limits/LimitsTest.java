@@ -10,7 +10,7 @@ import org.junit.jupiter.api.Test;
 import org.kdtree.accel.CostModel;
 import org.kdtree.io.PrimitivesReader;
 import org.kdtree.kdtree.SahBuilder;
-import org.kdtree.scene.Tessellation;
+import org.kdtree.scene.GeometryBuilder;
 
 class LimitsTest {
     @Test void eachLimitAllowsItsEndsAndRejectsJustBeyondThem() {
@@ -38,7 +38,7 @@ class LimitsTest {
         assertThatThrownBy(() -> new SahBuilder().lambda(0)).hasMessageContaining("must be between 0.01 and 1");
         assertThatThrownBy(() -> new SahBuilder().costModel(new CostModel(15, 1e9))).hasMessage("--ki must be between 0.001 and 10000, got 1000000000");
         assertThatThrownBy(() -> new SahBuilder().referenceBudget(0)).hasMessageStartingWith("--reference-budget must be between 1 and 65536");
-        assertThatThrownBy(() -> Tessellation.sphere(null, null, 1, 2, 8, 0)).hasMessage("segments must be between 3 and 4096, got 2");
+        assertThatThrownBy(() -> new GeometryBuilder().sphere(null, 1, 2, 8, 0)).hasMessage("segments must be between 3 and 4096, got 2");
     }
 
     @Test void aSceneFileFieldGetsTheSameWording(@org.junit.jupiter.api.io.TempDir Path dir) throws Exception {

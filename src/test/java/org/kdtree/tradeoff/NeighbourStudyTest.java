@@ -6,6 +6,7 @@ import static org.assertj.core.api.Assertions.assertThatThrownBy;
 import java.util.ArrayList;
 import java.util.List;
 import org.junit.jupiter.api.Test;
+import org.kdtree.generate.Points;
 import org.kdtree.kdtree.SlidingMidpointBuilder;
 import org.kdtree.points.NearestQuery;
 import org.kdtree.points.PointTree;
@@ -13,13 +14,13 @@ import org.kdtree.shape.PointsKd;
 
 /** Recall against the brute-force oracle: exact where it must be, bounded, and growing with the budget. */
 class NeighbourStudyTest {
-    private static NeighbourStudy study(GeneratedPoints kind, int n, int dim, int k) {
-        PointTree tree = PointTree.build(kind.points(n, dim, 7), new SlidingMidpointBuilder());
-        return new NeighbourStudy(tree, kind.queries(60, dim, 7), k, 1);
+    private static NeighbourStudy study(String kind, int n, int dim, int k) {
+        PointTree tree = PointTree.build(Points.named(kind, n, dim, 7), new SlidingMidpointBuilder());
+        return new NeighbourStudy(tree, Points.namedQueries(kind, 60, dim, 7), k, 1);
     }
 
     @Test void theExactSearchesHaveRecallOne() {
-        NeighbourStudy s = study(GeneratedPoints.UNIFORM, 2000, 6, 10);
+        NeighbourStudy s = study("uniform", 2000, 6, 10);
         assertThat(s.exact().recall()).isEqualTo(1.0);
         assertThat(s.budget(NearestQuery.UNLIMITED).recall()).isEqualTo(1.0);
         assertThat(s.epsilon(0).recall()).isEqualTo(1.0);
@@ -32,12 +33,12 @@ class NeighbourStudyTest {
      * so per query it keeps at least as many true neighbours: recall cannot fall.
      */
     @Test void recallIsAFractionThatGrowsWithTheBudget() {
-        for (GeneratedPoints kind : GeneratedPoints.values()) {
+        for (String kind : Points.NAMES) {
             NeighbourStudy s = study(kind, 3000, 8, 10);
             List<Double> recalls = new ArrayList<>();
             for (int budget : new int[] {1, 2, 4, 8, 16, 32, 64, NearestQuery.UNLIMITED}) recalls.add(s.budget(budget).recall());
-            assertThat(recalls).as(kind.label()).allSatisfy(r -> assertThat(r).isBetween(0.0, 1.0)).isSorted();
-            assertThat(recalls.get(0)).as(kind.label() + ": one leaf of 8-D data misses some").isLessThan(1.0);
+            assertThat(recalls).as(kind).allSatisfy(r -> assertThat(r).isBetween(0.0, 1.0)).isSorted();
+            assertThat(recalls.get(0)).as(kind + ": one leaf of 8-D data misses some").isLessThan(1.0);
             assertThat(recalls.get(recalls.size() - 1)).isEqualTo(1.0);
         }
     }
@@ -51,7 +52,7 @@ class NeighbourStudyTest {
     }
 
     @Test void theCsvHasOneRowPerMeasurementWithItsColumns() {
-        NeighbourStudy s = study(GeneratedPoints.CLUSTERED, 500, 3, 4);
+        NeighbourStudy s = study("clustered", 500, 3, 4);
         List<NeighbourStudy.Result> results = List.of(s.bruteForce(), s.exact(), s.budget(1), s.budget(8), s.epsilon(0.5));
         List<String> lines = NeighbourStudy.csv(results).lines().toList();
         assertThat(lines.get(0)).isEqualTo("search,setting,recall,queries_per_s,leaves_per_query,speed_up");
@@ -63,14 +64,14 @@ class NeighbourStudyTest {
     }
 
     @Test void generatedSetsAreTheSameForASeed() {
-        PointsKd a = GeneratedPoints.CLUSTERED.points(100, 5, 3), b = GeneratedPoints.CLUSTERED.points(100, 5, 3);
-        PointsKd q = GeneratedPoints.CLUSTERED.queries(100, 5, 3);
+        PointsKd a = Points.named("clustered", 100, 5, 3), b = Points.named("clustered", 100, 5, 3);
+        PointsKd q = Points.namedQueries("clustered", 100, 5, 3);
         for (int i = 0; i < 100; i++)
             for (int d = 0; d < 5; d++) {
                 assertThat(a.coord(i, d)).isEqualTo(b.coord(i, d));
                 assertThat(q.coord(i, d)).isNotEqualTo(a.coord(i, d));
             }
-        assertThatThrownBy(() -> GeneratedPoints.named("gaussian"))
-                .hasMessage("--generate must be uniform or clustered, got 'gaussian'");
+        assertThatThrownBy(() -> Points.named("gaussian", 1, 1, 1))
+                .hasMessage("the kind of generated points must be uniform or clustered, got 'gaussian'");
     }
 }

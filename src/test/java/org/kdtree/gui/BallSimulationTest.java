@@ -1,4 +1,4 @@
-package org.kdtree.collide;
+package org.kdtree.gui;
 
 import static org.assertj.core.api.Assertions.assertThat;
 
@@ -6,6 +6,7 @@ import java.util.ArrayList;
 import java.util.List;
 import java.util.Random;
 import org.junit.jupiter.api.Test;
+import org.kdtree.collide.ShapeCollider;
 import org.kdtree.generate.Shapes;
 import org.kdtree.kdtree.KdTree;
 import org.kdtree.shape.Scene2D;
@@ -22,15 +23,14 @@ class BallSimulationTest {
         shapes.add(new Shape2D.Rect(-10, 125, 110, 130)); // ceiling
         Scene2D scene = new Scene2D(shapes);
         KdTree tree = Builders.create("sah").build(scene);
-        BruteForceCollisions brute = new BruteForceCollisions(new ShapeCollider(scene));
+        ShapeCollider objects = new ShapeCollider(scene);
         double restitution = 0.8;
         BallSimulation sim = new BallSimulation(tree, scene, 40, 0, -9.81, restitution);
         Random rnd = new Random(4);
-        int[] none = new int[0];
         while (sim.balls() < 40) {
             double[] p = {rnd.nextDouble() * 100, 60 + rnd.nextDouble() * 60};
             double r = 0.5 + rnd.nextDouble() * 1.5;
-            if (brute.overlapping(p, r, none) == 0) sim.addBall(p[0], p[1], rnd.nextGaussian() * 5, 0, r);
+            if (overlapping(objects, p, r) == 0) sim.addBall(p[0], p[1], rnd.nextGaussian() * 5, 0, r);
         }
         double tolerance = 1e-6;
         double energy = sim.energy(), start = energy;
@@ -41,7 +41,7 @@ class BallSimulationTest {
             bruteTests += sim.lastBruteForceTests();
             for (int b = 0; b < sim.balls(); b++) {
                 double[] c = {sim.x(b), sim.y(b)};
-                assertThat(brute.overlapping(c, sim.radius(b) - tolerance, none)).as("step " + step + " ball " + b + " at "
+                assertThat(overlapping(objects, c, sim.radius(b) - tolerance)).as("step " + step + " ball " + b + " at "
                         + c[0] + ", " + c[1]).isZero();
             }
             double now = sim.energy();
@@ -61,5 +61,12 @@ class BallSimulationTest {
         assertThat(new double[] {sim.x(0), sim.y(0), sim.vx(0), sim.vy(0), sim.radius(0)}).containsExactly(3, 7, 1, -2, 0.25);
         org.assertj.core.api.Assertions.assertThatThrownBy(() -> sim.place(1, 0, 0, 0, 0))
                 .isInstanceOf(IndexOutOfBoundsException.class).hasMessage("ball 1 of 1");
+    }
+
+    /** Brute force, the oracle: how many objects a disc of radius {@code r} at {@code c} overlaps. */
+    private static int overlapping(ShapeCollider shapes, double[] c, double r) {
+        int n = 0;
+        for (int i = 0; i < shapes.size(); i++) if (shapes.closestPoint(i, c, null) <= r * r) n++;
+        return n;
     }
 }

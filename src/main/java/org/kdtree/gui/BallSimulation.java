@@ -1,5 +1,8 @@
-package org.kdtree.collide;
+package org.kdtree.gui;
 
+import org.kdtree.collide.Contact;
+import org.kdtree.collide.ShapeCollider;
+import org.kdtree.collide.SweepQuery;
 import org.kdtree.geom.Tolerance;
 import org.kdtree.kdtree.KdTree;
 import org.kdtree.shape.Scene2D;
@@ -17,7 +20,7 @@ import org.kdtree.shape.Scene2D;
  * with restitution {@code <= 1} does not either. Per step it counts the primitive tests the tree needed
  * and what brute force would have needed (every primitive per sweep). Allocation-free per step.
  */
-public final class BallSimulation {
+final class BallSimulation {
     /** Contacts handled per ball and step; the rest of the step is dropped (a ball wedged in a corner). */
     public static final int MAX_BOUNCES = 4;
 
@@ -45,7 +48,7 @@ public final class BallSimulation {
         this.gx = gx;
         this.gy = gy;
         this.restitution = restitution;
-        double extent = Math.max(1, SphereQueries.scale(tree.bounds()));
+        double extent = Math.max(1, tree.bounds().magnitude());
         skin = extent * Tolerance.CONTACT_SKIN;
         x = new double[capacity];
         y = new double[capacity];
