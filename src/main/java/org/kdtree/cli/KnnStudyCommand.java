@@ -135,7 +135,12 @@ final class KnnStudyCommand implements Callable<Integer> {
     }
 
     private GeneratedPoints kind() {
-        return generate == null ? GeneratedPoints.UNIFORM : GeneratedPoints.named(generate);
+        if (generate == null) return GeneratedPoints.UNIFORM;
+        try {
+            return GeneratedPoints.named(generate);
+        } catch (IllegalArgumentException e) {   // the library names the kind; the user typed --generate
+            throw new IllegalArgumentException("--generate must be uniform or clustered, got '" + generate + "'", e);
+        }
     }
 
     /** The data's name in file names and captions. */

@@ -24,7 +24,7 @@ public enum GeneratedPoints {
      */
     public static GeneratedPoints named(String name) {
         for (GeneratedPoints g : values()) if (g.label().equals(name.toLowerCase(Locale.ROOT))) return g;
-        throw new IllegalArgumentException("--generate must be uniform or clustered, got '" + name + "'");
+        throw new IllegalArgumentException("the kind of generated points must be uniform or clustered, got '" + name + "'");
     }
 
     /** {@return the lower-case name used on the command line and in captions} */

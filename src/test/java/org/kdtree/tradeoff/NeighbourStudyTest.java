@@ -71,6 +71,6 @@ class NeighbourStudyTest {
                 assertThat(q.coord(i, d)).isNotEqualTo(a.coord(i, d));
             }
         assertThatThrownBy(() -> GeneratedPoints.named("gaussian"))
-                .hasMessage("--generate must be uniform or clustered, got 'gaussian'");
+                .hasMessage("the kind of generated points must be uniform or clustered, got 'gaussian'");
     }
 }
