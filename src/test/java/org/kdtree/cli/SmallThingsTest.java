@@ -44,6 +44,22 @@ class SmallThingsTest {
         }
     }
 
+    /** Item 5: a bundled scene opens through the reader that fits it; raycast and tradeoff took none ("give an OBJ file" on the bundled OBJ). */
+    @Test void raycastAndTradeoffTakeTheBundledMeshAsStatsDoes() throws Exception {
+        CliRun r = CliRun.of("raycast", "scenes:clustered-spheres", "-b", "bvh", "--runs", "1", "--warmup", "0");
+        assertThat(r.code()).as(r.err()).isZero();
+        assertThat(r.out()).startsWith("kdtree-bvh clustered-spheres 10370 ");
+        Path csv = dir.resolve("t.csv");
+        r = CliRun.of("tradeoff", "scenes:clustered-spheres", "--variants", "bvh", "--runs", "1", "--ray-count", "1000",
+                "--counted-rays", "100", "--csv", csv.toString(), "--chart", dir.resolve("t.png").toString(), "-q");
+        assertThat(r.code()).as(r.err()).isZero();
+        assertThat(r.out()).contains("scene: clustered-spheres (10370 triangles)");
+        assertThat(Files.readAllLines(csv)).hasSize(2);
+        r = CliRun.of("raycast", "scenes:talk-figures");
+        assertThat(r.err().strip()).isEqualTo("error: scenes:talk-figures: raycast traces rays through a triangle mesh; "
+                + "give an OBJ file (bundled: scenes:clustered-spheres)");
+    }
+
     @Test void renderIntoALogSaysWhatItRendersBeforeItIsDone() throws Exception {
         Path png = dir.resolve("c.png");
         CliRun r = CliRun.of("render", "scenes:cornell-box", "-o", png.toString(), "--spp", "1", "--width", "64", "--height", "48");
