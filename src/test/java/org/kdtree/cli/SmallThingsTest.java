@@ -60,6 +60,18 @@ class SmallThingsTest {
                 + "give an OBJ file (bundled: scenes:clustered-spheres)");
     }
 
+    /** A missing file reads "no such file" in every command, whatever its name (stats said "unknown file type", render and raycast named its kind). */
+    @Test void aMissingFileIsNoSuchFileWhateverItsName() {
+        for (String name : new String[] {"nothing", "notes.txt", "scene.obj"}) {
+            Path missing = dir.resolve(name);
+            for (String command : new String[] {"stats", "render", "raycast"}) {
+                CliRun r = CliRun.of(command, missing.toString(), "-q");
+                assertThat(r.code()).as(command + " " + name).isEqualTo(Failure.USAGE);
+                assertThat(r.err().strip()).as(command + " " + name).isEqualTo("error: " + missing + ": no such file");
+            }
+        }
+    }
+
     @Test void renderIntoALogSaysWhatItRendersBeforeItIsDone() throws Exception {
         Path png = dir.resolve("c.png");
         CliRun r = CliRun.of("render", "scenes:cornell-box", "-o", png.toString(), "--spp", "1", "--width", "64", "--height", "48");
