@@ -72,6 +72,17 @@ class SmallThingsTest {
         }
     }
 
+    /** grade-class given a file, a student's jar say, said "no such folder" of a file that is there. */
+    @Test void gradeClassGivenAFileSaysItIsAFile() throws Exception {
+        Path jar = Files.writeString(dir.resolve("student.jar"), "");
+        CliRun r = CliRun.of("grade-class", jar.toString(), "--no-sandbox");
+        assertThat(r.code()).isEqualTo(Failure.USAGE);
+        assertThat(r.err().strip()).isEqualTo("error: grade-class " + jar + ": is a file, not a folder; give the folder of the "
+                + "students' jars (one student's jar: grade --student-jar JAR)");
+        r = CliRun.of("grade-class", dir.resolve("none").toString(), "--no-sandbox");
+        assertThat(r.err().strip()).isEqualTo("error: grade-class " + dir.resolve("none") + ": no such folder");
+    }
+
     @Test void renderIntoALogSaysWhatItRendersBeforeItIsDone() throws Exception {
         Path png = dir.resolve("c.png");
         CliRun r = CliRun.of("render", "scenes:cornell-box", "-o", png.toString(), "--spp", "1", "--width", "64", "--height", "48");
