@@ -160,8 +160,8 @@ public final class BuilderSpec {
      */
     public KdTreeBuilder create() {
         if (builder.equals(BvhBuilder.NAME))
-            throw new IllegalArgumentException("-b " + builder + " builds a bounding volume hierarchy, which answers ray queries"
-                    + " only (raycast, stats, render, tradeoff, the workbench); this needs a kd-tree builder: " + String.join(", ", Builders.names()));
+            throw new IllegalArgumentException("the " + builder + " builder makes a bounding volume hierarchy, which answers ray queries"
+                    + " only (structureBuilder(), build()); a kd-tree needs a kd-tree builder: " + String.join(", ", Builders.names()));
         return applied(Builders.create(builder));
     }
 

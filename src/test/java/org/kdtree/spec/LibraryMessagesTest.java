@@ -45,6 +45,8 @@ class LibraryMessagesTest {
         assertThatThrownBy(() -> new SahBuilder().threads(0)).hasMessage("threads must be between 1 and 256, got 0");
         assertThatThrownBy(() -> new RayBatch(0, () -> null)).hasMessage("threads must be between 1 and 256, got 0");
         assertThatThrownBy(() -> GeneratedPoints.named("gaussian")).hasMessageNotContaining("--");
+        assertThatThrownBy(() -> BuilderSpec.of("bvh").create())   // the command line's "-b bvh builds ..." is cli.BvhCommandsTest's
+                .hasMessageStartingWith("the bvh builder makes a bounding volume hierarchy, which answers ray queries only").hasMessageNotContaining("-b ");
     }
 
     /** Every row given to a builder that does not take it: the refusal names the rows, and the command line's wording the options. */
