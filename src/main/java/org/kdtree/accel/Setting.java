@@ -1,7 +1,9 @@
 package org.kdtree.accel;
 
+import java.util.List;
 import java.util.Objects;
 import java.util.concurrent.atomic.AtomicInteger;
+import java.util.function.Function;
 import org.kdtree.limits.Limit;
 import org.kdtree.limits.Limits;
 
@@ -96,7 +98,10 @@ public final class Setting<T> {
     /** {@return what the setting is called, in the talk's words where it has one}, e.g. "lambda", "Kmaxdepth" */
     public String name() { return name; }
 
-    /** {@return the command-line option that gives it}, e.g. {@code --lambda}; errors name the setting by it */
+    /**
+     * {@return the command-line option that gives it}, e.g. {@code --lambda}; the library's errors
+     * name the setting by its {@link #name()}, and the command line words them with this ({@link Refused#message})
+     */
     public String option() { return option; }
 
     /** {@return the type of its value}: Double, Integer, Boolean or an enum */
@@ -116,14 +121,56 @@ public final class Setting<T> {
      *
      * @param value the value, not null
      * @return {@code value}
-     * @throws IllegalArgumentException if it is out of range (the message names {@link #option()}) or of another type
+     * @throws Refused if it is out of range or of another type (the message names the setting by
+     *         its {@link #name()}: "lambda must be between 0.01 and 1, got 2")
      */
     public T check(Object value) {
-        Objects.requireNonNull(value, option);
+        if (value == null) throw new Refused(List.of(this), n -> n.apply(this) + " needs a value, got null");
         if (!type.isInstance(value))
-            throw new IllegalArgumentException(option + " takes " + type.getSimpleName() + ", got " + value.getClass().getSimpleName());
-        if (limit != null) limit.check(option, ((Number) value).doubleValue());
+            throw new Refused(List.of(this), n -> n.apply(this) + " takes " + type.getSimpleName() + ", got " + value.getClass().getSimpleName());
+        if (limit != null && !limit.allows(((Number) value).doubleValue()))
+            throw new Refused(List.of(this), n -> limit.rejection(n.apply(this), format(value)));
         return type.cast(value);
+    }
+
+    /**
+     * A setting's value refused, or a setting refused by a builder that does not take it. The
+     * message names each setting as a library user knows it, by its {@link #name()} ("lambda must
+     * be between 0.01 and 1, got 2", "lambda applies to the sah builder only, not to
+     * median-plane"); whoever gave the settings another way words the same refusal with its own
+     * names ({@link #message}): the command line by the options the user typed ("--lambda must be
+     * between ...").
+     */
+    public static final class Refused extends IllegalArgumentException {
+        private static final long serialVersionUID = 1L;
+        /** The settings refused. */
+        private final transient List<Setting<?>> settings;
+        /** The message, given how to name a setting. */
+        private final transient Function<Function<Setting<?>, String>, String> wording;
+
+        /**
+         * A refusal of {@code settings}, in words that name them as {@code wording}'s argument does.
+         *
+         * @param settings the settings refused
+         * @param wording  the message, given how to name each setting
+         */
+        public Refused(List<Setting<?>> settings, Function<Function<Setting<?>, String>, String> wording) {
+            super(wording.apply(Setting::name));
+            this.settings = List.copyOf(settings);
+            this.wording = wording;
+        }
+
+        /** {@return the settings refused} */
+        public List<Setting<?>> settings() { return settings; }
+
+        /**
+         * {@return the message with each setting named by {@code naming}}, e.g. {@code Setting::option} for the command line
+         *
+         * @param naming how the caller names a setting
+         */
+        public String message(Function<Setting<?>, String> naming) {
+            return wording.apply(naming);
+        }
     }
 
     /**
@@ -138,5 +185,6 @@ public final class Setting<T> {
         return value.toString();
     }
 
-    @Override public String toString() { return option; }
+    /** {@return its name}, as the library's messages name it */
+    @Override public String toString() { return name; }
 }

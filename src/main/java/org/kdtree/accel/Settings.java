@@ -57,7 +57,7 @@ public final class Settings {
      * @param setting the row
      * @param value   its value, checked against the row's range
      * @param <T>     its type
-     * @throws IllegalArgumentException if the value is out of range (naming {@link Setting#option()})
+     * @throws Setting.Refused if the value is out of range (naming the setting by its {@link Setting#name()})
      */
     public <T> Settings with(Setting<T> setting, T value) {
         int id = setting.id();

@@ -52,14 +52,14 @@ public interface StructureBuilder {
      *
      * @param builder  the builder
      * @param settings the settings it is to take
-     * @throws IllegalArgumentException naming the rows it does not take, and the builder
+     * @throws Setting.Refused naming the rows it does not take, and the builder
      */
     static Settings checkTakes(StructureBuilder builder, Settings settings) {
         List<Setting<?>> rows = builder.settingRows();
-        List<String> foreign = settings.givenRows().stream().filter(r -> !rows.contains(r)).map(Setting::option).toList();
+        List<Setting<?>> foreign = settings.givenRows().stream().filter(r -> !rows.contains(r)).toList();
         if (!foreign.isEmpty())
-            throw new IllegalArgumentException(String.join(", ", foreign) + (foreign.size() > 1 ? " do" : " does")
-                    + " not apply to the " + builder.name() + " builder");
+            throw new Setting.Refused(foreign, naming -> foreign.stream().map(naming).collect(java.util.stream.Collectors.joining(", "))
+                    + (foreign.size() > 1 ? " do" : " does") + " not apply to the " + builder.name() + " builder");
         return settings;
     }
 }

@@ -8,8 +8,10 @@ import java.util.Map;
 import java.util.stream.Collectors;
 import org.kdtree.accel.Setting;
 import org.kdtree.accel.SharedSettings;
+import org.kdtree.bvh.BvhBuilder;
 import org.kdtree.limits.Limit;
 import org.kdtree.spec.BuilderSpec;
+import org.kdtree.spec.Builders;
 import picocli.CommandLine.Command;
 import picocli.CommandLine.IModelTransformer;
 import picocli.CommandLine.Model.CommandSpec;
@@ -113,6 +115,9 @@ final class BuilderOptions {
      * @param name a builder's name
      */
     public BuilderSpec spec(String name) {
+        if (kdTreesOnly && name.equals(BvhBuilder.NAME))
+            throw new IllegalArgumentException("-b " + name + " builds a bounding volume hierarchy, which answers ray queries only (raycast, "
+                    + "stats, render, tradeoff, the workbench); this needs a kd-tree builder: " + String.join(", ", Builders.names()));
         BuilderSpec s = BuilderSpec.of(name);
         for (Map.Entry<Setting<?>, Object> e : given.entrySet()) s = with(s, e.getKey(), e.getValue());
         return s;

@@ -129,7 +129,10 @@ final class ClassGradeCommand implements Callable<Integer> {
     }
 
     private List<Path> jars() throws IOException {
-        if (!Files.isDirectory(folder)) throw new IllegalArgumentException("grade-class " + folder + ": no such folder");
+        if (!Files.isDirectory(folder))
+            throw new IllegalArgumentException("grade-class " + folder + (Files.exists(folder)
+                    ? ": is a file, not a folder; give the folder of the students' jars (one student's jar: grade --student-jar JAR)"
+                    : ": no such folder"));
         try (var files = Files.list(folder)) {
             List<Path> jars = files.filter(f -> f.getFileName().toString().toLowerCase(Locale.ROOT).endsWith(".jar")).sorted().toList();
             if (jars.isEmpty()) throw new IllegalArgumentException("grade-class " + folder + ": the folder holds no .jar");

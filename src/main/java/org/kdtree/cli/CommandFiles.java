@@ -4,6 +4,7 @@ import java.io.IOException;
 import java.nio.file.Path;
 import java.util.Locale;
 import org.kdtree.files.AtomicFile;
+import org.kdtree.io.BundledScenes;
 import org.kdtree.io.FileKind;
 import org.kdtree.io.PrimitivesReader;
 import org.kdtree.shape.TriangleMesh;
@@ -23,11 +24,24 @@ final class CommandFiles {
         return file;
     }
 
-    /** The triangle mesh {@code command} traces rays through: an OBJ file with at least one triangle. */
-    static TriangleMesh readMesh(Path mesh, String command) throws IOException {
-        requireNotFolder("MESH", mesh);
+    /**
+     * The file MESH names, found as {@code stats} and {@code render} find theirs: the file itself,
+     * or a bundled scene ({@code scenes:clustered-spheres}, or {@code scenes/clustered-spheres.obj}
+     * where no such file is here).
+     */
+    static Path meshFile(Path given) {
+        return BundledScenes.resolve(given.toString());
+    }
+
+    /** The triangle mesh {@code command} traces rays through: an OBJ file (a bundled one too) with at least one triangle. */
+    static TriangleMesh readMesh(Path given, String command) throws IOException {
+        Path mesh = meshFile(given);
+        requireNotFolder("MESH", given);
+        if (!java.nio.file.Files.exists(mesh)) throw new IllegalArgumentException(given + ": no such file");
         if (FileKind.of(mesh) != FileKind.OBJ)
-            throw new IllegalArgumentException(mesh + ": " + command + " traces rays through a triangle mesh; give an OBJ file");
+            throw new IllegalArgumentException(given + ": " + command + " traces rays through a triangle mesh; give an OBJ file (bundled: "
+                    + String.join(", ", BundledScenes.FILES.stream().filter(f -> FileKind.of(f) == FileKind.OBJ)
+                    .map(f -> BundledScenes.PREFIX + f.substring(0, f.length() - FileKind.OBJ.extension().length())).toList()) + ")");
         TriangleMesh m = PrimitivesReader.readMesh(mesh);
         if (m.size() == 0) throw new IllegalArgumentException(mesh + ": the mesh has no triangles (no 'f' lines)");
         return m;

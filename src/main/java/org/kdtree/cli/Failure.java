@@ -5,12 +5,14 @@ import java.io.PrintWriter;
 import java.io.StringWriter;
 import java.nio.file.Files;
 import java.nio.file.Path;
+import org.kdtree.accel.Setting;
 import org.kdtree.files.AtomicFile;
 import org.kdtree.kdtree.BuilderFault;
 
 /**
  * What the command line prints when a command fails: one line, never a stack trace. A user's
- * mistake (bad file, bad option) says what is wrong; a builder's own fault (a plug-in's that
+ * mistake (bad file, bad option) says what is wrong (a setting refused by the library, named
+ * there by its name, is named here by the option the user typed); a builder's own fault (a plug-in's that
  * threw, answered wrongly, hung or was slow) names the builder, the method and the node;
  * running out of memory says how much the JVM had and how to give it more; anything else is a
  * bug of ours, reported as one line with the path of a file that holds the full trace.
@@ -24,6 +26,10 @@ final class Failure {
 
     /** Prints the line for {@code failure} to {@code err} and returns the exit code. */
     static int report(Throwable failure, java.io.PrintWriter err) {
+        if (failure instanceof Setting.Refused refused) {   // the library names the setting; the user typed its option
+            err.println("error: " + refused.message(Setting::option));
+            return USAGE;
+        }
         if (failure instanceof IOException || failure instanceof IllegalArgumentException) {
             err.println("error: " + failure.getMessage());
             return USAGE;

@@ -103,16 +103,29 @@ public final class Main implements java.util.concurrent.Callable<Integer> {
         for (int i = 0; i < args.length; i++) {
             if (args[i].equals("--plugin")) {
                 if (i + 1 == args.length) throw new IllegalArgumentException("--plugin needs a jar or a folder of jars");
-                Path p = Path.of(args[++i]);
-                Builders.requireDistinct(p, Builders.loadPlugins(p), seen);
+                plugin(Path.of(args[++i]), seen);
             } else if (args[i].startsWith("--plugin=")) {
-                Path p = Path.of(args[i].substring("--plugin=".length()));
-                Builders.requireDistinct(p, Builders.loadPlugins(p), seen);
+                plugin(Path.of(args[i].substring("--plugin=".length())), seen);
             } else {
                 rest.add(args[i]);
             }
         }
         return rest.toArray(String[]::new);
+    }
+
+    /** Loads one {@code --plugin}: the library's line names the jar or folder, the user's line the option too. */
+    private static void plugin(Path p, java.util.Map<String, Path> seen) {
+        List<String> names;
+        try {
+            names = Builders.loadPlugins(p);
+        } catch (IllegalArgumentException e) {
+            throw new IllegalArgumentException("--plugin " + e.getMessage(), e);
+        }
+        try {
+            Builders.requireDistinct(p, names, seen);
+        } catch (IllegalArgumentException e) {
+            throw new IllegalArgumentException("--plugin: " + e.getMessage(), e);
+        }
     }
 
     /**

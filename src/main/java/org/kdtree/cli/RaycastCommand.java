@@ -38,7 +38,7 @@ import picocli.CommandLine.Parameters;
                 "'ox oy oz dx dy dz [tmin tmax]', and writes one 't triangle' or 'miss' line",
                 "per ray."})
 final class RaycastCommand implements Callable<Integer> {
-    @Parameters(paramLabel = "MESH", description = "A Wavefront OBJ mesh.")
+    @Parameters(paramLabel = "MESH", description = "A Wavefront OBJ mesh, or the bundled one: scenes:clustered-spheres.")
     Path mesh;
 
     @Mixin
@@ -77,7 +77,7 @@ final class RaycastCommand implements Callable<Integer> {
         Limits.GRID.check("--grid", grid);
         BuilderSpec spec = options.spec();
         if (hitsFile != null && !hitsFile.toString().equals("-")) {
-            CommandFiles.requireNotInput("--hits", hitsFile, "MESH", mesh);
+            CommandFiles.requireNotInput("--hits", hitsFile, "MESH", CommandFiles.meshFile(mesh));
             CommandFiles.requireNotInput("--hits", hitsFile, "--rays", raysFile);
             CommandFiles.requireWritable("--hits", hitsFile);
         }
@@ -122,7 +122,7 @@ final class RaycastCommand implements Callable<Integer> {
         }
         AccelerationStructure tree = build.value();
         TreeStats st = tree.stats();
-        String meshName = mesh.getFileName().toString().replaceFirst("\\.[oO][bB][jJ]$", "")
+        String meshName = CommandFiles.meshFile(mesh).getFileName().toString().replaceFirst("\\.[oO][bB][jJ]$", "")
                 + (grid > 1 ? "-grid" + grid : "");
         System.out.println(String.format(Locale.ROOT, "kdtree-%s %s %d %.1f %d %d %d %d %.6f %.3f %d %.6f %.3f",
                 spec.builder(), meshName, scene.size(), build.millis(), st.nodes(), st.leaves(), st.maxDepth(),

@@ -97,12 +97,12 @@ final class RenderCommand implements Callable<Integer> {
     private void requireJsonScene(Path sceneFile) {
         FileKind kind = FileKind.of(sceneFile);
         if (kind != null && kind.renders() && !java.nio.file.Files.isDirectory(sceneFile)) return;
+        if (!java.nio.file.Files.exists(sceneFile)) return; // the reader names a missing file, whatever its name
         String what;
         if (java.nio.file.Files.isDirectory(sceneFile)) what = "is a folder, not a file";
         else if (kind == FileKind.OBJ) what = "is an OBJ mesh, with no camera or lights; put it in a JSON scene as an object "
                 + "{\"type\": \"obj\", \"file\": \"" + sceneFile.getFileName() + "\"} (docs/scene-format.md), or trace it with stats or raycast";
         else if (kind == FileKind.SCENE2D) what = "is a 2-D scene; open it in the workbench (gui) or give it to stats";
-        else if (!java.nio.file.Files.exists(sceneFile)) return; // the reader names a missing file
         else what = "is not a JSON scene (.json)";
         throw new IllegalArgumentException("SCENE " + scene + ": " + what + ". render takes a JSON scene (camera, lights, materials, "
                 + "objects: docs/scene-format.md), such as " + jsonScenes());

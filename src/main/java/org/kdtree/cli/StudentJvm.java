@@ -153,8 +153,9 @@ record StudentJvm(Deadlines deadlines, double seconds, int heapMb, StudentBox bo
         String last = err.strip();
         last = last.substring(last.lastIndexOf('\n') + 1).strip();
         boolean ours = last.startsWith("error: ");
-        String said = last.replaceFirst("^error: ", "").replace("--plugin " + jar.toAbsolutePath() + ": ", "")
-                .replace("--plugin " + StudentBox.jarInside(jar.getFileName().toString()) + ": ", "");
+        String said = last.replaceFirst("^error: ", "");   // the library names the jar it loaded: the row names it already
+        for (String named : List.of(jar.toAbsolutePath() + ": ", StudentBox.jarInside(jar.getFileName().toString()) + ": "))
+            if (said.startsWith(named)) said = said.substring(named.length());
         if (ours && code == Failure.MEMORY && said.startsWith("out of memory") || err.contains("java.lang.OutOfMemoryError"))
             return "crashed: out of memory (heap " + heapMb + " MB)";
         if (ours && code == Failure.USAGE) return "not graded: " + StudentRow.oneLine(said);

@@ -29,7 +29,7 @@ import picocli.CommandLine.Parameters;
                 + "nodes visited, triangle and box tests per ray, rays per second and the total time for 1, 10 and 100 rays per "
                 + "triangle. Writes CSV and a chart (PNG, or SVG if its name ends in .svg) with the Pareto front of build time against trace time."})
 final class TradeoffCommand implements Callable<Integer> {
-    @Parameters(paramLabel = "MESH", description = "An OBJ mesh.")
+    @Parameters(paramLabel = "MESH", description = "An OBJ mesh, or the bundled one: scenes:clustered-spheres.")
     Path mesh;
 
     @Option(paramLabel = "N", names = "--grid", defaultValue = "1", description = "Repeat the mesh in a G x G grid (4: the spec's scaling scene).")
@@ -96,13 +96,13 @@ final class TradeoffCommand implements Callable<Integer> {
         Limits.RAY_COUNT.check("--counted-rays", countedRays);
         Limits.RUNS.check("--runs", runs);
         Limits.RAYS_PER_TRIANGLE.check("--chart-rpt", chartRaysPerTriangle);
-        String base = mesh.getFileName().toString().replaceFirst("\\.[^.]*$", "") + (grid > 1 ? "-grid" + grid : "");
+        String base = CommandFiles.meshFile(mesh).getFileName().toString().replaceFirst("\\.[^.]*$", "") + (grid > 1 ? "-grid" + grid : "");
         Path csvOut = csv != null ? csv : Path.of("tradeoff-" + base + ".csv");
         Path pngOut = chart != null ? chart : Path.of("tradeoff-" + base + ".png");
         CommandFiles.requireWritable("--csv", csvOut);
         CommandFiles.requireWritable("--chart", pngOut);
-        CommandFiles.requireNotInput("--csv", csvOut, "MESH", mesh);
-        CommandFiles.requireNotInput("--chart", pngOut, "MESH", mesh);
+        CommandFiles.requireNotInput("--csv", csvOut, "MESH", CommandFiles.meshFile(mesh));
+        CommandFiles.requireNotInput("--chart", pngOut, "MESH", CommandFiles.meshFile(mesh));
         ChartFile.requireFormat("--chart", pngOut);
         TriangleMesh m = CommandFiles.readMesh(mesh, "tradeoff");
         if (grid > 1) m = MeshGrid.grid(m, grid);

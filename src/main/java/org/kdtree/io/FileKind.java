@@ -75,7 +75,7 @@ public enum FileKind {
      */
     void require(Path file) throws SceneFormatException {
         FileKind kind = of(file);
-        if (kind == null || kind == this) return;
+        if (kind == null || kind == this || !java.nio.file.Files.exists(file)) return;   // a missing file: the reader says "no such file"
         throw new SceneFormatException(file.toString(), 0, kind.describe() + ", not " + describe() + "; read it with " + kind.reader());
     }
 }

@@ -26,6 +26,7 @@ public final class PrimitivesReader {
      * @throws IOException if the file cannot be read, is malformed or has another extension
      */
     public static Primitives read(Path file) throws IOException {
+        requireExists(file);
         FileKind kind = FileKind.of(file);
         if (kind != null && !java.nio.file.Files.isDirectory(file)) {
             return switch (kind) {
@@ -82,6 +83,7 @@ public final class PrimitivesReader {
     }
 
     private static TriangleMesh mesh(Path file) throws IOException {
+        requireExists(file);
         FileKind kind = FileKind.of(file);
         if (kind == FileKind.OBJ) return ObjMeshReader.read(file);
         if (kind == FileKind.SCENE2D)
@@ -91,5 +93,10 @@ public final class PrimitivesReader {
         TriangleMesh m = SceneReader.read(file).mesh();
         if (m.size() == 0) throw new SceneFormatException(file.toString(), 0, "the scene has no triangles");
         return m;
+    }
+
+    /** A missing file is "no such file", whatever its name, as every reader says it (not "unknown file type"). */
+    private static void requireExists(Path file) throws SceneFormatException {
+        if (!java.nio.file.Files.exists(file)) throw new SceneFormatException(file.toString(), 0, "no such file");
     }
 }

@@ -303,7 +303,7 @@ public abstract class KdTreeBuilder implements StructureBuilder {
      * @return this builder
      */
     public final KdTreeBuilder depthFactor(double c) {
-        this.depthFactor = Limits.DEPTH_FACTOR.check("depthFactor", c);
+        this.depthFactor = Limits.DEPTH_FACTOR.check(Limits.DEPTH_FACTOR.title(), c);
         return this;
     }
 

@@ -56,7 +56,7 @@ public final class RayBatch implements AutoCloseable {
      * @param factory makes a query object (each thread needs its own)
      */
     public RayBatch(int threads, Supplier<? extends RayQuery> factory) {
-        Limits.THREADS.check("--threads", threads);
+        Limits.THREADS.check(Limits.THREADS.title(), threads);
         queries = new RayQuery[threads];
         for (int i = 0; i < threads; i++) queries[i] = factory.get();
         pool = threads > 1 ? Executors.newFixedThreadPool(threads, r -> {

@@ -81,7 +81,7 @@ public final class BuilderSpec {
      * @param setting the setting
      * @param value   its value, checked against its limit
      * @param <T>     the value's type
-     * @throws IllegalArgumentException if the value is out of range (naming {@link Setting#option()})
+     * @throws Setting.Refused if the value is out of range (naming the setting)
      */
     public <T> BuilderSpec with(Setting<T> setting, T value) {
         return new BuilderSpec(builder, given.with(setting, value));
@@ -169,8 +169,8 @@ public final class BuilderSpec {
      * A new builder of this spec's name, of either structure, with the given settings.
      *
      * @return the builder
-     * @throws IllegalArgumentException if no builder has that name, or a given setting does not
-     *         apply to it (the message names every such setting and whom it applies to)
+     * @throws IllegalArgumentException if no builder has that name; a {@link Setting.Refused} if
+     *         a given setting does not apply to it (the message names every such setting and whom it applies to)
      */
     public StructureBuilder structureBuilder() {
         return applied(newBuilder(builder));
@@ -186,8 +186,8 @@ public final class BuilderSpec {
      */
     public KdTreeBuilder create() {
         if (builder.equals(BvhBuilder.NAME))
-            throw new IllegalArgumentException("-b " + builder + " builds a bounding volume hierarchy, which answers ray queries"
-                    + " only (raycast, stats, render, tradeoff, the workbench); this needs a kd-tree builder: " + String.join(", ", Builders.names()));
+            throw new IllegalArgumentException("the " + builder + " builder makes a bounding volume hierarchy, which answers ray queries"
+                    + " only (structureBuilder(), build()); a kd-tree needs a kd-tree builder: " + String.join(", ", Builders.names()));
         return applied(Builders.create(builder));
     }
 
@@ -235,10 +235,10 @@ public final class BuilderSpec {
         for (Setting<?> s : given.givenRows()) {
             if (rows.contains(s)) continue;
             String owner = SettingsTable.ownerName(s);
-            String others = given.givenRows().stream().filter(o -> !rows.contains(o) && SettingsTable.ownerName(o).equals(owner))
-                    .map(Setting::option).collect(Collectors.joining(", "));
-            throw new IllegalArgumentException(others + (others.contains(",") ? " apply" : " applies") + " to "
-                    + owner + " only, not to " + builder);
+            List<Setting<?>> others = given.givenRows().stream().filter(o -> !rows.contains(o) && SettingsTable.ownerName(o).equals(owner))
+                    .toList();
+            throw new Setting.Refused(others, naming -> others.stream().map(naming).collect(Collectors.joining(", "))
+                    + (others.size() > 1 ? " apply" : " applies") + " to " + owner + " only, not to " + builder);
         }
     }
 

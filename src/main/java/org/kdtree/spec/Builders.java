@@ -92,16 +92,16 @@ public final class Builders {
                     String name = p.get().name();
                     Class<? extends KdTreeBuilder> before = found.putIfAbsent(name, p.type());
                     if (before != null && before != p.type())
-                        throw new IllegalArgumentException("--plugin " + jarOrFolder + ": two jars register the builder '" + name + "': "
+                        throw new IllegalArgumentException(jarOrFolder + ": two jars register the builder '" + name + "': "
                                 + from.get(name) + " and " + jarFiles.get(i) + "; keep one of them, or give one builder another name()");
                     from.putIfAbsent(name, jarFiles.get(i));
                     if (!listed.contains(name)) listed.add(name);
                 }
             }
         } catch (java.util.ServiceConfigurationError | LinkageError e) {
-            throw new IllegalArgumentException("--plugin " + jarOrFolder + ": " + unloadable(e), e);
+            throw new IllegalArgumentException(jarOrFolder + ": " + unloadable(e), e);
         }
-        if (listed.isEmpty()) throw new IllegalArgumentException("--plugin " + jarOrFolder + ": " + noBuilder(jarFiles));
+        if (listed.isEmpty()) throw new IllegalArgumentException(jarOrFolder + ": " + noBuilder(jarFiles));
         List<String> registered = new ArrayList<>();
         for (var e : found.entrySet()) {
             Class<? extends KdTreeBuilder> type = e.getValue();
@@ -113,7 +113,7 @@ public final class Builders {
             SettingsTable.all();   // a plug-in's rows must not take another row's option
         } catch (IllegalArgumentException e) {
             registered.forEach(BY_NAME::remove);
-            throw new IllegalArgumentException("--plugin " + jarOrFolder + ": " + e.getMessage());
+            throw new IllegalArgumentException(jarOrFolder + ": " + e.getMessage());
         }
         return listed;
     }
@@ -131,7 +131,7 @@ public final class Builders {
         for (String name : names) {
             Path before = seen.putIfAbsent(name, jarOrFolder);
             if (before != null && !before.toAbsolutePath().normalize().equals(jarOrFolder.toAbsolutePath().normalize()))
-                throw new IllegalArgumentException("--plugin: two plug-ins register the builder '" + name + "': " + before + " and "
+                throw new IllegalArgumentException("two plug-ins register the builder '" + name + "': " + before + " and "
                         + jarOrFolder + "; keep one of them, or give one builder another name()");
         }
     }
@@ -150,11 +150,11 @@ public final class Builders {
     /** The plug-in's jars: the file itself (whatever its name: it is checked as a zip), or a folder's .jar files. */
     private static List<Path> jarsOf(Path jarOrFolder) {
         if (Files.isRegularFile(jarOrFolder)) return List.of(jarOrFolder);
-        if (!Files.isDirectory(jarOrFolder)) throw new IllegalArgumentException("--plugin " + jarOrFolder + ": no such jar or folder");
+        if (!Files.isDirectory(jarOrFolder)) throw new IllegalArgumentException(jarOrFolder + ": no such jar or folder");
         try (var files = Files.list(jarOrFolder)) {
             return files.filter(f -> f.toString().endsWith(".jar")).sorted().toList();
         } catch (IOException e) {
-            throw new IllegalArgumentException("--plugin " + jarOrFolder + ": the folder cannot be read (" + e.getMessage() + ")");
+            throw new IllegalArgumentException(jarOrFolder + ": the folder cannot be read (" + e.getMessage() + ")");
         }
     }
 

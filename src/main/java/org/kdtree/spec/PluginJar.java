@@ -35,11 +35,11 @@ final class PluginJar {
             zip.size();
             return jar.toUri().toURL();
         } catch (ZipException notZip) {
-            throw new IllegalArgumentException("--plugin " + jar + ": not a jar (zip) file");
+            throw new IllegalArgumentException(jar + ": not a jar (zip) file");
         } catch (AccessDeniedException | MalformedURLException e) {
-            throw new IllegalArgumentException("--plugin " + jar + ": cannot be read (" + e.getMessage() + ")");
+            throw new IllegalArgumentException(jar + ": cannot be read (" + e.getMessage() + ")");
         } catch (IOException e) {
-            throw new IllegalArgumentException("--plugin " + jar + ": cannot be read as a jar ("
+            throw new IllegalArgumentException(jar + ": cannot be read as a jar ("
                     + (Files.isReadable(jar) ? e.getMessage() : "no permission to read it") + ")");
         }
     }

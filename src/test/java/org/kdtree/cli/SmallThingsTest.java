@@ -44,6 +44,45 @@ class SmallThingsTest {
         }
     }
 
+    /** Item 5: a bundled scene opens through the reader that fits it; raycast and tradeoff took none ("give an OBJ file" on the bundled OBJ). */
+    @Test void raycastAndTradeoffTakeTheBundledMeshAsStatsDoes() throws Exception {
+        CliRun r = CliRun.of("raycast", "scenes:clustered-spheres", "-b", "bvh", "--runs", "1", "--warmup", "0");
+        assertThat(r.code()).as(r.err()).isZero();
+        assertThat(r.out()).startsWith("kdtree-bvh clustered-spheres 10370 ");
+        Path csv = dir.resolve("t.csv");
+        r = CliRun.of("tradeoff", "scenes:clustered-spheres", "--variants", "bvh", "--runs", "1", "--ray-count", "1000",
+                "--counted-rays", "100", "--csv", csv.toString(), "--chart", dir.resolve("t.png").toString(), "-q");
+        assertThat(r.code()).as(r.err()).isZero();
+        assertThat(r.out()).contains("scene: clustered-spheres (10370 triangles)");
+        assertThat(Files.readAllLines(csv)).hasSize(2);
+        r = CliRun.of("raycast", "scenes:talk-figures");
+        assertThat(r.err().strip()).isEqualTo("error: scenes:talk-figures: raycast traces rays through a triangle mesh; "
+                + "give an OBJ file (bundled: scenes:clustered-spheres)");
+    }
+
+    /** A missing file reads "no such file" in every command, whatever its name (stats said "unknown file type", render and raycast named its kind). */
+    @Test void aMissingFileIsNoSuchFileWhateverItsName() {
+        for (String name : new String[] {"nothing", "notes.txt", "scene.obj"}) {
+            Path missing = dir.resolve(name);
+            for (String command : new String[] {"stats", "render", "raycast"}) {
+                CliRun r = CliRun.of(command, missing.toString(), "-q");
+                assertThat(r.code()).as(command + " " + name).isEqualTo(Failure.USAGE);
+                assertThat(r.err().strip()).as(command + " " + name).isEqualTo("error: " + missing + ": no such file");
+            }
+        }
+    }
+
+    /** grade-class given a file, a student's jar say, said "no such folder" of a file that is there. */
+    @Test void gradeClassGivenAFileSaysItIsAFile() throws Exception {
+        Path jar = Files.writeString(dir.resolve("student.jar"), "");
+        CliRun r = CliRun.of("grade-class", jar.toString(), "--no-sandbox");
+        assertThat(r.code()).isEqualTo(Failure.USAGE);
+        assertThat(r.err().strip()).isEqualTo("error: grade-class " + jar + ": is a file, not a folder; give the folder of the "
+                + "students' jars (one student's jar: grade --student-jar JAR)");
+        r = CliRun.of("grade-class", dir.resolve("none").toString(), "--no-sandbox");
+        assertThat(r.err().strip()).isEqualTo("error: grade-class " + dir.resolve("none") + ": no such folder");
+    }
+
     @Test void renderIntoALogSaysWhatItRendersBeforeItIsDone() throws Exception {
         Path png = dir.resolve("c.png");
         CliRun r = CliRun.of("render", "scenes:cornell-box", "-o", png.toString(), "--spp", "1", "--width", "64", "--height", "48");

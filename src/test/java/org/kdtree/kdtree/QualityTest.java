@@ -38,7 +38,7 @@ class QualityTest {
         assertThat(new SahBuilder().quality(Quality.BALANCED).describeSettings()).contains("algorithm=event").contains("leafBelow=6");
         assertThat(new SahBuilder().quality(Quality.EXACT).describeSettings()).doesNotContain("leafBelow");
         assertThatThrownBy(() -> new SahBuilder().leafBelow(0)).isInstanceOf(IllegalArgumentException.class)
-                .hasMessageContaining("--leaf-below");
+                .hasMessageStartingWith("leaf below must be between 1 and 65536");
     }
 
     @Test void noNodeBelowTheLeafSizeIsSplit() {

@@ -125,9 +125,9 @@ class SahBuilderTest {
     }
 
     @Test void settingsAreChecked() {
-        assertThatThrownBy(() -> new SahBuilder().lambda(0)).hasMessageContaining("--lambda must be between 0.01 and 1");
+        assertThatThrownBy(() -> new SahBuilder().lambda(0)).hasMessageContaining("lambda must be between 0.01 and 1");
         assertThatThrownBy(() -> new SahBuilder().lambda(1.5)).hasMessageContaining("got 1.5");
-        assertThatThrownBy(() -> new SahBuilder().maxDepth(65)).hasMessageContaining("--max-depth must be between -1 and 64");
+        assertThatThrownBy(() -> new SahBuilder().maxDepth(65)).hasMessageContaining("Kmaxdepth must be between -1 and 64");
         assertThatThrownBy(() -> new SahBuilder().costs(-1, 20)).hasMessageContaining("Kt");
     }
 }

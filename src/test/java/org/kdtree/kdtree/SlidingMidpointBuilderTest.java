@@ -66,6 +66,6 @@ class SlidingMidpointBuilderTest {
     }
 
     @Test void leafSizeIsChecked() {
-        assertThatThrownBy(() -> new SlidingMidpointBuilder().leafSize(0)).hasMessageContaining("--leaf-size must be between 1 and 65536");
+        assertThatThrownBy(() -> new SlidingMidpointBuilder().leafSize(0)).hasMessageContaining("leaf size must be between 1 and 65536");
     }
 }

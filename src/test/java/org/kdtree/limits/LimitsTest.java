@@ -33,11 +33,11 @@ class LimitsTest {
     }
 
     @Test void theApiRefusesWhatTheCommandLineAndTheFilesRefuse() {
-        assertThatThrownBy(() -> new SahBuilder().threads(257)).hasMessage("--threads must be between 1 and 256, got 257");
-        assertThatThrownBy(() -> new SahBuilder().maxDepth(65)).hasMessageStartingWith("--max-depth must be between -1 and 64");
+        assertThatThrownBy(() -> new SahBuilder().threads(257)).hasMessage("threads must be between 1 and 256, got 257");
+        assertThatThrownBy(() -> new SahBuilder().maxDepth(65)).hasMessageStartingWith("Kmaxdepth must be between -1 and 64");
         assertThatThrownBy(() -> new SahBuilder().lambda(0)).hasMessageContaining("must be between 0.01 and 1");
-        assertThatThrownBy(() -> new SahBuilder().costModel(new CostModel(15, 1e9))).hasMessage("--ki must be between 0.001 and 10000, got 1000000000");
-        assertThatThrownBy(() -> new SahBuilder().referenceBudget(0)).hasMessageStartingWith("--reference-budget must be between 1 and 65536");
+        assertThatThrownBy(() -> new SahBuilder().costModel(new CostModel(15, 1e9))).hasMessage("Ki must be between 0.001 and 10000, got 1000000000");
+        assertThatThrownBy(() -> new SahBuilder().referenceBudget(0)).hasMessageStartingWith("reference budget must be between 1 and 65536");
         assertThatThrownBy(() -> new GeometryBuilder().sphere(null, 1, 2, 8, 0)).hasMessage("segments must be between 3 and 4096, got 2");
     }
 

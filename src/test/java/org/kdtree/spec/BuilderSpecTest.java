@@ -50,29 +50,29 @@ class BuilderSpecTest {
         assertThat(((SahBuilder) b).leafBelow()).isEqualTo(Quality.FAST.leafBelow());
     }
 
-    @Test void aValueOutOfRangeIsRefusedWhenGivenNamingTheOption() {
+    @Test void aValueOutOfRangeIsRefusedWhenGivenNamingTheSetting() {
         assertThatThrownBy(() -> BuilderSpec.of("sah").with(SahBuilder.LAMBDA, 2.0))
-                .hasMessage("--lambda must be between 0.01 and 1, got 2");
+                .hasMessage("lambda must be between 0.01 and 1, got 2");
         assertThatThrownBy(() -> BuilderSpec.of("median-plane").with(CyclingAxisBuilder.MIN_PRIMITIVES, -1))
-                .hasMessageStartingWith("--min-prims must be between 0 and");
+                .hasMessageStartingWith("Kmintri must be between 0 and");
     }
 
-    @Test void aSettingThatDoesNotApplyIsRefusedNotIgnored() {
+    @Test void aSettingThatDoesNotApplyIsRefusedNotIgnoredNamingTheSetting() {
         assertThatThrownBy(() -> BuilderSpec.of("median-plane").with(SahBuilder.LAMBDA, 0.5).with(SharedSettings.BINS, 8).create())
                 .isInstanceOf(IllegalArgumentException.class)
-                .hasMessage("--lambda applies to the sah builder only, not to median-plane");
+                .hasMessage("lambda applies to the sah builder only, not to median-plane");
         assertThatThrownBy(() -> BuilderSpec.of("median-plane").with(SharedSettings.BINS, 8).create())
-                .hasMessage("--bins applies to the sah and bvh builders only, not to median-plane");
+                .hasMessage("bins applies to the sah and bvh builders only, not to median-plane");
         assertThatThrownBy(() -> BuilderSpec.of("bvh").with(SahBuilder.LAMBDA, 0.5).structureBuilder())
-                .hasMessage("--lambda applies to the sah builder only, not to bvh");
+                .hasMessage("lambda applies to the sah builder only, not to bvh");
         assertThatThrownBy(() -> BuilderSpec.of("bvh").with(KdTreeBuilder.PERFECT_SPLITS, false).structureBuilder())
-                .hasMessage("--no-perfect-splits applies to the kd-tree builders only, not to bvh");
+                .hasMessage("perfect splits applies to the kd-tree builders only, not to bvh");
         assertThatThrownBy(() -> BuilderSpec.of("sah").with(BvhBuilder.WIDTH, 8).create())
-                .hasMessage("--bvh-width applies to the bvh builder only, not to sah");
+                .hasMessage("BVH width applies to the bvh builder only, not to sah");
         assertThatThrownBy(() -> BuilderSpec.of("sah").with(CyclingAxisBuilder.MIN_PRIMITIVES, 1).create())
-                .hasMessage("--min-prims applies to the median-plane and object-median builders only, not to sah");
+                .hasMessage("Kmintri applies to the median-plane and object-median builders only, not to sah");
         assertThatThrownBy(() -> BuilderSpec.of("sah").with(SharedSettings.LEAF_SIZE, 4).create())
-                .hasMessage("--leaf-size applies to the sliding-midpoint and bvh builders only, not to sah");
+                .hasMessage("leaf size applies to the sliding-midpoint and bvh builders only, not to sah");
     }
 
     @Test void carryingSettingsToAnotherBuilderKeepsThoseThatApply() {
@@ -102,7 +102,7 @@ class BuilderSpecTest {
         assertThat(b.threads()).isEqualTo(2);
         assertThat(b.maxDepth()).isEqualTo(9);
         assertThatThrownBy(() -> BuilderSpec.of("centre-midpoint").with(SahBuilder.LAMBDA, 0.5).create())
-                .hasMessage("--lambda applies to the sah builder only, not to centre-midpoint");
+                .hasMessage("lambda applies to the sah builder only, not to centre-midpoint");
         assertThatThrownBy(() -> BuilderSpec.of("nothing").create()).hasMessageStartingWith("unknown builder 'nothing'");
     }
 }

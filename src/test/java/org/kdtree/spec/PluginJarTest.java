@@ -40,18 +40,18 @@ class PluginJarTest {
     @Test void aFileThatIsNotAJarIsNamedAsSuch() throws IOException {
         Path notes = Files.writeString(dir.resolve("notes.jar"), "my notes, not a jar\n");
         assertThatThrownBy(() -> Builders.loadPlugins(notes)).isInstanceOf(IllegalArgumentException.class)
-                .hasMessage("--plugin " + notes + ": not a jar (zip) file");
+                .hasMessage(notes + ": not a jar (zip) file");
         Path text = Files.writeString(dir.resolve("notes.txt"), "");
-        assertThatThrownBy(() -> Builders.loadPlugins(text)).hasMessage("--plugin " + text + ": not a jar (zip) file");
+        assertThatThrownBy(() -> Builders.loadPlugins(text)).hasMessage(text + ": not a jar (zip) file");
         Files.copy(notes, Files.createDirectory(dir.resolve("folder")).resolve("bad.jar"));
         Path bad = dir.resolve("folder/bad.jar");
-        assertThatThrownBy(() -> Builders.loadPlugins(dir.resolve("folder"))).hasMessage("--plugin " + bad + ": not a jar (zip) file");
+        assertThatThrownBy(() -> Builders.loadPlugins(dir.resolve("folder"))).hasMessage(bad + ": not a jar (zip) file");
     }
 
     @Test void aJarWithOneBuilderAndNoServicesFileIsToldTheLineToAdd() throws IOException {
         Path jar = jarOf("student.jar", PluginMidpointBuilder.class);
         assertThatThrownBy(() -> Builders.loadPlugins(jar)).isInstanceOf(IllegalArgumentException.class)
-                .hasMessage("--plugin " + jar + ": the jar lists no builder; add the file " + SERVICES
+                .hasMessage(jar + ": the jar lists no builder; add the file " + SERVICES
                         + " to the jar, with one line: " + PluginMidpointBuilder.class.getName());
     }
 
@@ -59,10 +59,10 @@ class PluginJarTest {
         String line = "the class name of your builder (e.g. com.example.MyBuilder)";
         Path none = jarOf("none.jar");
         assertThatThrownBy(() -> Builders.loadPlugins(none))
-                .hasMessage("--plugin " + none + ": the jar lists no builder; add the file " + SERVICES + " to the jar, with one line: " + line);
+                .hasMessage(none + ": the jar lists no builder; add the file " + SERVICES + " to the jar, with one line: " + line);
         Path two = jarOf("two.jar", PluginMidpointBuilder.class, SleepyBuilder.class);
         assertThatThrownBy(() -> Builders.loadPlugins(two))
-                .hasMessage("--plugin " + two + ": the jar lists no builder; add the file " + SERVICES + " to the jar, with one line: " + line);
+                .hasMessage(two + ": the jar lists no builder; add the file " + SERVICES + " to the jar, with one line: " + line);
     }
 
     /**
@@ -93,7 +93,7 @@ class PluginJarTest {
         }
         assertThatThrownBy(() -> Builders.loadPlugins(jar))
                 .isInstanceOf(IllegalArgumentException.class)
-                .hasMessageStartingWith("--plugin " + jar + ": a builder class was compiled for a newer Java than this one runs")
+                .hasMessageStartingWith(jar + ": a builder class was compiled for a newer Java than this one runs")
                 .hasMessageContaining("class file version " + newer)
                 .hasMessageEndingWith("compile it for Java " + Runtime.version().feature() + " (maven.compiler.release, or javac --release)");
     }
