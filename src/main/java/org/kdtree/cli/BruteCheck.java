@@ -37,6 +37,7 @@ final class BruteCheck {
         ExecutorService pool = Executors.newFixedThreadPool(threads);
         try {
             Future<?>[] f = new Future<?>[threads];
+            double[] r = rays.rays();   // one copy, read by every thread
             for (int th = 0; th < threads; th++) {
                 int id = th;
                 var own = tree.query();
@@ -44,7 +45,6 @@ final class BruteCheck {
                     Ray ray = new Ray(3);
                     Hit a = new Hit(), b = new Hit();
                     for (int i = id * stride; i < n; i += threads * stride) {
-                        double[] r = rays.rays();
                         int o = 6 * i;
                         ray.set(r[o], r[o + 1], r[o + 2], r[o + 3], r[o + 4], r[o + 5]);
                         boolean x = tris.closestHitAll(ray, Double.MIN_VALUE, Double.POSITIVE_INFINITY, a);

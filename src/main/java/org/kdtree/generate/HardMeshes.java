@@ -85,7 +85,7 @@ public final class HardMeshes {
      * @return the scaled copy
      */
     public static TriangleMesh scaled(TriangleMesh m, double s) {
-        double[] v = m.vertices().clone();
+        double[] v = m.vertices();
         for (int i = 0; i < v.length; i++) v[i] *= s;
         return new TriangleMesh(v, m.indices());
     }

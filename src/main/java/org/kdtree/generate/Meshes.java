@@ -132,7 +132,7 @@ public final class Meshes {
      * @return the triangle soup
      */
     public static TriangleMesh flat(int n, long seed) {
-        double[] v = uniform(n, 0.05, seed).vertices().clone();
+        double[] v = uniform(n, 0.05, seed).vertices();
         for (int i = 2; i < v.length; i += 3) v[i] = 0.5;
         return soup(v);
     }

@@ -125,7 +125,7 @@ public final class RayBatch implements AutoCloseable {
     private static void tiles(RayQuery q, RaySet rays, AtomicInteger next, double[] t) {
         PacketQuery pq = (PacketQuery) q;
         RayPacket packet = new RayPacket();
-        double[] r = rays.rays();
+        double[] r = rays.raw();
         int w = rays.imageWidth(), h = rays.size() / w;
         for (int band; (band = next.getAndIncrement()) * TILE < h; ) {
             int y0 = band * TILE, y1 = Math.min(h, y0 + TILE);
@@ -164,7 +164,7 @@ public final class RayBatch implements AutoCloseable {
     private static void work(RayQuery q, RaySet rays, AtomicInteger next, long[] hits, double[] sums) {
         Ray ray = new Ray(3);
         Hit hit = new Hit();
-        double[] r = rays.rays();
+        double[] r = rays.raw();
         int n = rays.size();
         for (int b; (b = next.getAndIncrement()) * BLOCK < n; ) {
             long h = 0;
@@ -192,7 +192,7 @@ public final class RayBatch implements AutoCloseable {
      * @return the counts summed over the rays traced
      */
     public static TraversalStats count(AccelerationStructure structure, RaySet set, int limit) {
-        double[] r = set.rays();
+        double[] r = set.raw();
         int n = set.size();
         // Every stride-th ray, so the sample spans the whole set: the first rows of the primary
         // set P are sky, and counting only them would report zero nodes per ray.

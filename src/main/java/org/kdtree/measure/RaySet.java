@@ -39,8 +39,11 @@ public final class RaySet {
     /** {@return the number of rays} */
     public int size() { return rays.length / 6; }
 
-    /** {@return the rays: origin and direction of ray {@code i} at {@code rays()[6 i .. 6 i + 6)}; never modify} */
-    public double[] rays() { return rays; }
+    /** {@return a copy of the rays: origin and direction of ray {@code i} at {@code rays()[6 i .. 6 i + 6)}} */
+    public double[] rays() { return rays.clone(); }
+
+    /** The rays themselves, for this package's timed loops, which only read them. */
+    double[] raw() { return rays; }
 
     /**
      * Set P: a {@code res x res} pinhole camera looking at the mesh's box from direction (1, 0.5, 2), 40 degrees.

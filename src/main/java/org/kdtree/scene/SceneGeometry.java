@@ -9,6 +9,9 @@ import org.kdtree.shape.TriangleMesh;
  */
 public final class SceneGeometry {
     private final TriangleMesh mesh;
+    /** The mesh's vertices and indices, copied once: the shading reads them per hit. */
+    private final double[] vertices;
+    private final int[] indices;
     private final int[] materialOf;
     private final double[] normals;
     private final boolean[] smooth;
@@ -22,9 +25,11 @@ public final class SceneGeometry {
      * @param smooth per triangle: interpolate vertex normals; not copied
      */
     public SceneGeometry(TriangleMesh mesh, int[] materialOf, double[] normals, boolean[] smooth) {
-        if (materialOf.length != mesh.size() || smooth.length != mesh.size() || normals.length != mesh.vertices().length)
+        if (materialOf.length != mesh.size() || smooth.length != mesh.size() || normals.length != 3 * mesh.vertexCount())
             throw new IllegalArgumentException("per-triangle and per-vertex arrays must match the mesh");
         this.mesh = mesh;
+        this.vertices = mesh.vertices();
+        this.indices = mesh.indices();
         this.materialOf = materialOf;
         this.normals = normals;
         this.smooth = smooth;
@@ -50,8 +55,8 @@ public final class SceneGeometry {
      * @param out receives x, y, z
      */
     public void geometricNormal(int t, double[] out) {
-        double[] v = mesh.vertices();
-        int[] ix = mesh.indices();
+        double[] v = vertices;
+        int[] ix = indices;
         int a = 3 * ix[3 * t], b = 3 * ix[3 * t + 1], c = 3 * ix[3 * t + 2];
         double e1x = v[b] - v[a], e1y = v[b + 1] - v[a + 1], e1z = v[b + 2] - v[a + 2];
         double e2x = v[c] - v[a], e2y = v[c + 1] - v[a + 1], e2z = v[c + 2] - v[a + 2];
@@ -69,7 +74,7 @@ public final class SceneGeometry {
      * @param out receives x, y, z
      */
     public void point(int t, double u, double v, double[] out) {
-        interpolate(mesh.vertices(), t, u, v, out);
+        interpolate(vertices, t, u, v, out);
     }
 
     /**
@@ -87,7 +92,7 @@ public final class SceneGeometry {
     }
 
     private void interpolate(double[] a, int t, double u, double v, double[] out) {
-        int[] ix = mesh.indices();
+        int[] ix = indices;
         int i0 = 3 * ix[3 * t], i1 = 3 * ix[3 * t + 1], i2 = 3 * ix[3 * t + 2];
         double w = 1 - u - v;
         out[0] = w * a[i0] + u * a[i1] + v * a[i2];

@@ -64,11 +64,11 @@ public final class TriangleMesh implements Primitives {
                     + " (the ray/triangle test would underflow); scale the scene up");
     }
 
-    /** {@return the flat vertex array (x, y, z per vertex)}; do not modify. */
-    public double[] vertices() { return vertices; }
+    /** {@return a copy of the flat vertex array (x, y, z per vertex)}: the mesh stays as built */
+    public double[] vertices() { return vertices.clone(); }
 
-    /** {@return the flat index array (three per triangle)}; do not modify. */
-    public int[] indices() { return indices; }
+    /** {@return a copy of the flat index array (three per triangle)} */
+    public int[] indices() { return indices.clone(); }
 
     /** {@return the number of vertices} */
     public int vertexCount() { return vertices.length / 3; }
