@@ -84,9 +84,13 @@ final class TradeoffCommand implements Callable<Integer> {
             known.add(given);
             chosen.add(given);
         }
-        if (only != null) chosen = known.stream().filter(v -> only.contains(v.name())).toList();
-        if (chosen.isEmpty()) throw new IllegalArgumentException("no variant named " + only + "; known: "
-                + known.stream().map(Variant::name).toList());
+        if (only != null) {   // every name given must be a variant: a typo is not left out without a word
+            List<String> names = known.stream().map(Variant::name).toList();
+            List<String> unknown = only.stream().filter(n -> !names.contains(n)).toList();
+            if (!unknown.isEmpty())
+                throw new IllegalArgumentException("--variants: no variant named " + String.join(", ", unknown) + "; known: " + String.join(", ", names));
+            chosen = known.stream().filter(v -> only.contains(v.name())).toList();
+        }
         return chosen.stream().map(v -> new Variant(v.name(), v.spec().over(options.spec(v.spec().builder())))).toList();
     }
 
@@ -104,6 +108,7 @@ final class TradeoffCommand implements Callable<Integer> {
         CommandFiles.requireNotInput("--csv", csvOut, "MESH", CommandFiles.meshFile(mesh));
         CommandFiles.requireNotInput("--chart", pngOut, "MESH", CommandFiles.meshFile(mesh));
         ChartFile.requireFormat("--chart", pngOut);
+        List<Variant> variants = variants();   // a name mistyped, or a setting no variant takes: before the mesh is read
         TriangleMesh m = CommandFiles.readMesh(mesh, "tradeoff");
         if (grid > 1) m = MeshGrid.grid(m, grid);
         RaySet set = switch (rays.toUpperCase(Locale.ROOT)) {
@@ -111,7 +116,6 @@ final class TradeoffCommand implements Callable<Integer> {
             case "R" -> RaySet.random(m, rayCount);
             default -> throw new IllegalArgumentException("--rays must be P or R, got " + rays);
         };
-        List<Variant> variants = variants();
         int threads = options.value(SharedSettings.THREADS);   // checked with the variants' specs
         StudyFile table = new StudyFile(csvOut);
 

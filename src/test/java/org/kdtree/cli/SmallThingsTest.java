@@ -83,6 +83,17 @@ class SmallThingsTest {
         assertThat(r.err().strip()).isEqualTo("error: grade-class " + dir.resolve("none") + ": no such folder");
     }
 
+    /** tradeoff --variants with one name mistyped measured the others and left it out without a word. */
+    @Test void aMistypedVariantIsRefusedNotLeftOut() {
+        Path csv = dir.resolve("t.csv");
+        CliRun r = CliRun.of("tradeoff", "scenes:clustered-spheres", "--variants", "bvh,sah-fats", "--csv", csv.toString(),
+                "--chart", dir.resolve("t.png").toString(), "-q");
+        assertThat(r.code()).isEqualTo(Failure.USAGE);
+        assertThat(r.err().strip()).startsWith("error: --variants: no variant named sah-fats; known: median-plane, object-median, ")
+                .contains(", sah-fast, ").doesNotContain("[");
+        assertThat(csv).as("refused before any work").doesNotExist();
+    }
+
     @Test void renderIntoALogSaysWhatItRendersBeforeItIsDone() throws Exception {
         Path png = dir.resolve("c.png");
         CliRun r = CliRun.of("render", "scenes:cornell-box", "-o", png.toString(), "--spp", "1", "--width", "64", "--height", "48");
