@@ -218,7 +218,7 @@ public final class KdTree implements AccelerationStructure {
     /** {@return a line when the reference budget made leaves early ({@link #budgetLeaves()}), else none} */
     @Override public java.util.List<String> notes() {
         if (budgetLeaves == 0) return java.util.List.of();
-        return java.util.List.of("the reference budget (--reference-budget) made " + budgetLeaves + (budgetLeaves == 1 ? " leaf" : " leaves")
+        return java.util.List.of("the reference budget setting made " + budgetLeaves + (budgetLeaves == 1 ? " leaf" : " leaves")
                 + " early");
     }
 
