@@ -70,14 +70,12 @@ final class WideNodes {
 
     /** The largest float at most {@code v}. */
     static float down(double v) {
-        float f = (float) v;
-        return f > v ? Math.nextDown(f) : f;
+        return org.kdtree.geom.OutwardFloat.down(v);
     }
 
     /** The smallest float at least {@code v}. */
     static float up(double v) {
-        float f = (float) v;
-        return f < v ? Math.nextUp(f) : f;
+        return org.kdtree.geom.OutwardFloat.up(v);
     }
 
     /**
