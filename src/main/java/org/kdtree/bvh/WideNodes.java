@@ -70,12 +70,14 @@ final class WideNodes {
 
     /** The largest float at most {@code v}. */
     static float down(double v) {
-        return org.kdtree.geom.OutwardFloat.down(v);
+        float f = (float) v;
+        return f > v ? Math.nextDown(f) : f;
     }
 
     /** The smallest float at least {@code v}. */
     static float up(double v) {
-        return org.kdtree.geom.OutwardFloat.up(v);
+        float f = (float) v;
+        return f < v ? Math.nextUp(f) : f;
     }
 
     /**

@@ -6,12 +6,8 @@ package org.kdtree.kdtree;
  * come from histograms of the references' clipped minima and maxima by bin. O(k (|T| + B)) per
  * node, with no sorting; the plane found may cost a little more than the exact minimum.
  *
- * <p>A build with this search holds its bounds in floats ({@link NodeStore#FLOATS}), binned in
- * float arithmetic: a bin boundary's counts may differ from the doubles' by a reference whose
- * bound lies within a float's ulp of it, which the approximate counts allow anyway.
- *
  * <p>Small nodes, below a threshold (default 64 references), are searched exactly instead, in
- * place ({@link SmallNodeSweep}: their float bounds sorted locally, no event lists):
+ * place ({@link SmallNodeSweep}: their bounds sorted locally, no event lists):
  * there the exact sweep is as cheap as the histograms, and bin boundaries rarely fall where a
  * few triangles can be separated (on the bunny, pure 32-bin SAH costs 10 % more than exact,
  * with the exact sweep below 64 references under 3 %).
@@ -35,16 +31,17 @@ final class BinnedPlaneSearch implements PlaneSearch {
     @Override public void search(BuildNode node, SahCost sah, SahSplit best) {
         NodeStore store = node.store();
         int n = node.size(), k = node.dimension(), d = node.level(), c = node.child();
-        boolean floats = store.formOf(d, c) == NodeStore.FLOATS;
         if (n < exactBelow) {
-            if (floats) SmallNodeSweep.search(node, sah, best);
+            if (store.formOf(d, c) == NodeStore.BOUNDS) SmallNodeSweep.search(node, sah, best);
             else EventSweep.INSTANCE.search(node, sah, best);
             return;
         }
         int[] minBin = store.minBins(k * bins), maxBin = store.maxBins();
+        boolean flat = store.formOf(d, c) == NodeStore.BOUNDS;
+        double[] bounds = flat ? store.bounds(d) : node.clippedBounds();
+        int at = flat ? store.boundsMeta(d)[2 * c] : 0;
         double[] v = store.voxel(d);
-        if (floats) histograms(v, 2 * k * c, k, bins, minBin, maxBin, store.floats(d), store.boundsMeta(d)[2 * c], n);
-        else histograms(v, 2 * k * c, k, bins, minBin, maxBin, node.clippedBounds(), 0, n);
+        histograms(v, 2 * k * c, k, bins, minBin, maxBin, bounds, at, n);
         for (int axis = 0; axis < k; axis++) {
             double lo = v[2 * k * c + axis], w = v[2 * k * c + k + axis] - lo;
             if (!(w > 0)) continue;
@@ -53,26 +50,6 @@ final class BinnedPlaneSearch implements PlaneSearch {
                 nl += minBin[axis * bins + b - 1];
                 nr -= maxBin[axis * bins + b - 1];
                 best.offer(sah, axis, lo + w * b / bins, nl, 0, nr);
-            }
-        }
-    }
-
-    /**
-     * {@link #histograms(double[], int, int, int, int[], int[], double[], int, int) The histograms}
-     * of a node held in floats: references at slots {@code at ..} of {@code f}, one array per coordinate.
-     */
-    private static void histograms(double[] v, int vAt, int k, int bins, int[] minBin, int[] maxBin, float[][] f, int at, int n) {
-        java.util.Arrays.fill(minBin, 0, k * bins, 0);
-        java.util.Arrays.fill(maxBin, 0, k * bins, 0);
-        for (int axis = 0; axis < k; axis++) {
-            double lo = v[vAt + axis], w = v[vAt + k + axis] - lo;
-            if (!(w > 0)) continue;
-            float flo = (float) lo, scale = (float) (bins / w);
-            float[] mins = f[axis], maxs = f[k + axis];
-            int base = axis * bins;
-            for (int j = at; j < at + n; j++) {
-                minBin[base + bin(mins[j], flo, scale, bins)]++;
-                maxBin[base + bin(maxs[j], flo, scale, bins)]++;
             }
         }
     }
@@ -95,11 +72,6 @@ final class BinnedPlaneSearch implements PlaneSearch {
                 maxBin[base + bin(bounds[o + k], lo, scale, bins)]++;
             }
         }
-    }
-
-    private static int bin(float x, float lo, float scale, int bins) {
-        int b = (int) ((x - lo) * scale);   // NaN-free: bounds are finite; a cast saturates
-        return Math.max(0, Math.min(b, bins - 1));
     }
 
     private static int bin(double x, double lo, double scale, int bins) {

@@ -74,10 +74,6 @@ public final class BuildNode {
             refArray = store.refs(d);
             boundsArray = store.bounds(d);
             from = store.boundsMeta(d)[2 * c];
-        } else if (store.formOf(d, c) == NodeStore.FLOATS) {
-            boundsArray = store.asDoubles(d, c);
-            refArray = store.asRefs();
-            from = 0;
         } else {
             makeEventBounds();
         }

@@ -112,18 +112,9 @@ public abstract class KdTreeBuilder implements StructureBuilder {
     /** The root: every primitive with its own bounds, in the scene's box, with the whole reference budget. */
     private void recConstRoot(Build build, Box rootVoxel, KdTreeWriter out) {
         NodeStore store = new NodeStore(build.primitives);
-        store.writeRoot(rootVoxel, ReferenceBudget.root(referenceBudget(), build.primitives.size()), floatBounds());
+        store.writeRoot(rootVoxel, ReferenceBudget.root(referenceBudget(), build.primitives.size()));
         recConst(build, store, 0, 0, out);
     }
-
-    /**
-     * Whether the build holds its clipped bounds in floats rounded outwards ({@link NodeStore#FLOATS}):
-     * for an approximate search, which reads them (in half the bytes) and whose trees may change
-     * with the last bits; an exact one keeps the doubles, so that its planes are the exact minima.
-     * Final, as every method of the recursion but the builder's two questions: the binned SAH is the
-     * one such search.
-     */
-    final boolean floatBounds() { return this instanceof SahBuilder sah && !sah.algorithm().exact(); }
 
     /**
      * recConst for child c of level d of {@code store} (the root is child 0 of level 0): the one
@@ -143,7 +134,7 @@ public abstract class KdTreeBuilder implements StructureBuilder {
             store.leaf(d, c, out);
             return;
         }
-        int interior = out.interior(p.axis(), store.splitAt);   // p's position, or where the float form moved it (FloatSplit)
+        int interior = out.interior(p.axis(), p.position());
         if (build.forkThreshold != Integer.MAX_VALUE && store.size(d + 1, 1) >= build.forkThreshold && store.size(d + 1, 0) > 0) {
             forkRight(build, store, d + 1, interior, out);
             return;

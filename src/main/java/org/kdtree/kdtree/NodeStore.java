@@ -25,10 +25,6 @@ import org.kdtree.shape.Primitives;
  * and its events on axis a run from {@code eventMeta(d)[metaAt(c) + 1 + 2a]} to the next
  * entry. A node is turned into this form when a plane search asks for its events
  * ({@link #events}); {@link EventSplit} keeps its children so.</li>
- * <li>{@link #FLOATS}: as {@link #BOUNDS}, but the clipped bounds rounded to nearest floats and
- * held one array per coordinate ({@code floats(d)[a]} the minima on axis a, {@code [k + a]} the
- * maxima): half the bytes a level moves, read one coordinate at a time. The binned search's
- * builds start so (their trees are approximate anyway); {@link FloatSplit} keeps it so.</li>
  * </ul>
  * Child c's voxel is at {@code voxel(d)[2k c ..]} (k minima, then k maxima) and its share of
  * the reference budget at {@code budget(d)[c]}, whatever its form.
@@ -38,7 +34,7 @@ import org.kdtree.shape.Primitives;
  */
 final class NodeStore {
     /** The forms a node is held in. */
-    static final byte BOUNDS = 0, EVENTS = 1, FLOATS = 2;
+    static final byte BOUNDS = 0, EVENTS = 1;
 
     final int k;
     final Primitives prims;
@@ -48,7 +44,6 @@ final class NodeStore {
     private final byte[][] form = new byte[levels][];
     private final int[][] refs = new int[levels][];
     private final double[][] bounds = new double[levels][];
-    private final float[][][] floats = new float[levels][][];
     private final int[][] boundsMeta = new int[levels][];
     private final double[][] pos = new double[levels][];
     private final int[][] code = new int[levels][];
@@ -58,8 +53,6 @@ final class NodeStore {
 
     /** The view the builder's methods see, pointed at one node after another. */
     final BuildNode view;
-    /** Where the last {@link #split} put its plane. */
-    double splitAt;
     /** The nodes this store has served: paces the recursion's look at its thread's interrupt flag. */
     int nodes;
     /** Per primitive, a slot or a side: scratch of the event split and of {@link BuildNode}'s bounds of an event node. */
@@ -72,10 +65,6 @@ final class NodeStore {
     private int[] minBin = new int[0], maxBin = new int[0];
     private EventSplit eventSplit;
     private BoundsSplit boundsSplit;
-    private FloatSplit floatSplit;
-    private double[] asDoubles = new double[0];
-    private int[] asRefs = new int[0];
-    private float[] floatScratch = new float[0];
     /** What a builder keeps with this store ({@link BuildNode#state}): one object, of the builder's own type. */
     Object state;
 
@@ -85,26 +74,18 @@ final class NodeStore {
         this.view = new BuildNode(this);
     }
 
-    /**
-     * Writes the root, child 0 of level 0: every primitive with its own bounds, in {@code rootVoxel},
-     * with {@code budget}, in the {@link #BOUNDS} form, or in the {@link #FLOATS} form if {@code floatBounds}.
-     */
-    void writeRoot(Box rootVoxel, long rootBudget, boolean floatBounds) {
+    /** Writes the root, child 0 of level 0: every primitive with its own bounds, in {@code rootVoxel}, with {@code budget}. */
+    void writeRoot(Box rootVoxel, long rootBudget) {
         int n = prims.size();
         base = 0;
-        if (floatBounds) {
-            reserveFloats(0, n);
-            FloatSplit.writeAllBounds(prims, floats(0));
-        } else {
-            reserveBounds(0, n);
-            Partition.writeAllBounds(prims, bounds(0));
-        }
+        reserveBounds(0, n);
         int[] r = refs(0);
         for (int i = 0; i < n; i++) r[i] = i;
+        Partition.writeAllBounds(prims, bounds(0));
         int[] m = boundsMeta(0);
         m[0] = 0;
         m[1] = n;
-        form(0)[0] = floatBounds ? FLOATS : BOUNDS;
+        form(0)[0] = BOUNDS;
         double[] v = voxel(0);
         for (int a = 0; a < k; a++) {
             v[a] = rootVoxel.min(a);
@@ -117,7 +98,7 @@ final class NodeStore {
 
     /** {@return |T| of child c of level d} */
     int size(int d, int c) {
-        return form(d)[c] != EVENTS ? boundsMeta(d)[2 * c + 1] : eventMeta(d)[metaAt(c)];
+        return form(d)[c] == BOUNDS ? boundsMeta(d)[2 * c + 1] : eventMeta(d)[metaAt(c)];
     }
 
     /** {@return the form of child c of level d} */
@@ -172,19 +153,12 @@ final class NodeStore {
     /**
      * Splits child c of level d by the plane {@code x_axis = xi} into both children in level
      * d + 1, in its own form, with their shares of its reference budget; returns the
-     * {@link SplitOutcome}, and writes nothing unless it is {@link SplitOutcome#SPLIT}. The plane
-     * used is then at {@link #splitAt}: {@code xi}, or in the float form the exact position within
-     * a float's ulp of it where the geometry lies ({@link FloatSplit}).
+     * {@link SplitOutcome}, and writes nothing unless it is {@link SplitOutcome#SPLIT}.
      */
     int split(int d, int c, int axis, double xi, boolean planarLeft, boolean perfectSplits) {
-        splitAt = xi;
         if (form(d)[c] == EVENTS) {
             if (eventSplit == null) eventSplit = new EventSplit(this);
             return eventSplit.split(d, c, axis, xi, planarLeft, perfectSplits);
-        }
-        if (form(d)[c] == FLOATS) {
-            if (floatSplit == null) floatSplit = new FloatSplit(this);
-            return floatSplit.split(d, c, axis, xi, planarLeft, perfectSplits);
         }
         if (boundsSplit == null) boundsSplit = new BoundsSplit(this);
         return boundsSplit.split(d, c, axis, xi, planarLeft, perfectSplits);
@@ -192,7 +166,7 @@ final class NodeStore {
 
     /** Writes child c of level d as a leaf: its primitives, in increasing order. */
     void leaf(int d, int c, org.kdtree.kdtree.KdTreeWriter out) {
-        if (form(d)[c] != EVENTS) {
+        if (form(d)[c] == BOUNDS) {
             int[] m = boundsMeta(d);
             out.leaf(refs(d), m[2 * c], m[2 * c + 1]);
             return;
@@ -235,18 +209,6 @@ final class NodeStore {
             om[2 * c + 1] = n;
             return n;
         }
-        if (form(d)[c] == FLOATS) {
-            int[] m = boundsMeta(d);
-            int from = m[2 * c], n = m[2 * c + 1];
-            other.reserveFloats(d, n);
-            System.arraycopy(refs(d), from, other.refs(d), 0, n);
-            float[][] f = floats(d), of = other.floats(d);
-            for (int a = 0; a < 2 * k; a++) System.arraycopy(f[a], from, of[a], 0, n);
-            int[] om = other.boundsMeta(d);
-            om[2 * c] = 0;
-            om[2 * c + 1] = n;
-            return n;
-        }
         int[] m = eventMeta(d);
         int at = metaAt(c), from = m[at + 1], to = m[at + 2 * k];
         other.reserveEvents(d, to - from);
@@ -272,50 +234,6 @@ final class NodeStore {
 
     int[] refs(int d) { return refs[d - base]; }
 
-    // ---- the float form ----
-
-    /** Makes room for {@code count} references with float bounds in level {@code d} (its old contents are dead). */
-    void reserveFloats(int d, int count) {
-        int i = d - base;
-        if (refs[i] == null || refs[i].length < count) refs[i] = new int[grown(refs[i] == null ? 0 : refs[i].length, count)];
-        if (floats[i] == null || floats[i][0].length < count) {
-            int n = refs[i].length;
-            floats[i] = new float[2 * k][n];
-        }
-    }
-
-    /** The float bounds of level d: {@code [a]} the minima on axis a, {@code [k + a]} the maxima, at the references' slots. */
-    float[][] floats(int d) { return floats[d - base]; }
-
-    /**
-     * The clipped bounds of child c of level d, held in floats, as doubles ({@code 2k} a slot, from
-     * slot 0), in scratch valid until the next call; its references in {@link #asRefs()}. For the
-     * readers of a node that do not read floats (a student's builder, the event form).
-     */
-    double[] asDoubles(int d, int c) {
-        int[] m = boundsMeta(d);
-        int from = m[2 * c], n = m[2 * c + 1];
-        if (asRefs.length < n) asRefs = new int[n];
-        if (asDoubles.length < 2 * k * n) asDoubles = new double[2 * k * n];
-        System.arraycopy(refs(d), from, asRefs, 0, n);
-        float[][] f = floats(d);
-        for (int a = 0; a < k; a++) {   // a float is within half an ulp: its neighbours contain the exact bound
-            for (int j = 0; j < n; j++) {
-                asDoubles[2 * k * j + a] = Math.nextDown(f[a][from + j]);
-                asDoubles[2 * k * j + k + a] = Math.nextUp(f[k + a][from + j]);
-            }
-        }
-        return asDoubles;
-    }
-
-    int[] asRefs() { return asRefs; }
-
-    /** Float scratch of at least {@code n} values, reused from node to node ({@link SmallNodeSweep}). */
-    float[] floatScratch(int n) {
-        if (floatScratch.length < n) floatScratch = new float[grown(floatScratch.length, n)];
-        return floatScratch;
-    }
-
     double[] bounds(int d) { return bounds[d - base]; }
 
     int[] boundsMeta(int d) {
@@ -334,13 +252,8 @@ final class NodeStore {
     void events(int d, int c) {
         if (form(d)[c] == EVENTS) return;
         int[] m = boundsMeta(d);
-        boolean parallel = d == 0 && java.util.concurrent.ForkJoinTask.inForkJoinPool();
-        if (form(d)[c] == FLOATS) {
-            double[] b = asDoubles(d, c);
-            EventRoot.write(this, d, c, asRefs, 0, b, m[2 * c + 1], parallel);
-        } else {
-            EventRoot.write(this, d, c, refs(d), m[2 * c], bounds(d), m[2 * c + 1], parallel);
-        }
+        EventRoot.write(this, d, c, refs(d), m[2 * c], bounds(d), m[2 * c + 1],
+                d == 0 && java.util.concurrent.ForkJoinTask.inForkJoinPool());
         form(d)[c] = EVENTS;
         if (view.level() == d && view.child() == c) view.formChanged();
     }

@@ -49,23 +49,10 @@ final class Partition {
             }
             return 3;
         }
-        int to = clipStraddler(prims, prim, voxel, axis, xi, tmpL, tmpR);
-        if ((to & 1) != 0) write(tmpL, left, atL);
-        if ((to & 2) != 0) write(tmpR, right, atR);
-        return to;
-    }
-
-    /**
-     * The perfect split of a straddler: its exact bounds in the lower child of {@code voxel} cut
-     * at {@code x_axis = xi} left in {@code tmpL}, in the upper in {@code tmpR} (a sliver kept on
-     * the face where an exact clip came out empty but the primitive touches the child, as
-     * {@link #straddlerBounds} says); returns which children it goes to (bit 0: left, bit 1: right).
-     */
-    static int clipStraddler(Primitives prims, int prim, Box voxel, int axis, double xi, Box tmpL, Box tmpR) {
         prims.clipSplit(prim, voxel, axis, xi, tmpL, tmpR);
         int to = 0;
-        if (!tmpL.isEmpty() || touches(prims, prim, voxel.lowerPart(axis, xi), tmpL)) to |= 1;
-        if (!tmpR.isEmpty() || touches(prims, prim, voxel.upperPart(axis, xi), tmpR)) to |= 2;
+        if (!tmpL.isEmpty() || touches(prims, prim, voxel.lowerPart(axis, xi), tmpL)) { write(tmpL, left, atL); to |= 1; }
+        if (!tmpR.isEmpty() || touches(prims, prim, voxel.upperPart(axis, xi), tmpR)) { write(tmpR, right, atR); to |= 2; }
         return to;
     }
 
