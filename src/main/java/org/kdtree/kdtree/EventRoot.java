@@ -6,9 +6,13 @@ package org.kdtree.kdtree;
  * exact threshold. Every reference's clipped bounds become its events (a planar event where the
  * bounds are flat on an axis, else a start and an end), sorted once per axis; below, the splits
  * keep them sorted ({@link EventSplit}). At the root of a parallel build the axes are sorted in
- * parallel.
+ * parallel. A large node's events are packed in longs and radix-sorted ({@link PackedEventSort}),
+ * a small one's sorted as doubles ({@link EventSort}): the same order either way.
  */
 final class EventRoot {
+    /** From this many events on an axis they are made and sorted as packed longs ({@link PackedEventSort}); fewer go through {@link EventSort}. */
+    private static final int PACKED_MIN = 2048;
+
     private EventRoot() {
     }
 
@@ -34,6 +38,13 @@ final class EventRoot {
         for (int a = 0; a < k; a++) {
             int axis = a, from = meta[m0 + 1 + 2 * a], to = meta[m0 + 2 + 2 * a];
             axes[a] = () -> {
+                if (to - from >= PACKED_MIN) {
+                    if (parallel) PackedEventSort.write(bounds, k, refs, at, n, axis, pos, code, from, new long[to - from],
+                            new long[to - from], new double[to - from], new int[PackedEventSort.countLength()]);
+                    else PackedEventSort.write(bounds, k, refs, at, n, axis, pos, code, from, store.sortKeys(to - from),
+                            store.sortKeysTmp(), store.sortPositions(to - from), store.sortCounts());
+                    return;
+                }
                 int m = from;
                 for (int j = 0; j < n; j++) m = addEvents(bounds, k, at + j, refs[at + j], axis, pos, code, m);
                 if (parallel) EventSort.sort(pos, code, from, to, new double[to - from], new int[to - from]);

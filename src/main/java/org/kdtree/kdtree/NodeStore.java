@@ -60,6 +60,8 @@ final class NodeStore {
     private int[] leafRefs = new int[16];
     private double[] sortPos = new double[16];
     private int[] sortCode = new int[16];
+    private long[] sortKeys = new long[0], sortKeysTmp = new long[0];
+    private int[] sortCounts;
     private int[] minBin = new int[0], maxBin = new int[0];
     private EventSplit eventSplit;
     private BoundsSplit boundsSplit;
@@ -289,6 +291,22 @@ final class NodeStore {
     }
 
     int[] sortCodes() { return sortCode; }
+
+    /** Packed-event sort scratch ({@link PackedEventSort}): keys for at least {@code n} events, as many more ({@link #sortKeysTmp}), and its counts ({@link #sortCounts}). */
+    long[] sortKeys(int n) {
+        if (sortKeys.length < n) {
+            sortKeys = new long[grown(sortKeys.length, n)];
+            sortKeysTmp = new long[sortKeys.length];
+        }
+        return sortKeys;
+    }
+
+    long[] sortKeysTmp() { return sortKeysTmp; }
+
+    int[] sortCounts() {
+        if (sortCounts == null) sortCounts = new int[PackedEventSort.countLength()];
+        return sortCounts;
+    }
 
     /** The binned SAH's histogram of minima, at least {@code bins} long (and as many maxima: {@link #maxBins}). */
     int[] minBins(int bins) {
