@@ -77,12 +77,24 @@ final class PacketTraversal implements PacketQuery {
     }
 
     @Override public void closestHits(RayPacket p) {
-        int n = p.size();
-        if (n == 0) return;
-        if (empty || !coherent(p)) {
-            PacketQuery.oneByOne(single, p, ray, hit);
-            return;
-        }
+        if (p.size() == 0) return;
+        if (empty || !coherent(p)) PacketQuery.oneByOne(single, p, ray, hit);
+        else trace(p, false);
+    }
+
+    @Override public void anyHits(RayPacket p) {
+        if (p.size() == 0) return;
+        if (empty || !coherent(p)) PacketQuery.anyOneByOne(single, p, ray);
+        else trace(p, true);
+    }
+
+    /**
+     * Traces a coherent packet: each ray's closest hit, or (for {@code any}) whether it hits
+     * anything. An any-hit ray leaves the packet at its first hit (its limit set below every box's
+     * entry), as a single ray stops, and the packet stops when no ray is left.
+     */
+    private void trace(RayPacket p, boolean any) {
+        int n = p.size(), active = n;
         double oxLo = Double.POSITIVE_INFINITY, oxHi = Double.NEGATIVE_INFINITY, oyLo = oxLo, oyHi = oxHi, ozLo = oxLo, ozHi = oxHi;
         double ixLo = oxLo, ixHi = oxHi, iyLo = oxLo, iyHi = oxHi, izLo = oxLo, izHi = oxHi, startLo = oxLo;
         for (int i = 0; i < n; i++) {
@@ -141,8 +153,16 @@ final class PacketTraversal implements PacketQuery {
                     continue;
                 }
             } else {
-                leaf(p, nd, -1 - e, first, last);
-                limitHi = maxLimit(n);
+                int word = -1 - e, box = boxOf(word);
+                if (any) {
+                    int blocked = anyLeaf(p, nd, word, box, nx, ny, nz, fx, fy, fz, first, last);
+                    active -= blocked;
+                    if (active == 0) break;
+                    if (blocked > 0) limitHi = maxLimit(n);
+                } else {
+                    leaf(p, nd, word, box, nx, ny, nz, fx, fy, fz, first, last);
+                    limitHi = maxLimit(n);
+                }
             }
             if (sp == 0) break;
             sp--;
@@ -201,6 +221,11 @@ final class PacketTraversal implements PacketQuery {
         double m = Double.NEGATIVE_INFINITY;
         for (int i = 0; i < n; i++) m = Math.max(m, limit[i]);
         return m;
+    }
+
+    /** The first word of the box of the leaf whose reference is at {@code word} (a record's left or right link). */
+    private static int boxOf(int word) {
+        return (word & -STRIDE) + 3 * ((word & (STRIDE - 1)) - LINKS);
     }
 
     /** A child's word for the stack: its record, or {@code -1 - link} for a leaf. */
@@ -270,12 +295,45 @@ final class PacketTraversal implements PacketQuery {
         return from + 1;
     }
 
-    /** Every ray of {@code [first, last)} tests the leaf's triangles (the leaf whose reference is at {@code word}). */
-    private void leaf(RayPacket p, int[] nd, int word, int first, int last) {
+    /**
+     * Every ray of {@code [first, last)} not yet blocked that enters the leaf's box (at {@code box}) tests its triangles (the leaf whose
+     * reference is at {@code word}) as {@link PairTraversal}'s any-hit ray does, stopping at its
+     * first hit, which takes it out of the packet. Returns how many rays it took out.
+     */
+    private int anyLeaf(RayPacket p, int[] nd, int word, int box, int nx, int ny, int nz, int fx, int fy, int fz, int first, int last) {
+        double[] c = corners;
+        Hit h = hit;
+        int from = nd[word], end = from + nd[word + 1], blocked = 0;
+        for (int i = first; i < last; i++) {
+            if (position[i] >= 0 || !enters(p, nd, box, nx, ny, nz, fx, fy, fz, i)) continue;
+            h.primitive = -1;
+            h.t = Double.POSITIVE_INFINITY;
+            for (int r = from; r < end; r++)
+                if (TriangleIntersector.test(c, 9 * r, r, okx[i], oky[i], okz[i], kx[i], ky[i], kz[i], sx[i], sy[i], sz[i],
+                        p.tMin[i], best[i], h)) {
+                    position[i] = r;
+                    best[i] = h.t;
+                    bu[i] = h.u;
+                    bv[i] = h.v;
+                    limit[i] = Double.NEGATIVE_INFINITY;
+                    blocked++;
+                    break;
+                }
+        }
+        return blocked;
+    }
+
+    /**
+     * Every ray of {@code [first, last)} that enters the leaf's box (at {@code box}: the range's
+     * middle rays were not tested at its parent) tests the leaf's triangles (the leaf whose
+     * reference is at {@code word}).
+     */
+    private void leaf(RayPacket p, int[] nd, int word, int box, int nx, int ny, int nz, int fx, int fy, int fz, int first, int last) {
         double[] c = corners;
         Hit h = hit;
         int from = nd[word], end = from + nd[word + 1];
         for (int i = first; i < last; i++) {
+            if (!enters(p, nd, box, nx, ny, nz, fx, fy, fz, i)) continue;   // a ray of the range that misses the leaf's box
             // As the single ray: the hit so far (none: +infinity), and t up to the closest so far (at first tMax).
             h.primitive = position[i];
             h.t = position[i] < 0 ? Double.POSITIVE_INFINITY : best[i];
