@@ -155,10 +155,9 @@ final class PacketTraversal implements PacketQuery {
             } else {
                 int word = -1 - e, box = boxOf(word);
                 if (any) {
-                    int blocked = anyLeaf(p, nd, word, box, nx, ny, nz, fx, fy, fz, first, last);
-                    active -= blocked;
+                    // A blocked ray's limit falls below every box; the packet's bound may stay above it (it is only an upper bound).
+                    active -= anyLeaf(p, nd, word, box, nx, ny, nz, fx, fy, fz, first, last);
                     if (active == 0) break;
-                    if (blocked > 0) limitHi = maxLimit(n);
                 } else {
                     leaf(p, nd, word, box, nx, ny, nz, fx, fy, fz, first, last);
                     limitHi = maxLimit(n);
