@@ -45,7 +45,7 @@ final class PixelSampler {
     /** {@return the next number of the stream, in [0, 1)} */
     double next() {
         state += GOLDEN;
-        return (mix(state) >>> 11) * 0x1.0p-53;
+        return (mix(state) >>> 11) / (double) (1L << 53);      // 53 random bits, exactly
     }
 
     /** SplitMix64's finalizer: a bijection of the 64-bit words that spreads every input bit over the output. */
