@@ -89,7 +89,7 @@ public final class RaysOldAgainstNew {
     }
 
     /** {@return the structure's silent query method}: {@code query()} now, {@code query(Intersector)} in older jars */
-    private static Method findQuery(Class<?> structure) throws NoSuchMethodException {
+    static Method findQuery(Class<?> structure) throws NoSuchMethodException {
         for (Method m : structure.getMethods())
             if (m.getName().equals("query") && (m.getParameterCount() == 0
                     || m.getParameterCount() == 1 && m.getParameterTypes()[0].getSimpleName().equals("Intersector"))) return m;

@@ -17,6 +17,16 @@ public interface PacketQuery extends RayQuery {
     void closestHits(RayPacket packet);
 
     /**
+     * Whether each ray of the packet hits anything in its interval (shadow rays, "any hit"):
+     * {@link RayPacket#found} says so for each ray, exactly as {@link RayQuery#anyHit} answers that
+     * ray alone. Which hit is recorded ({@link RayPacket#primitive}, t, barycentrics) is unspecified:
+     * a packet, like a single ray, may stop at the first it finds.
+     *
+     * @param packet the rays; receives whether each is blocked
+     */
+    void anyHits(RayPacket packet);
+
+    /**
      * The closest hits of a packet's rays one at a time, with {@code query}: what a query without
      * packets does, and what a packet query does with rays it cannot trace together.
      *
@@ -30,5 +40,17 @@ public interface PacketQuery extends RayQuery {
             query.closestHit(packet.ray(i, ray), packet.tMin[i], packet.tMax[i], hit);
             packet.record(i, hit);
         }
+    }
+
+    /**
+     * Whether each ray of a packet hits anything, one ray at a time with {@code query}: what
+     * {@link #anyHits} does with rays it cannot trace together.
+     *
+     * @param query  the single-ray query
+     * @param packet the rays; receives whether each is blocked ({@link RayPacket#found})
+     * @param ray    scratch, a 3-D ray
+     */
+    static void anyOneByOne(RayQuery query, RayPacket packet, Ray ray) {
+        for (int i = 0, n = packet.size(); i < n; i++) packet.recordAny(i, query.anyHit(packet.ray(i, ray), packet.tMin[i], packet.tMax[i]));
     }
 }

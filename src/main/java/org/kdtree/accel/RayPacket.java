@@ -90,4 +90,18 @@ public final class RayPacket {
         u[i] = hit.u;
         v[i] = hit.v;
     }
+
+    /**
+     * Records whether ray {@code i} is blocked, from a single-ray any-hit query ({@link PacketQuery#anyHits}):
+     * no hit as {@link #record} writes it, or a hit on an unnamed primitive (index 0, t and barycentrics 0).
+     *
+     * @param i       a ray's index
+     * @param blocked whether the ray hits anything in its interval
+     */
+    public void recordAny(int i, boolean blocked) {
+        primitive[i] = blocked ? 0 : -1;
+        t[i] = blocked ? 0 : Double.POSITIVE_INFINITY;
+        u[i] = 0;
+        v[i] = 0;
+    }
 }

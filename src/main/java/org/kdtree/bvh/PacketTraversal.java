@@ -55,6 +55,13 @@ final class PacketTraversal implements PacketQuery {
             okx = new double[N], oky = new double[N], okz = new double[N];
     private final Hit hit = new Hit();
     private final Ray ray = new Ray(3);
+    /**
+     * For an any-hit packet whose rays all end ({@link #planeCull}): the boxes of the rays' origins
+     * and of their ends (min x, y, z, max x, y, z), which hold every point of every ray's segment
+     * between them; and of a leaf's triangles, those whose plane both boxes lie clearly on one side of.
+     */
+    private final double[] origins = new double[6], ends = new double[6];
+    private boolean planeCull;
 
     PacketTraversal(Bvh bvh, RayQuery single) {
         this.single = single;
@@ -77,12 +84,24 @@ final class PacketTraversal implements PacketQuery {
     }
 
     @Override public void closestHits(RayPacket p) {
-        int n = p.size();
-        if (n == 0) return;
-        if (empty || !coherent(p)) {
-            PacketQuery.oneByOne(single, p, ray, hit);
-            return;
-        }
+        if (p.size() == 0) return;
+        if (empty || !coherent(p)) PacketQuery.oneByOne(single, p, ray, hit);
+        else trace(p, false);
+    }
+
+    @Override public void anyHits(RayPacket p) {
+        if (p.size() == 0) return;
+        if (empty || !coherent(p)) PacketQuery.anyOneByOne(single, p, ray);
+        else trace(p, true);
+    }
+
+    /**
+     * Traces a coherent packet: each ray's closest hit, or (for {@code any}) whether it hits
+     * anything. An any-hit ray leaves the packet at its first hit (its limit set below every box's
+     * entry), as a single ray stops, and the packet stops when no ray is left.
+     */
+    private void trace(RayPacket p, boolean any) {
+        int n = p.size(), active = n;
         double oxLo = Double.POSITIVE_INFINITY, oxHi = Double.NEGATIVE_INFINITY, oyLo = oxLo, oyHi = oxHi, ozLo = oxLo, ozHi = oxHi;
         double ixLo = oxLo, ixHi = oxHi, iyLo = oxLo, iyHi = oxHi, izLo = oxLo, izHi = oxHi, startLo = oxLo;
         for (int i = 0; i < n; i++) {
@@ -103,6 +122,7 @@ final class PacketTraversal implements PacketQuery {
         int nx = p.ix[0] < 0 ? 3 : 0, ny = p.iy[0] < 0 ? 4 : 1, nz = p.iz[0] < 0 ? 5 : 2;
         int fx = 3 - nx, fy = 5 - ny, fz = 7 - nz;
         double limitHi = maxLimit(n);
+        planeCull = any && segmentBoxes(p, n);
 
         int[] nd = words;
         int sp = 0, e = 0, first = 0, last = n;
@@ -141,8 +161,15 @@ final class PacketTraversal implements PacketQuery {
                     continue;
                 }
             } else {
-                leaf(p, nd, -1 - e, first, last);
-                limitHi = maxLimit(n);
+                int word = -1 - e, box = boxOf(word);
+                if (any) {
+                    // A blocked ray's limit falls below every box; the packet's bound may stay above it (it is only an upper bound).
+                    active -= anyLeaf(p, nd, word, box, nx, ny, nz, fx, fy, fz, first, last);
+                    if (active == 0) break;
+                } else {
+                    leaf(p, nd, word, box, nx, ny, nz, fx, fy, fz, first, last);
+                    limitHi = maxLimit(n);
+                }
             }
             if (sp == 0) break;
             sp--;
@@ -201,6 +228,11 @@ final class PacketTraversal implements PacketQuery {
         double m = Double.NEGATIVE_INFINITY;
         for (int i = 0; i < n; i++) m = Math.max(m, limit[i]);
         return m;
+    }
+
+    /** The first word of the box of the leaf whose reference is at {@code word} (a record's left or right link). */
+    private static int boxOf(int word) {
+        return (word & -STRIDE) + 3 * ((word & (STRIDE - 1)) - LINKS);
     }
 
     /** A child's word for the stack: its record, or {@code -1 - link} for a leaf. */
@@ -270,12 +302,108 @@ final class PacketTraversal implements PacketQuery {
         return from + 1;
     }
 
-    /** Every ray of {@code [first, last)} tests the leaf's triangles (the leaf whose reference is at {@code word}). */
-    private void leaf(RayPacket p, int[] nd, int word, int first, int last) {
+    /**
+     * Every ray of {@code [first, last)} not yet blocked that enters the leaf's box (at {@code box}) tests its triangles (the leaf whose
+     * reference is at {@code word}) as {@link PairTraversal}'s any-hit ray does, stopping at its
+     * first hit, which takes it out of the packet. Returns how many rays it took out.
+     */
+    private int anyLeaf(RayPacket p, int[] nd, int word, int box, int nx, int ny, int nz, int fx, int fy, int fz, int first, int last) {
+        double[] c = corners;
+        Hit h = hit;
+        int from = nd[word], end = from + nd[word + 1], blocked = 0;
+        long skip = planeCull ? sidedTriangles(from, end) : 0;
+        if (skip == -1L >>> (64 - Math.min(64, end - from)) && end - from <= 64) return 0;   // no ray can cross any of them
+        for (int i = first; i < last; i++) {
+            if (position[i] >= 0 || !enters(p, nd, box, nx, ny, nz, fx, fy, fz, i)) continue;
+            h.primitive = -1;
+            h.t = Double.POSITIVE_INFINITY;
+            for (int r = from; r < end; r++)
+                if ((r - from >= 64 || (skip & 1L << (r - from)) == 0) && TriangleIntersector.test(c, 9 * r, r, okx[i], oky[i], okz[i], kx[i], ky[i], kz[i], sx[i], sy[i], sz[i],
+                        p.tMin[i], best[i], h)) {
+                    position[i] = r;
+                    best[i] = h.t;
+                    bu[i] = h.u;
+                    bv[i] = h.v;
+                    limit[i] = Double.NEGATIVE_INFINITY;
+                    blocked++;
+                    break;
+                }
+        }
+        return blocked;
+    }
+
+    /**
+     * Sets {@link #origins} and {@link #ends} to the boxes of the packet's rays' origins and of
+     * their ends ({@code o + tMax d}); false (no plane culling) if some ray has no finite end.
+     */
+    private boolean segmentBoxes(RayPacket p, int n) {
+        for (int a = 0; a < 3; a++) {
+            origins[a] = ends[a] = Double.POSITIVE_INFINITY;
+            origins[3 + a] = ends[3 + a] = Double.NEGATIVE_INFINITY;
+        }
+        for (int i = 0; i < n; i++) {
+            double t = p.tMax[i];
+            double ex = p.ox[i] + t * p.dx[i], ey = p.oy[i] + t * p.dy[i], ez = p.oz[i] + t * p.dz[i];
+            if (!(Double.isFinite(ex) && Double.isFinite(ey) && Double.isFinite(ez))) return false;
+            grow(origins, p.ox[i], p.oy[i], p.oz[i]);
+            grow(ends, ex, ey, ez);
+        }
+        return true;
+    }
+
+    private static void grow(double[] b, double x, double y, double z) {
+        b[0] = Math.min(b[0], x); b[1] = Math.min(b[1], y); b[2] = Math.min(b[2], z);
+        b[3] = Math.max(b[3], x); b[4] = Math.max(b[4], y); b[5] = Math.max(b[5], z);
+    }
+
+    /**
+     * The leaf's triangles (positions {@code [from, end)}, the first 64) that no ray of the packet
+     * can hit, as bits: those whose plane has the box of the rays' origins and the box of their
+     * ends both on one side of it, by a margin ({@link #SIDE_MARGIN} of the distances' size) far
+     * above the rounding of the plane's normal and of the watertight test. Every ray's segment lies
+     * between its origin and its end, so none reaches the plane, and the single ray's test of that
+     * triangle fails too: skipping it changes no answer.
+     */
+    private long sidedTriangles(int from, int end) {
+        double[] c = corners;
+        long bits = 0;
+        for (int r = from, m = Math.min(end, from + 64); r < m; r++) {
+            int b = 9 * r;
+            double ax = c[b], ay = c[b + 1], az = c[b + 2];
+            double ux = c[b + 3] - ax, uy = c[b + 4] - ay, uz = c[b + 5] - az;
+            double vx = c[b + 6] - ax, vy = c[b + 7] - ay, vz = c[b + 8] - az;
+            double nx = uy * vz - uz * vy, ny = uz * vx - ux * vz, nz = ux * vy - uy * vx;
+            int so = side(origins, ax, ay, az, nx, ny, nz);
+            if (so != 0 && so == side(ends, ax, ay, az, nx, ny, nz)) bits |= 1L << (r - from);
+        }
+        return bits;
+    }
+
+    /** Relative margin of {@link #side}: distances within it of the plane count as on it. */
+    private static final double SIDE_MARGIN = Tolerance.PLANE_SIDE_MARGIN;
+
+    /** 1 if the box lies clearly on the side of the plane through a (ax, ay, az) that its normal n points to, -1 if clearly on the other, else 0. */
+    private static int side(double[] box, double ax, double ay, double az, double nx, double ny, double nz) {
+        double lx = box[0] - ax, ly = box[1] - ay, lz = box[2] - az, hx = box[3] - ax, hy = box[4] - ay, hz = box[5] - az;
+        double lo = Math.min(nx * lx, nx * hx) + Math.min(ny * ly, ny * hy) + Math.min(nz * lz, nz * hz);
+        double hi = Math.max(nx * lx, nx * hx) + Math.max(ny * ly, ny * hy) + Math.max(nz * lz, nz * hz);
+        double size = Math.abs(nx) * Math.max(Math.abs(lx), Math.abs(hx)) + Math.abs(ny) * Math.max(Math.abs(ly), Math.abs(hy))
+                + Math.abs(nz) * Math.max(Math.abs(lz), Math.abs(hz));
+        double margin = SIDE_MARGIN * size;
+        return lo > margin ? 1 : hi < -margin ? -1 : 0;
+    }
+
+    /**
+     * Every ray of {@code [first, last)} that enters the leaf's box (at {@code box}: the range's
+     * middle rays were not tested at its parent) tests the leaf's triangles (the leaf whose
+     * reference is at {@code word}).
+     */
+    private void leaf(RayPacket p, int[] nd, int word, int box, int nx, int ny, int nz, int fx, int fy, int fz, int first, int last) {
         double[] c = corners;
         Hit h = hit;
         int from = nd[word], end = from + nd[word + 1];
         for (int i = first; i < last; i++) {
+            if (!enters(p, nd, box, nx, ny, nz, fx, fy, fz, i)) continue;   // a ray of the range that misses the leaf's box
             // As the single ray: the hit so far (none: +infinity), and t up to the closest so far (at first tMax).
             h.primitive = position[i];
             h.t = position[i] < 0 ? Double.POSITIVE_INFINITY : best[i];

@@ -134,22 +134,9 @@ final class WideTraversal implements RayQuery {
                     ht[m] = t0;
                     m += t0 * SHRINK <= t1 * GROW ? 1 : 0;
                 }
-                // Farthest first, so that the nearest is taken next.
-                for (int i = 1; i < m; i++) {
-                    int hi = he[i];
-                    double ti = ht[i];
-                    int j = i;
-                    for (; j > 0 && ht[j - 1] < ti; j--) { he[j] = he[j - 1]; ht[j] = ht[j - 1]; }
-                    he[j] = hi;
-                    ht[j] = ti;
-                }
                 if (m > 0) {
-                    m--;
-                    for (int j = 0; j < m; j++) {
-                        se[sp] = he[j];
-                        st[sp++] = ht[j];
-                    }
-                    e = he[m];
+                    sp = saveAllButNearest(he, ht, m, se, st, sp);
+                    e = he[m - 1];
                     continue;
                 }
             } else {
@@ -169,5 +156,27 @@ final class WideTraversal implements RayQuery {
             } while (st[sp] > best + Math.abs(best) * SLACK);
             e = se[sp];
         }
+    }
+
+    /**
+     * Sorts the {@code m} entered children {@code he} (entry distances {@code ht}) farthest first,
+     * and pushes all but the nearest (left at {@code he[m - 1]}, taken next) on the stack
+     * {@code se}/{@code st} from {@code sp}; returns the new stack size. Shared with the vector
+     * path's loop ({@code VectorTraversal}), which enters children in the same order.
+     */
+    static int saveAllButNearest(int[] he, double[] ht, int m, int[] se, double[] st, int sp) {
+        for (int i = 1; i < m; i++) {
+            int hi = he[i];
+            double ti = ht[i];
+            int j = i;
+            for (; j > 0 && ht[j - 1] < ti; j--) { he[j] = he[j - 1]; ht[j] = ht[j - 1]; }
+            he[j] = hi;
+            ht[j] = ti;
+        }
+        for (int j = 0; j < m - 1; j++) {
+            se[sp] = he[j];
+            st[sp++] = ht[j];
+        }
+        return sp;
     }
 }

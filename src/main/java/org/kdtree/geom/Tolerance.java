@@ -84,6 +84,14 @@ public record Tolerance(double relative, double absolute) {
     public static final double RAY_OFFSET = 1e-9;
 
     /**
+     * Relative margin by which a box of points must lie off a triangle's plane for a packet of
+     * segments between such boxes to skip the triangle (the BVH's any-hit packets): the plane's
+     * normal and the sums round at about 1e-16 relative, the watertight test's t likewise, so a
+     * margin of a billion ulps leaves no case where the test would have found a hit.
+     */
+    public static final double PLANE_SIDE_MARGIN = 1e-7;
+
+    /**
      * How far short of a point light a shadow ray stops, relative to its length, so that the
      * light's own panel does not occlude it.
      */

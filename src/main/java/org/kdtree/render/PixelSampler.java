@@ -1,36 +1,59 @@
 package org.kdtree.render;
 
-import java.util.SplittableRandom;
-
 /**
- * Random numbers seeded per pixel, so that a pixel's samples do not depend on which thread
- * renders it or in which order: images are reproducible and identical across thread counts.
+ * Random numbers in streams of their own, one per pixel, camera sample and point of the ray tree,
+ * so that no number depends on which thread renders a pixel, in which order, or whether its rays
+ * were traced one at a time or in packets: images are reproducible, identical across thread
+ * counts and across the per-pixel and the packet paths ({@link Tracer}).
+ *
+ * <p>A stream is picked by {@link #start} (a hash of the scene's seed, the pixel, the sample's
+ * index and the node of the ray tree) and then steps a 64-bit counter through a bijective mixer
+ * (Steele, Lea and Flood's SplitMix64, the generator behind {@link java.util.SplittableRandom}).
+ * One long of state: nothing is allocated per pixel or per stream.
  */
 final class PixelSampler {
+    /** The odd step of the counter (the golden ratio's 64-bit fraction). */
+    private static final long GOLDEN = 0x9E3779B97F4A7C15L;
     private final long seed;
-    private SplittableRandom random;
+    private long state;
 
     /**
-     * A sampler whose sequences derive from {@code seed}.
+     * A sampler whose streams derive from {@code seed}.
      *
      * @param seed the scene's base seed
      */
-    public PixelSampler(long seed) {
+    PixelSampler(long seed) {
         this.seed = seed;
     }
 
     /**
-     * Restarts the sequence for pixel (x, y).
+     * Starts the stream of pixel (x, y), camera sample {@code sample}, node {@code node} of the ray
+     * tree (0: the camera ray's jitter; 1: the camera ray's hit; a hit's reflection child is
+     * {@code 2 node}, its refraction child {@code 2 node + 1}).
      *
-     * @param x the pixel's column
-     * @param y the pixel's row
+     * @param x      the pixel's column
+     * @param y      the pixel's row
+     * @param sample the camera sample's index in the pixel
+     * @param node   the point of the ray tree the numbers are for
      */
-    public void startPixel(int x, int y) {
-        random = new SplittableRandom(seed ^ (0x9E3779B97F4A7C15L * (((long) y << 32) | (x & 0xffffffffL))));
+    void start(int x, int y, int sample, long node) {
+        long h = mix(seed ^ GOLDEN * ((long) y << 32 | (x & 0xffffffffL)));
+        h = mix(h + GOLDEN * (sample + 1L));
+        state = mix(h ^ GOLDEN * (node + 1));
     }
 
-    /** {@return the next number in [0, 1)} */
-    public double next() { return random.nextDouble(); }
+    /** {@return the next number of the stream, in [0, 1)} */
+    double next() {
+        state += GOLDEN;
+        return (mix(state) >>> 11) / (double) (1L << 53);      // 53 random bits, exactly
+    }
+
+    /** SplitMix64's finalizer: a bijection of the 64-bit words that spreads every input bit over the output. */
+    private static long mix(long z) {
+        z = (z ^ (z >>> 30)) * 0xBF58476D1CE4E5B9L;
+        z = (z ^ (z >>> 27)) * 0x94D049BB133111EBL;
+        return z ^ (z >>> 31);
+    }
 
     /**
      * Sample {@code i} of {@code n} over the unit square: the centre for a single sample,
@@ -39,7 +62,7 @@ final class PixelSampler {
      * @param n the number of samples
      * @param st receives (s, t)
      */
-    public void square(int i, int n, double[] st) {
+    void square(int i, int n, double[] st) {
         if (n == 1) {
             st[0] = st[1] = 0.5;
             return;

@@ -119,7 +119,7 @@ public final class Renderer {
         }
     }
 
-    /** The edge of a block of camera rays traced as one packet (8 x 8: {@link org.kdtree.accel.RayPacket#CAPACITY}). */
+    /** The edge of a block of pixels traced together (8 x 8: {@link org.kdtree.accel.RayPacket#CAPACITY} camera rays a packet). */
     private static final int PACKET = 8;
 
     private static void renderTile(Tracer tracer, Image image, int[][] pixelRays, int x0, int y0, int x1, int y1) {
@@ -127,19 +127,17 @@ public final class Renderer {
         long[] before = new long[RayKind.values().length];
         double[] rgb = new double[3];
         if (tracer.tracesPackets()) {
-            // Camera rays in blocks of 8 x 8 pixels, one packet each; every pixel the same colour as alone.
+            // Blocks of 8 x 8 pixels, their camera and shadow rays in packets; every pixel the same colour as alone.
             for (int by = y0; by < y1; by += PACKET)
                 for (int bx = x0; bx < x1; bx += PACKET) {
                     int ex = Math.min(x1, bx + PACKET), ey = Math.min(y1, by + PACKET), i = 0;
-                    tracer.cameraPacket(bx, by, ex, ey);
+                    tracer.block(bx, by, ex, ey);
                     for (int y = by; y < ey; y++)
                         for (int x = bx; x < ex; x++, i++) {
-                            if (pixelRays != null) for (RayKind k : RayKind.values()) before[k.ordinal()] = c.get(k);
-                            tracer.packetPixel(i, x, y, rgb);
+                            tracer.blockColour(i, rgb);
                             image.set(x, y, rgb[0], rgb[1], rgb[2]);
                             if (pixelRays != null)
-                                for (RayKind k : RayKind.values())
-                                    pixelRays[k.ordinal()][y * image.width() + x] = (int) (c.get(k) - before[k.ordinal()]);
+                                for (RayKind k : RayKind.values()) pixelRays[k.ordinal()][y * image.width() + x] = tracer.blockRays(k, i);
                         }
                 }
             return;

@@ -22,10 +22,18 @@ import org.kdtree.scene.SceneGeometry;
 import org.kdtree.scene.Vec3;
 
 /**
- * Whitted ray tracing of one pixel at a time, casting only the rays the {@link EffectPlan}
+ * Whitted ray tracing of one pixel, or one block of pixels, at a time, casting only the rays the {@link EffectPlan}
  * allows. One tracer per thread: it owns its ray query, its reusable ray and hit, its sampler,
  * its ray counts and one {@link Bounce} of scratch vectors per level of the ray tree, so that
  * tracing allocates nothing: vectors are {@code double[3]} arrays ({@link org.kdtree.scene.Vectors}).
+ *
+ * <p>Every random number comes from a stream of its own ({@link PixelSampler}: the pixel, the
+ * camera sample, the point of the ray tree), so the order rays are traced in changes nothing. With
+ * a query that traces packets ({@link PacketQuery}: the BVH) the renderer hands the tracer 8 x 8
+ * blocks of pixels ({@link #block}): per camera sample the block's camera rays go as one packet,
+ * the shadow rays of all its hits as packets of the same light's samples, and every other hit's
+ * shadow rays (behind a mirror or glass) as a packet per point; each pixel gets, bit for bit, the
+ * colour {@link #pixel} gives it one ray at a time.
  *
  * <p>Secondary rays start at the hit point (computed from the barycentrics, so it lies on the
  * triangle to rounding of the vertices' size) moved along the geometric normal by
@@ -47,18 +55,200 @@ final class Tracer {
     private final PixelSampler sampler;
     private final RayCounts counts = new RayCounts();
     private final Ray ray = new Ray(3);
-    /** Camera rays traced together ({@link #cameraPacket}). */
-    private final RayPacket packet = new RayPacket();
     private final Hit hit = new Hit();
+    /** The pixel, and its camera sample, being traced: they pick the random streams ({@link PixelSampler#start}). */
+    private int px, py, ps;
     private final double[] st = new double[2];
     private final double[] eye, background;
     /** Per light: the unit direction toward a directional light; an area light's edges and power per sample. */
     private final double[][] towardLight, edgeU, edgeV, perSample;
     private final Bounce[] bounces;
+    /** Per light, its first shadow-ray slot in a {@link Block} (an area light has one per sample, others one); the total last. */
+    private final int[] slotOf;
+    /** The most shadow rays per shaded point the packet path keeps (more: each traced alone, on the per-pixel path). */
+    private static final int MAX_SLOTS = 1024;
+    /** The packet path's state, when the query traces packets ({@link #tracesPackets}); else null. */
+    private final Block block;
+    /** With packets, the shadow rays of one shaded point outside a block's camera hits (a reflection's, a refraction's, the per-pixel path's), traced together; else null. */
+    private final Shadows point;
+    /** The pixel of the block whose rays are being counted ({@link Block#rays}), or -1 on the per-pixel path. */
+    private int blockPixel = -1;
     /** Scratch of the direct light at one hit: never live across a recursive trace. */
     private final double[] cameraDir = new double[3], toEye = new double[3], sum = new double[3], term = new double[3],
             l = new double[3], q = new double[3], power = new double[3], o = new double[3], toEnd = new double[3],
             mirrored = new double[3];
+
+    /**
+     * Shadow rays put aside, each with the light it would let through, per slot (a light's sample:
+     * an area light has one per sample, other lights one) and shaded point, then traced as
+     * packets ({@link PacketQuery#anyHits}) and the light summed in the slots' order, as {@link
+     * Tracer#direct} sums it ray by ray. Arrays made once: nothing is allocated per point.
+     */
+    private static final class Shadows {
+        /** A slot's state for a point: no light; light without a shadow ray; light behind a shadow ray. */
+        static final byte NONE = 0, LIGHT = 1, SHADOWED = 2;
+        /** Octants of directions, and one more for rays with a zero (or subnormal) component, which packets leave out. */
+        private static final int OCTANTS = 9;
+
+        private final PacketQuery query;
+        private final int slots, points;
+        /** Per slot and point ({@code slot * points + point}): state, light (3 each), shadow ray, and whether it is blocked. */
+        private final byte[] state;
+        private final double[] light, ox, oy, oz, dx, dy, dz, tMax;
+        private final boolean[] blocked;
+        /** Per octant of directions, the shadow rays gathered, and the slot and point of each. */
+        private final RayPacket[] packets = new RayPacket[OCTANTS];
+        private final int[][] entry = new int[OCTANTS][RayPacket.CAPACITY];
+
+        Shadows(PacketQuery query, int slots, int points) {
+            this.query = query;
+            this.slots = slots;
+            this.points = points;
+            int n = slots * points;
+            state = new byte[n];
+            light = new double[3 * n];
+            ox = new double[n];
+            oy = new double[n];
+            oz = new double[n];
+            dx = new double[n];
+            dy = new double[n];
+            dz = new double[n];
+            tMax = new double[n];
+            blocked = new boolean[n];
+            for (int o = 0; o < OCTANTS; o++) packets[o] = new RayPacket();
+        }
+
+        /** Forgets what point {@code i} kept. */
+        void clear(int i) {
+            for (int e = i, end = slots * points; e < end; e += points) state[e] = NONE;
+        }
+
+        /** Keeps the shadow ray {@code o + t d}, {@code 0 <= t <= tMax}, of point {@code i}'s light sample {@code slot}. */
+        void keepShadow(int slot, int i, double[] o, double[] d, double tMax) {
+            int e = slot * points + i;
+            ox[e] = o[0];
+            oy[e] = o[1];
+            oz[e] = o[2];
+            dx[e] = d[0];
+            dy[e] = d[1];
+            dz[e] = d[2];
+            this.tMax[e] = tMax;
+        }
+
+        /** Keeps the light (r, g, b) of point {@code i}'s light sample {@code slot}, behind its shadow ray if {@code shadowed}. */
+        void keepLight(int slot, int i, double r, double g, double b, boolean shadowed) {
+            int e = slot * points + i;
+            state[e] = shadowed ? SHADOWED : LIGHT;
+            light[3 * e] = r;
+            light[3 * e + 1] = g;
+            light[3 * e + 2] = b;
+        }
+
+        /**
+         * Traces the shadow rays kept for the first {@code n} points as packets: point by point,
+         * each ray goes into the packet of its octant of directions, traced when full and at the
+         * end. A packet so holds the rays of one point or a few neighbouring ones, a point's rays
+         * toward the lights together: rays from one origin share the boxes around it.
+         */
+        void trace(int n) {
+            for (int i = 0; i < n; i++)
+                for (int e = i, end = slots * points; e < end; e += points) {
+                    if (state[e] != SHADOWED) continue;
+                    double x = dx[e], y = dy[e], z = dz[e];
+                    int o = Double.isFinite(1 / x) && Double.isFinite(1 / y) && Double.isFinite(1 / z)
+                            ? (x < 0 ? 1 : 0) | (y < 0 ? 2 : 0) | (z < 0 ? 4 : 0) : OCTANTS - 1;
+                    RayPacket p = packets[o];
+                    entry[o][p.add(ox[e], oy[e], oz[e], x, y, z, 0, tMax[e])] = e;
+                    if (p.size() == RayPacket.CAPACITY) trace(p, entry[o]);
+                }
+            for (int o = 0; o < OCTANTS; o++) if (packets[o].size() > 0) trace(packets[o], entry[o]);
+        }
+
+        /** Traces packet {@code p}, records which of its rays are blocked, and empties it. */
+        private void trace(RayPacket p, int[] at) {
+            query.anyHits(p);
+            for (int r = 0, n = p.size(); r < n; r++) blocked[at[r]] = p.found(r);
+            p.clear();
+        }
+
+        /** Writes to {@code sum} the light reaching point {@code i}, summed from 0 in the slots' order over the samples not blocked. */
+        void sum(int i, double[] sum) {
+            double s0 = 0, s1 = 0, s2 = 0;
+            for (int e = i, end = slots * points; e < end; e += points) {
+                byte st = state[e];
+                if (st == LIGHT || st == SHADOWED && !blocked[e]) {
+                    s0 = s0 + light[3 * e];
+                    s1 = s1 + light[3 * e + 1];
+                    s2 = s2 + light[3 * e + 2];
+                }
+            }
+            sum[0] = s0;
+            sum[1] = s1;
+            sum[2] = s2;
+        }
+    }
+
+    /**
+     * The packet path's state for one block of at most {@link #SIZE} pixels ({@link Tracer#block}):
+     * the camera packet, each pixel's shading put aside (its own light, the reflection's and
+     * refraction's weights and colours) and its direct light kept with its shadow rays ({@link
+     * Shadows}). Arrays made once per tracer: nothing is allocated per block.
+     */
+    private static final class Block {
+        /** The most pixels a block holds: one packet of camera rays. */
+        static final int SIZE = RayPacket.CAPACITY;
+
+        final PacketQuery query;
+        final RayPacket packet = new RayPacket();
+        final Shadows shadows;
+        /** The camera samples per pixel of the last block. */
+        int samples;
+        /** Per kind of ray, per pixel: the rays cast for it. */
+        final int[][] rays = new int[RayKind.values().length][SIZE];
+        /** Per pixel (3 each): the sum of its samples' colours; a sample's emitted and ambient light; the reflection's and refraction's weights and colours. */
+        final double[] sum = new double[3 * SIZE], base = new double[3 * SIZE], kr = new double[3 * SIZE], cr = new double[3 * SIZE],
+                kt = new double[3 * SIZE], ct = new double[3 * SIZE];
+        final boolean[] lit = new boolean[SIZE], reflects = new boolean[SIZE], refracts = new boolean[SIZE];
+        private final double[] light = new double[3];
+
+        Block(PacketQuery query, int slots) {
+            this.query = query;
+            shadows = new Shadows(query, slots, SIZE);
+        }
+
+        /** Keeps pixel {@code i}'s reflection (or refraction) weight {@code k} and colour {@code c}. */
+        void keep(int i, boolean reflection, double[] k, double[] c) {
+            System.arraycopy(k, 0, reflection ? kr : kt, 3 * i, 3);
+            System.arraycopy(c, 0, reflection ? cr : ct, 3 * i, 3);
+            if (reflection) reflects[i] = true;
+            else refracts[i] = true;
+        }
+
+        /** Adds to pixel {@code i}'s sum the colour of its sample just traced (its shadow rays traced), summed in {@link Tracer#shade}'s order. */
+        void addColour(int i) {
+            int b = 3 * i;
+            double c0 = base[b], c1 = base[b + 1], c2 = base[b + 2];
+            if (lit[i]) {
+                shadows.sum(i, light);
+                c0 = c0 + light[0];
+                c1 = c1 + light[1];
+                c2 = c2 + light[2];
+            }
+            if (reflects[i]) {
+                c0 = c0 + kr[b] * cr[b];
+                c1 = c1 + kr[b + 1] * cr[b + 1];
+                c2 = c2 + kr[b + 2] * cr[b + 2];
+            }
+            if (refracts[i]) {
+                c0 = c0 + kt[b] * ct[b];
+                c1 = c1 + kt[b + 1] * ct[b + 1];
+                c2 = c2 + kt[b + 2] * ct[b + 2];
+            }
+            sum[b] = sum[b] + c0;
+            sum[b + 1] = sum[b + 1] + c1;
+            sum[b + 2] = sum[b + 2] + c2;
+        }
+    }
 
     /** What one level of the ray tree keeps while its reflection and refraction rays are traced. */
     private static final class Bounce {
@@ -103,6 +293,11 @@ final class Tracer {
         }
         bounces = new Bounce[plan.maxDepth() + 1];
         for (int i = 0; i < bounces.length; i++) bounces[i] = new Bounce();
+        slotOf = new int[n + 1];
+        for (int li = 0; li < n; li++) slotOf[li + 1] = slotOf[li] + (lights.get(li) instanceof Light.Area ? plan.lightSamples(li) : 1);
+        boolean packets = query instanceof PacketQuery && slotOf[n] <= MAX_SLOTS;
+        block = packets ? new Block((PacketQuery) query, slotOf[n]) : null;
+        point = packets ? new Shadows((PacketQuery) query, slotOf[n], 1) : null;
     }
 
     /** {@return the rays this tracer has cast so far} */
@@ -116,13 +311,11 @@ final class Tracer {
      * @param rgb receives the linear red, green and blue radiance
      */
     public void pixel(int x, int y, double[] rgb) {
-        sampler.startPixel(x, y);
         int n = scene.samplesPerPixel();
         double r = 0, g = 0, b = 0;
         for (int i = 0; i < n; i++) {
-            sampler.square(i, n, st);
-            scene.camera().direction(x + st[0], y + st[1], cameraDir);
-            double[] c = trace(eye, cameraDir, 0, 1, RayKind.CAMERA);
+            cameraDirection(x, y, i, n);
+            double[] c = trace(eye, cameraDir, 0, 1, RayKind.CAMERA, 1);
             r = r + c[0];
             g = g + c[1];
             b = b + c[2];
@@ -133,70 +326,116 @@ final class Tracer {
         rgb[2] = b * mean;
     }
 
-    /**
-     * {@return whether camera rays are traced in packets ({@link #cameraPacket}, {@link #packetPixel})}:
-     * when the query traces packets ({@link PacketQuery}) and a pixel has one sample (its centre,
-     * drawing no random number, so that every pixel's random numbers stay its own, in the same order)
-     */
-    public boolean tracesPackets() {
-        return query instanceof PacketQuery && scene.samplesPerPixel() == 1;
+    /** Sets {@link #cameraDir} to pixel (x, y)'s camera sample {@code i} of {@code n}, with its jitter from the sample's own stream. */
+    private void cameraDirection(int x, int y, int i, int n) {
+        px = x;
+        py = y;
+        ps = i;
+        sampler.start(x, y, i, 0);
+        sampler.square(i, n, st);
+        scene.camera().direction(x + st[0], y + st[1], cameraDir);
     }
 
     /**
-     * Traces the camera rays of the pixels {@code [x0, x1) x [y0, y1)} (at most
-     * {@link RayPacket#CAPACITY}, row by row) as one packet; {@link #packetPixel} shades them.
-     * Only when {@link #tracesPackets}.
+     * {@return whether this tracer renders blocks of pixels with their rays in packets ({@link
+     * #block}, {@link #blockColour})}: when the query traces packets ({@link PacketQuery}) and the
+     * lights take at most {@link Block#MAX_SLOTS} shadow rays per shaded point. The image is the
+     * same either way, bit for bit.
+     */
+    public boolean tracesPackets() {
+        return block != null;
+    }
+
+    /**
+     * Traces the pixels {@code [x0, x1) x [y0, y1)} (at most {@link RayPacket#CAPACITY}, row by
+     * row) together, the colour of each the colour {@link #pixel} gives it: for each camera sample
+     * index, the block's camera rays go as one packet; each hit is shaded with its direct light
+     * put aside per light sample, its reflection and refraction rays traced one at a time as
+     * {@link #pixel} does; then the shadow rays of all the block's hits toward the same light
+     * sample go as packets (one per octant of directions), and each pixel's colour is summed in
+     * {@link #pixel}'s order. {@link #blockColour} and {@link #blockRays} read the results. Only
+     * when {@link #tracesPackets}.
      *
      * @param x0 the block's first column
      * @param y0 its first row
      * @param x1 one past its last column
      * @param y1 one past its last row
      */
-    public void cameraPacket(int x0, int y0, int x1, int y1) {
-        packet.clear();
-        for (int y = y0; y < y1; y++)
-            for (int x = x0; x < x1; x++) {
-                scene.camera().direction(x + 0.5, y + 0.5, cameraDir);
-                packet.add(eye[0], eye[1], eye[2], cameraDir[0], cameraDir[1], cameraDir[2], 0, Double.POSITIVE_INFINITY);
-            }
-        ((PacketQuery) query).closestHits(packet);
+    public void block(int x0, int y0, int x1, int y1) {
+        Block k = block;
+        int n = scene.samplesPerPixel(), pixels = (x1 - x0) * (y1 - y0);
+        for (int[] r : k.rays) java.util.Arrays.fill(r, 0, pixels, 0);
+        java.util.Arrays.fill(k.sum, 0, 3 * pixels, 0);
+        RayPacket p = k.packet;
+        for (int si = 0; si < n; si++) {
+            p.clear();
+            for (int y = y0; y < y1; y++)
+                for (int x = x0; x < x1; x++) {
+                    cameraDirection(x, y, si, n);
+                    p.add(eye[0], eye[1], eye[2], cameraDir[0], cameraDir[1], cameraDir[2], 0, Double.POSITIVE_INFINITY);
+                }
+            k.query.closestHits(p);
+            for (int y = y0, i = 0; y < y1; y++)
+                for (int x = x0; x < x1; x++, i++) {
+                    px = x;
+                    py = y;
+                    ps = si;
+                    blockPixel = i;
+                    count(RayKind.CAMERA);
+                    cameraDir[0] = p.dx[i];
+                    cameraDir[1] = p.dy[i];
+                    cameraDir[2] = p.dz[i];
+                    hit.primitive = p.primitive[i];
+                    hit.t = p.t[i];
+                    hit.u = p.u[i];
+                    hit.v = p.v[i];
+                    shadeAside(i, p.found(i), cameraDir);
+                }
+            blockPixel = -1;
+            k.shadows.trace(pixels);
+            for (int i = 0; i < pixels; i++) k.addColour(i);
+        }
+        k.samples = n;
     }
 
     /**
-     * Writes pixel (x, y)'s radiance to {@code rgb}, as {@link #pixel} does, from its camera ray's
-     * hit in the last {@link #cameraPacket}.
+     * Writes the colour of pixel {@code i} of the last {@link #block} to {@code rgb}, as {@link #pixel} would.
      *
-     * @param i   the pixel's index in the packet (row by row within the block)
-     * @param x   the pixel's column
-     * @param y   the pixel's row
+     * @param i   the pixel's index in the block (row by row)
      * @param rgb receives the linear red, green and blue radiance
      */
-    public void packetPixel(int i, int x, int y, double[] rgb) {
-        sampler.startPixel(x, y);
-        counts.add(RayKind.CAMERA);
-        cameraDir[0] = packet.dx[i];
-        cameraDir[1] = packet.dy[i];
-        cameraDir[2] = packet.dz[i];
-        hit.primitive = packet.primitive[i];
-        hit.t = packet.t[i];
-        hit.u = packet.u[i];
-        hit.v = packet.v[i];
-        double[] c = shade(packet.found(i), cameraDir, 0, 1);
-        double r = 0 + c[0], g = 0 + c[1], b = 0 + c[2];       // pixel's sum and mean over its one sample
-        rgb[0] = r * 1.0;
-        rgb[1] = g * 1.0;
-        rgb[2] = b * 1.0;
+    public void blockColour(int i, double[] rgb) {
+        double mean = 1.0 / block.samples;
+        rgb[0] = block.sum[3 * i] * mean;
+        rgb[1] = block.sum[3 * i + 1] * mean;
+        rgb[2] = block.sum[3 * i + 2] * mean;
     }
 
-    /** Radiance arriving at {@code origin} from direction {@code -dir}; {@code weight} is the path's. Returns its bounce's colour. */
-    private double[] trace(double[] origin, double[] dir, int depth, double weight, RayKind kind) {
+    /**
+     * {@return the rays of {@code kind} the last {@link #block} cast for its pixel {@code i}}
+     *
+     * @param kind a kind of ray
+     * @param i    the pixel's index in the block
+     */
+    public int blockRays(RayKind kind, int i) {
+        return block.rays[kind.ordinal()][i];
+    }
+
+    /** Counts a ray of {@code kind}, for the block's pixel too when on the packet path. */
+    private void count(RayKind kind) {
         counts.add(kind);
+        if (blockPixel >= 0) block.rays[kind.ordinal()][blockPixel]++;
+    }
+
+    /** Radiance arriving at {@code origin} from direction {@code -dir}; {@code weight} is the path's, {@code node} its point of the ray tree. Returns its bounce's colour. */
+    private double[] trace(double[] origin, double[] dir, int depth, double weight, RayKind kind, long node) {
+        count(kind);
         ray.set(origin[0], origin[1], origin[2], dir[0], dir[1], dir[2]);
-        return shade(query.closestHit(ray, 0, Double.POSITIVE_INFINITY, hit), dir, depth, weight);
+        return shade(query.closestHit(ray, 0, Double.POSITIVE_INFINITY, hit), dir, depth, weight, node);
     }
 
     /** The colour of bounce {@code depth} from the ray's closest hit in {@link #hit} ({@code found}: whether there is one). */
-    private double[] shade(boolean found, double[] dir, int depth, double weight) {
+    private double[] shade(boolean found, double[] dir, int depth, double weight, long node) {
         Bounce s = bounces[depth];
         if (!found) {
             System.arraycopy(background, 0, s.color, 0, 3);
@@ -209,11 +448,39 @@ final class Tracer {
         s.color[1] = e.y() + a.y() * kd.y();
         s.color[2] = e.z() + a.z() * kd.z();
         if (plan.lit(s.material)) {
-            direct(m, s, dir);
+            direct(m, s, dir, node, -1);
             for (int i = 0; i < 3; i++) s.color[i] = s.color[i] + sum[i];
         }
-        if (depth < plan.maxDepth()) secondary(s, m, dir, depth, weight);
+        if (depth < plan.maxDepth()) secondary(s, m, dir, depth, weight, node, -1);
         return s.color;
+    }
+
+    /**
+     * {@link #shade} of a camera ray's hit on the packet path, for the block's pixel {@code i}:
+     * the same values, but the direct light put aside per light sample with its shadow ray, and
+     * the reflection and refraction colours kept, for {@link Block#addColour} to sum in {@link
+     * #shade}'s order once the shadow rays are traced.
+     */
+    private void shadeAside(int i, boolean found, double[] dir) {
+        Block k = block;
+        k.lit[i] = k.reflects[i] = k.refracts[i] = false;
+        k.shadows.clear(i);          // nothing kept from the pixel before it at this place, nor from its last sample
+        if (!found) {
+            System.arraycopy(background, 0, k.base, 3 * i, 3);
+            return;
+        }
+        Bounce s = bounces[0];
+        surface(s, dir);
+        Material m = materials.get(s.material);
+        Vec3 e = m.emission(), a = scene.ambient(), kd = m.diffuse();
+        k.base[3 * i] = e.x() + a.x() * kd.x();
+        k.base[3 * i + 1] = e.y() + a.y() * kd.y();
+        k.base[3 * i + 2] = e.z() + a.z() * kd.z();
+        if (plan.lit(s.material)) {
+            k.lit[i] = true;
+            direct(m, s, dir, 1, i);
+        }
+        if (0 < plan.maxDepth()) secondary(s, m, dir, 0, 1, 1, i);
     }
 
     /** What shading needs of the current hit; both normals face the incoming ray. */
@@ -230,8 +497,12 @@ final class Tracer {
         s.scale = Math.max(maxAbs(s.p), triangleMagnitude(tri));
     }
 
-    /** Adds to the bounce's colour the reflection and refraction rays the plan allows and the path's weight justifies. */
-    private void secondary(Bounce s, Material m, double[] dir, int depth, double weight) {
+    /**
+     * Adds to the bounce's colour the reflection and refraction rays the plan allows and the path's
+     * weight justifies; for {@code aside} a block's pixel ({@link #shadeAside}), keeps their
+     * colours and weights in the block instead.
+     */
+    private void secondary(Bounce s, Material m, double[] dir, int depth, double weight, long node, int aside) {
         // near silhouettes an interpolated normal can face away from the ray: use the facet's there
         double[] n = dot(dir, s.ns) < 0 ? s.ns : s.ng;
         set(plan.reflects(s.material) ? m.reflectivity() : Vec3.ZERO, s.kr);
@@ -252,12 +523,16 @@ final class Tracer {
             reflect(dir, n, s.reflected);
             if (dot(s.reflected, s.ng) <= 0) reflect(dir, s.ng, s.reflected);   // the interpolated normal bent it under the facet
             leave(s.p, s.ng, s.reflected, s.scale, s.origin);
-            add(s.color, s.kr, trace(s.origin, s.reflected, depth + 1, wr, RayKind.REFLECTION));
+            double[] c = trace(s.origin, s.reflected, depth + 1, wr, RayKind.REFLECTION, 2 * node);
+            if (aside < 0) add(s.color, s.kr, c);
+            else block.keep(aside, true, s.kr, c);
         }
         double wt = weight * max(s.kt);
         if (refracted && wt >= EffectPlan.NEGLIGIBLE_WEIGHT) {
             leave(s.p, s.ng, s.refracted, s.scale, s.origin);
-            add(s.color, s.kt, trace(s.origin, s.refracted, depth + 1, wt, RayKind.REFRACTION));
+            double[] c = trace(s.origin, s.refracted, depth + 1, wt, RayKind.REFRACTION, 2 * node + 1);
+            if (aside < 0) add(s.color, s.kt, c);
+            else block.keep(aside, false, s.kt, c);
         }
     }
 
@@ -266,18 +541,37 @@ final class Tracer {
         for (int i = 0; i < 3; i++) color[i] = color[i] + k[i] * c[i];
     }
 
-    /** Diffuse and Phong light from every light into {@link #sum}, with the shadow rays the plan asks for. */
-    private void direct(Material m, Bounce s, double[] dir) {
+    /**
+     * Diffuse and Phong light from every light into {@link #sum}, with the shadow rays the plan asks
+     * for; the area lights' samples drawn from the stream of the ray tree's {@code node}. For
+     * {@code aside} a block's pixel, each light sample's light and shadow ray are put aside in
+     * the block instead ({@link Block#keepLight}).
+     */
+    private void direct(Material m, Bounce s, double[] dir, long node, int aside) {
         for (int i = 0; i < 3; i++) {
             toEye[i] = -dir[i];
             sum[i] = 0;
         }
+        sampler.start(px, py, ps, node);
+        // Where the light samples and shadow rays are kept: the block's pixel, this point's packets, or nowhere (traced at once).
+        Shadows keep = aside >= 0 ? block.shadows : point;
+        int at = aside >= 0 ? aside : 0;
+        if (keep == point && keep != null) point.clear(0);
         for (int li = 0; li < lights.size(); li++) {
             Light light = lights.get(li);
             boolean shadows = plan.shadowRays(li);
             if (light instanceof Light.Directional d) {
                 double[] toward = towardLight[li];
-                if (dot(toward, s.ng) > 0 && (!shadows || visible(s, toward))) {
+                if (keep != null && dot(toward, s.ng) > 0) {
+                    if (shadows) {
+                        leave(s.p, s.ng, toward, s.scale, o);
+                        keep.keepShadow(slotOf[li], at, o, toward, Double.POSITIVE_INFINITY);
+                        count(RayKind.SHADOW);
+                    }
+                    brdf(m, s.ns, toward, term);
+                    Vec3 c = d.color();
+                    keep.keepLight(slotOf[li], at, term[0] * c.x(), term[1] * c.y(), term[2] * c.z(), shadows);
+                } else if (keep == null && dot(toward, s.ng) > 0 && (!shadows || visible(s, toward))) {
                     brdf(m, s.ns, toward, term);
                     Vec3 c = d.color();
                     sum[0] = sum[0] + term[0] * c.x();
@@ -285,15 +579,19 @@ final class Tracer {
                     sum[2] = sum[2] + term[2] * c.z();
                 }
             } else if (light instanceof Light.Point pt) {
-                fromPoint(m, s, set(pt.position(), q), set(pt.color(), power), shadows);
+                fromPoint(m, s, set(pt.position(), q), set(pt.color(), power), shadows, keep, at, slotOf[li]);
             } else if (light instanceof Light.Area a) {
-                fromArea(m, s, a, li, shadows);
+                fromArea(m, s, a, li, shadows, keep, at);
             }
+        }
+        if (keep == point && keep != null) {     // this point's shadow rays, as packets; the light summed as it would be ray by ray
+            point.trace(1);
+            point.sum(0, sum);
         }
     }
 
     /** The light of area light {@code li}, sampled at the plan's number of points over its square. */
-    private void fromArea(Material m, Bounce s, Light.Area a, int li, boolean shadows) {
+    private void fromArea(Material m, Bounce s, Light.Area a, int li, boolean shadows, Shadows keep, int at) {
         int n = plan.lightSamples(li);
         Vec3 c = a.center(), normal = a.normal();
         double[] u = edgeU[li], v = edgeV[li], each = perSample[li];
@@ -308,39 +606,52 @@ final class Tracer {
             double cosLight = normal.x() * o[0] + normal.y() * o[1] + normal.z() * o[2];
             if (cosLight > 0) {
                 for (int k = 0; k < 3; k++) power[k] = each[k] * cosLight;
-                fromPoint(m, s, q, power, shadows);
+                fromPoint(m, s, q, power, shadows, keep, at, slotOf[li] + i);
             }
         }
     }
 
-    /** Adds to {@link #sum} the light of {@code power} at point {@code at}, falling off with the squared distance. */
-    private void fromPoint(Material m, Bounce s, double[] at, double[] power, boolean shadows) {
-        for (int k = 0; k < 3; k++) l[k] = at[k] - s.p[k];
+    /**
+     * Adds to {@link #sum} the light of {@code power} at point {@code at}, falling off with the
+     * squared distance; for {@code aside} a block's pixel, puts it and its shadow ray aside in
+     * the block's {@code slot} instead.
+     */
+    private void fromPoint(Material m, Bounce s, double[] to, double[] power, boolean shadows, Shadows keep, int at, int slot) {
+        for (int k = 0; k < 3; k++) l[k] = to[k] - s.p[k];
         double d2 = dot(l, l);
         double inv = 1 / Math.sqrt(d2);
         for (int k = 0; k < 3; k++) l[k] = l[k] * inv;
         if (dot(l, s.ng) <= 0 || d2 == 0) return;
         if (shadows) {
             leave(s.p, s.ng, l, s.scale, o);
-            for (int k = 0; k < 3; k++) toEnd[k] = at[k] - o[k];
-            if (!visible(o, toEnd)) return;
+            for (int k = 0; k < 3; k++) toEnd[k] = to[k] - o[k];
+            if (keep != null) {
+                keep.keepShadow(slot, at, o, toEnd, SHADOW_END);
+                count(RayKind.SHADOW);
+            } else if (!visible(o, toEnd)) {
+                return;
+            }
         }
         brdf(m, s.ns, l, term);
         double falloff = 1 / d2;
+        if (keep != null) {
+            keep.keepLight(slot, at, term[0] * power[0] * falloff, term[1] * power[1] * falloff, term[2] * power[2] * falloff, shadows);
+            return;
+        }
         for (int k = 0; k < 3; k++) sum[k] = sum[k] + term[k] * power[k] * falloff;
     }
 
     /** Shadow ray from the hit (offset) along unit {@code toward}, without end (a directional light). */
     private boolean visible(Bounce s, double[] toward) {
         leave(s.p, s.ng, toward, s.scale, o);
-        counts.add(RayKind.SHADOW);
+        count(RayKind.SHADOW);
         ray.set(o[0], o[1], o[2], toward[0], toward[1], toward[2]);
         return !query.anyHit(ray, 0, Double.POSITIVE_INFINITY);
     }
 
     /** Shadow ray from from to from + d, stopping just short of the end. */
     private boolean visible(double[] from, double[] d) {
-        counts.add(RayKind.SHADOW);
+        count(RayKind.SHADOW);
         ray.set(from[0], from[1], from[2], d[0], d[1], d[2]);
         return !query.anyHit(ray, 0, SHADOW_END);
     }

@@ -18,7 +18,8 @@ import org.kdtree.geom.Ray;
 import org.kdtree.shape.TriangleMesh;
 
 /**
- * Packets give every ray its single-ray answer, bit for bit (primitive, t, u, v), through each
+ * Packets give every ray its single-ray answer, bit for bit (primitive, t, u, v; and for any-hit
+ * queries, whether it is blocked), through each
  * structure that traces packets: camera tiles on generated meshes, rays aimed exactly at shared
  * vertices and edges of a lattice (ties between triangles), cut intervals, and packets that mix
  * direction signs (traced one by one).
@@ -84,6 +85,23 @@ class PacketsTest {
         for (AccelerationStructure s : structures(mesh)) agree(s, mesh, rays, 64, 0, Double.POSITIVE_INFINITY);
     }
 
+    @Test void shadowRaysTowardALight() {
+        // As a renderer's: from points spread over a patch below the scene toward one small square above it, ending short of it.
+        TriangleMesh mesh = Meshes.clustered(3000, 13);
+        Random rnd = new Random(8);
+        double[] rays = new double[6 * 64 * 64];
+        for (int i = 0, at = 0; i < 64 * 64; i++) {
+            double x = (i % 64) / 6.4 + rnd.nextDouble() * 0.1, z = (i / 64) / 6.4, y = -0.5;     // the clusters lie in [0, 10]^3
+            double lx = 4 + rnd.nextDouble() * 2, ly = 12, lz = 4 + rnd.nextDouble() * 2;
+            rays[at++] = x; rays[at++] = y; rays[at++] = z;
+            rays[at++] = lx - x; rays[at++] = ly - y; rays[at++] = lz - z;
+        }
+        for (AccelerationStructure s : structures(mesh)) {
+            agree(s, mesh, rays, 64, 0, 1 - 1e-7);
+            agree(s, mesh, rays, 64, 0, 0.5);
+        }
+    }
+
     /** Traces the image's rays in 8 x 8 tiles as packets and one by one; every answer the same bits. */
     private static void agree(AccelerationStructure s, TriangleMesh mesh, double[] rays, int w, double tMin, double tMax) {
         TriangleIntersector tris = new TriangleIntersector(mesh);
@@ -114,6 +132,11 @@ class PacketsTest {
                     assertThat(packet.v[i]).as(what).isEqualTo(hit.v);
                     if (found) hits++;
                 }
+                // The same packet's any-hit answers (shadow rays): each exactly the single ray's.
+                pq.anyHits(packet);
+                for (int i = 0; i < packet.size(); i++)
+                    assertThat(packet.found(i)).as(s.kind() + " any hit, ray " + packet.ray(i, ray) + " [" + tMin + ", " + tMax + "]")
+                            .isEqualTo(single.anyHit(ray, tMin, tMax));
             }
         assertThat(hits).as(s.kind() + ": the rays hit something").isPositive();
     }

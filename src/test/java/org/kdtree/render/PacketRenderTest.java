@@ -12,23 +12,32 @@ import org.kdtree.bvh.BvhBuilder;
 import org.kdtree.geom.Ray;
 import org.kdtree.scene.Scene;
 
-/** Camera rays traced in packets give every pixel the colour, and the ray counts, it gets one ray at a time. */
+/**
+ * Pixels traced in 8 x 8 blocks, their camera rays and their shadow rays in packets, get every
+ * pixel the colour, and the ray counts, that one ray at a time gives it: with one sample per
+ * pixel and with several (jittered camera rays), with area, point and directional lights, with
+ * reflection and refraction, on images whose sides are not multiples of 8.
+ */
 class PacketRenderTest {
     @Test void packetsRenderTheSameImage() throws Exception {
-        for (String file : new String[] {"cornell-box.json", "sphereflake.json", "obj-materials.json"}) {
-            Scene s = TestRenders.scene(file, 61, 45, 1);
-            TriangleIntersector tris = new TriangleIntersector(s.mesh());
-            AccelerationStructure bvh = new BvhBuilder().build(s.mesh());
-            assertThat(bvh.query()).isInstanceOf(PacketQuery.class);
-            RenderResult packets = Renderer.render(s, () -> bvh.query(), Renderer.Options.defaults().withThreads(2).recordingPixelRays());
-            RenderResult single = Renderer.render(s, () -> alone(bvh.query()), Renderer.Options.defaults().withThreads(2).recordingPixelRays());
-            for (int y = 0; y < 45; y++)
-                for (int x = 0; x < 61; x++)
-                    for (int c = 0; c < 3; c++)
-                        assertThat(packets.image().get(x, y, c)).as(file + " pixel " + x + ", " + y).isEqualTo(single.image().get(x, y, c));
-            assertThat(packets.rays().toString()).isEqualTo(single.rays().toString());
-            for (RayKind k : RayKind.values()) assertThat(packets.pixelRays(k, 30, 20)).isEqualTo(single.pixelRays(k, 30, 20));
-        }
+        for (String file : new String[] {"cornell-box.json", "sphereflake.json", "obj-materials.json", "shadows-only.json", "diffuse-only.json"})
+            for (int spp : new int[] {1, 4}) {
+                Scene s = TestRenders.scene(file, 61, 45, spp);
+                AccelerationStructure bvh = new BvhBuilder().build(s.mesh());
+                assertThat(bvh.query()).isInstanceOf(PacketQuery.class);
+                RenderResult packets = Renderer.render(s, () -> bvh.query(), Renderer.Options.defaults().withThreads(2).recordingPixelRays());
+                RenderResult single = Renderer.render(s, () -> alone(bvh.query()), Renderer.Options.defaults().withThreads(2).recordingPixelRays());
+                String what = file + ", " + spp + " spp, pixel ";
+                for (int y = 0; y < 45; y++)
+                    for (int x = 0; x < 61; x++) {
+                        for (int c = 0; c < 3; c++)
+                            assertThat(packets.image().get(x, y, c)).as(what + x + ", " + y).isEqualTo(single.image().get(x, y, c));
+                        for (RayKind k : RayKind.values())
+                            assertThat(packets.pixelRays(k, x, y)).as(what + x + ", " + y + ", " + k).isEqualTo(single.pixelRays(k, x, y));
+                    }
+                assertThat(packets.rays().toString()).isEqualTo(single.rays().toString());
+                assertThat(packets.rays().get(RayKind.CAMERA)).isEqualTo(61L * 45 * spp);
+            }
     }
 
     /** The same query, without its packets. */

@@ -128,22 +128,9 @@ final class VectorTraversal implements RayQuery {
                         ht[m++] = tl[i];
                     }
                 }
-                // Farthest first, so that the nearest is taken next (as the scalar loop sorts).
-                for (int i = 1; i < m; i++) {
-                    int hi = he[i];
-                    double ti = ht[i];
-                    int j = i;
-                    for (; j > 0 && ht[j - 1] < ti; j--) { he[j] = he[j - 1]; ht[j] = ht[j - 1]; }
-                    he[j] = hi;
-                    ht[j] = ti;
-                }
                 if (m > 0) {
-                    m--;
-                    for (int j = 0; j < m; j++) {
-                        se[sp] = he[j];
-                        st[sp++] = ht[j];
-                    }
-                    e = he[m];
+                    sp = WideTraversal.saveAllButNearest(he, ht, m, se, st, sp);
+                    e = he[m - 1];
                     continue;
                 }
             } else {
