@@ -35,7 +35,8 @@ final class EventSort {
         return b < 0 ? ~b : b ^ Long.MIN_VALUE;
     }
 
-    private static void insertion(double[] pos, int[] code, int from, int to) {
+    /** Sorts {@code pos[from, to)} by position, stably, carrying {@code code} along: for short runs. */
+    static void insertion(double[] pos, int[] code, int from, int to) {
         for (int i = from + 1; i < to; i++) {
             double p = pos[i];
             int c = code[i];

@@ -61,7 +61,8 @@ final class NodeStore {
     private double[] sortPos = new double[16];
     private int[] sortCode = new int[16];
     private long[] sortKeys = new long[0], sortKeysTmp = new long[0];
-    private int[] sortCounts;
+    /** The packed sort's digit counts: small (24 KB), so made with the store. */
+    private final int[] sortCounts = new int[PackedEventSort.countLength()];
     private int[] minBin = new int[0], maxBin = new int[0];
     private EventSplit eventSplit;
     private BoundsSplit boundsSplit;
@@ -295,18 +296,16 @@ final class NodeStore {
     /** Packed-event sort scratch ({@link PackedEventSort}): keys for at least {@code n} events, as many more ({@link #sortKeysTmp}), and its counts ({@link #sortCounts}). */
     long[] sortKeys(int n) {
         if (sortKeys.length < n) {
-            sortKeys = new long[grown(sortKeys.length, n)];
-            sortKeysTmp = new long[sortKeys.length];
+            int size = grown(sortKeys.length, n);   // the keys and their radix passes' second array
+            sortKeys = new long[size];
+            sortKeysTmp = new long[size];
         }
         return sortKeys;
     }
 
     long[] sortKeysTmp() { return sortKeysTmp; }
 
-    int[] sortCounts() {
-        if (sortCounts == null) sortCounts = new int[PackedEventSort.countLength()];
-        return sortCounts;
-    }
+    int[] sortCounts() { return sortCounts; }
 
     /** The binned SAH's histogram of minima, at least {@code bins} long (and as many maxima: {@link #maxBins}). */
     int[] minBins(int bins) {

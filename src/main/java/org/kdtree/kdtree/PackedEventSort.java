@@ -122,23 +122,8 @@ final class PackedEventSort {
             long run = sorted[i] >>> 32;
             int end = i + 1;
             while (end < n && sorted[end] >>> 32 == run) end++;
-            if (end - i > 1) insertion(pos, code, from + i, from + end);
+            if (end - i > 1) EventSort.insertion(pos, code, from + i, from + end);
             i = end;
-        }
-    }
-
-    private static void insertion(double[] pos, int[] code, int from, int to) {
-        for (int i = from + 1; i < to; i++) {
-            double p = pos[i];
-            int c = code[i];
-            int j = i - 1;
-            while (j >= from && pos[j] > p) {
-                pos[j + 1] = pos[j];
-                code[j + 1] = code[j];
-                j--;
-            }
-            pos[j + 1] = p;
-            code[j + 1] = c;
         }
     }
 }
