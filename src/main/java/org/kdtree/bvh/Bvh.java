@@ -225,15 +225,17 @@ public final class Bvh implements AccelerationStructure {
 
     /**
      * The fastest query: over a triangle mesh, the vector traversal when this JVM has the Vector
-     * API ({@link org.kdtree.bvh.Vectorization}; as many children per node as its lanes), else
+     * API ({@link org.kdtree.bvh.Vectorization}; as many children per node as its lanes; packets
+     * with their rays in the lanes), else
      * the wide layout's traversal (the compact binary one at width 2) with the triangle test inlined, which also traces packets of coherent rays
      * ({@link org.kdtree.accel.PacketQuery}); otherwise the binary layout's, with any {@link Intersector}.
      */
     @Override public RayQuery query() {
         Intersector prims = intersector();
-        if (prims instanceof TriangleIntersector)
-            return new PacketTraversal(this, VectorPath.enabled() ? VectorPath.query(this)
-                    : width() == 2 ? new PairTraversal(this) : new WideTraversal(this));
+        if (prims instanceof TriangleIntersector) {
+            if (VectorPath.enabled()) return VectorPath.packets(this, VectorPath.query(this));
+            return new PacketTraversal(this, width() == 2 ? new PairTraversal(this) : new WideTraversal(this));
+        }
         return new BvhTraverser(this, TraversalListener.NONE);
     }
 

@@ -7,6 +7,8 @@ import java.util.List;
 import java.util.Random;
 import org.junit.jupiter.api.Test;
 import org.kdtree.accel.Hit;
+import org.kdtree.accel.PacketQuery;
+import org.kdtree.accel.RayPacket;
 import org.kdtree.accel.RayQuery;
 import org.kdtree.accel.TriangleIntersector;
 import org.kdtree.generate.HardMeshes;
@@ -64,6 +66,60 @@ class VectorPathTest {
                 assertThat(a.u).as(what).isEqualTo(b.u);
                 assertThat(a.v).as(what).isEqualTo(b.v);
                 assertThat(vector.anyHit(ray, tMin, tMax)).as(what).isEqualTo(fb);
+            }
+        }
+    }
+
+    /**
+     * The vector packets (rays in the lanes) against single rays, bit for bit: packets of a shared
+     * origin (a camera's), of spread origins (shadow rays, any hit), of a size below the vectors'
+     * 64 rays (the scalar set-up), and of rays whose sheared frames differ (one ray at a time in a leaf).
+     */
+    @Test void vectorPacketsGiveEachRayItsSingleAnswer() {
+        assumeTrue(VectorPath.enabled(), "the vector path: JDK 25 with --add-modules jdk.incubator.vector");
+        for (TriangleMesh mesh : List.of(Meshes.clustered(3000, 1), Meshes.surface(2000, 2), HardMeshes.cubeGrid(6),
+                HardMeshes.scaled(Meshes.clustered(500, 4), 1e-30))) {
+            Bvh bvh = new BvhBuilder().build(mesh);
+            RayQuery single = new PairTraversal(bvh);
+            PacketQuery packets = VectorPath.packets(bvh, VectorPath.query(bvh));
+            var box = bvh.bounds();
+            Random rnd = new Random(23);
+            RayPacket p = new RayPacket();
+            for (int n = 0; n < 400; n++) {
+                p.clear();
+                int size = n % 5 == 4 ? 1 + rnd.nextInt(RayPacket.CAPACITY - 1) : RayPacket.CAPACITY;
+                double[] eye = new double[3], aim = new double[3];
+                for (int k = 0; k < 3; k++) {
+                    eye[k] = box.min(k) - (box.max(k) - box.min(k)) * (0.2 + rnd.nextDouble());
+                    aim[k] = box.min(k) + rnd.nextDouble() * (box.max(k) - box.min(k));
+                }
+                // Spread within a tile, or (every third packet) across the diagonal where the largest direction component changes.
+                double spread = n % 3 == 0 ? 0.6 : 0.02;
+                boolean sharedOrigin = n % 2 == 0;
+                for (int i = 0; i < size; i++) {
+                    double[] o = eye.clone();
+                    if (!sharedOrigin) for (int k = 0; k < 3; k++) o[k] += rnd.nextDouble() * 1e-2 * (box.max(k) - box.min(k));
+                    double dx = aim[0] - o[0] + spread * (i % 8 - 3.5) / 8 * (box.max(0) - box.min(0));
+                    double dy = aim[1] - o[1] + spread * (i / 8 - 3.5) / 8 * (box.max(1) - box.min(1));
+                    double dz = aim[2] - o[2];
+                    p.add(o[0], o[1], o[2], dx, dy, dz, n % 7 == 0 ? 0.5 : 0, n % 4 == 0 ? 1 + rnd.nextDouble() : Double.POSITIVE_INFINITY);
+                }
+                packets.closestHits(p);
+                Ray ray = new Ray(3);
+                Hit hit = new Hit();
+                for (int i = 0; i < size; i++) {
+                    boolean found = single.closestHit(p.ray(i, ray), p.tMin[i], p.tMax[i], hit);
+                    String what = mesh.size() + " triangles, packet " + n + ", ray " + ray + " [" + p.tMin[i] + ", " + p.tMax[i] + "]";
+                    assertThat(p.found(i)).as(what).isEqualTo(found);
+                    assertThat(p.primitive[i]).as(what).isEqualTo(hit.primitive);
+                    assertThat(Double.doubleToLongBits(p.t[i])).as(what).isEqualTo(Double.doubleToLongBits(hit.t));
+                    assertThat(p.u[i]).as(what).isEqualTo(hit.u);
+                    assertThat(p.v[i]).as(what).isEqualTo(hit.v);
+                }
+                packets.anyHits(p);
+                for (int i = 0; i < size; i++)
+                    assertThat(p.found(i)).as("any hit, packet " + n + ", ray " + p.ray(i, ray))
+                            .isEqualTo(single.anyHit(ray, p.tMin[i], p.tMax[i]));
             }
         }
     }

@@ -1,0 +1,280 @@
+package org.kdtree.bvh;
+
+import org.kdtree.accel.RayPacket;
+import org.kdtree.accel.TriangleIntersector;
+import org.kdtree.geom.Tolerance;
+
+/**
+ * What a packet traversal of {@link PairNodes} derives from a coherent {@link RayPacket} before
+ * its first node, shared by the Java 17 loop ({@link PacketTraversal}) and the vector one
+ * ({@code VectorPacketTraversal}):
+ * <ul>
+ * <li>at the packet's first leaf ({@link #frame}), each ray's shear for the watertight test, as
+ * the single-ray traversals compute it, and whether all rays share the sheared frame's axes (a
+ * camera tile almost always does);</li>
+ * <li>the near and far plane of each axis within a child's box, the same for every ray;</li>
+ * <li>the packet's ranges of origins and inverse directions, for a test of a box against the
+ * whole packet at once ({@link #packetEnters}: Wald, Boulos and Shirley's interval test);</li>
+ * <li>for an any-hit packet whose rays all end, the boxes of their origins and of their ends, for
+ * skipping a leaf's triangles that no ray's segment can reach ({@link #sidedTriangles}).</li>
+ * </ul>
+ * Not thread safe: one per traversal.
+ */
+final class PacketRays {
+    private static final double SLACK = Tolerance.TRAVERSAL_SLACK;
+    private static final double SHRINK = 1 - SLACK, GROW = 1 + SLACK;
+    private static final int N = RayPacket.CAPACITY;
+
+    /**
+     * Per ray, once {@link #frame} is called: the watertight test's shear (axes, factors) and the
+     * origin in its frame. When all rays share the frame's axes, {@link #sz} and the origin's arrays
+     * are the packet's own (its inverse directions and origins on those axes), not copies.
+     */
+    final int[] kx = new int[N], ky = new int[N], kz = new int[N];
+    final double[] sx = new double[N], sy = new double[N];
+    double[] sz, okx, oky, okz;
+    private final double[] ownSz = new double[N], ownOkx = new double[N], ownOky = new double[N], ownOkz = new double[N];
+    /** Per ray: where box intervals start. */
+    final double[] start = new double[N];
+    /** Whether every ray has the same sheared frame (kx, ky, kz); set by {@link #frame}. */
+    boolean uniformFrame;
+    /** Whether every ray has the same origin (a camera's): then {@code plane - origin} is one number for all. */
+    boolean sharedOrigin;
+    /** The packet loaded, and whether its frame is made (only packets that reach a leaf need it). */
+    private RayPacket packet;
+    private boolean framed;
+    /** Within a child's six words of {@link PairNodes}: the near and far plane of each axis. */
+    int nx, ny, nz, fx, fy, fz;
+    /** The packet's ranges of origins and inverse directions, and the least start of an interval. */
+    private double oxLo, oxHi, oyLo, oyHi, ozLo, ozHi, ixLo, ixHi, iyLo, iyHi, izLo, izHi, startLo;
+    /** The boxes of the rays' origins and of their ends (min x, y, z, max x, y, z), when {@link #planeCull}. */
+    private final double[] origins = new double[6], ends = new double[6];
+    /** Whether {@link #sidedTriangles} may skip triangles: an any-hit packet whose rays all end. */
+    boolean planeCull;
+
+    /**
+     * Derives the packet's bounds, planes and plane-culling boxes from its rays, if they suit the
+     * packet loops: one sign per axis, no zero or non-finite component, finite origins,
+     * {@code 0 <= tMin <= tMax}. Others are traced one ray at a time.
+     *
+     * @param p   the rays, at least one
+     * @param any whether the packet asks for any hit (plane culling is tried only then)
+     * @return whether the packet is coherent (if not, nothing else holds)
+     */
+    boolean load(RayPacket p, boolean any) {
+        int n = p.size();
+        boolean xs = p.ix[0] < 0, ys = p.iy[0] < 0, zs = p.iz[0] < 0, ok = true;
+        double oxl = Double.POSITIVE_INFINITY, oxh = Double.NEGATIVE_INFINITY, oyl = oxl, oyh = oxh, ozl = oxl, ozh = oxh;
+        double ixl = oxl, ixh = oxh, iyl = oxl, iyh = oxh, izl = oxl, izh = oxh, sl = oxl;
+        for (int i = 0; i < n; i++) {
+            double ox = p.ox[i], oy = p.oy[i], oz = p.oz[i], ix = p.ix[i], iy = p.iy[i], iz = p.iz[i], t0 = p.tMin[i];
+            // x - x == 0 exactly when x is finite.
+            ok &= ix - ix == 0 & iy - iy == 0 & iz - iz == 0 & ix < 0 == xs & iy < 0 == ys & iz < 0 == zs
+                    & t0 >= 0 & t0 <= p.tMax[i] & ox - ox == 0 & oy - oy == 0 & oz - oz == 0;
+            oxl = Math.min(oxl, ox); oxh = Math.max(oxh, ox);
+            oyl = Math.min(oyl, oy); oyh = Math.max(oyh, oy);
+            ozl = Math.min(ozl, oz); ozh = Math.max(ozh, oz);
+            ixl = Math.min(ixl, ix); ixh = Math.max(ixh, ix);
+            iyl = Math.min(iyl, iy); iyh = Math.max(iyh, iy);
+            izl = Math.min(izl, iz); izh = Math.max(izh, iz);
+            start[i] = WideTraversal.boxStart(t0);
+            sl = Math.min(sl, start[i]);
+        }
+        if (!ok) return false;
+        bound(oxl, oxh, oyl, oyh, ozl, ozh, ixl, ixh, iyl, iyh, izl, izh, sl);
+        finish(p, any);
+        return true;
+    }
+
+    /**
+     * Records a coherent packet's ranges of origins and inverse directions, and the least start of
+     * an interval ({@link #start} filled), as {@link #load} finds them, or the vector path does.
+     */
+    void bound(double oxl, double oxh, double oyl, double oyh, double ozl, double ozh,
+               double ixl, double ixh, double iyl, double iyh, double izl, double izh, double sl) {
+        oxLo = oxl; oxHi = oxh; oyLo = oyl; oyHi = oyh; ozLo = ozl; ozHi = ozh;
+        ixLo = ixl; ixHi = ixh; iyLo = iyl; iyHi = iyh; izLo = izl; izHi = izh; startLo = sl;
+        sharedOrigin = oxl == oxh & oyl == oyh & ozl == ozh;
+    }
+
+    /**
+     * After {@link #bound}: the planes, plane culling's boxes, and the frame left for the first leaf.
+     *
+     * @param p   the packet, coherent
+     * @param any whether it asks for any hit
+     */
+    void finish(RayPacket p, boolean any) {
+        packet = p;
+        framed = false;
+        nx = p.ix[0] < 0 ? 3 : 0;
+        ny = p.iy[0] < 0 ? 4 : 1;
+        nz = p.iz[0] < 0 ? 5 : 2;
+        fx = 3 - nx;
+        fy = 5 - ny;
+        fz = 7 - nz;
+        planeCull = any && segmentBoxes(p, p.size());
+    }
+
+    /**
+     * Makes each ray's shear for the watertight test, as {@link PairTraversal} computes it, at the
+     * packet's first leaf (a packet that misses every box never needs it); then again does nothing.
+     */
+    void frame() {
+        if (framed) return;
+        framed = true;
+        RayPacket p = packet;
+        int n = p.size();
+        int z = TriangleIntersector.maxAxis(p.dx[0], p.dy[0], p.dz[0]);
+        boolean same = true;
+        for (int i = 1; i < n; i++) same &= TriangleIntersector.maxAxis(p.dx[i], p.dy[i], p.dz[i]) == z;
+        uniformFrame = same;
+        if (!same) {
+            sz = ownSz; okx = ownOkx; oky = ownOky; okz = ownOkz;
+            for (int i = 0; i < n; i++) shear(p, i);
+            return;
+        }
+        // One frame: the packet's arrays on its axes (the direction's sign on z is the same for every ray of a coherent packet).
+        int x = z == 2 ? 0 : z + 1, y = x == 2 ? 0 : x + 1;
+        if (axis(p.dx, p.dy, p.dz, z)[0] < 0) { int t = x; x = y; y = t; }
+        sz = axis(p.ix, p.iy, p.iz, z);
+        okx = axis(p.ox, p.oy, p.oz, x);
+        oky = axis(p.ox, p.oy, p.oz, y);
+        okz = axis(p.ox, p.oy, p.oz, z);
+        double[] dkx = axis(p.dx, p.dy, p.dz, x), dky = axis(p.dx, p.dy, p.dz, y), s = sz;
+        for (int i = 0; i < n; i++) {
+            sx[i] = dkx[i] * s[i];
+            sy[i] = dky[i] * s[i];
+        }
+        java.util.Arrays.fill(kx, 0, n, x);
+        java.util.Arrays.fill(ky, 0, n, y);
+        java.util.Arrays.fill(kz, 0, n, z);
+    }
+
+    private static double[] axis(double[] x, double[] y, double[] z, int axis) {
+        return axis == 0 ? x : axis == 1 ? y : z;
+    }
+
+    /** Ray {@code i}'s shear for the watertight test, as {@link PairTraversal} computes it, into the own arrays. */
+    private void shear(RayPacket p, int i) {
+        double dx = p.dx[i], dy = p.dy[i], dz = p.dz[i];
+        int z = TriangleIntersector.maxAxis(dx, dy, dz);
+        int x = z == 2 ? 0 : z + 1, y = x == 2 ? 0 : x + 1;
+        if (component(dx, dy, dz, z) < 0) { int s = x; x = y; y = s; }
+        double s = component(p.ix[i], p.iy[i], p.iz[i], z);
+        kx[i] = x; ky[i] = y; kz[i] = z;
+        ownSz[i] = s;
+        sx[i] = component(dx, dy, dz, x) * s;
+        sy[i] = component(dx, dy, dz, y) * s;
+        ownOkx[i] = component(p.ox[i], p.oy[i], p.oz[i], x);
+        ownOky[i] = component(p.ox[i], p.oy[i], p.oz[i], y);
+        ownOkz[i] = component(p.ox[i], p.oy[i], p.oz[i], z);
+    }
+
+    private static double component(double x, double y, double z, int axis) {
+        return axis == 0 ? x : axis == 1 ? y : z;
+    }
+
+    /**
+     * Whether some ray of the packet may enter the box at {@code b} of {@code nd}: the smallest
+     * near-plane distance and the largest far-plane distance over the ranges of origins and inverse
+     * directions (the four corners of each product), compared as one ray's would be. Rounding is
+     * monotonic, so a bound is never inside any ray's own value: false means no ray enters.
+     *
+     * @param nd      the records of {@link PairNodes}
+     * @param b       where the child's box starts
+     * @param limitHi the largest end of a ray's interval, slack included
+     * @return whether the box may hold a hit of some ray
+     */
+    boolean packetEnters(int[] nd, int b, double limitHi) {
+        double t0 = Math.max(startLo, low(Float.intBitsToFloat(nd[b + nx]), oxLo, oxHi, ixLo, ixHi));
+        t0 = Math.max(t0, low(Float.intBitsToFloat(nd[b + ny]), oyLo, oyHi, iyLo, iyHi));
+        t0 = Math.max(t0, low(Float.intBitsToFloat(nd[b + nz]), ozLo, ozHi, izLo, izHi));
+        double t1 = Math.min(limitHi, high(Float.intBitsToFloat(nd[b + fx]), oxLo, oxHi, ixLo, ixHi));
+        t1 = Math.min(t1, high(Float.intBitsToFloat(nd[b + fy]), oyLo, oyHi, iyLo, iyHi));
+        t1 = Math.min(t1, high(Float.intBitsToFloat(nd[b + fz]), ozLo, ozHi, izLo, izHi));
+        return t0 * SHRINK <= t1 * GROW;
+    }
+
+    /** The least {@code (plane - o) * i} over the packet's ranges (a product's extremes are at its corners). */
+    private static double low(double plane, double oLo, double oHi, double iLo, double iHi) {
+        double dLo = plane - oHi, dHi = plane - oLo;
+        return Math.min(Math.min(dLo * iLo, dLo * iHi), Math.min(dHi * iLo, dHi * iHi));
+    }
+
+    /** The greatest {@code (plane - o) * i} over the packet's ranges. */
+    private static double high(double plane, double oLo, double oHi, double iLo, double iHi) {
+        double dLo = plane - oHi, dHi = plane - oLo;
+        return Math.max(Math.max(dLo * iLo, dLo * iHi), Math.max(dHi * iLo, dHi * iHi));
+    }
+
+    /** Sets {@link #origins} and {@link #ends}; false (no plane culling) if some ray has no finite end. */
+    private boolean segmentBoxes(RayPacket p, int n) {
+        for (int a = 0; a < 3; a++) {
+            origins[a] = ends[a] = Double.POSITIVE_INFINITY;
+            origins[3 + a] = ends[3 + a] = Double.NEGATIVE_INFINITY;
+        }
+        for (int i = 0; i < n; i++) {
+            double t = p.tMax[i];
+            double ex = p.ox[i] + t * p.dx[i], ey = p.oy[i] + t * p.dy[i], ez = p.oz[i] + t * p.dz[i];
+            if (!(Double.isFinite(ex) && Double.isFinite(ey) && Double.isFinite(ez))) return false;
+            grow(origins, p.ox[i], p.oy[i], p.oz[i]);
+            grow(ends, ex, ey, ez);
+        }
+        return true;
+    }
+
+    private static void grow(double[] b, double x, double y, double z) {
+        b[0] = Math.min(b[0], x); b[1] = Math.min(b[1], y); b[2] = Math.min(b[2], z);
+        b[3] = Math.max(b[3], x); b[4] = Math.max(b[4], y); b[5] = Math.max(b[5], z);
+    }
+
+    /**
+     * The leaf's triangles (positions {@code [from, end)} of {@code c}, the first 64) that no ray of
+     * the packet can hit, as bits: those whose plane has the box of the rays' origins and the box of
+     * their ends both on one side of it, by a margin ({@link Tolerance#PLANE_SIDE_MARGIN} of the
+     * distances' size) far above the rounding of the plane's normal and of the watertight test.
+     * Every ray's segment lies between its origin and its end, so none reaches the plane, and the
+     * single ray's test of that triangle fails too: skipping it changes no answer. Only when
+     * {@link #planeCull}.
+     *
+     * @param c    the corners in leaf order
+     * @param from the leaf's first position
+     * @param end  one past its last
+     * @return bit {@code r - from} set for each triangle {@code r} that may be skipped
+     */
+    long sidedTriangles(double[] c, int from, int end) {
+        long bits = 0;
+        for (int r = from, m = Math.min(end, from + 64); r < m; r++) {
+            int b = 9 * r;
+            double ax = c[b], ay = c[b + 1], az = c[b + 2];
+            double ux = c[b + 3] - ax, uy = c[b + 4] - ay, uz = c[b + 5] - az;
+            double vx = c[b + 6] - ax, vy = c[b + 7] - ay, vz = c[b + 8] - az;
+            double nx = uy * vz - uz * vy, ny = uz * vx - ux * vz, nz = ux * vy - uy * vx;
+            int so = side(origins, ax, ay, az, nx, ny, nz);
+            if (so != 0 && so == side(ends, ax, ay, az, nx, ny, nz)) bits |= 1L << (r - from);
+        }
+        return bits;
+    }
+
+    /** 1 if the box lies clearly on the side of the plane through a (ax, ay, az) that its normal n points to, -1 if clearly on the other, else 0. */
+    private static int side(double[] box, double ax, double ay, double az, double nx, double ny, double nz) {
+        double lx = box[0] - ax, ly = box[1] - ay, lz = box[2] - az, hx = box[3] - ax, hy = box[4] - ay, hz = box[5] - az;
+        double lo = Math.min(nx * lx, nx * hx) + Math.min(ny * ly, ny * hy) + Math.min(nz * lz, nz * hz);
+        double hi = Math.max(nx * lx, nx * hx) + Math.max(ny * ly, ny * hy) + Math.max(nz * lz, nz * hz);
+        double size = Math.abs(nx) * Math.max(Math.abs(lx), Math.abs(hx)) + Math.abs(ny) * Math.max(Math.abs(ly), Math.abs(hy))
+                + Math.abs(nz) * Math.max(Math.abs(lz), Math.abs(hz));
+        double margin = Tolerance.PLANE_SIDE_MARGIN * size;
+        return lo > margin ? 1 : hi < -margin ? -1 : 0;
+    }
+
+    /**
+     * Whether all of a leaf's triangles may be skipped ({@link #sidedTriangles}'s bits cover every one).
+     *
+     * @param skip the bits
+     * @param count the leaf's triangles
+     * @return whether no ray of the packet can hit any of them
+     */
+    static boolean skipsAll(long skip, int count) {
+        return count <= 64 && skip == -1L >>> (64 - count);
+    }
+}

@@ -1,0 +1,431 @@
+package org.kdtree.bvh;
+
+import jdk.incubator.vector.DoubleVector;
+import jdk.incubator.vector.VectorMask;
+import jdk.incubator.vector.VectorOperators;
+import jdk.incubator.vector.VectorSpecies;
+import org.kdtree.accel.Hit;
+import org.kdtree.accel.PacketQuery;
+import org.kdtree.accel.RayPacket;
+import org.kdtree.accel.RayQuery;
+import org.kdtree.accel.TriangleIntersector;
+import org.kdtree.geom.Ray;
+import org.kdtree.geom.Tolerance;
+
+/**
+ * Packets of coherent rays through a 3-D {@link Bvh}'s compact binary layout ({@link PairNodes})
+ * with the Vector API, the rays in the lanes: a packet's 64 rays are 64 / lanes groups of
+ * {@link DoubleVector#SPECIES_PREFERRED} (8 with AVX-512), and which rays are still in play is a
+ * mask, one bit per ray, instead of {@link PacketTraversal}'s range of rays.
+ * <ol>
+ * <li>At each node, each child's box is first tested for the whole packet at once
+ * ({@link PacketRays#packetEnters}); if some ray may enter it, each group of the node's rays tests
+ * both children's slabs in its lanes, each lane exactly the single ray's test ({@link
+ * PairTraversal}: the same operations in the same order, in double), giving each child the mask
+ * of the rays that enter it.</li>
+ * <li>The nearer child (for its first ray) is taken next, the other saved with its mask.</li>
+ * <li>At a leaf, each group tests each triangle in its lanes with the watertight test
+ * ({@link TriangleIntersector#test}'s operations, lane by lane, when all rays share the sheared
+ * frame's axes; otherwise one ray at a time), keeping per lane the closest hit so far and, of two
+ * hits equally close, the lower leaf position.</li>
+ * </ol>
+ * A ray enters exactly the boxes it enters alone (bar those its closest hit so far rules out),
+ * and tests their triangles with the same arithmetic: each ray's hit is its single-ray hit, bit
+ * for bit. An any-hit ray leaves the packet at its first hit, and the packet stops when none is
+ * left; leaves whose triangles no ray's segment reaches are skipped ({@link
+ * PacketRays#sidedTriangles}).
+ *
+ * <p>Compiled for JDK 25 with {@code jdk.incubator.vector} (src/vector/java) and loaded only
+ * through {@link VectorPath}. Packets that mix direction signs (or have a zero component or a
+ * negative tMin) are traced one ray at a time. Allocation-free per packet (the vectors are
+ * scalar-replaced by C2); not thread safe: one per thread.
+ */
+final class VectorPacketTraversal implements PacketQuery {
+    private static final VectorSpecies<Double> S = DoubleVector.SPECIES_PREFERRED;
+    /** Rays per vector, and the bits of one group in a packet's mask. */
+    private static final int L = S.length();
+    private static final long GROUP_BITS = (1L << L) - 1;
+    private static final int N = RayPacket.CAPACITY;
+    private static final double SLACK = Tolerance.TRAVERSAL_SLACK;
+    private static final double SHRINK = 1 - SLACK, GROW = 1 + SLACK;
+    private static final int STRIDE = PairNodes.STRIDE, RIGHT = PairNodes.RIGHT, LINKS = PairNodes.LINKS;
+
+    /** Single rays, and the packets this loop leaves out. */
+    private final RayQuery single;
+    private final int[] words, prim;
+    private final double[] corners;
+    private final boolean empty;
+    /** Saved children (as {@link PacketTraversal#code}) with the mask of rays that enter them. */
+    private final int[] stackEntry;
+    private final long[] stackMask;
+    /**
+     * Per ray: the end of its interval so far (tMax, then its closest hit's t), its slack-widened
+     * value (-infinity once an any-hit ray is blocked), the hit's leaf position (-1 for none; a
+     * double, to sit in a lane) and barycentrics.
+     */
+    private final double[] best = new double[N], limit = new double[N], position = new double[N],
+            bu = new double[N], bv = new double[N];
+    private final PacketRays rays = new PacketRays();
+    private final Hit hit = new Hit();
+    private final Ray ray = new Ray(3);
+
+    VectorPacketTraversal(Bvh bvh, RayQuery single) {
+        if (N % L != 0 || L > 32) throw new IllegalStateException(L + " lanes do not divide a packet of " + N);
+        this.single = single;
+        words = bvh.pairs().words;
+        prim = bvh.primitiveArray();
+        corners = bvh.leafCorners();
+        empty = bvh.primitiveCount() == 0;
+        int depth = bvh.maxDepth() + 2;
+        stackEntry = new int[depth];
+        stackMask = new long[depth];
+    }
+
+    @Override public boolean closestHit(Ray ray, double tMin, double tMax, Hit hit) {
+        return single.closestHit(ray, tMin, tMax, hit);
+    }
+
+    @Override public boolean anyHit(Ray ray, double tMin, double tMax) {
+        return single.anyHit(ray, tMin, tMax);
+    }
+
+    @Override public void closestHits(RayPacket p) {
+        if (p.size() == 0) return;
+        if (empty || !load(p, false)) PacketQuery.oneByOne(single, p, ray, hit);
+        else trace(p, false);
+    }
+
+    @Override public void anyHits(RayPacket p) {
+        if (p.size() == 0) return;
+        if (empty || !load(p, true)) PacketQuery.anyOneByOne(single, p, ray);
+        else trace(p, true);
+    }
+
+    /**
+     * {@link PacketRays#load} for a full packet, in vectors: whether the packet is coherent, and if
+     * so its bounds (the same minima and maxima, in any order) and each ray's start.
+     */
+    private boolean load(RayPacket p, boolean any) {
+        if (p.size() != N) return rays.load(p, any);
+        double inf = Double.POSITIVE_INFINITY;
+        DoubleVector oxl = DoubleVector.broadcast(S, inf), oyl = oxl, ozl = oxl, ixl = oxl, iyl = oxl, izl = oxl, sl = oxl;
+        DoubleVector oxh = DoubleVector.broadcast(S, -inf), oyh = oxh, ozh = oxh, ixh = oxh, iyh = oxh, izh = oxh;
+        DoubleVector zero = DoubleVector.zero(S);
+        boolean xs = p.ix[0] < 0, ys = p.iy[0] < 0, zs = p.iz[0] < 0;
+        VectorMask<Double> bad = zero.lt(0);
+        double[] start = rays.start;
+        for (int at = 0; at < N; at += L) {
+            DoubleVector ox = DoubleVector.fromArray(S, p.ox, at), oy = DoubleVector.fromArray(S, p.oy, at), oz = DoubleVector.fromArray(S, p.oz, at);
+            DoubleVector ix = DoubleVector.fromArray(S, p.ix, at), iy = DoubleVector.fromArray(S, p.iy, at), iz = DoubleVector.fromArray(S, p.iz, at);
+            DoubleVector t0 = DoubleVector.fromArray(S, p.tMin, at), t1 = DoubleVector.fromArray(S, p.tMax, at);
+            // x - x is 0 exactly when x is finite; the signs as the first ray's; 0 <= tMin <= tMax.
+            bad = bad.or(ox.sub(ox).add(oy.sub(oy)).add(oz.sub(oz)).add(ix.sub(ix)).add(iy.sub(iy)).add(iz.sub(iz)).compare(VectorOperators.NE, 0))
+                    .or(xs ? ix.compare(VectorOperators.GE, 0) : ix.lt(0)).or(ys ? iy.compare(VectorOperators.GE, 0) : iy.lt(0))
+                    .or(zs ? iz.compare(VectorOperators.GE, 0) : iz.lt(0))
+                    .or(t0.compare(VectorOperators.GE, 0).and(t0.compare(VectorOperators.LE, t1)).not());
+            oxl = oxl.min(ox); oxh = oxh.max(ox);
+            oyl = oyl.min(oy); oyh = oyh.max(oy);
+            ozl = ozl.min(oz); ozh = ozh.max(oz);
+            ixl = ixl.min(ix); ixh = ixh.max(ix);
+            iyl = iyl.min(iy); iyh = iyh.max(iy);
+            izl = izl.min(iz); izh = izh.max(iz);
+            DoubleVector s0 = zero.blend(t0, t0.compare(VectorOperators.GE, Double.MIN_NORMAL));   // WideTraversal.boxStart
+            s0.intoArray(start, at);
+            sl = sl.min(s0);
+        }
+        if (bad.anyTrue()) return false;
+        VectorOperators.Associative min = VectorOperators.MIN, max = VectorOperators.MAX;
+        rays.bound(oxl.reduceLanes(min), oxh.reduceLanes(max), oyl.reduceLanes(min), oyh.reduceLanes(max), ozl.reduceLanes(min), ozh.reduceLanes(max),
+                ixl.reduceLanes(min), ixh.reduceLanes(max), iyl.reduceLanes(min), iyh.reduceLanes(max), izl.reduceLanes(min), izh.reduceLanes(max),
+                sl.reduceLanes(min));
+        rays.finish(p, any);
+        return true;
+    }
+
+    private void trace(RayPacket p, boolean any) {
+        int n = p.size();
+        PacketRays q = rays;
+        for (int i = 0; i < n; i++) {
+            best[i] = p.tMax[i];
+            limit[i] = best[i] + Math.abs(best[i]) * SLACK;
+            position[i] = -1;
+        }
+        java.util.Arrays.fill(limit, n, N, Double.NEGATIVE_INFINITY);
+        long all = n == N ? -1L : (1L << n) - 1, done = 0;
+        double limitHi = maxLimit();
+        int[] nd = words;
+        int sp = 0, e = 0;
+        long mask = all;
+        while (true) {
+            if (e >= 0) {
+                int l = STRIDE * e, r = l + RIGHT, link = l + LINKS;
+                long lm = q.packetEnters(nd, l, limitHi) ? entering(p, nd, l, mask) : 0;
+                long rm = q.packetEnters(nd, r, limitHi) ? entering(p, nd, r, mask) : 0;
+                if (lm != 0 && rm != 0) {
+                    boolean rightFirst = entry(p, nd, r, Long.numberOfTrailingZeros(rm)) < entry(p, nd, l, Long.numberOfTrailingZeros(lm));
+                    stackEntry[sp] = PacketTraversal.code(nd, rightFirst ? link : link + 2);
+                    stackMask[sp++] = rightFirst ? lm : rm;
+                    e = PacketTraversal.code(nd, rightFirst ? link + 2 : link);
+                    mask = rightFirst ? rm : lm;
+                    continue;
+                }
+                if ((lm | rm) != 0) {
+                    e = PacketTraversal.code(nd, lm != 0 ? link : link + 2);
+                    mask = lm | rm;
+                    continue;
+                }
+            } else {
+                int word = -1 - e;
+                long in = inBox(p, nd, PacketTraversal.boxOf(word), mask);
+                if (in != 0) {
+                    long changed = leaf(p, nd, word, in, any);
+                    if (any) {
+                        done |= changed;
+                        if (done == all) break;
+                    } else if (changed != 0) {
+                        limitHi = maxLimit();
+                    }
+                }
+            }
+            mask = 0;
+            while (mask == 0 && sp > 0) mask = stackMask[--sp] & ~done;
+            if (mask == 0) break;
+            e = stackEntry[sp];
+        }
+        for (int i = 0; i < n; i++) {
+            int at = (int) position[i];
+            if (at < 0) {
+                p.primitive[i] = -1;
+                p.t[i] = Double.POSITIVE_INFINITY;
+                p.u[i] = p.v[i] = 0;
+            } else {
+                p.primitive[i] = prim[at];
+                p.t[i] = best[i];
+                p.u[i] = bu[i];
+                p.v[i] = bv[i];
+            }
+        }
+    }
+
+    /** The largest limit of a ray of the packet (those past its size are -infinity). */
+    private double maxLimit() {
+        DoubleVector m = DoubleVector.fromArray(S, limit, 0);
+        for (int at = L; at < N; at += L) m = m.max(DoubleVector.fromArray(S, limit, at));
+        return m.reduceLanes(VectorOperators.MAX);
+    }
+
+    /**
+     * The rays of {@code mask} that may enter the box at {@code b}: from the first group (of
+     * {@link #L} rays) with a ray that enters it to the last, each of those two groups' lanes
+     * tested ({@link #groupSlabs}), the groups between them kept whole, untested (Overbeck's ranged
+     * traversal, a group for a ray). A superset of the rays that enter, never fewer: a leaf tests
+     * its own box for each group before its triangles ({@link #inBox}).
+     */
+    private long entering(RayPacket p, int[] nd, int b, long mask) {
+        setPlanes(p, nd, b);
+        int first = -1;
+        long out = 0;
+        for (int at = 0; at < N; at += L) {
+            long bits = (mask >>> at) & GROUP_BITS;
+            if (bits == 0) continue;
+            long in = bits & groupSlabs(p, at);
+            if (in != 0) {
+                first = at;
+                out = in << at;
+                break;
+            }
+        }
+        if (first < 0) return 0;
+        for (int at = N - L; at > first; at -= L) {
+            long bits = (mask >>> at) & GROUP_BITS;
+            if (bits == 0) continue;
+            long in = bits & groupSlabs(p, at);
+            if (in != 0) {
+                long between = at - first > L ? mask & (-1L << (first + L)) & ((1L << at) - 1) : 0;
+                return out | between | in << at;
+            }
+        }
+        return out;
+    }
+
+    /** The lanes of each of {@code mask}'s groups whose ray enters the box at {@code b} (a leaf's, before its triangles). */
+    private long inBox(RayPacket p, int[] nd, int b, long mask) {
+        setPlanes(p, nd, b);
+        long out = 0;
+        for (int at = 0; at < N; at += L) {
+            long bits = (mask >>> at) & GROUP_BITS;
+            if (bits != 0) out |= (bits & groupSlabs(p, at)) << at;
+        }
+        return out;
+    }
+
+    /** The near and far planes of the box at {@code b}, per axis; less the origin when the rays share it. */
+    private double pnx, pfx, pny, pfy, pnz, pfz;
+
+    private void setPlanes(RayPacket p, int[] nd, int b) {
+        PacketRays q = rays;
+        pnx = Float.intBitsToFloat(nd[b + q.nx]);
+        pfx = Float.intBitsToFloat(nd[b + q.fx]);
+        pny = Float.intBitsToFloat(nd[b + q.ny]);
+        pfy = Float.intBitsToFloat(nd[b + q.fy]);
+        pnz = Float.intBitsToFloat(nd[b + q.nz]);
+        pfz = Float.intBitsToFloat(nd[b + q.fz]);
+        if (q.sharedOrigin) {
+            // plane - o: one number for every ray, the same a single ray computes.
+            double ox = p.ox[0], oy = p.oy[0], oz = p.oz[0];
+            pnx -= ox; pfx -= ox; pny -= oy; pfy -= oy; pnz -= oz; pfz -= oz;
+        }
+    }
+
+    /**
+     * The lanes of the group at {@code at} whose ray enters the box of {@link #setPlanes}: per
+     * lane, {@link PairTraversal}'s operations on its ray, {@code (plane - o) * inv}, their
+     * maximum and minimum with the interval, and {@code t0 (1 - slack) <= t1 (1 + slack)}.
+     */
+    private long groupSlabs(RayPacket p, int at) {
+        DoubleVector ix = DoubleVector.fromArray(S, p.ix, at), iy = DoubleVector.fromArray(S, p.iy, at),
+                iz = DoubleVector.fromArray(S, p.iz, at);
+        DoubleVector nx = DoubleVector.broadcast(S, pnx), fx = DoubleVector.broadcast(S, pfx), ny = DoubleVector.broadcast(S, pny),
+                fy = DoubleVector.broadcast(S, pfy), nz = DoubleVector.broadcast(S, pnz), fz = DoubleVector.broadcast(S, pfz);
+        if (!rays.sharedOrigin) {
+            DoubleVector ox = DoubleVector.fromArray(S, p.ox, at), oy = DoubleVector.fromArray(S, p.oy, at),
+                    oz = DoubleVector.fromArray(S, p.oz, at);
+            nx = nx.sub(ox); fx = fx.sub(ox); ny = ny.sub(oy); fy = fy.sub(oy); nz = nz.sub(oz); fz = fz.sub(oz);
+        }
+        DoubleVector t0 = nx.mul(ix), t1 = fx.mul(ix);
+        t0 = t0.max(ny.mul(iy));
+        t1 = t1.min(fy.mul(iy));
+        t0 = t0.max(nz.mul(iz));
+        t1 = t1.min(fz.mul(iz));
+        t0 = t0.max(DoubleVector.fromArray(S, rays.start, at));
+        t1 = t1.min(DoubleVector.fromArray(S, limit, at));
+        return t0.mul(SHRINK).compare(VectorOperators.LE, t1.mul(GROW)).toLong();
+    }
+
+    /** Ray {@code i}'s entry distance into the box at {@code b}, for ordering children. */
+    private double entry(RayPacket p, int[] nd, int b, int i) {
+        PacketRays q = rays;
+        double t0 = (Float.intBitsToFloat(nd[b + q.nx]) - p.ox[i]) * p.ix[i];
+        t0 = Math.max(t0, (Float.intBitsToFloat(nd[b + q.ny]) - p.oy[i]) * p.iy[i]);
+        return Math.max(t0, (Float.intBitsToFloat(nd[b + q.nz]) - p.oz[i]) * p.iz[i]);
+    }
+
+    /**
+     * The rays of {@code mask} (which enter the leaf's box) test the triangles of the leaf whose
+     * reference is at {@code word}: each its closest hit, or for {@code any} its first, which takes
+     * it out of the packet (its limit set to -infinity, below every box). Returns the rays whose
+     * answer changed.
+     */
+    private long leaf(RayPacket p, int[] nd, int word, long mask, boolean any) {
+        int from = nd[word], end = from + nd[word + 1];
+        long skip = any && rays.planeCull ? rays.sidedTriangles(corners, from, end) : 0;
+        if (PacketRays.skipsAll(skip, end - from)) return 0;   // no ray can cross any of them
+        rays.frame();
+        if (!rays.uniformFrame) return leafOneByOne(p, from, end, mask, any);
+        long changed = 0;
+        for (int at = 0; at < N; at += L) {
+            long bits = (mask >>> at) & GROUP_BITS;
+            if (bits != 0) changed |= group(p, from, end, skip, at, bits, any) << at;
+        }
+        return changed;
+    }
+
+    /**
+     * The lanes {@code bits} of the group at {@code at} test triangles {@code [from, end)} (bar
+     * those of {@code skip}) with the watertight test, lane by lane {@link TriangleIntersector#test}'s
+     * operations in its order: a hit within the ray's interval and closer than its hit so far (or as
+     * close, at a lower leaf position) is recorded; for {@code any}, the lane then stops. Returns the
+     * lanes that recorded a hit.
+     */
+    private long group(RayPacket p, int from, int end, long skip, int at, long bits, boolean any) {
+        PacketRays q = rays;
+        double[] c = corners;
+        int kx = q.kx[0], ky = q.ky[0], kz = q.kz[0];
+        boolean shared = q.sharedOrigin;
+        double ox = q.okx[at], oy = q.oky[at], oz = q.okz[at];
+        VectorMask<Double> live = VectorMask.fromLong(S, bits), recorded = live.not().and(live);
+        DoubleVector okx = DoubleVector.fromArray(S, q.okx, at), oky = DoubleVector.fromArray(S, q.oky, at),
+                okz = DoubleVector.fromArray(S, q.okz, at);
+        DoubleVector sx = DoubleVector.fromArray(S, q.sx, at), sy = DoubleVector.fromArray(S, q.sy, at),
+                sz = DoubleVector.fromArray(S, q.sz, at);
+        DoubleVector tMin = DoubleVector.fromArray(S, p.tMin, at);
+        DoubleVector bound = DoubleVector.fromArray(S, best, at), pos = DoubleVector.fromArray(S, position, at);
+        DoubleVector u0 = DoubleVector.fromArray(S, bu, at), v0 = DoubleVector.fromArray(S, bv, at);
+        // As the single ray's Hit: no hit yet is t = +infinity (and position -1).
+        DoubleVector hitT = bound.blend(Double.POSITIVE_INFINITY, pos.lt(0));
+        for (int r = from; r < end; r++) {
+            if (r - from < 64 && (skip & 1L << (r - from)) != 0) continue;
+            int b = 9 * r;
+            // corner - origin: with a shared origin, one number for every lane, as each ray computes it.
+            DoubleVector az = shared ? DoubleVector.broadcast(S, c[b + kz] - oz) : DoubleVector.broadcast(S, c[b + kz]).sub(okz);
+            DoubleVector bz = shared ? DoubleVector.broadcast(S, c[b + 3 + kz] - oz) : DoubleVector.broadcast(S, c[b + 3 + kz]).sub(okz);
+            DoubleVector cz = shared ? DoubleVector.broadcast(S, c[b + 6 + kz] - oz) : DoubleVector.broadcast(S, c[b + 6 + kz]).sub(okz);
+            DoubleVector ax = (shared ? DoubleVector.broadcast(S, c[b + kx] - ox) : DoubleVector.broadcast(S, c[b + kx]).sub(okx)).sub(sx.mul(az));
+            DoubleVector ay = (shared ? DoubleVector.broadcast(S, c[b + ky] - oy) : DoubleVector.broadcast(S, c[b + ky]).sub(oky)).sub(sy.mul(az));
+            DoubleVector bx = (shared ? DoubleVector.broadcast(S, c[b + 3 + kx] - ox) : DoubleVector.broadcast(S, c[b + 3 + kx]).sub(okx)).sub(sx.mul(bz));
+            DoubleVector by = (shared ? DoubleVector.broadcast(S, c[b + 3 + ky] - oy) : DoubleVector.broadcast(S, c[b + 3 + ky]).sub(oky)).sub(sy.mul(bz));
+            DoubleVector cx = (shared ? DoubleVector.broadcast(S, c[b + 6 + kx] - ox) : DoubleVector.broadcast(S, c[b + 6 + kx]).sub(okx)).sub(sx.mul(cz));
+            DoubleVector cy = (shared ? DoubleVector.broadcast(S, c[b + 6 + ky] - oy) : DoubleVector.broadcast(S, c[b + 6 + ky]).sub(oky)).sub(sy.mul(cz));
+            DoubleVector u = cx.mul(by).sub(cy.mul(bx)), v = ax.mul(cy).sub(ay.mul(cx)), w = bx.mul(ay).sub(by.mul(ax));
+            VectorMask<Double> outside = u.lt(0).or(v.lt(0)).or(w.lt(0)).and(u.compare(VectorOperators.GT, 0)
+                    .or(v.compare(VectorOperators.GT, 0)).or(w.compare(VectorOperators.GT, 0)));
+            VectorMask<Double> ok = live.andNot(outside);
+            if (!ok.anyTrue()) continue;
+            DoubleVector det = u.add(v).add(w);
+            DoubleVector t = u.mul(az).add(v.mul(bz)).add(w.mul(cz)).mul(sz).div(det);
+            ok = ok.and(det.compare(VectorOperators.NE, 0)).and(t.compare(VectorOperators.GE, tMin))
+                    .and(t.compare(VectorOperators.LE, bound))
+                    .and(t.lt(hitT).or(t.eq(hitT).and(pos.compare(VectorOperators.GT, r))));
+            if (!ok.anyTrue()) continue;
+            bound = bound.blend(t, ok);
+            hitT = hitT.blend(t, ok);
+            pos = pos.blend(r, ok);
+            u0 = u0.blend(v.div(det), ok);
+            v0 = v0.blend(w.div(det), ok);
+            recorded = recorded.or(ok);
+            if (any) {
+                live = live.andNot(ok);
+                if (!live.anyTrue()) break;
+            }
+        }
+        if (!recorded.anyTrue()) return 0;
+        bound.intoArray(best, at);
+        pos.intoArray(position, at);
+        u0.intoArray(bu, at);
+        v0.intoArray(bv, at);
+        DoubleVector next = any ? DoubleVector.broadcast(S, Double.NEGATIVE_INFINITY) : bound.add(bound.abs().mul(SLACK));
+        next.intoArray(limit, at, recorded);
+        return recorded.toLong();
+    }
+
+    /**
+     * The rays of {@code mask} (which enter the leaf's box) test the leaf's triangles, each ray
+     * first to last as it would alone (an any-hit ray stops at its first hit); returns the rays
+     * whose answer changed (for {@code any}: those now blocked).
+     */
+    private long leafOneByOne(RayPacket p, int from, int end, long mask, boolean any) {
+        PacketRays q = rays;
+        double[] c = corners;
+        Hit h = hit;
+        long changed = 0;
+        for (long m = mask; m != 0; m &= m - 1) {
+            int i = Long.numberOfTrailingZeros(m);
+            h.primitive = (int) position[i];
+            h.t = position[i] < 0 ? Double.POSITIVE_INFINITY : best[i];
+            boolean found = false;
+            for (int r = from; r < end && !(any && found); r++)
+                found |= TriangleIntersector.test(c, 9 * r, r, q.okx[i], q.oky[i], q.okz[i], q.kx[i], q.ky[i], q.kz[i],
+                        q.sx[i], q.sy[i], q.sz[i], p.tMin[i], found ? h.t : best[i], h);
+            if (found) {
+                best[i] = h.t;
+                position[i] = h.primitive;
+                bu[i] = h.u;
+                bv[i] = h.v;
+                limit[i] = any ? Double.NEGATIVE_INFINITY : best[i] + Math.abs(best[i]) * SLACK;
+                changed |= 1L << i;
+            }
+        }
+        return changed;
+    }
+
+}
