@@ -45,6 +45,8 @@ public final class Bvh implements AccelerationStructure {
     private double[] leafCorners;
     private PairNodes pairs;
     private WideNodes laneNodes;
+    /** The triangles in blocks for the vector path's leaf test ({@link #leafBlocks}), made on its first query. */
+    private LeafBlocks leafBlocks;
 
     private Bvh(Primitives built, int k, int nodes, int[] primitives, CostModel costModel, BuildNode root, int width) {
         this.built = built;
@@ -180,6 +182,12 @@ public final class Bvh implements AccelerationStructure {
     synchronized WideNodes lanes(int lanes) {
         if (laneNodes == null || laneNodes.width != lanes) laneNodes = lanes == width() ? wide : new WideNodes(this, lanes);
         return laneNodes;
+    }
+
+    /** The leaf-ordered corners in blocks of {@link LeafBlocks#WIDTH} per leaf, for the vector path's single rays; null unless built over a mesh. */
+    synchronized LeafBlocks leafBlocks() {
+        if (leafBlocks == null && leafCorners() != null) leafBlocks = new LeafBlocks(this, leafCorners);
+        return leafBlocks;
     }
 
     /** The compact binary layout ({@link PairNodes}), made on the first triangle query. */

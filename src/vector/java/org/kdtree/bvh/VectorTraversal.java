@@ -29,6 +29,10 @@ import org.kdtree.geom.Tolerance;
  */
 final class VectorTraversal implements RayQuery {
     private static final VectorSpecies<Double> S = DoubleVector.SPECIES_PREFERRED;
+    /** A leaf's triangles, {@link LeafBlocks#WIDTH} at a time. */
+    private static final VectorSpecies<Double> B = DoubleVector.SPECIES_256;
+    /** 0, 1, 2, 3: a block's lanes' offsets from its first position. */
+    private static final DoubleVector LANE = DoubleVector.fromArray(B, new double[] {0, 1, 2, 3}, 0);
     /** As many ints (the boxes' float bits) as {@link #S} has double lanes. */
     private static final VectorSpecies<Integer> I = VectorSpecies.of(int.class, VectorShape.forBitSize(S.vectorBitSize() / 2));
     private static final double SLACK = Tolerance.TRAVERSAL_SLACK;
@@ -37,6 +41,9 @@ final class VectorTraversal implements RayQuery {
     private final int width, stride, refs;
     private final int[] words, prim;
     private final double[] corners;
+    /** The leaves' triangles in blocks ({@link LeafBlocks}). */
+    private final double[] blocks;
+    private final int[] firstBlock;
     private final boolean empty;
     private final int[] stackEntry;
     private final double[] stackT;
@@ -58,6 +65,9 @@ final class VectorTraversal implements RayQuery {
         words = w.words;
         prim = bvh.primitiveArray();
         corners = bvh.leafCorners();
+        LeafBlocks lb = bvh.leafBlocks();
+        blocks = lb.coordinates;
+        firstBlock = lb.firstBlock;
         empty = bvh.primitiveCount() == 0;
         int stack = (bvh.maxDepth() + 1) * (width - 1) + 2;
         stackEntry = new int[stack];
@@ -85,6 +95,54 @@ final class VectorTraversal implements RayQuery {
     /** The children's planes at {@code words[at .. at + lanes)}: their float bits, widened exactly to doubles. */
     private static DoubleVector planes(int[] words, int at) {
         return (DoubleVector) IntVector.fromArray(I, words, at).reinterpretAsFloats().convertShape(VectorOperators.F2D, S, 0);
+    }
+
+    /**
+     * The watertight test of a block's {@link LeafBlocks#WIDTH} triangles (leaf positions from
+     * {@code first}) at once: each lane {@link TriangleIntersector#test}'s operations in its order.
+     * Of the lanes that hit within {@code [tMin, tMax]} and closer than {@code hit} (or as close,
+     * at a lower position), the closest, of equals the first, is recorded in {@code hit}: what
+     * testing them one after the other records. Returns its leaf position, or -1.
+     */
+    private int testBlock(int block, int first, double okx, double oky, double okz, int kx, int ky, int kz,
+                          double sx, double sy, double sz, double tMin, double tMax, Hit hit) {
+        double[] c = blocks;
+        int o = LeafBlocks.STRIDE * block, W = LeafBlocks.WIDTH;
+        DoubleVector az = DoubleVector.fromArray(B, c, o + W * kz).sub(okz);
+        DoubleVector bz = DoubleVector.fromArray(B, c, o + W * (3 + kz)).sub(okz);
+        DoubleVector cz = DoubleVector.fromArray(B, c, o + W * (6 + kz)).sub(okz);
+        DoubleVector ax = DoubleVector.fromArray(B, c, o + W * kx).sub(okx).sub(az.mul(sx));
+        DoubleVector ay = DoubleVector.fromArray(B, c, o + W * ky).sub(oky).sub(az.mul(sy));
+        DoubleVector bx = DoubleVector.fromArray(B, c, o + W * (3 + kx)).sub(okx).sub(bz.mul(sx));
+        DoubleVector by = DoubleVector.fromArray(B, c, o + W * (3 + ky)).sub(oky).sub(bz.mul(sy));
+        DoubleVector cx = DoubleVector.fromArray(B, c, o + W * (6 + kx)).sub(okx).sub(cz.mul(sx));
+        DoubleVector cy = DoubleVector.fromArray(B, c, o + W * (6 + ky)).sub(oky).sub(cz.mul(sy));
+        DoubleVector u = cx.mul(by).sub(cy.mul(bx)), v = ax.mul(cy).sub(ay.mul(cx)), w = bx.mul(ay).sub(by.mul(ax));
+        VectorMask<Double> outside = u.lt(0).or(v.lt(0)).or(w.lt(0)).and(u.compare(VectorOperators.GT, 0)
+                .or(v.compare(VectorOperators.GT, 0)).or(w.compare(VectorOperators.GT, 0)));
+        if (outside.allTrue()) return -1;
+        DoubleVector det = u.add(v).add(w);
+        DoubleVector t = u.mul(az).add(v.mul(bz)).add(w.mul(cz)).mul(sz).div(det);
+        double hitT = hit.t;
+        VectorMask<Double> ok = outside.not().and(det.compare(VectorOperators.NE, 0)).and(t.compare(VectorOperators.GE, tMin))
+                .and(t.compare(VectorOperators.LE, tMax))
+                .and(t.lt(hitT).or(t.eq(hitT).and(LANE.add(first).lt(hit.primitive))));
+        long bits = ok.toLong();
+        if (bits == 0) return -1;
+        // The closest of the lanes that hit, of equals the lowest: the one the one-by-one loop keeps.
+        int best = Long.numberOfTrailingZeros(bits);
+        double bt = t.lane(best);
+        for (bits &= bits - 1; bits != 0; bits &= bits - 1) {
+            int i = Long.numberOfTrailingZeros(bits);
+            double ti = t.lane(i);
+            if (ti < bt) { best = i; bt = ti; }
+        }
+        double d = det.lane(best);
+        hit.primitive = first + best;
+        hit.t = bt;
+        hit.u = v.lane(best) / d;
+        hit.v = w.lane(best) / d;
+        return first + best;
     }
 
     private int trace(Ray ray, double tMin, double tMax, Hit hit, boolean any) {
@@ -134,9 +192,10 @@ final class VectorTraversal implements RayQuery {
                     continue;
                 }
             } else {
-                int word = -1 - e;
-                for (int r = nd[word], end = r + nd[word + w]; r < end; r++) {
-                    if (TriangleIntersector.test(c, 9 * r, r, okx, oky, okz, kx, ky, kz, sx, sy, sz, tMin, best, hit)) {
+                int word = -1 - e, from = nd[word], count = nd[word + w];
+                for (int k = 0, block = firstBlock[from]; k < count; k += LeafBlocks.WIDTH, block++) {
+                    int r = testBlock(block, from + k, okx, oky, okz, kx, ky, kz, sx, sy, sz, tMin, best, hit);
+                    if (r >= 0) {
                         if (any) return r;
                         found = r;
                         best = hit.t;
