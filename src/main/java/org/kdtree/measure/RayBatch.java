@@ -35,7 +35,7 @@ public final class RayBatch implements AutoCloseable {
 
     private static final int BLOCK = 4096;
     /** The edge of a tile of an image's rays traced as one packet: 8 x 8 measured best (docs/performance.md). */
-    static final int TILE = 8;
+    static final int TILE = RayPacket.TILE;
 
     /**
      * The spec's checksum of one pass.
@@ -125,6 +125,7 @@ public final class RayBatch implements AutoCloseable {
     private static void tiles(RayQuery q, RaySet rays, AtomicInteger next, double[] t) {
         PacketQuery pq = (PacketQuery) q;
         RayPacket packet = new RayPacket();
+        int[] pixel = new int[TILE * TILE];
         double[] r = rays.raw();
         int w = rays.imageWidth(), h = rays.size() / w;
         for (int band; (band = next.getAndIncrement()) * TILE < h; ) {
@@ -132,15 +133,16 @@ public final class RayBatch implements AutoCloseable {
             for (int x0 = 0; x0 < w; x0 += TILE) {
                 int x1 = Math.min(w, x0 + TILE);
                 packet.clear();
-                for (int y = y0; y < y1; y++)
-                    for (int x = x0; x < x1; x++) {
-                        int o = 6 * (y * w + x);
-                        packet.add(r[o], r[o + 1], r[o + 2], r[o + 3], r[o + 4], r[o + 5], T_MIN, Double.POSITIVE_INFINITY);
-                    }
+                int n = 0;
+                for (int m = 0; m < TILE * TILE; m++) {
+                    int x = x0 + RayPacket.tileX(m), y = y0 + RayPacket.tileY(m);
+                    if (x >= x1 || y >= y1) continue;
+                    int o = 6 * (y * w + x);
+                    pixel[n++] = y * w + x;
+                    packet.add(r[o], r[o + 1], r[o + 2], r[o + 3], r[o + 4], r[o + 5], T_MIN, Double.POSITIVE_INFINITY);
+                }
                 pq.closestHits(packet);
-                int i = 0;
-                for (int y = y0; y < y1; y++)
-                    for (int x = x0; x < x1; x++, i++) t[y * w + x] = packet.found(i) ? packet.t[i] : Double.NaN;
+                for (int i = 0; i < n; i++) t[pixel[i]] = packet.found(i) ? packet.t[i] : Double.NaN;
             }
         }
     }

@@ -144,15 +144,19 @@ final class Tracer {
             light[3 * e + 2] = b;
         }
 
+        /** The one point of a reflection's or refraction's hit ({@link #trace(int[], int)}). */
+        private static final int[] ONE = {0};
+
         /**
-         * Traces the shadow rays kept for the first {@code n} points as packets: point by point,
-         * each ray goes into the packet of its octant of directions, traced when full and at the
-         * end. A packet so holds the rays of one point or a few neighbouring ones, a point's rays
-         * toward the lights together: rays from one origin share the boxes around it.
+         * Traces the shadow rays kept for the points {@code order[0 .. n)} as packets: point by
+         * point, each ray goes into the packet of its octant of directions, traced when full and at
+         * the end. A packet so holds the rays of one point or a few neighbouring ones (in a block's
+         * Morton order, a 2 x 2 patch), a point's rays toward the lights together: rays from one
+         * origin share the boxes around it.
          */
-        void trace(int n) {
-            for (int i = 0; i < n; i++)
-                for (int e = i, end = slots * points; e < end; e += points) {
+        void trace(int[] order, int n) {
+            for (int j = 0; j < n; j++)
+                for (int e = order[j], end = slots * points; e < end; e += points) {
                     if (state[e] != SHADOWED) continue;
                     double x = dx[e], y = dy[e], z = dz[e];
                     int o = Double.isFinite(1 / x) && Double.isFinite(1 / y) && Double.isFinite(1 / z)
@@ -210,6 +214,20 @@ final class Tracer {
                 kt = new double[3 * SIZE], ct = new double[3 * SIZE];
         final boolean[] lit = new boolean[SIZE], reflects = new boolean[SIZE], refracts = new boolean[SIZE];
         private final double[] light = new double[3];
+
+        /** The block's pixels (row by row indices) in the order its packets take them: Morton order in a tile of 8 x 8 or less. */
+        final int[] order = new int[SIZE];
+
+        /** Sets {@link #order} for a block {@code w} pixels wide and {@code h} high. */
+        void order(int w, int h) {
+            int n = 0;
+            if (w <= RayPacket.TILE && h <= RayPacket.TILE) {
+                for (int m = 0; m < RayPacket.TILE * RayPacket.TILE; m++)
+                    if (RayPacket.tileX(m) < w && RayPacket.tileY(m) < h) order[n++] = RayPacket.tileY(m) * w + RayPacket.tileX(m);
+            } else {
+                for (int i = 0; i < w * h; i++) order[n++] = i;
+            }
+        }
 
         Block(PacketQuery query, int slots) {
             this.query = query;
@@ -367,32 +385,34 @@ final class Tracer {
         for (int[] r : k.rays) java.util.Arrays.fill(r, 0, pixels, 0);
         java.util.Arrays.fill(k.sum, 0, 3 * pixels, 0);
         RayPacket p = k.packet;
+        int w = x1 - x0, h = y1 - y0;
+        k.order(w, h);
         for (int si = 0; si < n; si++) {
             p.clear();
-            for (int y = y0; y < y1; y++)
-                for (int x = x0; x < x1; x++) {
-                    cameraDirection(x, y, si, n);
-                    p.add(eye[0], eye[1], eye[2], cameraDir[0], cameraDir[1], cameraDir[2], 0, Double.POSITIVE_INFINITY);
-                }
+            for (int j = 0; j < pixels; j++) {
+                int i = k.order[j];
+                cameraDirection(x0 + i % w, y0 + i / w, si, n);
+                p.add(eye[0], eye[1], eye[2], cameraDir[0], cameraDir[1], cameraDir[2], 0, Double.POSITIVE_INFINITY);
+            }
             k.query.closestHits(p);
-            for (int y = y0, i = 0; y < y1; y++)
-                for (int x = x0; x < x1; x++, i++) {
-                    px = x;
-                    py = y;
-                    ps = si;
-                    blockPixel = i;
-                    count(RayKind.CAMERA);
-                    cameraDir[0] = p.dx[i];
-                    cameraDir[1] = p.dy[i];
-                    cameraDir[2] = p.dz[i];
-                    hit.primitive = p.primitive[i];
-                    hit.t = p.t[i];
-                    hit.u = p.u[i];
-                    hit.v = p.v[i];
-                    shadeAside(i, p.found(i), cameraDir);
-                }
+            for (int j = 0; j < pixels; j++) {
+                int i = k.order[j];
+                px = x0 + i % w;
+                py = y0 + i / w;
+                ps = si;
+                blockPixel = i;
+                count(RayKind.CAMERA);
+                cameraDir[0] = p.dx[j];
+                cameraDir[1] = p.dy[j];
+                cameraDir[2] = p.dz[j];
+                hit.primitive = p.primitive[j];
+                hit.t = p.t[j];
+                hit.u = p.u[j];
+                hit.v = p.v[j];
+                shadeAside(i, p.found(j), cameraDir);
+            }
             blockPixel = -1;
-            k.shadows.trace(pixels);
+            k.shadows.trace(k.order, pixels);
             for (int i = 0; i < pixels; i++) k.addColour(i);
         }
         k.samples = n;
@@ -585,7 +605,7 @@ final class Tracer {
             }
         }
         if (keep == point && keep != null) {     // this point's shadow rays, as packets; the light summed as it would be ray by ray
-            point.trace(1);
+            point.trace(Shadows.ONE, 1);
             point.sum(0, sum);
         }
     }

@@ -97,55 +97,14 @@ final class VectorPacketTraversal implements PacketQuery {
 
     @Override public void closestHits(RayPacket p) {
         if (p.size() == 0) return;
-        if (empty || p.size() <= SMALL || !load(p, false)) PacketQuery.oneByOne(single, p, ray, hit);
+        if (empty || p.size() <= SMALL || !rays.load(p, false)) PacketQuery.oneByOne(single, p, ray, hit);
         else trace(p, false);
     }
 
     @Override public void anyHits(RayPacket p) {
         if (p.size() == 0) return;
-        if (empty || p.size() <= SMALL || !load(p, true)) PacketQuery.anyOneByOne(single, p, ray);
+        if (empty || p.size() <= SMALL || !rays.load(p, true)) PacketQuery.anyOneByOne(single, p, ray);
         else trace(p, true);
-    }
-
-    /**
-     * {@link PacketRays#load} for a full packet, in vectors: whether the packet is coherent, and if
-     * so its bounds (the same minima and maxima, in any order) and each ray's start.
-     */
-    private boolean load(RayPacket p, boolean any) {
-        if (p.size() != N) return rays.load(p, any);
-        double inf = Double.POSITIVE_INFINITY;
-        DoubleVector oxl = DoubleVector.broadcast(S, inf), oyl = oxl, ozl = oxl, ixl = oxl, iyl = oxl, izl = oxl, sl = oxl;
-        DoubleVector oxh = DoubleVector.broadcast(S, -inf), oyh = oxh, ozh = oxh, ixh = oxh, iyh = oxh, izh = oxh;
-        DoubleVector zero = DoubleVector.zero(S);
-        boolean xs = p.ix[0] < 0, ys = p.iy[0] < 0, zs = p.iz[0] < 0;
-        VectorMask<Double> bad = zero.lt(0);
-        double[] start = rays.start;
-        for (int at = 0; at < N; at += L) {
-            DoubleVector ox = DoubleVector.fromArray(S, p.ox, at), oy = DoubleVector.fromArray(S, p.oy, at), oz = DoubleVector.fromArray(S, p.oz, at);
-            DoubleVector ix = DoubleVector.fromArray(S, p.ix, at), iy = DoubleVector.fromArray(S, p.iy, at), iz = DoubleVector.fromArray(S, p.iz, at);
-            DoubleVector t0 = DoubleVector.fromArray(S, p.tMin, at), t1 = DoubleVector.fromArray(S, p.tMax, at);
-            // x - x is 0 exactly when x is finite; the signs as the first ray's; 0 <= tMin <= tMax.
-            bad = bad.or(ox.sub(ox).add(oy.sub(oy)).add(oz.sub(oz)).add(ix.sub(ix)).add(iy.sub(iy)).add(iz.sub(iz)).compare(VectorOperators.NE, 0))
-                    .or(xs ? ix.compare(VectorOperators.GE, 0) : ix.lt(0)).or(ys ? iy.compare(VectorOperators.GE, 0) : iy.lt(0))
-                    .or(zs ? iz.compare(VectorOperators.GE, 0) : iz.lt(0))
-                    .or(t0.compare(VectorOperators.GE, 0).and(t0.compare(VectorOperators.LE, t1)).not());
-            oxl = oxl.min(ox); oxh = oxh.max(ox);
-            oyl = oyl.min(oy); oyh = oyh.max(oy);
-            ozl = ozl.min(oz); ozh = ozh.max(oz);
-            ixl = ixl.min(ix); ixh = ixh.max(ix);
-            iyl = iyl.min(iy); iyh = iyh.max(iy);
-            izl = izl.min(iz); izh = izh.max(iz);
-            DoubleVector s0 = zero.blend(t0, t0.compare(VectorOperators.GE, Double.MIN_NORMAL));   // WideTraversal.boxStart
-            s0.intoArray(start, at);
-            sl = sl.min(s0);
-        }
-        if (bad.anyTrue()) return false;
-        VectorOperators.Associative min = VectorOperators.MIN, max = VectorOperators.MAX;
-        rays.bound(oxl.reduceLanes(min), oxh.reduceLanes(max), oyl.reduceLanes(min), oyh.reduceLanes(max), ozl.reduceLanes(min), ozh.reduceLanes(max),
-                ixl.reduceLanes(min), ixh.reduceLanes(max), iyl.reduceLanes(min), iyh.reduceLanes(max), izl.reduceLanes(min), izh.reduceLanes(max),
-                sl.reduceLanes(min));
-        rays.finish(p, any);
-        return true;
     }
 
     private void trace(RayPacket p, boolean any) {
@@ -213,11 +172,15 @@ final class VectorPacketTraversal implements PacketQuery {
         }
     }
 
-    /** The largest limit of a ray of the packet (those past its size are -infinity). */
+    /**
+     * The largest limit of a ray of the packet (none NaN; those past its size are -infinity), by
+     * compares: a vector carried through a loop is not of a type C2 knows, so its {@code
+     * reduceLanes} stays a call with the vector boxed (measured: 33 bytes allocated per ray).
+     */
     private double maxLimit() {
-        DoubleVector m = DoubleVector.fromArray(S, limit, 0);
-        for (int at = L; at < N; at += L) m = m.max(DoubleVector.fromArray(S, limit, at));
-        return m.reduceLanes(VectorOperators.MAX);
+        double m = Double.NEGATIVE_INFINITY;
+        for (int i = 0; i < N; i++) m = limit[i] > m ? limit[i] : m;
+        return m;
     }
 
     /**
@@ -289,24 +252,26 @@ final class VectorPacketTraversal implements PacketQuery {
      * maximum and minimum with the interval, and {@code t0 (1 - slack) <= t1 (1 + slack)}.
      */
     private long groupSlabs(RayPacket p, int at) {
+        // With a shared origin the planes are already less it, and the origins read are zeros (x - 0 is x):
+        // one expression either way, no vector merged from two branches (C2 would box it).
+        boolean shared = rays.sharedOrigin;
+        int o = shared ? 0 : at;
+        DoubleVector ox = DoubleVector.fromArray(S, shared ? ZEROS : p.ox, o), oy = DoubleVector.fromArray(S, shared ? ZEROS : p.oy, o),
+                oz = DoubleVector.fromArray(S, shared ? ZEROS : p.oz, o);
         DoubleVector ix = DoubleVector.fromArray(S, p.ix, at), iy = DoubleVector.fromArray(S, p.iy, at),
                 iz = DoubleVector.fromArray(S, p.iz, at);
-        DoubleVector nx = DoubleVector.broadcast(S, pnx), fx = DoubleVector.broadcast(S, pfx), ny = DoubleVector.broadcast(S, pny),
-                fy = DoubleVector.broadcast(S, pfy), nz = DoubleVector.broadcast(S, pnz), fz = DoubleVector.broadcast(S, pfz);
-        if (!rays.sharedOrigin) {
-            DoubleVector ox = DoubleVector.fromArray(S, p.ox, at), oy = DoubleVector.fromArray(S, p.oy, at),
-                    oz = DoubleVector.fromArray(S, p.oz, at);
-            nx = nx.sub(ox); fx = fx.sub(ox); ny = ny.sub(oy); fy = fy.sub(oy); nz = nz.sub(oz); fz = fz.sub(oz);
-        }
-        DoubleVector t0 = nx.mul(ix), t1 = fx.mul(ix);
-        t0 = t0.max(ny.mul(iy));
-        t1 = t1.min(fy.mul(iy));
-        t0 = t0.max(nz.mul(iz));
-        t1 = t1.min(fz.mul(iz));
+        DoubleVector t0 = DoubleVector.broadcast(S, pnx).sub(ox).mul(ix), t1 = DoubleVector.broadcast(S, pfx).sub(ox).mul(ix);
+        t0 = t0.max(DoubleVector.broadcast(S, pny).sub(oy).mul(iy));
+        t1 = t1.min(DoubleVector.broadcast(S, pfy).sub(oy).mul(iy));
+        t0 = t0.max(DoubleVector.broadcast(S, pnz).sub(oz).mul(iz));
+        t1 = t1.min(DoubleVector.broadcast(S, pfz).sub(oz).mul(iz));
         t0 = t0.max(DoubleVector.fromArray(S, rays.start, at));
         t1 = t1.min(DoubleVector.fromArray(S, limit, at));
         return t0.mul(SHRINK).compare(VectorOperators.LE, t1.mul(GROW)).toLong();
     }
+
+    /** Zeros: the origins a group's slab test reads when the rays share theirs ({@link #setPlanes}). */
+    private static final double[] ZEROS = new double[L];
 
     /** Ray {@code i}'s entry distance into the box at {@code b}, for ordering children. */
     private double entry(RayPacket p, int[] nd, int b, int i) {
@@ -347,61 +312,54 @@ final class VectorPacketTraversal implements PacketQuery {
         PacketRays q = rays;
         double[] c = corners;
         int kx = q.kx[0], ky = q.ky[0], kz = q.kz[0];
-        boolean shared = q.sharedOrigin;
-        double ox = q.okx[at], oy = q.oky[at], oz = q.okz[at];
-        VectorMask<Double> live = VectorMask.fromLong(S, bits), recorded = live.not().and(live);
+        // No vector is carried from one triangle to the next (C2 would box it at the loop's merge):
+        // each lane's hit so far lives in the arrays, read again and written with a mask.
+        long live = bits, recorded = 0;
         DoubleVector okx = DoubleVector.fromArray(S, q.okx, at), oky = DoubleVector.fromArray(S, q.oky, at),
                 okz = DoubleVector.fromArray(S, q.okz, at);
         DoubleVector sx = DoubleVector.fromArray(S, q.sx, at), sy = DoubleVector.fromArray(S, q.sy, at),
                 sz = DoubleVector.fromArray(S, q.sz, at);
         DoubleVector tMin = DoubleVector.fromArray(S, p.tMin, at);
-        DoubleVector bound = DoubleVector.fromArray(S, best, at), pos = DoubleVector.fromArray(S, position, at);
-        DoubleVector u0 = DoubleVector.fromArray(S, bu, at), v0 = DoubleVector.fromArray(S, bv, at);
-        // As the single ray's Hit: no hit yet is t = +infinity (and position -1).
-        DoubleVector hitT = bound.blend(Double.POSITIVE_INFINITY, pos.lt(0));
-        for (int r = from; r < end; r++) {
+        for (int r = from; r < end && live != 0; r++) {
             if (r - from < 64 && (skip & 1L << (r - from)) != 0) continue;
             int b = 9 * r;
-            // corner - origin: with a shared origin, one number for every lane, as each ray computes it.
-            DoubleVector az = shared ? DoubleVector.broadcast(S, c[b + kz] - oz) : DoubleVector.broadcast(S, c[b + kz]).sub(okz);
-            DoubleVector bz = shared ? DoubleVector.broadcast(S, c[b + 3 + kz] - oz) : DoubleVector.broadcast(S, c[b + 3 + kz]).sub(okz);
-            DoubleVector cz = shared ? DoubleVector.broadcast(S, c[b + 6 + kz] - oz) : DoubleVector.broadcast(S, c[b + 6 + kz]).sub(okz);
-            DoubleVector ax = (shared ? DoubleVector.broadcast(S, c[b + kx] - ox) : DoubleVector.broadcast(S, c[b + kx]).sub(okx)).sub(sx.mul(az));
-            DoubleVector ay = (shared ? DoubleVector.broadcast(S, c[b + ky] - oy) : DoubleVector.broadcast(S, c[b + ky]).sub(oky)).sub(sy.mul(az));
-            DoubleVector bx = (shared ? DoubleVector.broadcast(S, c[b + 3 + kx] - ox) : DoubleVector.broadcast(S, c[b + 3 + kx]).sub(okx)).sub(sx.mul(bz));
-            DoubleVector by = (shared ? DoubleVector.broadcast(S, c[b + 3 + ky] - oy) : DoubleVector.broadcast(S, c[b + 3 + ky]).sub(oky)).sub(sy.mul(bz));
-            DoubleVector cx = (shared ? DoubleVector.broadcast(S, c[b + 6 + kx] - ox) : DoubleVector.broadcast(S, c[b + 6 + kx]).sub(okx)).sub(sx.mul(cz));
-            DoubleVector cy = (shared ? DoubleVector.broadcast(S, c[b + 6 + ky] - oy) : DoubleVector.broadcast(S, c[b + 6 + ky]).sub(oky)).sub(sy.mul(cz));
+            DoubleVector az = DoubleVector.broadcast(S, c[b + kz]).sub(okz);
+            DoubleVector bz = DoubleVector.broadcast(S, c[b + 3 + kz]).sub(okz);
+            DoubleVector cz = DoubleVector.broadcast(S, c[b + 6 + kz]).sub(okz);
+            DoubleVector ax = DoubleVector.broadcast(S, c[b + kx]).sub(okx).sub(sx.mul(az));
+            DoubleVector ay = DoubleVector.broadcast(S, c[b + ky]).sub(oky).sub(sy.mul(az));
+            DoubleVector bx = DoubleVector.broadcast(S, c[b + 3 + kx]).sub(okx).sub(sx.mul(bz));
+            DoubleVector by = DoubleVector.broadcast(S, c[b + 3 + ky]).sub(oky).sub(sy.mul(bz));
+            DoubleVector cx = DoubleVector.broadcast(S, c[b + 6 + kx]).sub(okx).sub(sx.mul(cz));
+            DoubleVector cy = DoubleVector.broadcast(S, c[b + 6 + ky]).sub(oky).sub(sy.mul(cz));
             DoubleVector u = cx.mul(by).sub(cy.mul(bx)), v = ax.mul(cy).sub(ay.mul(cx)), w = bx.mul(ay).sub(by.mul(ax));
             VectorMask<Double> outside = u.lt(0).or(v.lt(0)).or(w.lt(0)).and(u.compare(VectorOperators.GT, 0)
                     .or(v.compare(VectorOperators.GT, 0)).or(w.compare(VectorOperators.GT, 0)));
-            VectorMask<Double> ok = live.andNot(outside);
-            if (!ok.anyTrue()) continue;
+            long in = live & ~outside.toLong();
+            if (in == 0) continue;
             DoubleVector det = u.add(v).add(w);
             DoubleVector t = u.mul(az).add(v.mul(bz)).add(w.mul(cz)).mul(sz).div(det);
-            ok = ok.and(det.compare(VectorOperators.NE, 0)).and(t.compare(VectorOperators.GE, tMin))
-                    .and(t.compare(VectorOperators.LE, bound))
+            // As the single ray's Hit: the end of the interval so far, and no hit yet as t = +infinity (position -1).
+            DoubleVector bound = DoubleVector.fromArray(S, best, at), pos = DoubleVector.fromArray(S, position, at);
+            DoubleVector hitT = bound.blend(Double.POSITIVE_INFINITY, pos.lt(0));
+            VectorMask<Double> ok = VectorMask.fromLong(S, in).and(det.compare(VectorOperators.NE, 0))
+                    .and(t.compare(VectorOperators.GE, tMin)).and(t.compare(VectorOperators.LE, bound))
                     .and(t.lt(hitT).or(t.eq(hitT).and(pos.compare(VectorOperators.GT, r))));
-            if (!ok.anyTrue()) continue;
-            bound = bound.blend(t, ok);
-            hitT = hitT.blend(t, ok);
-            pos = pos.blend(r, ok);
-            u0 = u0.blend(v.div(det), ok);
-            v0 = v0.blend(w.div(det), ok);
-            recorded = recorded.or(ok);
-            if (any) {
-                live = live.andNot(ok);
-                if (!live.anyTrue()) break;
-            }
+            long hits = ok.toLong();
+            if (hits == 0) continue;
+            t.intoArray(best, at, ok);
+            DoubleVector.broadcast(S, r).intoArray(position, at, ok);
+            v.div(det).intoArray(bu, at, ok);
+            w.div(det).intoArray(bv, at, ok);
+            recorded |= hits;
+            if (any) live &= ~hits;
         }
-        if (!recorded.anyTrue()) return 0;
-        bound.intoArray(best, at);
-        pos.intoArray(position, at);
-        u0.intoArray(bu, at);
-        v0.intoArray(bv, at);
-        DoubleVector next = any ? DoubleVector.broadcast(S, Double.NEGATIVE_INFINITY) : bound.add(bound.abs().mul(SLACK));
-        next.intoArray(limit, at, recorded);
-        return recorded.toLong();
+        if (recorded == 0) return 0;
+        for (long m = recorded; m != 0; m &= m - 1) {
+            int i = at + Long.numberOfTrailingZeros(m);
+            limit[i] = any ? Double.NEGATIVE_INFINITY : best[i] + Math.abs(best[i]) * SLACK;
+        }
+        return recorded;
     }
 
     /**
