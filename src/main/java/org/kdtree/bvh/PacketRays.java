@@ -71,14 +71,16 @@ final class PacketRays {
             // x - x == 0 exactly when x is finite.
             ok &= ix - ix == 0 & iy - iy == 0 & iz - iz == 0 & ix < 0 == xs & iy < 0 == ys & iz < 0 == zs
                     & t0 >= 0 & t0 <= p.tMax[i] & ox - ox == 0 & oy - oy == 0 & oz - oz == 0;
-            oxl = Math.min(oxl, ox); oxh = Math.max(oxh, ox);
-            oyl = Math.min(oyl, oy); oyh = Math.max(oyh, oy);
-            ozl = Math.min(ozl, oz); ozh = Math.max(ozh, oz);
-            ixl = Math.min(ixl, ix); ixh = Math.max(ixh, ix);
-            iyl = Math.min(iyl, iy); iyh = Math.max(iyh, iy);
-            izl = Math.min(izl, iz); izh = Math.max(izh, iz);
-            start[i] = WideTraversal.boxStart(t0);
-            sl = Math.min(sl, start[i]);
+            // Compares, not Math.min/max (whose NaN and -0 cases cost): a NaN makes the packet incoherent anyway.
+            oxl = ox < oxl ? ox : oxl; oxh = ox > oxh ? ox : oxh;
+            oyl = oy < oyl ? oy : oyl; oyh = oy > oyh ? oy : oyh;
+            ozl = oz < ozl ? oz : ozl; ozh = oz > ozh ? oz : ozh;
+            ixl = ix < ixl ? ix : ixl; ixh = ix > ixh ? ix : ixh;
+            iyl = iy < iyl ? iy : iyl; iyh = iy > iyh ? iy : iyh;
+            izl = iz < izl ? iz : izl; izh = iz > izh ? iz : izh;
+            double s0 = WideTraversal.boxStart(t0);
+            start[i] = s0;
+            sl = s0 < sl ? s0 : sl;
         }
         if (!ok) return false;
         bound(oxl, oxh, oyl, oyh, ozl, ozh, ixl, ixh, iyl, iyh, izl, izh, sl);

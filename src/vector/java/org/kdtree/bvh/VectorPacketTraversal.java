@@ -124,8 +124,8 @@ final class VectorPacketTraversal implements PacketQuery {
         while (true) {
             if (e >= 0) {
                 int l = STRIDE * e, r = l + RIGHT, link = l + LINKS;
-                long lm = q.packetEnters(nd, l, limitHi) ? entering(p, nd, l, mask) : 0;
-                long rm = q.packetEnters(nd, r, limitHi) ? entering(p, nd, r, mask) : 0;
+                long lm = q.packetEnters(nd, l, limitHi) ? enter(p, nd, l, mask, false) : 0;
+                long rm = q.packetEnters(nd, r, limitHi) ? enter(p, nd, r, mask, false) : 0;
                 if (lm != 0 && rm != 0) {
                     boolean rightFirst = entry(p, nd, r, Long.numberOfTrailingZeros(rm)) < entry(p, nd, l, Long.numberOfTrailingZeros(lm));
                     stackEntry[sp] = PacketTraversal.code(nd, rightFirst ? link : link + 2);
@@ -141,7 +141,7 @@ final class VectorPacketTraversal implements PacketQuery {
                 }
             } else {
                 int word = -1 - e;
-                long in = inBox(p, nd, PacketTraversal.boxOf(word), mask);
+                long in = enter(p, nd, PacketTraversal.boxOf(word), mask, true);
                 if (in != 0) {
                     long changed = leaf(p, nd, word, in, any);
                     if (any) {
@@ -184,16 +184,35 @@ final class VectorPacketTraversal implements PacketQuery {
     }
 
     /**
-     * The rays of {@code mask} that may enter the box at {@code b}: from the first group (of
-     * {@link #L} rays) with a ray that enters it to the last, each of those two groups' lanes
-     * tested ({@link #groupSlabs}), the groups between them kept whole, untested (Overbeck's ranged
-     * traversal, a group for a ray). A superset of the rays that enter, never fewer: a leaf tests
-     * its own box for each group before its triangles ({@link #inBox}).
+     * The rays of {@code mask} that may enter the box at {@code b}. For a node's child ({@code
+     * everyGroup} false): from the first group (of {@link #L} rays) with a ray that enters it to
+     * the last, each of those two groups' lanes tested ({@link #groupSlabs}), the groups between
+     * them kept whole, untested (Overbeck's ranged traversal, a group for a ray): a superset of
+     * the rays that enter, never fewer. For a leaf's box ({@code everyGroup}), before its
+     * triangles: every group's lanes tested.
      */
-    private long entering(RayPacket p, int[] nd, int b, long mask) {
-        setPlanes(p, nd, b);
-        int first = -1;
+    private long enter(RayPacket p, int[] nd, int b, long mask, boolean everyGroup) {
+        PacketRays q = rays;
+        pnx = Float.intBitsToFloat(nd[b + q.nx]);
+        pfx = Float.intBitsToFloat(nd[b + q.fx]);
+        pny = Float.intBitsToFloat(nd[b + q.ny]);
+        pfy = Float.intBitsToFloat(nd[b + q.fy]);
+        pnz = Float.intBitsToFloat(nd[b + q.nz]);
+        pfz = Float.intBitsToFloat(nd[b + q.fz]);
+        if (q.sharedOrigin) {
+            // plane - o: one number for every ray, the same a single ray computes.
+            double ox = p.ox[0], oy = p.oy[0], oz = p.oz[0];
+            pnx -= ox; pfx -= ox; pny -= oy; pfy -= oy; pnz -= oz; pfz -= oz;
+        }
         long out = 0;
+        if (everyGroup) {
+            for (int at = 0; at < N; at += L) {
+                long bits = (mask >>> at) & GROUP_BITS;
+                if (bits != 0) out |= (bits & groupSlabs(p, at)) << at;
+            }
+            return out;
+        }
+        int first = -1;
         for (int at = 0; at < N; at += L) {
             long bits = (mask >>> at) & GROUP_BITS;
             if (bits == 0) continue;
@@ -217,37 +236,11 @@ final class VectorPacketTraversal implements PacketQuery {
         return out;
     }
 
-    /** The lanes of each of {@code mask}'s groups whose ray enters the box at {@code b} (a leaf's, before its triangles). */
-    private long inBox(RayPacket p, int[] nd, int b, long mask) {
-        setPlanes(p, nd, b);
-        long out = 0;
-        for (int at = 0; at < N; at += L) {
-            long bits = (mask >>> at) & GROUP_BITS;
-            if (bits != 0) out |= (bits & groupSlabs(p, at)) << at;
-        }
-        return out;
-    }
-
-    /** The near and far planes of the box at {@code b}, per axis; less the origin when the rays share it. */
+    /** The near and far planes of the box {@link #enter} tests, per axis; less the origin when the rays share it. */
     private double pnx, pfx, pny, pfy, pnz, pfz;
 
-    private void setPlanes(RayPacket p, int[] nd, int b) {
-        PacketRays q = rays;
-        pnx = Float.intBitsToFloat(nd[b + q.nx]);
-        pfx = Float.intBitsToFloat(nd[b + q.fx]);
-        pny = Float.intBitsToFloat(nd[b + q.ny]);
-        pfy = Float.intBitsToFloat(nd[b + q.fy]);
-        pnz = Float.intBitsToFloat(nd[b + q.nz]);
-        pfz = Float.intBitsToFloat(nd[b + q.fz]);
-        if (q.sharedOrigin) {
-            // plane - o: one number for every ray, the same a single ray computes.
-            double ox = p.ox[0], oy = p.oy[0], oz = p.oz[0];
-            pnx -= ox; pfx -= ox; pny -= oy; pfy -= oy; pnz -= oz; pfz -= oz;
-        }
-    }
-
     /**
-     * The lanes of the group at {@code at} whose ray enters the box of {@link #setPlanes}: per
+     * The lanes of the group at {@code at} whose ray enters the box of {@link #enter}: per
      * lane, {@link PairTraversal}'s operations on its ray, {@code (plane - o) * inv}, their
      * maximum and minimum with the interval, and {@code t0 (1 - slack) <= t1 (1 + slack)}.
      */
@@ -270,7 +263,7 @@ final class VectorPacketTraversal implements PacketQuery {
         return t0.mul(SHRINK).compare(VectorOperators.LE, t1.mul(GROW)).toLong();
     }
 
-    /** Zeros: the origins a group's slab test reads when the rays share theirs ({@link #setPlanes}). */
+    /** Zeros: the origins a group's slab test reads when the rays share theirs ({@link #enter}). */
     private static final double[] ZEROS = new double[L];
 
     /** Ray {@code i}'s entry distance into the box at {@code b}, for ordering children. */
