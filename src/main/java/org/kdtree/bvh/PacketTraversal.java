@@ -30,8 +30,8 @@ import org.kdtree.geom.Tolerance;
  * ({@link TriangleIntersector#test}): each ray's hit is its single-ray hit, bit for bit.
  *
  * <p>Packets take one sign per axis for all their rays and no zero direction component, with
- * {@code tMin >= 0}; others (a tile across an axis of the camera) are traced one ray at a time by
- * the single-ray query. Allocation-free per packet; not thread safe: one per thread.
+ * {@code tMin >= 0}: a packet whose rays mix signs (a tile across an axis of the camera) goes as one
+ * packet per octant ({@link OctantSplit}); rays that fit no octant, one at a time by the single-ray query. Allocation-free per packet; not thread safe: one per thread.
  */
 final class PacketTraversal implements PacketQuery {
     private static final double SLACK = Tolerance.TRAVERSAL_SLACK;
@@ -53,6 +53,7 @@ final class PacketTraversal implements PacketQuery {
     private final PacketRays rays = new PacketRays();
     private final Hit hit = new Hit();
     private final Ray ray = new Ray(3);
+    private final OctantSplit split;
 
     PacketTraversal(Bvh bvh, RayQuery single) {
         this.single = single;
@@ -64,6 +65,7 @@ final class PacketTraversal implements PacketQuery {
         stackEntry = new int[depth];
         stackFirst = new int[depth];
         stackLast = new int[depth];
+        split = new OctantSplit(this::traceOctant, single);
     }
 
     @Override public boolean closestHit(Ray ray, double tMin, double tMax, Hit hit) {
@@ -75,15 +77,30 @@ final class PacketTraversal implements PacketQuery {
     }
 
     @Override public void closestHits(RayPacket p) {
-        if (p.size() == 0) return;
-        if (empty || !rays.load(p, false)) PacketQuery.oneByOne(single, p, ray, hit);
-        else trace(p, false);
+        traceAll(p, false);
     }
 
     @Override public void anyHits(RayPacket p) {
+        traceAll(p, true);
+    }
+
+    /** A packet as one, or (its rays' directions of several octants: a tile across an axis) as one packet per octant. */
+    private void traceAll(RayPacket p, boolean any) {
         if (p.size() == 0) return;
-        if (empty || !rays.load(p, true)) PacketQuery.anyOneByOne(single, p, ray);
-        else trace(p, true);
+        if (empty) oneByOne(p, any);
+        else if (rays.load(p, any)) trace(p, any);
+        else split.trace(p, any);
+    }
+
+    /** One octant's rays ({@link OctantSplit}): a packet if coherent, else one at a time. */
+    private void traceOctant(RayPacket p, boolean any) {
+        if (rays.load(p, any)) trace(p, any);
+        else oneByOne(p, any);
+    }
+
+    private void oneByOne(RayPacket p, boolean any) {
+        if (any) PacketQuery.anyOneByOne(single, p, ray);
+        else PacketQuery.oneByOne(single, p, ray, hit);
     }
 
     /**

@@ -36,9 +36,10 @@ import org.kdtree.geom.Tolerance;
  * PacketRays#sidedTriangles}).
  *
  * <p>Compiled for JDK 25 with {@code jdk.incubator.vector} (src/vector/java) and loaded only
- * through {@link VectorPath}. Packets that mix direction signs (or have a zero component or a
- * negative tMin), and small ones ({@link #SMALL}), are traced one ray at a time. Allocation-free per packet (the vectors are
- * scalar-replaced by C2); not thread safe: one per thread.
+ * through {@link VectorPath}. Packets that mix direction signs go as one packet per octant
+ * ({@link OctantSplit}); small ones ({@link #SMALL}), and rays with a zero direction component or
+ * a negative tMin, one ray at a time. Allocation-free per packet (the vectors are scalar-replaced
+ * by C2); not thread safe: one per thread.
  */
 final class VectorPacketTraversal implements PacketQuery {
     private static final VectorSpecies<Double> S = DoubleVector.SPECIES_PREFERRED;
@@ -74,6 +75,7 @@ final class VectorPacketTraversal implements PacketQuery {
     private final PacketRays rays = new PacketRays();
     private final Hit hit = new Hit();
     private final Ray ray = new Ray(3);
+    private final OctantSplit split;
 
     VectorPacketTraversal(Bvh bvh, RayQuery single) {
         if (N % L != 0 || L > 32) throw new IllegalStateException(L + " lanes do not divide a packet of " + N);
@@ -85,6 +87,7 @@ final class VectorPacketTraversal implements PacketQuery {
         int depth = bvh.maxDepth() + 2;
         stackEntry = new int[depth];
         stackMask = new long[depth];
+        split = new OctantSplit(this::traceOctant, single);
     }
 
     @Override public boolean closestHit(Ray ray, double tMin, double tMax, Hit hit) {
@@ -96,15 +99,30 @@ final class VectorPacketTraversal implements PacketQuery {
     }
 
     @Override public void closestHits(RayPacket p) {
-        if (p.size() == 0) return;
-        if (empty || p.size() <= SMALL || !rays.load(p, false)) PacketQuery.oneByOne(single, p, ray, hit);
-        else trace(p, false);
+        traceAll(p, false);
     }
 
     @Override public void anyHits(RayPacket p) {
+        traceAll(p, true);
+    }
+
+    /** A packet as one, or (its rays' directions of several octants: a tile across an axis) as one packet per octant. */
+    private void traceAll(RayPacket p, boolean any) {
         if (p.size() == 0) return;
-        if (empty || p.size() <= SMALL || !rays.load(p, true)) PacketQuery.anyOneByOne(single, p, ray);
-        else trace(p, true);
+        if (empty || p.size() <= SMALL) oneByOne(p, any);
+        else if (rays.load(p, any)) trace(p, any);
+        else split.trace(p, any);
+    }
+
+    /** One octant's rays ({@link OctantSplit}): a packet if enough and coherent, else one at a time. */
+    private void traceOctant(RayPacket p, boolean any) {
+        if (p.size() <= SMALL || !rays.load(p, any)) oneByOne(p, any);
+        else trace(p, any);
+    }
+
+    private void oneByOne(RayPacket p, boolean any) {
+        if (any) PacketQuery.anyOneByOne(single, p, ray);
+        else PacketQuery.oneByOne(single, p, ray, hit);
     }
 
     private void trace(RayPacket p, boolean any) {
