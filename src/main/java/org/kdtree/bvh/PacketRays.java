@@ -197,6 +197,20 @@ final class PacketRays {
         return t0 * SHRINK <= t1 * GROW;
     }
 
+    /**
+     * {@return ray {@code i}'s entry distance into the box at {@code b} of {@code nd}}, for ordering
+     * a node's children
+     * @param p  the packet
+     * @param nd the records of {@link PairNodes}
+     * @param b  where the child's box starts
+     * @param i  a ray's index
+     */
+    double entry(RayPacket p, int[] nd, int b, int i) {
+        double t0 = (Float.intBitsToFloat(nd[b + nx]) - p.ox[i]) * p.ix[i];
+        t0 = Math.max(t0, (Float.intBitsToFloat(nd[b + ny]) - p.oy[i]) * p.iy[i]);
+        return Math.max(t0, (Float.intBitsToFloat(nd[b + nz]) - p.oz[i]) * p.iz[i]);
+    }
+
     /** The least {@code (plane - o) * i} over the packet's ranges (a product's extremes are at its corners). */
     private static double low(double plane, double oLo, double oHi, double iLo, double iHi) {
         double dLo = plane - oHi, dHi = plane - oLo;

@@ -1,11 +1,9 @@
 package org.kdtree.bvh;
 
 import org.kdtree.accel.Hit;
-import org.kdtree.accel.PacketQuery;
 import org.kdtree.accel.RayPacket;
 import org.kdtree.accel.RayQuery;
 import org.kdtree.accel.TriangleIntersector;
-import org.kdtree.geom.Ray;
 import org.kdtree.geom.Tolerance;
 
 /**
@@ -33,74 +31,24 @@ import org.kdtree.geom.Tolerance;
  * {@code tMin >= 0}: a packet whose rays mix signs (a tile across an axis of the camera) goes as one
  * packet per octant ({@link OctantSplit}); rays that fit no octant, one at a time by the single-ray query. Allocation-free per packet; not thread safe: one per thread.
  */
-final class PacketTraversal implements PacketQuery {
+final class PacketTraversal extends PacketLoop {
     private static final double SLACK = Tolerance.TRAVERSAL_SLACK;
     private static final double SHRINK = 1 - SLACK, GROW = 1 + SLACK;
     private static final int STRIDE = PairNodes.STRIDE, RIGHT = PairNodes.RIGHT, LINKS = PairNodes.LINKS;
     private static final int N = RayPacket.CAPACITY;
 
-    /** Single rays, and the packets this loop leaves out. */
-    private final RayQuery single;
-    private final int[] words, prim;
-    private final double[] corners;
-    private final boolean empty;
     /** Saved children (as {@link PairTraversal}'s entries) with the range of rays that enter them. */
     private final int[] stackEntry, stackFirst, stackLast;
     /** Per ray: the closest hit so far (t, leaf position, barycentrics), and its slack-widened t. */
     private final double[] best = new double[N], limit = new double[N], bu = new double[N], bv = new double[N];
     private final int[] position = new int[N];
-    /** The packet's shear, planes and bounds. */
-    private final PacketRays rays = new PacketRays();
-    private final Hit hit = new Hit();
-    private final Ray ray = new Ray(3);
-    private final OctantSplit split;
 
     PacketTraversal(Bvh bvh, RayQuery single) {
-        this.single = single;
-        words = bvh.pairs().words;
-        prim = bvh.primitiveArray();
-        corners = bvh.leafCorners();
-        empty = bvh.primitiveCount() == 0;
+        super(bvh, single, 0);
         int depth = bvh.maxDepth() + 2;
         stackEntry = new int[depth];
         stackFirst = new int[depth];
         stackLast = new int[depth];
-        split = new OctantSplit(this::traceOctant, single);
-    }
-
-    @Override public boolean closestHit(Ray ray, double tMin, double tMax, Hit hit) {
-        return single.closestHit(ray, tMin, tMax, hit);
-    }
-
-    @Override public boolean anyHit(Ray ray, double tMin, double tMax) {
-        return single.anyHit(ray, tMin, tMax);
-    }
-
-    @Override public void closestHits(RayPacket p) {
-        traceAll(p, false);
-    }
-
-    @Override public void anyHits(RayPacket p) {
-        traceAll(p, true);
-    }
-
-    /** A packet as one, or (its rays' directions of several octants: a tile across an axis) as one packet per octant. */
-    private void traceAll(RayPacket p, boolean any) {
-        if (p.size() == 0) return;
-        if (empty) oneByOne(p, any);
-        else if (rays.load(p, any)) trace(p, any);
-        else split.trace(p, any);
-    }
-
-    /** One octant's rays ({@link OctantSplit}): a packet if coherent, else one at a time. */
-    private void traceOctant(RayPacket p, boolean any) {
-        if (rays.load(p, any)) trace(p, any);
-        else oneByOne(p, any);
-    }
-
-    private void oneByOne(RayPacket p, boolean any) {
-        if (any) PacketQuery.anyOneByOne(single, p, ray);
-        else PacketQuery.oneByOne(single, p, ray, hit);
     }
 
     /**
@@ -108,7 +56,7 @@ final class PacketTraversal implements PacketQuery {
      * anything. An any-hit ray leaves the packet at its first hit (its limit set below every box's
      * entry), as a single ray stops, and the packet stops when no ray is left.
      */
-    private void trace(RayPacket p, boolean any) {
+    @Override void trace(RayPacket p, boolean any) {
         int n = p.size(), active = n;
         PacketRays q = rays;
         for (int i = 0; i < n; i++) {
@@ -136,7 +84,7 @@ final class PacketTraversal implements PacketQuery {
                 }
                 if (lFirst >= 0 && rFirst >= 0) {
                     // Both: the near one (for its first ray) next, the other saved with its range.
-                    boolean rightFirst = entry(p, nd, r, nx, ny, nz, rFirst) < entry(p, nd, l, nx, ny, nz, lFirst);
+                    boolean rightFirst = rays.entry(p, nd, r, rFirst) < rays.entry(p, nd, l, lFirst);
                     int near = rightFirst ? link + 2 : link, far = rightFirst ? link : link + 2;
                     stackEntry[sp] = code(nd, far);
                     stackFirst[sp] = rightFirst ? lFirst : rFirst;
@@ -211,13 +159,6 @@ final class PacketTraversal implements PacketQuery {
         t0 = Math.max(t0, rays.start[i]);
         t1 = Math.min(t1, limit[i]);
         return t0 * SHRINK <= t1 * GROW;
-    }
-
-    /** Ray {@code i}'s entry distance into the box at {@code b}, for ordering children. */
-    private double entry(RayPacket p, int[] nd, int b, int nx, int ny, int nz, int i) {
-        double t0 = (Float.intBitsToFloat(nd[b + nx]) - p.ox[i]) * p.ix[i];
-        t0 = Math.max(t0, (Float.intBitsToFloat(nd[b + ny]) - p.oy[i]) * p.iy[i]);
-        return Math.max(t0, (Float.intBitsToFloat(nd[b + nz]) - p.oz[i]) * p.iz[i]);
     }
 
     /** The first ray of {@code [first, last)} that enters the box at {@code b}, or -1. */

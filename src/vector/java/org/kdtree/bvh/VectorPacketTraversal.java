@@ -5,11 +5,9 @@ import jdk.incubator.vector.VectorMask;
 import jdk.incubator.vector.VectorOperators;
 import jdk.incubator.vector.VectorSpecies;
 import org.kdtree.accel.Hit;
-import org.kdtree.accel.PacketQuery;
 import org.kdtree.accel.RayPacket;
 import org.kdtree.accel.RayQuery;
 import org.kdtree.accel.TriangleIntersector;
-import org.kdtree.geom.Ray;
 import org.kdtree.geom.Tolerance;
 
 /**
@@ -41,7 +39,7 @@ import org.kdtree.geom.Tolerance;
  * a negative tMin, one ray at a time. Allocation-free per packet (the vectors are scalar-replaced
  * by C2); not thread safe: one per thread.
  */
-final class VectorPacketTraversal implements PacketQuery {
+final class VectorPacketTraversal extends PacketLoop {
     private static final VectorSpecies<Double> S = DoubleVector.SPECIES_PREFERRED;
     /** Rays per vector, and the bits of one group in a packet's mask. */
     private static final int L = S.length();
@@ -57,11 +55,6 @@ final class VectorPacketTraversal implements PacketQuery {
     private static final double SHRINK = 1 - SLACK, GROW = 1 + SLACK;
     private static final int STRIDE = PairNodes.STRIDE, RIGHT = PairNodes.RIGHT, LINKS = PairNodes.LINKS;
 
-    /** Single rays, and the packets this loop leaves out. */
-    private final RayQuery single;
-    private final int[] words, prim;
-    private final double[] corners;
-    private final boolean empty;
     /** Saved children (as {@link PacketTraversal#code}) with the mask of rays that enter them. */
     private final int[] stackEntry;
     private final long[] stackMask;
@@ -72,60 +65,16 @@ final class VectorPacketTraversal implements PacketQuery {
      */
     private final double[] best = new double[N], limit = new double[N], position = new double[N],
             bu = new double[N], bv = new double[N];
-    private final PacketRays rays = new PacketRays();
-    private final Hit hit = new Hit();
-    private final Ray ray = new Ray(3);
-    private final OctantSplit split;
 
     VectorPacketTraversal(Bvh bvh, RayQuery single) {
+        super(bvh, single, SMALL);
         if (N % L != 0 || L > 32) throw new IllegalStateException(L + " lanes do not divide a packet of " + N);
-        this.single = single;
-        words = bvh.pairs().words;
-        prim = bvh.primitiveArray();
-        corners = bvh.leafCorners();
-        empty = bvh.primitiveCount() == 0;
         int depth = bvh.maxDepth() + 2;
         stackEntry = new int[depth];
         stackMask = new long[depth];
-        split = new OctantSplit(this::traceOctant, single);
     }
 
-    @Override public boolean closestHit(Ray ray, double tMin, double tMax, Hit hit) {
-        return single.closestHit(ray, tMin, tMax, hit);
-    }
-
-    @Override public boolean anyHit(Ray ray, double tMin, double tMax) {
-        return single.anyHit(ray, tMin, tMax);
-    }
-
-    @Override public void closestHits(RayPacket p) {
-        traceAll(p, false);
-    }
-
-    @Override public void anyHits(RayPacket p) {
-        traceAll(p, true);
-    }
-
-    /** A packet as one, or (its rays' directions of several octants: a tile across an axis) as one packet per octant. */
-    private void traceAll(RayPacket p, boolean any) {
-        if (p.size() == 0) return;
-        if (empty || p.size() <= SMALL) oneByOne(p, any);
-        else if (rays.load(p, any)) trace(p, any);
-        else split.trace(p, any);
-    }
-
-    /** One octant's rays ({@link OctantSplit}): a packet if enough and coherent, else one at a time. */
-    private void traceOctant(RayPacket p, boolean any) {
-        if (p.size() <= SMALL || !rays.load(p, any)) oneByOne(p, any);
-        else trace(p, any);
-    }
-
-    private void oneByOne(RayPacket p, boolean any) {
-        if (any) PacketQuery.anyOneByOne(single, p, ray);
-        else PacketQuery.oneByOne(single, p, ray, hit);
-    }
-
-    private void trace(RayPacket p, boolean any) {
+    @Override void trace(RayPacket p, boolean any) {
         int n = p.size();
         PacketRays q = rays;
         for (int i = 0; i < n; i++) {
@@ -145,7 +94,7 @@ final class VectorPacketTraversal implements PacketQuery {
                 long lm = q.packetEnters(nd, l, limitHi) ? enter(p, nd, l, mask, false) : 0;
                 long rm = q.packetEnters(nd, r, limitHi) ? enter(p, nd, r, mask, false) : 0;
                 if (lm != 0 && rm != 0) {
-                    boolean rightFirst = entry(p, nd, r, Long.numberOfTrailingZeros(rm)) < entry(p, nd, l, Long.numberOfTrailingZeros(lm));
+                    boolean rightFirst = rays.entry(p, nd, r, Long.numberOfTrailingZeros(rm)) < rays.entry(p, nd, l, Long.numberOfTrailingZeros(lm));
                     stackEntry[sp] = PacketTraversal.code(nd, rightFirst ? link : link + 2);
                     stackMask[sp++] = rightFirst ? lm : rm;
                     e = PacketTraversal.code(nd, rightFirst ? link + 2 : link);
@@ -283,14 +232,6 @@ final class VectorPacketTraversal implements PacketQuery {
 
     /** Zeros: the origins a group's slab test reads when the rays share theirs ({@link #enter}). */
     private static final double[] ZEROS = new double[L];
-
-    /** Ray {@code i}'s entry distance into the box at {@code b}, for ordering children. */
-    private double entry(RayPacket p, int[] nd, int b, int i) {
-        PacketRays q = rays;
-        double t0 = (Float.intBitsToFloat(nd[b + q.nx]) - p.ox[i]) * p.ix[i];
-        t0 = Math.max(t0, (Float.intBitsToFloat(nd[b + q.ny]) - p.oy[i]) * p.iy[i]);
-        return Math.max(t0, (Float.intBitsToFloat(nd[b + q.nz]) - p.oz[i]) * p.iz[i]);
-    }
 
     /**
      * The rays of {@code mask} (which enter the leaf's box) test the triangles of the leaf whose
