@@ -133,12 +133,10 @@ public final class RayBatch implements AutoCloseable {
             for (int x0 = 0; x0 < w; x0 += TILE) {
                 int x1 = Math.min(w, x0 + TILE);
                 packet.clear();
-                int n = 0;
-                for (int m = 0; m < TILE * TILE; m++) {
-                    int x = x0 + RayPacket.tileX(m), y = y0 + RayPacket.tileY(m);
-                    if (x >= x1 || y >= y1) continue;
-                    int o = 6 * (y * w + x);
-                    pixel[n++] = y * w + x;
+                int n = RayPacket.tileOrder(x1 - x0, y1 - y0, w, pixel), corner = y0 * w + x0;
+                for (int j = 0; j < n; j++) {
+                    pixel[j] += corner;
+                    int o = 6 * pixel[j];
                     packet.add(r[o], r[o + 1], r[o + 2], r[o + 3], r[o + 4], r[o + 5], T_MIN, Double.POSITIVE_INFINITY);
                 }
                 pq.closestHits(packet);

@@ -215,19 +215,8 @@ final class Tracer {
         final boolean[] lit = new boolean[SIZE], reflects = new boolean[SIZE], refracts = new boolean[SIZE];
         private final double[] light = new double[3];
 
-        /** The block's pixels (row by row indices) in the order its packets take them: Morton order in a tile of 8 x 8 or less. */
+        /** The block's pixels (row by row indices) in the order its packets take them ({@link RayPacket#tileOrder}). */
         final int[] order = new int[SIZE];
-
-        /** Sets {@link #order} for a block {@code w} pixels wide and {@code h} high. */
-        void order(int w, int h) {
-            int n = 0;
-            if (w <= RayPacket.TILE && h <= RayPacket.TILE) {
-                for (int m = 0; m < RayPacket.TILE * RayPacket.TILE; m++)
-                    if (RayPacket.tileX(m) < w && RayPacket.tileY(m) < h) order[n++] = RayPacket.tileY(m) * w + RayPacket.tileX(m);
-            } else {
-                for (int i = 0; i < w * h; i++) order[n++] = i;
-            }
-        }
 
         Block(PacketQuery query, int slots) {
             this.query = query;
@@ -386,7 +375,7 @@ final class Tracer {
         java.util.Arrays.fill(k.sum, 0, 3 * pixels, 0);
         RayPacket p = k.packet;
         int w = x1 - x0, h = y1 - y0;
-        k.order(w, h);
+        RayPacket.tileOrder(w, h, w, k.order);
         for (int si = 0; si < n; si++) {
             p.clear();
             for (int j = 0; j < pixels; j++) {
