@@ -90,6 +90,35 @@ public final class RayPacket {
     }
 
     /**
+     * {@return the octant of direction (dx, dy, dz)}: bits 0, 1 and 2 set where x, y and z are
+     * negative; -1 when a component's inverse is not finite (zero, subnormal, NaN), a direction the
+     * packet loops, which need one sign per axis, leave to single rays. Rays gathered by octant fill
+     * packets the loops trace whole.
+     *
+     * @param dx direction x
+     * @param dy direction y
+     * @param dz direction z
+     */
+    public static int octant(double dx, double dy, double dz) {
+        return octantOfInverse(1.0 / dx, 1.0 / dy, 1.0 / dz);
+    }
+
+    /**
+     * {@return ray {@code i}'s octant of directions}, as {@link #octant(double, double, double)}
+     * gives it from its stored inverse direction
+     *
+     * @param i a ray's index
+     */
+    public int octant(int i) {
+        return octantOfInverse(ix[i], iy[i], iz[i]);
+    }
+
+    private static int octantOfInverse(double ix, double iy, double iz) {
+        if (ix - ix != 0 || iy - iy != 0 || iz - iz != 0) return -1;
+        return (ix < 0 ? 1 : 0) | (iy < 0 ? 2 : 0) | (iz < 0 ? 4 : 0);
+    }
+
+    /**
      * {@return whether ray {@code i} hit}
      *
      * @param i a ray's index

@@ -42,7 +42,7 @@ final class OctantSplit {
         for (int octant = 0; octant < 8; octant++) {
             RayPacket q = part.clear();
             for (int i = 0; i < n; i++) {
-                if ((done >>> i & 1) != 0 || octant(p, i) != octant) continue;
+                if ((done >>> i & 1) != 0 || p.octant(i) != octant) continue;
                 index[q.add(p.ox[i], p.oy[i], p.oz[i], p.dx[i], p.dy[i], p.dz[i], p.tMin[i], p.tMax[i])] = i;
                 done |= 1L << i;
             }
@@ -65,12 +65,5 @@ final class OctantSplit {
                 p.record(i, hit);
             }
         }
-    }
-
-    /** Ray {@code i}'s octant of directions (the signs of its inverse direction), or -1 if a component is zero or not finite. */
-    private static int octant(RayPacket p, int i) {
-        double ix = p.ix[i], iy = p.iy[i], iz = p.iz[i];
-        if (ix - ix != 0 || iy - iy != 0 || iz - iz != 0) return -1;
-        return (ix < 0 ? 1 : 0) | (iy < 0 ? 2 : 0) | (iz < 0 ? 4 : 0);
     }
 }

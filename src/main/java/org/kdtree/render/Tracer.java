@@ -30,10 +30,10 @@ import org.kdtree.scene.Vec3;
  * <p>Every random number comes from a stream of its own ({@link PixelSampler}: the pixel, the
  * camera sample, the point of the ray tree), so the order rays are traced in changes nothing. With
  * a query that traces packets ({@link PacketQuery}: the BVH) the renderer hands the tracer 8 x 8
- * blocks of pixels ({@link #block}): per camera sample the block's camera rays go as one packet,
- * the shadow rays of all its hits as packets of the same light's samples, and every other hit's
- * shadow rays (behind a mirror or glass) as a packet per point; each pixel gets, bit for bit, the
- * colour {@link #pixel} gives it one ray at a time.
+ * blocks of pixels ({@link #block}): per camera sample the block's ray trees are traced breadth
+ * first ({@link RayTree}), each level's rays (the camera rays, then their reflections and
+ * refractions, and so on) as packets, then the shadow rays of every hit of every level as
+ * packets; each pixel gets, bit for bit, the colour {@link #pixel} gives it one ray at a time.
  *
  * <p>Secondary rays start at the hit point (computed from the barycentrics, so it lies on the
  * triangle to rounding of the vertices' size) moved along the geometric normal by
@@ -65,195 +65,77 @@ final class Tracer {
     private final Bounce[] bounces;
     /** Per light, its first shadow-ray slot in a {@link Block} (an area light has one per sample, others one); the total last. */
     private final int[] slotOf;
-    /** The most shadow rays per shaded point the packet path keeps (more: each traced alone, on the per-pixel path). */
+    /** The most shadow rays per shaded point the packet path keeps (more: the per-pixel path, each traced alone). */
     private static final int MAX_SLOTS = 1024;
     /** The packet path's state, when the query traces packets ({@link #tracesPackets}); else null. */
     private final Block block;
-    /** With packets, the shadow rays of one shaded point outside a block's camera hits (a reflection's, a refraction's, the per-pixel path's), traced together; else null. */
-    private final Shadows point;
     /** The pixel of the block whose rays are being counted ({@link Block#rays}), or -1 on the per-pixel path. */
     private int blockPixel = -1;
     /** Scratch of the direct light at one hit: never live across a recursive trace. */
+    /** The direction of the ray whose hit the packet path shades. */
+    private final double[] dir;
     private final double[] cameraDir = new double[3], toEye = new double[3], sum = new double[3], term = new double[3],
             l = new double[3], q = new double[3], power = new double[3], o = new double[3], toEnd = new double[3],
             mirrored = new double[3];
 
     /**
-     * Shadow rays put aside, each with the light it would let through, per slot (a light's sample:
-     * an area light has one per sample, other lights one) and shaded point, then traced as
-     * packets ({@link PacketQuery#anyHits}) and the light summed in the slots' order, as {@link
-     * Tracer#direct} sums it ray by ray. Arrays made once: nothing is allocated per point.
-     */
-    private static final class Shadows {
-        /** A slot's state for a point: no light; light without a shadow ray; light behind a shadow ray. */
-        static final byte NONE = 0, LIGHT = 1, SHADOWED = 2;
-        /** Octants of directions, and one more for rays with a zero (or subnormal) component, which packets leave out. */
-        private static final int OCTANTS = 9;
-
-        private final PacketQuery query;
-        private final int slots, points;
-        /** Per slot and point ({@code slot * points + point}): state, light (3 each), shadow ray, and whether it is blocked. */
-        private final byte[] state;
-        private final double[] light, ox, oy, oz, dx, dy, dz, tMax;
-        private final boolean[] blocked;
-        /** Per octant of directions, the shadow rays gathered, and the slot and point of each. */
-        private final RayPacket[] packets = new RayPacket[OCTANTS];
-        private final int[][] entry = new int[OCTANTS][RayPacket.CAPACITY];
-
-        Shadows(PacketQuery query, int slots, int points) {
-            this.query = query;
-            this.slots = slots;
-            this.points = points;
-            int n = slots * points;
-            state = new byte[n];
-            light = new double[3 * n];
-            ox = new double[n];
-            oy = new double[n];
-            oz = new double[n];
-            dx = new double[n];
-            dy = new double[n];
-            dz = new double[n];
-            tMax = new double[n];
-            blocked = new boolean[n];
-            for (int o = 0; o < OCTANTS; o++) packets[o] = new RayPacket();
-        }
-
-        /** Forgets what point {@code i} kept. */
-        void clear(int i) {
-            for (int e = i, end = slots * points; e < end; e += points) state[e] = NONE;
-        }
-
-        /** Keeps the shadow ray {@code o + t d}, {@code 0 <= t <= tMax}, of point {@code i}'s light sample {@code slot}. */
-        void keepShadow(int slot, int i, double[] o, double[] d, double tMax) {
-            int e = slot * points + i;
-            ox[e] = o[0];
-            oy[e] = o[1];
-            oz[e] = o[2];
-            dx[e] = d[0];
-            dy[e] = d[1];
-            dz[e] = d[2];
-            this.tMax[e] = tMax;
-        }
-
-        /** Keeps the light (r, g, b) of point {@code i}'s light sample {@code slot}, behind its shadow ray if {@code shadowed}. */
-        void keepLight(int slot, int i, double r, double g, double b, boolean shadowed) {
-            int e = slot * points + i;
-            state[e] = shadowed ? SHADOWED : LIGHT;
-            light[3 * e] = r;
-            light[3 * e + 1] = g;
-            light[3 * e + 2] = b;
-        }
-
-        /** The one point of a reflection's or refraction's hit ({@link #trace(int[], int)}). */
-        private static final int[] ONE = {0};
-
-        /**
-         * Traces the shadow rays kept for the points {@code order[0 .. n)} as packets: point by
-         * point, each ray goes into the packet of its octant of directions, traced when full and at
-         * the end. A packet so holds the rays of one point or a few neighbouring ones (in a block's
-         * Morton order, a 2 x 2 patch), a point's rays toward the lights together: rays from one
-         * origin share the boxes around it.
-         */
-        void trace(int[] order, int n) {
-            for (int j = 0; j < n; j++)
-                for (int e = order[j], end = slots * points; e < end; e += points) {
-                    if (state[e] != SHADOWED) continue;
-                    double x = dx[e], y = dy[e], z = dz[e];
-                    int o = Double.isFinite(1 / x) && Double.isFinite(1 / y) && Double.isFinite(1 / z)
-                            ? (x < 0 ? 1 : 0) | (y < 0 ? 2 : 0) | (z < 0 ? 4 : 0) : OCTANTS - 1;
-                    RayPacket p = packets[o];
-                    entry[o][p.add(ox[e], oy[e], oz[e], x, y, z, 0, tMax[e])] = e;
-                    if (p.size() == RayPacket.CAPACITY) trace(p, entry[o]);
-                }
-            for (int o = 0; o < OCTANTS; o++) if (packets[o].size() > 0) trace(packets[o], entry[o]);
-        }
-
-        /** Traces packet {@code p}, records which of its rays are blocked, and empties it. */
-        private void trace(RayPacket p, int[] at) {
-            query.anyHits(p);
-            for (int r = 0, n = p.size(); r < n; r++) blocked[at[r]] = p.found(r);
-            p.clear();
-        }
-
-        /** Writes to {@code sum} the light reaching point {@code i}, summed from 0 in the slots' order over the samples not blocked. */
-        void sum(int i, double[] sum) {
-            double s0 = 0, s1 = 0, s2 = 0;
-            for (int e = i, end = slots * points; e < end; e += points) {
-                byte st = state[e];
-                if (st == LIGHT || st == SHADOWED && !blocked[e]) {
-                    s0 = s0 + light[3 * e];
-                    s1 = s1 + light[3 * e + 1];
-                    s2 = s2 + light[3 * e + 2];
-                }
-            }
-            sum[0] = s0;
-            sum[1] = s1;
-            sum[2] = s2;
-        }
-    }
-
-    /**
      * The packet path's state for one block of at most {@link #SIZE} pixels ({@link Tracer#block}):
-     * the camera packet, each pixel's shading put aside (its own light, the reflection's and
-     * refraction's weights and colours) and its direct light kept with its shadow rays ({@link
-     * Shadows}). Arrays made once per tracer: nothing is allocated per block.
+     * each camera sample's ray trees, breadth first ({@link RayTree}), their rays traced level by
+     * level as packets, their direct light kept with its shadow rays ({@link Shadows}), and each
+     * pixel's sum and rays. Arrays made once per tracer, grown to the largest trees a block has
+     * needed: nothing is allocated per block.
      */
     private static final class Block {
         /** The most pixels a block holds: one packet of camera rays. */
         static final int SIZE = RayPacket.CAPACITY;
 
-        final PacketQuery query;
-        final RayPacket packet = new RayPacket();
+        final RayTree tree = new RayTree();
         final Shadows shadows;
+        /** A level's rays gathered into packets, each ray's closest hit recorded as its node's. */
+        final OctantPackets level;
         /** The camera samples per pixel of the last block. */
         int samples;
         /** Per kind of ray, per pixel: the rays cast for it. */
         final int[][] rays = new int[RayKind.values().length][SIZE];
-        /** Per pixel (3 each): the sum of its samples' colours; a sample's emitted and ambient light; the reflection's and refraction's weights and colours. */
-        final double[] sum = new double[3 * SIZE], base = new double[3 * SIZE], kr = new double[3 * SIZE], cr = new double[3 * SIZE],
-                kt = new double[3 * SIZE], ct = new double[3 * SIZE];
-        final boolean[] lit = new boolean[SIZE], reflects = new boolean[SIZE], refracts = new boolean[SIZE];
-        private final double[] light = new double[3];
+        /** Per pixel (3 each): the sum of its samples' colours. */
+        final double[] sum = new double[3 * SIZE];
 
         /** The block's pixels (row by row indices) in the order its packets take them ({@link RayPacket#tileOrder}). */
         final int[] order = new int[SIZE];
 
         Block(PacketQuery query, int slots) {
-            this.query = query;
-            shadows = new Shadows(query, slots, SIZE);
+            shadows = new Shadows(query, slots);
+            level = new OctantPackets(query, false, (p, at) -> {
+                for (int r = 0, n = p.size(); r < n; r++) tree.record(at[r], p, r);
+            });
         }
 
-        /** Keeps pixel {@code i}'s reflection (or refraction) weight {@code k} and colour {@code c}. */
-        void keep(int i, boolean reflection, double[] k, double[] c) {
-            System.arraycopy(k, 0, reflection ? kr : kt, 3 * i, 3);
-            System.arraycopy(c, 0, reflection ? cr : ct, 3 * i, 3);
-            if (reflection) reflects[i] = true;
-            else refracts[i] = true;
+        /** Adds a ray to the tree, with room for its direct light; returns its node. */
+        int add(int pixel, long point, double weight, double[] o, double[] d) {
+            int n = tree.add(pixel, point, weight, o, d);
+            shadows.ensure(n + 1);
+            return n;
         }
 
-        /** Adds to pixel {@code i}'s sum the colour of its sample just traced (its shadow rays traced), summed in {@link Tracer#shade}'s order. */
-        void addColour(int i) {
-            int b = 3 * i;
-            double c0 = base[b], c1 = base[b + 1], c2 = base[b + 2];
-            if (lit[i]) {
-                shadows.sum(i, light);
-                c0 = c0 + light[0];
-                c1 = c1 + light[1];
-                c2 = c2 + light[2];
+        /** Traces the rays of nodes {@code from .. to - 1} as packets, recording each closest hit. */
+        void trace(int from, int to) {
+            RayTree r = tree;
+            for (int n = from; n < to; n++)
+                level.add(r.ox[n], r.oy[n], r.oz[n], r.dx[n], r.dy[n], r.dz[n], Double.POSITIVE_INFINITY, n);
+            level.flush();
+        }
+
+        /** Traces the shadow rays, sums every node's colour and adds each camera ray's to its pixel's sum. */
+        void finish() {
+            RayTree r = tree;
+            shadows.trace(0, r.size());
+            r.colour(shadows);
+            for (int n = 0; n < r.size() && r.point[n] == 1; n++) {
+                int b = 3 * r.pixel[n], c = 3 * n;
+                sum[b] = sum[b] + r.colour[c];
+                sum[b + 1] = sum[b + 1] + r.colour[c + 1];
+                sum[b + 2] = sum[b + 2] + r.colour[c + 2];
             }
-            if (reflects[i]) {
-                c0 = c0 + kr[b] * cr[b];
-                c1 = c1 + kr[b + 1] * cr[b + 1];
-                c2 = c2 + kr[b + 2] * cr[b + 2];
-            }
-            if (refracts[i]) {
-                c0 = c0 + kt[b] * ct[b];
-                c1 = c1 + kt[b + 1] * ct[b + 1];
-                c2 = c2 + kt[b + 2] * ct[b + 2];
-            }
-            sum[b] = sum[b] + c0;
-            sum[b + 1] = sum[b + 1] + c1;
-            sum[b + 2] = sum[b + 2] + c2;
         }
     }
 
@@ -304,7 +186,7 @@ final class Tracer {
         for (int li = 0; li < n; li++) slotOf[li + 1] = slotOf[li] + (lights.get(li) instanceof Light.Area ? plan.lightSamples(li) : 1);
         boolean packets = query instanceof PacketQuery && slotOf[n] <= MAX_SLOTS;
         block = packets ? new Block((PacketQuery) query, slotOf[n]) : null;
-        point = packets ? new Shadows((PacketQuery) query, slotOf[n], 1) : null;
+        dir = new double[3];
     }
 
     /** {@return the rays this tracer has cast so far} */
@@ -346,7 +228,7 @@ final class Tracer {
     /**
      * {@return whether this tracer renders blocks of pixels with their rays in packets ({@link
      * #block}, {@link #blockColour})}: when the query traces packets ({@link PacketQuery}) and the
-     * lights take at most {@link Block#MAX_SLOTS} shadow rays per shaded point. The image is the
+     * lights take at most {@link #MAX_SLOTS} shadow rays per shaded point. The image is the
      * same either way, bit for bit.
      */
     public boolean tracesPackets() {
@@ -356,11 +238,11 @@ final class Tracer {
     /**
      * Traces the pixels {@code [x0, x1) x [y0, y1)} (at most {@link RayPacket#CAPACITY}, row by
      * row) together, the colour of each the colour {@link #pixel} gives it: for each camera sample
-     * index, the block's camera rays go as one packet; each hit is shaded with its direct light
-     * put aside per light sample, its reflection and refraction rays traced one at a time as
-     * {@link #pixel} does; then the shadow rays of all the block's hits toward the same light
-     * sample go as packets (one per octant of directions), and each pixel's colour is summed in
-     * {@link #pixel}'s order. {@link #blockColour} and {@link #blockRays} read the results. Only
+     * index, the block's ray trees breadth first. The camera rays go as packets (one per octant
+     * of directions); each hit is shaded with its direct light put aside per light sample and its
+     * reflection and refraction rays added to the next level; each level's rays go as packets in
+     * turn; then the shadow rays of all the levels' hits go as packets, and each pixel's colour is
+     * summed, children before parents, in {@link #pixel}'s order. {@link #blockColour} and {@link #blockRays} read the results. Only
      * when {@link #tracesPackets}.
      *
      * @param x0 the block's first column
@@ -370,39 +252,24 @@ final class Tracer {
      */
     public void block(int x0, int y0, int x1, int y1) {
         Block k = block;
-        int n = scene.samplesPerPixel(), pixels = (x1 - x0) * (y1 - y0);
+        int n = scene.samplesPerPixel(), pixels = (x1 - x0) * (y1 - y0), w = x1 - x0;
         for (int[] r : k.rays) java.util.Arrays.fill(r, 0, pixels, 0);
         java.util.Arrays.fill(k.sum, 0, 3 * pixels, 0);
-        RayPacket p = k.packet;
-        int w = x1 - x0, h = y1 - y0;
-        RayPacket.tileOrder(w, h, w, k.order);
+        RayPacket.tileOrder(w, y1 - y0, w, k.order);
         for (int si = 0; si < n; si++) {
-            p.clear();
+            k.tree.clear();
             for (int j = 0; j < pixels; j++) {
                 int i = k.order[j];
                 cameraDirection(x0 + i % w, y0 + i / w, si, n);
-                p.add(eye[0], eye[1], eye[2], cameraDir[0], cameraDir[1], cameraDir[2], 0, Double.POSITIVE_INFINITY);
+                k.add(i, 1, 1, eye, cameraDir);
             }
-            k.query.closestHits(p);
-            for (int j = 0; j < pixels; j++) {
-                int i = k.order[j];
-                px = x0 + i % w;
-                py = y0 + i / w;
-                ps = si;
-                blockPixel = i;
-                count(RayKind.CAMERA);
-                cameraDir[0] = p.dx[j];
-                cameraDir[1] = p.dy[j];
-                cameraDir[2] = p.dz[j];
-                hit.primitive = p.primitive[j];
-                hit.t = p.t[j];
-                hit.u = p.u[j];
-                hit.v = p.v[j];
-                shadeAside(i, p.found(j), cameraDir);
+            for (int from = 0, to; from < k.tree.size(); from = to) {      // level by level: each level's rays as packets, then its hits shaded
+                to = k.tree.size();
+                k.trace(from, to);
+                for (int node = from; node < to; node++) shadeNode(node, x0, y0, w, si);
             }
             blockPixel = -1;
-            k.shadows.trace(k.order, pixels);
-            for (int i = 0; i < pixels; i++) k.addColour(i);
+            k.finish();
         }
         k.samples = n;
     }
@@ -465,31 +332,47 @@ final class Tracer {
     }
 
     /**
-     * {@link #shade} of a camera ray's hit on the packet path, for the block's pixel {@code i}:
-     * the same values, but the direct light put aside per light sample with its shadow ray, and
-     * the reflection and refraction colours kept, for {@link Block#addColour} to sum in {@link
-     * #shade}'s order once the shadow rays are traced.
+     * {@link #shade} of node {@code node}'s hit on the packet path, for pixel {@code i % w, i / w}
+     * of the block at {@code (x0, y0)}, camera sample {@code si}: the same values, but the direct
+     * light put aside per light sample with its shadow ray, and the reflection and refraction rays
+     * added to the tree, for {@link RayTree#colour} to sum in {@link #shade}'s order once they
+     * and the shadow rays are traced.
      */
-    private void shadeAside(int i, boolean found, double[] dir) {
-        Block k = block;
-        k.lit[i] = k.reflects[i] = k.refracts[i] = false;
-        k.shadows.clear(i);          // nothing kept from the pixel before it at this place, nor from its last sample
-        if (!found) {
-            System.arraycopy(background, 0, k.base, 3 * i, 3);
+    private void shadeNode(int node, int x0, int y0, int w, int si) {
+        RayTree r = block.tree;
+        int i = r.pixel[node];
+        px = x0 + i % w;
+        py = y0 + i / w;
+        ps = si;
+        blockPixel = i;
+        count(r.kind(node));
+        block.shadows.clear(node);          // nothing kept from the block before it at this place
+        hit.primitive = r.primitive[node];
+        hit.t = r.t[node];
+        hit.u = r.u[node];
+        hit.v = r.v[node];
+        dir[0] = r.dx[node];
+        dir[1] = r.dy[node];
+        dir[2] = r.dz[node];
+        int b = 3 * node;
+        if (hit.primitive < 0) {
+            System.arraycopy(background, 0, r.base, b, 3);
             return;
         }
         Bounce s = bounces[0];
         surface(s, dir);
         Material m = materials.get(s.material);
         Vec3 e = m.emission(), a = scene.ambient(), kd = m.diffuse();
-        k.base[3 * i] = e.x() + a.x() * kd.x();
-        k.base[3 * i + 1] = e.y() + a.y() * kd.y();
-        k.base[3 * i + 2] = e.z() + a.z() * kd.z();
+        r.base[b] = e.x() + a.x() * kd.x();
+        r.base[b + 1] = e.y() + a.y() * kd.y();
+        r.base[b + 2] = e.z() + a.z() * kd.z();
+        long point = r.point[node];
         if (plan.lit(s.material)) {
-            k.lit[i] = true;
-            direct(m, s, dir, 1, i);
+            r.lit[node] = true;
+            direct(m, s, dir, point, node);
         }
-        if (0 < plan.maxDepth()) secondary(s, m, dir, 0, 1, 1, i);
+        int depth = r.depth(node);
+        if (depth < plan.maxDepth()) secondary(s, m, dir, depth, r.weight[node], point, node);
     }
 
     /** What shading needs of the current hit; both normals face the incoming ray. */
@@ -508,8 +391,8 @@ final class Tracer {
 
     /**
      * Adds to the bounce's colour the reflection and refraction rays the plan allows and the path's
-     * weight justifies; for {@code aside} a block's pixel ({@link #shadeAside}), keeps their
-     * colours and weights in the block instead.
+     * weight justifies; for {@code aside} a node of the block's ray tree ({@link #shadeNode}),
+     * adds them to the tree as its children instead, with their weights.
      */
     private void secondary(Bounce s, Material m, double[] dir, int depth, double weight, long node, int aside) {
         // near silhouettes an interpolated normal can face away from the ray: use the facet's there
@@ -532,17 +415,24 @@ final class Tracer {
             reflect(dir, n, s.reflected);
             if (dot(s.reflected, s.ng) <= 0) reflect(dir, s.ng, s.reflected);   // the interpolated normal bent it under the facet
             leave(s.p, s.ng, s.reflected, s.scale, s.origin);
-            double[] c = trace(s.origin, s.reflected, depth + 1, wr, RayKind.REFLECTION, 2 * node);
-            if (aside < 0) add(s.color, s.kr, c);
-            else block.keep(aside, true, s.kr, c);
+            if (aside < 0) add(s.color, s.kr, trace(s.origin, s.reflected, depth + 1, wr, RayKind.REFLECTION, 2 * node));
+            else addChild(aside, true, 2 * node, wr, s);
         }
         double wt = weight * max(s.kt);
         if (refracted && wt >= EffectPlan.NEGLIGIBLE_WEIGHT) {
             leave(s.p, s.ng, s.refracted, s.scale, s.origin);
-            double[] c = trace(s.origin, s.refracted, depth + 1, wt, RayKind.REFRACTION, 2 * node + 1);
-            if (aside < 0) add(s.color, s.kt, c);
-            else block.keep(aside, false, s.kt, c);
+            if (aside < 0) add(s.color, s.kt, trace(s.origin, s.refracted, depth + 1, wt, RayKind.REFRACTION, 2 * node + 1));
+            else addChild(aside, false, 2 * node + 1, wt, s);
         }
+    }
+
+    /** Adds to the block's tree node {@code parent}'s reflection (or refraction) ray, the one {@link #secondary} set up, and keeps its weight. */
+    private void addChild(int parent, boolean reflection, long point, double weight, Bounce s) {
+        RayTree r = block.tree;
+        int child = block.add(r.pixel[parent], point, weight, s.origin, reflection ? s.reflected : s.refracted);
+        if (reflection) r.reflection[parent] = child;            // read after add: it may have grown the arrays
+        else r.refraction[parent] = child;
+        System.arraycopy(reflection ? s.kr : s.kt, 0, reflection ? r.kr : r.kt, 3 * parent, 3);
     }
 
     /** color += k * c, component by component. */
@@ -553,8 +443,8 @@ final class Tracer {
     /**
      * Diffuse and Phong light from every light into {@link #sum}, with the shadow rays the plan asks
      * for; the area lights' samples drawn from the stream of the ray tree's {@code node}. For
-     * {@code aside} a block's pixel, each light sample's light and shadow ray are put aside in
-     * the block instead ({@link Block#keepLight}).
+     * {@code aside} a node of the block's ray tree, each light sample's light and shadow ray are
+     * put aside in the block instead ({@link Shadows#keepLight}).
      */
     private void direct(Material m, Bounce s, double[] dir, long node, int aside) {
         for (int i = 0; i < 3; i++) {
@@ -562,10 +452,9 @@ final class Tracer {
             sum[i] = 0;
         }
         sampler.start(px, py, ps, node);
-        // Where the light samples and shadow rays are kept: the block's pixel, this point's packets, or nowhere (traced at once).
-        Shadows keep = aside >= 0 ? block.shadows : point;
-        int at = aside >= 0 ? aside : 0;
-        if (keep == point && keep != null) point.clear(0);
+        // Where the light samples and shadow rays are kept: the block's node, or nowhere (traced at once).
+        Shadows keep = aside >= 0 ? block.shadows : null;
+        int at = aside;
         for (int li = 0; li < lights.size(); li++) {
             Light light = lights.get(li);
             boolean shadows = plan.shadowRays(li);
@@ -593,10 +482,6 @@ final class Tracer {
                 fromArea(m, s, a, li, shadows, keep, at);
             }
         }
-        if (keep == point && keep != null) {     // this point's shadow rays, as packets; the light summed as it would be ray by ray
-            point.trace(Shadows.ONE, 1);
-            point.sum(0, sum);
-        }
     }
 
     /** The light of area light {@code li}, sampled at the plan's number of points over its square. */
@@ -622,8 +507,8 @@ final class Tracer {
 
     /**
      * Adds to {@link #sum} the light of {@code power} at point {@code at}, falling off with the
-     * squared distance; for {@code aside} a block's pixel, puts it and its shadow ray aside in
-     * the block's {@code slot} instead.
+     * squared distance; when {@code keep} is not null, puts it and its shadow ray aside there
+     * as point {@code at}'s {@code slot} instead.
      */
     private void fromPoint(Material m, Bounce s, double[] to, double[] power, boolean shadows, Shadows keep, int at, int slot) {
         for (int k = 0; k < 3; k++) l[k] = to[k] - s.p[k];
