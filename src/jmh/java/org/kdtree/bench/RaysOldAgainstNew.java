@@ -16,8 +16,9 @@ import java.util.function.Supplier;
  * alternating and the order swapping every round, thread CPU time measured, one thread.
  *
  * <pre>
- * java -cp target/benchmarks.jar org.kdtree.bench.RaysOldAgainstNew OLD.jar NEW.jar MESH.obj RUNS P|R OLD_BUILDER NEW_BUILDER
+ * java [-Dgrid=4] -cp target/benchmarks.jar org.kdtree.bench.RaysOldAgainstNew OLD.jar NEW.jar MESH.obj RUNS P|R OLD_BUILDER NEW_BUILDER
  * </pre>
+ * With {@code -Dgrid=N} both trace the mesh repeated in an N x N grid ({@code raycast --grid N}).
  * A BUILDER is {@code sah} (the exact kd-tree), {@code bvh} or {@code bvh:W} (the BVH traced
  * {@code W} wide). Prints each side's median and quartile in Mrays/s, the checksums, and new/old
  * (above 1: the new traces faster).
@@ -38,6 +39,8 @@ public final class RaysOldAgainstNew {
             ClassLoader cl = new URLClassLoader(new URL[] {Path.of(args[i]).toUri().toURL()}, ClassLoader.getPlatformClassLoader());
             Object mesh = cl.loadClass("org.kdtree.io.PrimitivesReader").getMethod("read", Path.class).invoke(null, Path.of(args[2]));
             Class<?> meshClass = cl.loadClass("org.kdtree.shape.TriangleMesh");
+            int grid = Integer.getInteger("grid", 1);          // -Dgrid=4: the SPEC's scaling scene, as raycast --grid 4
+            if (grid > 1) mesh = cl.loadClass("org.kdtree.generate.MeshGrid").getMethod("grid", meshClass, int.class).invoke(null, mesh, grid);
             Object structure = structure(cl, args[5 + i], mesh);
             // Before the mesh was bound at build time, a query took the triangles' intersector.
             Class<?> as = cl.loadClass("org.kdtree.accel.AccelerationStructure");
