@@ -20,8 +20,10 @@ final class RayTree {
     /** Per node: the block's pixel, the ray tree's point, and its reflection's and refraction's nodes (-1: none). */
     int[] pixel = new int[0], reflection = pixel, refraction = pixel;
     long[] point = new long[0];
-    /** Per node: the path's weight; its ray's origin and direction. */
-    double[] weight = new double[0], ox = weight, oy = weight, oz = weight, dx = weight, dy = weight, dz = weight;
+    /** Per node: the path's weight. */
+    double[] weight = new double[0];
+    /** Per node: its ray. */
+    final RayColumns ray = new RayColumns();
     /** Per node: its ray's closest hit ({@link RayPacket}'s fields). */
     int[] primitive = pixel;
     double[] t = weight, u = weight, v = weight;
@@ -49,12 +51,7 @@ final class RayTree {
         this.pixel[n] = pixel;
         this.point[n] = point;
         this.weight[n] = weight;
-        ox[n] = o[0];
-        oy[n] = o[1];
-        oz[n] = o[2];
-        dx[n] = d[0];
-        dy[n] = d[1];
-        dz[n] = d[2];
+        ray.set(n, o, d);
         reflection[n] = refraction[n] = -1;
         lit[n] = false;
         return n;
@@ -118,12 +115,7 @@ final class RayTree {
         point = Arrays.copyOf(point, n);
         lit = Arrays.copyOf(lit, n);
         weight = Arrays.copyOf(weight, n);
-        ox = Arrays.copyOf(ox, n);
-        oy = Arrays.copyOf(oy, n);
-        oz = Arrays.copyOf(oz, n);
-        dx = Arrays.copyOf(dx, n);
-        dy = Arrays.copyOf(dy, n);
-        dz = Arrays.copyOf(dz, n);
+        ray.grow(n);
         t = Arrays.copyOf(t, n);
         u = Arrays.copyOf(u, n);
         v = Arrays.copyOf(v, n);

@@ -17,7 +17,8 @@ final class Shadows {
     private final int slots;
     /** Per point and slot ({@code point * slots + slot}): state, light (3 each), shadow ray, and whether it is blocked. */
     private byte[] state = new byte[0];
-    private double[] light = new double[0], ox = light, oy = light, oz = light, dx = light, dy = light, dz = light, tMax = light;
+    private double[] light = new double[0], tMax = light;
+    private final RayColumns ray = new RayColumns();
     private boolean[] blocked = new boolean[0];
     private final OctantPackets packets;
 
@@ -35,12 +36,7 @@ final class Shadows {
         n = Math.max(n, 2 * state.length);
         state = Arrays.copyOf(state, n);
         light = Arrays.copyOf(light, 3 * n);
-        ox = Arrays.copyOf(ox, n);
-        oy = Arrays.copyOf(oy, n);
-        oz = Arrays.copyOf(oz, n);
-        dx = Arrays.copyOf(dx, n);
-        dy = Arrays.copyOf(dy, n);
-        dz = Arrays.copyOf(dz, n);
+        ray.grow(n);
         tMax = Arrays.copyOf(tMax, n);
         blocked = Arrays.copyOf(blocked, n);
     }
@@ -53,12 +49,7 @@ final class Shadows {
     /** Keeps the shadow ray {@code o + t d}, {@code 0 <= t <= tMax}, of point {@code i}'s light sample {@code slot}. */
     void keepShadow(int slot, int i, double[] o, double[] d, double tMax) {
         int e = i * slots + slot;
-        ox[e] = o[0];
-        oy[e] = o[1];
-        oz[e] = o[2];
-        dx[e] = d[0];
-        dy[e] = d[1];
-        dz[e] = d[2];
+        ray.set(e, o, d);
         this.tMax[e] = tMax;
     }
 
@@ -78,8 +69,9 @@ final class Shadows {
      * lights together: rays from one origin share the boxes around it.
      */
     void trace(int from, int to) {
+        RayColumns r = ray;
         for (int e = from * slots, end = to * slots; e < end; e++)
-            if (state[e] == SHADOWED) packets.add(ox[e], oy[e], oz[e], dx[e], dy[e], dz[e], tMax[e], e);
+            if (state[e] == SHADOWED) packets.add(r.ox[e], r.oy[e], r.oz[e], r.dx[e], r.dy[e], r.dz[e], tMax[e], e);
         packets.flush();
     }
 

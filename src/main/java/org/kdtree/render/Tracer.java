@@ -119,7 +119,7 @@ final class Tracer {
 
         /** Traces the rays of nodes {@code from .. to - 1} as packets, recording each closest hit. */
         void trace(int from, int to) {
-            RayTree r = tree;
+            RayColumns r = tree.ray;
             for (int n = from; n < to; n++)
                 level.add(r.ox[n], r.oy[n], r.oz[n], r.dx[n], r.dy[n], r.dz[n], Double.POSITIVE_INFINITY, n);
             level.flush();
@@ -351,9 +351,9 @@ final class Tracer {
         hit.t = r.t[node];
         hit.u = r.u[node];
         hit.v = r.v[node];
-        dir[0] = r.dx[node];
-        dir[1] = r.dy[node];
-        dir[2] = r.dz[node];
+        dir[0] = r.ray.dx[node];
+        dir[1] = r.ray.dy[node];
+        dir[2] = r.ray.dz[node];
         int b = 3 * node;
         if (hit.primitive < 0) {
             System.arraycopy(background, 0, r.base, b, 3);
