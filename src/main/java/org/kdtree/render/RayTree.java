@@ -30,6 +30,8 @@ final class RayTree {
     /** Per node (3 each): emitted plus ambient light (or the background), the reflection's and refraction's weights, the colour. */
     double[] base = weight, kr = weight, kt = weight, colour = weight;
     boolean[] lit = new boolean[0];
+    /** Per node: its colour is known already (traced depth first, past the block's budget): not traced nor shaded with its level. */
+    boolean[] finished = lit;
     private final double[] light = new double[3];
 
     /** {@return how many nodes it holds} */
@@ -53,8 +55,14 @@ final class RayTree {
         this.weight[n] = weight;
         ray.set(n, o, d);
         reflection[n] = refraction[n] = -1;
-        lit[n] = false;
+        lit[n] = finished[n] = false;
         return n;
+    }
+
+    /** Makes node {@code n} finished, its colour {@code c} (its subtree traced depth first). */
+    void finish(int n, double[] c) {
+        finished[n] = true;
+        System.arraycopy(c, 0, base, 3 * n, 3);
     }
 
     /** {@return node {@code n}'s depth in its ray tree: 0 for a camera ray} */
@@ -114,6 +122,7 @@ final class RayTree {
         primitive = Arrays.copyOf(primitive, n);
         point = Arrays.copyOf(point, n);
         lit = Arrays.copyOf(lit, n);
+        finished = Arrays.copyOf(finished, n);
         weight = Arrays.copyOf(weight, n);
         ray.grow(n);
         t = Arrays.copyOf(t, n);

@@ -103,17 +103,22 @@ final class Tracer {
         /** The block's pixels (row by row indices) in the order its packets take them ({@link RayPacket#tileOrder}). */
         final int[] order = new int[SIZE];
 
-        Block(PacketQuery query, int slots) {
+        /** The most nodes its ray trees keep ({@link #SHADOW_BUDGET}); past them, rays are traced depth first. */
+        final int maxNodes;
+
+        Block(PacketQuery query, int slots, int maxNodes) {
+            this.maxNodes = maxNodes;
             shadows = new Shadows(query, slots);
             level = new OctantPackets(query, false, (p, at) -> {
                 for (int r = 0, n = p.size(); r < n; r++) tree.record(at[r], p, r);
             });
         }
 
-        /** Adds a ray to the tree, with room for its direct light; returns its node. */
+        /** Adds a ray to the tree, with room for its direct light (nothing kept yet); returns its node. */
         int add(int pixel, long point, double weight, double[] o, double[] d) {
             int n = tree.add(pixel, point, weight, o, d);
             shadows.ensure(n + 1);
+            shadows.clear(n);
             return n;
         }
 
@@ -121,7 +126,7 @@ final class Tracer {
         void trace(int from, int to) {
             RayColumns r = tree.ray;
             for (int n = from; n < to; n++)
-                level.add(r.ox[n], r.oy[n], r.oz[n], r.dx[n], r.dy[n], r.dz[n], Double.POSITIVE_INFINITY, n);
+                if (!tree.finished[n]) level.add(r.ox[n], r.oy[n], r.oz[n], r.dx[n], r.dy[n], r.dz[n], Double.POSITIVE_INFINITY, n);
             level.flush();
         }
 
@@ -157,6 +162,20 @@ final class Tracer {
      * @param query this thread's ray queries against the tree
      */
     public Tracer(Scene scene, EffectPlan plan, RayQuery query) {
+        this(scene, plan, query, SHADOW_BUDGET);
+    }
+
+    /**
+     * The most light samples a block keeps aside at once (nodes of its ray trees times shadow
+     * slots per node: about 90 bytes each): past {@code shadowBudget / slots} nodes, a tree's
+     * further reflection and refraction rays are traced depth first where they arise, as
+     * {@link #pixel} traces them, so that deep trees of glass and mirrors under many light
+     * samples stay within a few megabytes.
+     */
+    static final int SHADOW_BUDGET = 1 << 16;
+
+    /** {@link #Tracer(Scene, EffectPlan, RayQuery)} with the block's budget of light samples kept aside (tests make it small). */
+    Tracer(Scene scene, EffectPlan plan, RayQuery query, int shadowBudget) {
         this.scene = scene;
         this.plan = plan;
         this.query = query;
@@ -185,7 +204,7 @@ final class Tracer {
         slotOf = new int[n + 1];
         for (int li = 0; li < n; li++) slotOf[li + 1] = slotOf[li] + (lights.get(li) instanceof Light.Area ? plan.lightSamples(li) : 1);
         boolean packets = query instanceof PacketQuery && slotOf[n] <= MAX_SLOTS;
-        block = packets ? new Block((PacketQuery) query, slotOf[n]) : null;
+        block = packets ? new Block((PacketQuery) query, slotOf[n], Math.max(Block.SIZE, shadowBudget / Math.max(1, slotOf[n]))) : null;
         dir = new double[3];
     }
 
@@ -266,7 +285,7 @@ final class Tracer {
             for (int from = 0, to; from < k.tree.size(); from = to) {      // level by level: each level's rays as packets, then its hits shaded
                 to = k.tree.size();
                 k.trace(from, to);
-                for (int node = from; node < to; node++) shadeNode(node, x0, y0, w, si);
+                for (int node = from; node < to; node++) if (!k.tree.finished[node]) shadeNode(node, x0, y0, w, si);
             }
             blockPixel = -1;
             k.finish();
@@ -346,7 +365,6 @@ final class Tracer {
         ps = si;
         blockPixel = i;
         count(r.kind(node));
-        block.shadows.clear(node);          // nothing kept from the block before it at this place
         hit.primitive = r.primitive[node];
         hit.t = r.t[node];
         hit.u = r.u[node];
@@ -416,20 +434,32 @@ final class Tracer {
             if (dot(s.reflected, s.ng) <= 0) reflect(dir, s.ng, s.reflected);   // the interpolated normal bent it under the facet
             leave(s.p, s.ng, s.reflected, s.scale, s.origin);
             if (aside < 0) add(s.color, s.kr, trace(s.origin, s.reflected, depth + 1, wr, RayKind.REFLECTION, 2 * node));
-            else addChild(aside, true, 2 * node, wr, s);
+            else addChild(aside, true, depth, 2 * node, wr, s);
         }
         double wt = weight * max(s.kt);
         if (refracted && wt >= EffectPlan.NEGLIGIBLE_WEIGHT) {
             leave(s.p, s.ng, s.refracted, s.scale, s.origin);
             if (aside < 0) add(s.color, s.kt, trace(s.origin, s.refracted, depth + 1, wt, RayKind.REFRACTION, 2 * node + 1));
-            else addChild(aside, false, 2 * node + 1, wt, s);
+            else addChild(aside, false, depth, 2 * node + 1, wt, s);
         }
     }
 
-    /** Adds to the block's tree node {@code parent}'s reflection (or refraction) ray, the one {@link #secondary} set up, and keeps its weight. */
-    private void addChild(int parent, boolean reflection, long point, double weight, Bounce s) {
+    /**
+     * Adds to the block's tree node {@code parent}'s reflection (or refraction) ray, the one
+     * {@link #secondary} set up at {@code depth}, and keeps its weight: to be traced with the next
+     * level, or, past the block's node budget, traced now, depth first, and kept as a finished node.
+     */
+    private void addChild(int parent, boolean reflection, int depth, long point, double weight, Bounce s) {
         RayTree r = block.tree;
-        int child = block.add(r.pixel[parent], point, weight, s.origin, reflection ? s.reflected : s.refracted);
+        double[] dir = reflection ? s.reflected : s.refracted;
+        int child;
+        if (r.size() < block.maxNodes) {
+            child = block.add(r.pixel[parent], point, weight, s.origin, dir);
+        } else {
+            double[] c = trace(s.origin, dir, depth + 1, weight, reflection ? RayKind.REFLECTION : RayKind.REFRACTION, point);
+            child = block.add(r.pixel[parent], point, weight, s.origin, dir);
+            r.finish(child, c);
+        }
         if (reflection) r.reflection[parent] = child;            // read after add: it may have grown the arrays
         else r.refraction[parent] = child;
         System.arraycopy(reflection ? s.kr : s.kt, 0, reflection ? r.kr : r.kt, 3 * parent, 3);

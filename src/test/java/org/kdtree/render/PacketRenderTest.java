@@ -40,6 +40,40 @@ class PacketRenderTest {
             }
     }
 
+    /**
+     * Past a block's budget of light samples kept aside, reflection and refraction rays are traced
+     * depth first where they arise (deep trees of glass under many light samples stay small): the
+     * pixels and their ray counts stay those of one ray at a time, with every secondary ray past
+     * the budget (the camera rays' trees alone) and with the budget crossed mid-level.
+     */
+    @Test void pastTheBudgetRaysGoDepthFirstWithTheSameColours() throws Exception {
+        for (String file : new String[] {"cornell-box.json", "sphereflake.json"}) {
+            Scene s = TestRenders.scene(file, 24, 16, 2);
+            AccelerationStructure bvh = new BvhBuilder().build(s.mesh());
+            EffectPlan plan = new EffectPlan(s);
+            Tracer single = new Tracer(s, plan, alone(bvh.query()));
+            double[] want = new double[3], got = new double[3];
+            for (int budget : new int[] {1, 66 * 16, 72 * 16}) {
+                Tracer packets = new Tracer(s, plan, bvh.query(), budget);
+                assertThat(packets.tracesPackets()).isTrue();
+                for (int by = 0; by < 16; by += 8)
+                    for (int bx = 0; bx < 24; bx += 8) {
+                        packets.block(bx, by, bx + 8, by + 8);
+                        for (int i = 0; i < 64; i++) {
+                            long before = single.counts().total();
+                            single.pixel(bx + i % 8, by + i / 8, want);
+                            packets.blockColour(i, got);
+                            String what = file + ", budget " + budget + ", pixel " + (bx + i % 8) + ", " + (by + i / 8);
+                            assertThat(got).as(what).containsExactly(want);
+                            int rays = 0;
+                            for (RayKind k : RayKind.values()) rays += packets.blockRays(k, i);
+                            assertThat((long) rays).as(what).isEqualTo(single.counts().total() - before);
+                        }
+                    }
+            }
+        }
+    }
+
     /** The same query, without its packets. */
     private static RayQuery alone(RayQuery q) {
         return new RayQuery() {
