@@ -71,9 +71,9 @@ final class Tracer {
     private final Block block;
     /** The pixel of the block whose rays are being counted ({@link Block#rays}), or -1 on the per-pixel path. */
     private int blockPixel = -1;
-    /** Scratch of the direct light at one hit: never live across a recursive trace. */
     /** The direction of the ray whose hit the packet path shades. */
-    private final double[] dir;
+    private final double[] dir = new double[3];
+    /** Scratch of the direct light at one hit: never live across a recursive trace. */
     private final double[] cameraDir = new double[3], toEye = new double[3], sum = new double[3], term = new double[3],
             l = new double[3], q = new double[3], power = new double[3], o = new double[3], toEnd = new double[3],
             mirrored = new double[3];
@@ -205,7 +205,6 @@ final class Tracer {
         for (int li = 0; li < n; li++) slotOf[li + 1] = slotOf[li] + (lights.get(li) instanceof Light.Area ? plan.lightSamples(li) : 1);
         boolean packets = query instanceof PacketQuery && slotOf[n] <= MAX_SLOTS;
         block = packets ? new Block((PacketQuery) query, slotOf[n], Math.max(Block.SIZE, shadowBudget / Math.max(1, slotOf[n]))) : null;
-        dir = new double[3];
     }
 
     /** {@return the rays this tracer has cast so far} */
