@@ -131,7 +131,7 @@ final class Tracer {
         }
 
         /** Traces the shadow rays, sums every node's colour and adds each camera ray's to its pixel's sum. */
-        void finish() {
+        void sumColours() {
             RayTree r = tree;
             shadows.trace(0, r.size());
             r.colour(shadows);
@@ -287,7 +287,7 @@ final class Tracer {
                 for (int node = from; node < to; node++) if (!k.tree.finished[node]) shadeNode(node, x0, y0, w, si);
             }
             blockPixel = -1;
-            k.finish();
+            k.sumColours();
         }
         k.samples = n;
     }
@@ -335,12 +335,7 @@ final class Tracer {
             System.arraycopy(background, 0, s.color, 0, 3);
             return s.color;
         }
-        surface(s, dir);
-        Material m = materials.get(s.material);
-        Vec3 e = m.emission(), a = scene.ambient(), kd = m.diffuse();
-        s.color[0] = e.x() + a.x() * kd.x();
-        s.color[1] = e.y() + a.y() * kd.y();
-        s.color[2] = e.z() + a.z() * kd.z();
+        Material m = surface(s, dir, s.color, 0);
         if (plan.lit(s.material)) {
             direct(m, s, dir, node, -1);
             for (int i = 0; i < 3; i++) s.color[i] = s.color[i] + sum[i];
@@ -377,12 +372,7 @@ final class Tracer {
             return;
         }
         Bounce s = bounces[0];
-        surface(s, dir);
-        Material m = materials.get(s.material);
-        Vec3 e = m.emission(), a = scene.ambient(), kd = m.diffuse();
-        r.base[b] = e.x() + a.x() * kd.x();
-        r.base[b + 1] = e.y() + a.y() * kd.y();
-        r.base[b + 2] = e.z() + a.z() * kd.z();
+        Material m = surface(s, dir, r.base, b);
         long point = r.point[node];
         if (plan.lit(s.material)) {
             r.lit[node] = true;
@@ -392,8 +382,11 @@ final class Tracer {
         if (depth < plan.maxDepth()) secondary(s, m, dir, depth, r.weight[node], point, node);
     }
 
-    /** What shading needs of the current hit; both normals face the incoming ray. */
-    private void surface(Bounce s, double[] dir) {
+    /**
+     * What shading needs of the current hit, both normals facing the incoming ray; writes its
+     * emitted plus ambient light to {@code out[at .. at + 2]} and returns its material.
+     */
+    private Material surface(Bounce s, double[] dir, double[] out, int at) {
         int tri = hit.primitive;
         geometry.point(tri, hit.u, hit.v, s.p);
         geometry.geometricNormal(tri, s.ng);
@@ -404,6 +397,12 @@ final class Tracer {
         if (dot(s.ns, s.ng) < 0) negate(s.ns);
         s.material = geometry.materialOf(tri);
         s.scale = Math.max(maxAbs(s.p), triangleMagnitude(tri));
+        Material m = materials.get(s.material);
+        Vec3 e = m.emission(), a = scene.ambient(), kd = m.diffuse();
+        out[at] = e.x() + a.x() * kd.x();
+        out[at + 1] = e.y() + a.y() * kd.y();
+        out[at + 2] = e.z() + a.z() * kd.z();
+        return m;
     }
 
     /**
@@ -451,14 +450,10 @@ final class Tracer {
     private void addChild(int parent, boolean reflection, int depth, long point, double weight, Bounce s) {
         RayTree r = block.tree;
         double[] dir = reflection ? s.reflected : s.refracted;
-        int child;
-        if (r.size() < block.maxNodes) {
-            child = block.add(r.pixel[parent], point, weight, s.origin, dir);
-        } else {
-            double[] c = trace(s.origin, dir, depth + 1, weight, reflection ? RayKind.REFLECTION : RayKind.REFRACTION, point);
-            child = block.add(r.pixel[parent], point, weight, s.origin, dir);
-            r.finish(child, c);
-        }
+        boolean now = r.size() >= block.maxNodes;
+        double[] c = now ? trace(s.origin, dir, depth + 1, weight, reflection ? RayKind.REFLECTION : RayKind.REFRACTION, point) : null;
+        int child = block.add(r.pixel[parent], point, weight, s.origin, dir);
+        if (now) r.finish(child, c);
         if (reflection) r.reflection[parent] = child;            // read after add: it may have grown the arrays
         else r.refraction[parent] = child;
         System.arraycopy(reflection ? s.kr : s.kt, 0, reflection ? r.kr : r.kt, 3 * parent, 3);
@@ -483,7 +478,6 @@ final class Tracer {
         sampler.start(px, py, ps, node);
         // Where the light samples and shadow rays are kept: the block's node, or nowhere (traced at once).
         Shadows keep = aside >= 0 ? block.shadows : null;
-        int at = aside;
         for (int li = 0; li < lights.size(); li++) {
             Light light = lights.get(li);
             boolean shadows = plan.shadowRays(li);
@@ -492,12 +486,12 @@ final class Tracer {
                 if (keep != null && dot(toward, s.ng) > 0) {
                     if (shadows) {
                         leave(s.p, s.ng, toward, s.scale, o);
-                        keep.keepShadow(slotOf[li], at, o, toward, Double.POSITIVE_INFINITY);
+                        keep.keepShadow(slotOf[li], aside, o, toward, Double.POSITIVE_INFINITY);
                         count(RayKind.SHADOW);
                     }
                     brdf(m, s.ns, toward, term);
                     Vec3 c = d.color();
-                    keep.keepLight(slotOf[li], at, term[0] * c.x(), term[1] * c.y(), term[2] * c.z(), shadows);
+                    keep.keepLight(slotOf[li], aside, term[0] * c.x(), term[1] * c.y(), term[2] * c.z(), shadows);
                 } else if (keep == null && dot(toward, s.ng) > 0 && (!shadows || visible(s, toward))) {
                     brdf(m, s.ns, toward, term);
                     Vec3 c = d.color();
@@ -506,9 +500,9 @@ final class Tracer {
                     sum[2] = sum[2] + term[2] * c.z();
                 }
             } else if (light instanceof Light.Point pt) {
-                fromPoint(m, s, set(pt.position(), q), set(pt.color(), power), shadows, keep, at, slotOf[li]);
+                fromPoint(m, s, set(pt.position(), q), set(pt.color(), power), shadows, keep, aside, slotOf[li]);
             } else if (light instanceof Light.Area a) {
-                fromArea(m, s, a, li, shadows, keep, at);
+                fromArea(m, s, a, li, shadows, keep, aside);
             }
         }
     }
