@@ -42,8 +42,4 @@ final class LeafBlocks {
             next += (count + WIDTH - 1) / WIDTH;
         }
     }
-
-    long memoryBytes() {
-        return 8L * coordinates.length + 4L * firstBlock.length;
-    }
 }

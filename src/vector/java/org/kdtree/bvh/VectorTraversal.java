@@ -20,8 +20,9 @@ import org.kdtree.geom.Tolerance;
  * double precision on the same rounded-outward boxes ({@link WideNodes#boxesAsDoubles}): the
  * slab distances {@code (plane - o) * inv}, their maximum and minimum with the interval, and
  * {@code t0 (1 - slack) <= t1 (1 + slack)}; so it enters the children the scalar loop enters,
- * sorts them the same way and finds the same hits, bit for bit. Leaves use the one watertight
- * test on the corners in leaf order.
+ * sorts them the same way and finds the same hits, bit for bit. A leaf's triangles are tested
+ * {@link LeafBlocks#WIDTH} at a time from its blocks ({@link #testBlock}), each lane the one
+ * watertight test.
  *
  * <p>Compiled for JDK 25 with {@code jdk.incubator.vector} (src/vector/java) and loaded only
  * through {@link VectorPath}. Allocation-free per ray (the vectors are scalar-replaced by C2);
@@ -40,7 +41,6 @@ final class VectorTraversal implements RayQuery {
 
     private final int width, stride, refs;
     private final int[] words, prim;
-    private final double[] corners;
     /** The leaves' triangles in blocks ({@link LeafBlocks}). */
     private final double[] blocks;
     private final int[] firstBlock;
@@ -64,7 +64,6 @@ final class VectorTraversal implements RayQuery {
         refs = w.refs;
         words = w.words;
         prim = bvh.primitiveArray();
-        corners = bvh.leafCorners();
         LeafBlocks lb = bvh.leafBlocks();
         blocks = lb.coordinates;
         firstBlock = lb.firstBlock;
@@ -162,7 +161,7 @@ final class VectorTraversal implements RayQuery {
         double okx = ray.origin(kx), oky = ray.origin(ky), okz = ray.origin(kz);
 
         int[] nd = words, se = stackEntry, he = hitEntry;
-        double[] c = corners, st = stackT, ht = hitT, tl = lane;
+        double[] st = stackT, ht = hitT, tl = lane;
         int found = -1, sp = 0, e = 0;
         double best = tMax, start = WideTraversal.boxStart(tMin);
         while (true) {
