@@ -86,23 +86,23 @@ final class PacketTraversal extends PacketLoop {
                     // Both: the near one (for its first ray) next, the other saved with its range.
                     boolean rightFirst = rays.entry(p, nd, r, rFirst) < rays.entry(p, nd, l, lFirst);
                     int near = rightFirst ? link + 2 : link, far = rightFirst ? link : link + 2;
-                    stackEntry[sp] = code(nd, far);
+                    stackEntry[sp] = PairNodes.code(nd, far);
                     stackFirst[sp] = rightFirst ? lFirst : rFirst;
                     stackLast[sp++] = rightFirst ? lLast : rLast;
-                    e = code(nd, near);
+                    e = PairNodes.code(nd, near);
                     first = rightFirst ? rFirst : lFirst;
                     last = rightFirst ? rLast : lLast;
                     continue;
                 }
                 if (lFirst >= 0 || rFirst >= 0) {
                     boolean left = lFirst >= 0;
-                    e = code(nd, left ? link : link + 2);
+                    e = PairNodes.code(nd, left ? link : link + 2);
                     first = left ? lFirst : rFirst;
                     last = left ? lLast : rLast;
                     continue;
                 }
             } else {
-                int word = -1 - e, box = boxOf(word);
+                int word = -1 - e, box = PairNodes.boxOf(word);
                 if (any) {
                     // A blocked ray's limit falls below every box; the packet's bound may stay above it (it is only an upper bound).
                     active -= anyLeaf(p, nd, word, box, nx, ny, nz, fx, fy, fz, first, last);
@@ -136,16 +136,6 @@ final class PacketTraversal extends PacketLoop {
         double m = Double.NEGATIVE_INFINITY;
         for (int i = 0; i < n; i++) m = Math.max(m, limit[i]);
         return m;
-    }
-
-    /** The first word of the box of the leaf whose reference is at {@code word} (a record's left or right link). */
-    static int boxOf(int word) {
-        return (word & -STRIDE) + 3 * ((word & (STRIDE - 1)) - LINKS);
-    }
-
-    /** A child's word for the stack: its record, or {@code -1 - link} for a leaf. */
-    static int code(int[] nd, int link) {
-        return nd[link + 1] > 0 ? -1 - link : nd[link];
     }
 
     /** Whether ray {@code i} enters the box at {@code b}: {@link PairTraversal}'s test, the same operations. */

@@ -89,4 +89,14 @@ final class PairNodes {
     long memoryBytes() {
         return 4L * words.length;
     }
+
+    /** A child's code, from its link at {@code link} of {@code words}: its record's index, or {@code -1 - link} for a leaf. */
+    static int code(int[] words, int link) {
+        return words[link + 1] > 0 ? -1 - link : words[link];
+    }
+
+    /** The first word of the box of the leaf whose link is at {@code link} (a record's left or right link). */
+    static int boxOf(int link) {
+        return (link & -STRIDE) + 3 * ((link & (STRIDE - 1)) - LINKS);
+    }
 }

@@ -105,11 +105,11 @@ final class PairTraversal implements RayQuery {
                 int link = STRIDE * e + LINKS;
                 boolean rightFirst = inR & (!inL | r0 < l0);
                 int first = rightFirst ? link + 2 : link, second = rightFirst ? link : link + 2;
-                se[sp] = nd[second + 1] > 0 ? -1 - second : nd[second];
+                se[sp] = PairNodes.code(nd, second);
                 st[sp] = rightFirst ? l0 : r0;
                 sp += inL & inR ? 1 : 0;
                 if (inL | inR) {
-                    e = nd[first + 1] > 0 ? -1 - first : nd[first];
+                    e = PairNodes.code(nd, first);
                     continue;
                 }
             } else {

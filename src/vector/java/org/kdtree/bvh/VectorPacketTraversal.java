@@ -55,7 +55,7 @@ final class VectorPacketTraversal extends PacketLoop {
     private static final double SHRINK = 1 - SLACK, GROW = 1 + SLACK;
     private static final int STRIDE = PairNodes.STRIDE, RIGHT = PairNodes.RIGHT, LINKS = PairNodes.LINKS;
 
-    /** Saved children (as {@link PacketTraversal#code}) with the mask of rays that enter them. */
+    /** Saved children (as {@link PairNodes#code}) with the mask of rays that enter them. */
     private final int[] stackEntry;
     private final long[] stackMask;
     /**
@@ -95,20 +95,20 @@ final class VectorPacketTraversal extends PacketLoop {
                 long rm = q.packetEnters(nd, r, limitHi) ? enter(p, nd, r, mask, false) : 0;
                 if (lm != 0 && rm != 0) {
                     boolean rightFirst = rays.entry(p, nd, r, Long.numberOfTrailingZeros(rm)) < rays.entry(p, nd, l, Long.numberOfTrailingZeros(lm));
-                    stackEntry[sp] = PacketTraversal.code(nd, rightFirst ? link : link + 2);
+                    stackEntry[sp] = PairNodes.code(nd, rightFirst ? link : link + 2);
                     stackMask[sp++] = rightFirst ? lm : rm;
-                    e = PacketTraversal.code(nd, rightFirst ? link + 2 : link);
+                    e = PairNodes.code(nd, rightFirst ? link + 2 : link);
                     mask = rightFirst ? rm : lm;
                     continue;
                 }
                 if ((lm | rm) != 0) {
-                    e = PacketTraversal.code(nd, lm != 0 ? link : link + 2);
+                    e = PairNodes.code(nd, lm != 0 ? link : link + 2);
                     mask = lm | rm;
                     continue;
                 }
             } else {
                 int word = -1 - e;
-                long in = enter(p, nd, PacketTraversal.boxOf(word), mask, true);
+                long in = enter(p, nd, PairNodes.boxOf(word), mask, true);
                 if (in != 0) {
                     long changed = leaf(p, nd, word, in, any);
                     if (any) {
