@@ -8,6 +8,7 @@ import java.nio.file.Path;
 import java.util.HashMap;
 import java.util.List;
 import java.util.Map;
+import java.util.concurrent.TimeUnit;
 import org.junit.jupiter.api.Test;
 import org.junit.jupiter.api.io.TempDir;
 import org.kdtree.testing.PluginJars;
@@ -19,6 +20,7 @@ class ClassGradeCommandTest {
     private static final String T = "org.kdtree.testing.";
 
     @Test void aClassOfTenJarsGivesOneRowEachWithWhatWentWrong(@TempDir Path dir) throws Exception {
+        BoxTests.assumeABoxCanBeMade();
         Path jars = Files.createDirectory(dir.resolve("jars"));
         jar(jars, "alice.jar", "Alice", "PluginMidpointBuilder");
         jar(jars, "bob.jar", "Bob", "PluginMidpointBuilder"); // the same builder name as Alice's
@@ -63,6 +65,7 @@ class ClassGradeCommandTest {
 
     /** Issue 34, item 3: a builder's System.exit(n) is told from running out of memory by what the JVM said, for any n. */
     @Test void aBuildersExitIsNeverReportedAsOutOfMemoryWhateverItsCode(@TempDir Path dir) throws Exception {
+        BoxTests.assumeABoxCanBeMade();
         Path jars = Files.createDirectory(dir.resolve("jars"));
         for (int code : new int[] {2, 3, 4, 42})
             StudentJars.compile(jars, "exit" + code + ".jar", "my-builder", 2, "System.exit(" + code + "); return null;");
@@ -75,6 +78,23 @@ class ClassGradeCommandTest {
             assertThat(rows.get("exit" + code + ".jar").get("problem")).as("exit " + code)
                     .isEqualTo("crashed: the JVM exited with code " + code + " before the grade was done (System.exit(" + code
                             + ") in the builder?)");
+    }
+
+    /** Runs wherever the box cannot be made too: the refusal is what a teacher without bubblewrap sees. */
+    @Test void withoutBubblewrapGradeClassRefusesInOneLineSayingWhatToInstall(@TempDir Path other) throws Exception {
+        StudentJars.compile(other, "a.jar", "my-builder", 2, "return null;");
+        Path java = Path.of(System.getProperty("java.home"), "bin", "java");
+        ProcessBuilder pb = new ProcessBuilder(java.toString(), "-cp", StudentJvm.classPath(), Main.class.getName(), "grade-class",
+                other.toString(), "--csv", other.resolve("c.csv").toString()).redirectErrorStream(true);
+        pb.environment().put("PATH", Files.createDirectory(other.resolve("empty")).toString());
+        Process p = pb.start();
+        String out = new String(p.getInputStream().readAllBytes(), StandardCharsets.UTF_8).strip();
+        assertThat(p.waitFor(60, TimeUnit.SECONDS)).isTrue();
+        assertThat(p.exitValue()).isEqualTo(Failure.USAGE);
+        assertThat(out.lines()).hasSize(1);
+        assertThat(out).startsWith("error: grade-class runs each student's code in a box")
+                .contains("bubblewrap (bwrap) is not installed", "apt-get install bubblewrap", "--no-sandbox");
+        assertThat(other.resolve("c.csv")).doesNotExist();
     }
 
     /** Issue 34, item 2: the table's default place, the current folder, read-only: refused at once, before any student is graded. */
