@@ -38,6 +38,9 @@ import picocli.CommandLine.Parameters;
                 "'ox oy oz dx dy dz [tmin tmax]', and writes one 't triangle' or 'miss' line",
                 "per ray."})
 final class RaycastCommand implements Callable<Integer> {
+    /** The SPEC line's columns, as a comment line (docs/benchmark-spec.md, "Output"). */
+    static final String COLUMNS = "# system mesh tris build_ms nodes leaves depth P_hits P_tsum P_mrays R_hits R_tsum R_mrays";
+
     @Parameters(paramLabel = "MESH", description = "A Wavefront OBJ mesh, or the bundled one: scenes:clustered-spheres.")
     Path mesh;
 
@@ -124,6 +127,7 @@ final class RaycastCommand implements Callable<Integer> {
         TreeStats st = tree.stats();
         String meshName = CommandFiles.meshFile(mesh).getFileName().toString().replaceFirst("\\.[oO][bB][jJ]$", "")
                 + (grid > 1 ? "-grid" + grid : "");
+        System.err.println(COLUMNS);   // the SPEC line stays alone on stdout, for scripts; its columns named beside it
         System.out.println(String.format(Locale.ROOT, "kdtree-%s %s %d %.1f %d %d %d %d %.6f %.3f %d %.6f %.3f",
                 spec.builder(), meshName, scene.size(), build.millis(), st.nodes(), st.leaves(), st.maxDepth(),
                 pr.value().hits(), pr.value().tSum(), p.size() / pr.seconds() / 1e6,
