@@ -7,16 +7,19 @@ import java.util.concurrent.ScheduledExecutorService;
 import java.util.concurrent.TimeUnit;
 
 /**
- * A one-line progress bar on a terminal, redrawn in place: units done out of a total, the step
- * under way, and the time it has taken so far, redrawn every second so that a long single step
- * (one build of a large scene) still shows life. Safe to update from several threads.
- *
- * <p>Commands make one with {@link #onTerminal}: when the output is a log, not a terminal,
- * there is no bar at all, since {@code \r} redraws would fill the log.
+ * How a long command says where it is, the one rule for every command ({@link #forCommand}):
+ * on a terminal, a one-line bar on standard error redrawn in place every second (units done out
+ * of a total, the step under way, the time so far), so that a long single step still shows
+ * life; in a log (standard error not a terminal), no {@code \r} redraws but one plain line every
+ * {@value #LOG_EVERY_SECONDS} seconds once the command has run that long, so short runs leave the
+ * log clean; with {@code --quiet}, nothing. Safe to update from several threads.
  */
 final class ProgressBar implements AutoCloseable {
     private static final int WIDTH = 30;
+    /** In a log, the seconds between two progress lines, the first after as long. */
+    static final int LOG_EVERY_SECONDS = 10;
     private final PrintStream out;
+    private final boolean log;
     private int total;
     private final String unit;
     private final long start = System.nanoTime();
@@ -32,7 +35,16 @@ final class ProgressBar implements AutoCloseable {
      * @param unit  what a unit is, plural ("tiles", "steps")
      */
     ProgressBar(PrintStream out, int total, String unit) {
+        this(out, total, unit, false, 1000);
+    }
+
+    /**
+     * @param log    plain lines for a log instead of a bar redrawn in place
+     * @param everyMillis how often the bar is redrawn, or a log line written
+     */
+    ProgressBar(PrintStream out, int total, String unit, boolean log, long everyMillis) {
         this.out = out;
+        this.log = log;
         this.total = Math.max(1, total);
         this.unit = unit;
         this.clock = out == null ? null : Executors.newSingleThreadScheduledExecutor(r -> {
@@ -40,12 +52,33 @@ final class ProgressBar implements AutoCloseable {
             t.setDaemon(true);
             return t;
         });
-        if (clock != null) clock.scheduleAtFixedRate(this::redraw, 1, 1, TimeUnit.SECONDS);
+        if (clock != null) clock.scheduleAtFixedRate(log ? this::logLine : this::redraw, everyMillis, everyMillis, TimeUnit.MILLISECONDS);
     }
 
-    /** A bar on standard error if it is a terminal and {@code quiet} is off; otherwise none. */
-    static ProgressBar onTerminal(boolean quiet, int total, String unit) {
-        return new ProgressBar(!quiet && System.console() != null ? System.err : null, total, unit);
+    /** The progress a command shows (the rule above): a bar on a terminal, lines in a log, nothing when {@code quiet}. */
+    static ProgressBar forCommand(boolean quiet, int total, String unit) {
+        if (quiet) return new ProgressBar(null, total, unit);
+        if (onTerminal()) return new ProgressBar(System.err, total, unit);
+        return new ProgressBar(System.err, total, unit, true, LOG_EVERY_SECONDS * 1000L);
+    }
+
+    /**
+     * Whether the command runs on a terminal. From JDK 22 on, {@code System.console()} is there in a
+     * log too, and only its {@code isTerminal()} (absent from Java 17) tells.
+     */
+    static boolean onTerminal() {
+        java.io.Console console = System.console();
+        if (console == null) return false;
+        try {
+            return (Boolean) java.io.Console.class.getMethod("isTerminal").invoke(console);
+        } catch (ReflectiveOperationException e) {
+            return true;   // Java 17 to 21: a console is a terminal
+        }
+    }
+
+    /** Whether this bar writes a log's plain lines (not a terminal, not quiet). */
+    boolean writesLogLines() {
+        return out != null && log;
     }
 
     /** Reports that {@code doneNow} units are finished (threads may report out of order: it never moves backwards). */
@@ -88,8 +121,15 @@ final class ProgressBar implements AutoCloseable {
         if (drawn) draw();
     }
 
+    /** A log's line: where the command is, without redrawing. */
+    private synchronized void logLine() {
+        out.println(String.format(Locale.ROOT, "progress: %.0f s, %d of %d %s%s", (System.nanoTime() - start) / 1e9, done, total, unit,
+                step.isEmpty() ? "" : ", " + step));
+        out.flush();
+    }
+
     private void draw() {
-        if (out == null) return;
+        if (out == null || log) return;
         int percent = (int) (100L * done / total);
         shownPercent = percent;
         int filled = WIDTH * done / total;

@@ -4,11 +4,11 @@ import picocli.CommandLine.Option;
 
 /** The {@code --quiet} option of the commands that can run long (a picocli mixin). */
 final class ProgressOption {
-    @Option(names = {"-q", "--quiet"}, description = "No progress bar (there is none either when the output is not a terminal).")
+    @Option(names = {"-q", "--quiet"}, description = "No progress: no bar on a terminal, no progress lines in a log.")
     boolean quiet;
 
-    /** A bar on the terminal for {@code total} units, or a silent one. */
+    /** Progress over {@code total} units, as {@link ProgressBar#forCommand} shows it. */
     ProgressBar bar(int total, String unit) {
-        return ProgressBar.onTerminal(quiet, total, unit);
+        return ProgressBar.forCommand(quiet, total, unit);
     }
 }
