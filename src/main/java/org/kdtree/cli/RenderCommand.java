@@ -5,6 +5,7 @@ import java.util.concurrent.Callable;
 import org.kdtree.accel.SharedSettings;
 import org.kdtree.io.BundledScenes;
 import org.kdtree.io.FileKind;
+import org.kdtree.io.MeshScene;
 import org.kdtree.io.PrimitivesReader;
 import org.kdtree.limits.Limits;
 import org.kdtree.render.RenderJob;
@@ -18,12 +19,12 @@ import picocli.CommandLine.Parameters;
 
 /** {@code render SCENE -o out.png}: build a kd-tree (or a BVH) over a JSON scene, ray trace it, write a PNG. */
 @Command(name = "render", mixinStandardHelpOptions = true,
-        description = "Ray trace a JSON scene (docs/scene-format.md) to a PNG, simulating only the effects it calls for, "
+        description = "Ray trace a JSON scene (docs/scene-format.md), or a bare OBJ mesh framed with a default camera and light, to a PNG, simulating only the effects it calls for, "
                 + "and print the effects, rays by kind, times and tree statistics. --threads also renders "
                 + "(without it: the tree on one thread, the image on all cores).")
 final class RenderCommand implements Callable<Integer> {
-    @Parameters(paramLabel = "SCENE", description = "A JSON scene file, e.g. scenes/cornell-box.json, or a bundled "
-            + "scene from any folder: scenes:cornell-box.")
+    @Parameters(paramLabel = "SCENE", description = "A JSON scene file, e.g. scenes/cornell-box.json, a bundled "
+            + "scene from any folder (scenes:cornell-box), or an OBJ mesh (framed and lit for you).")
     String scene;
 
     @Option(paramLabel = "FILE", names = {"-o", "--output"}, defaultValue = "render.png", description = "PNG file to write (default: ${DEFAULT-VALUE}).")
@@ -54,9 +55,11 @@ final class RenderCommand implements Callable<Integer> {
     @Override public Integer call() throws Exception {
         checkOutput();
         Path sceneFile = BundledScenes.resolve(scene);
-        requireJsonScene(sceneFile);
+        requireRenderable(sceneFile);
         CommandFiles.requireNotInput("-o", output, "SCENE", sceneFile);
-        Scene s = PrimitivesReader.readScene(sceneFile);
+        boolean bare = FileKind.of(sceneFile) == FileKind.OBJ;
+        Scene s = bare ? MeshScene.read(sceneFile) : PrimitivesReader.readScene(sceneFile);
+        if (bare) System.err.println("# " + scene + " is " + MeshScene.describe());
         if (spp != null) s = s.withSamplesPerPixel(Limits.SAMPLES_PER_PIXEL.check("--spp", spp));
         if (rayDepth != null) s = s.withMaxDepth(Limits.RAY_DEPTH.check("--ray-depth", rayDepth));
         if (width != null || height != null) {
@@ -68,18 +71,10 @@ final class RenderCommand implements Callable<Integer> {
         Renderer.Options o = Renderer.Options.defaults();
         if (spec.get(SharedSettings.THREADS) != null) o = o.withThreads(spec.get(SharedSettings.THREADS));
         RenderJob job;
-        boolean log = System.console() == null && !progress.quiet;   // no bar into a log: a line at each quarter instead
-        if (log) System.out.printf(java.util.Locale.ROOT, "rendering %s: %d x %d, %d sample%s per pixel, into %s%n", scene,
+        if (!progress.quiet) System.out.printf(java.util.Locale.ROOT, "rendering %s: %d x %d, %d sample%s per pixel, into %s%n", scene,
                 s.camera().width(), s.camera().height(), s.samplesPerPixel(), s.samplesPerPixel() == 1 ? "" : "s", output);
-        java.util.concurrent.atomic.AtomicInteger quarter = new java.util.concurrent.atomic.AtomicInteger();
-        long t0 = System.nanoTime();
         try (ProgressBar bar = progress.bar(1, "tiles")) {
-            job = RenderJob.run(s, spec, deadlines.supervisor(), o.withProgress((done, total, image) -> {
-                bar.update(done, total);
-                int q = (int) (4L * done / Math.max(1, total)), before = quarter.get();
-                if (log && q > before && q < 4 && quarter.compareAndSet(before, q))
-                    System.out.printf(java.util.Locale.ROOT, "rendered %d %% of the tiles (%.0f s)%n", 25 * q, (System.nanoTime() - t0) / 1e9);
-            }));
+            job = RenderJob.run(s, spec, deadlines.supervisor(), o.withProgress((done, total, image) -> bar.update(done, total)));
         }
         job.result().image().writePng(output);
         System.out.print(job.summary());
@@ -93,19 +88,17 @@ final class RenderCommand implements Callable<Integer> {
                 .map(f -> BundledScenes.PREFIX + f.substring(0, f.length() - FileKind.JSON.extension().length())).toList());
     }
 
-    /** Refuses a SCENE that is not a JSON scene, naming it as the user gave it and saying what render takes. */
-    private void requireJsonScene(Path sceneFile) {
+    /** Refuses a SCENE that is neither a JSON scene nor an OBJ mesh, naming it as the user gave it and saying what render takes. */
+    private void requireRenderable(Path sceneFile) {
         FileKind kind = FileKind.of(sceneFile);
-        if (kind != null && kind.renders() && !java.nio.file.Files.isDirectory(sceneFile)) return;
+        if ((kind == FileKind.OBJ || kind != null && kind.renders()) && !java.nio.file.Files.isDirectory(sceneFile)) return;
         if (!java.nio.file.Files.exists(sceneFile)) return; // the reader names a missing file, whatever its name
         String what;
         if (java.nio.file.Files.isDirectory(sceneFile)) what = "is a folder, not a file";
-        else if (kind == FileKind.OBJ) what = "is an OBJ mesh, with no camera or lights; put it in a JSON scene as an object "
-                + "{\"type\": \"obj\", \"file\": \"" + sceneFile.getFileName() + "\"} (docs/scene-format.md), or trace it with stats or raycast";
         else if (kind == FileKind.SCENE2D) what = "is a 2-D scene; open it in the workbench (gui) or give it to stats";
-        else what = "is not a JSON scene (.json)";
+        else what = "is neither a JSON scene (.json) nor an OBJ mesh (.obj)";
         throw new IllegalArgumentException("SCENE " + scene + ": " + what + ". render takes a JSON scene (camera, lights, materials, "
-                + "objects: docs/scene-format.md), such as " + jsonScenes());
+                + "objects: docs/scene-format.md), such as " + jsonScenes() + ", or an OBJ mesh, which it frames and lights");
     }
 
     /** Refuses, before any rendering, an output the image could not be written to. */

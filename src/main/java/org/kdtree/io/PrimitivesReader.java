@@ -96,7 +96,7 @@ public final class PrimitivesReader {
     }
 
     /** A missing file is "no such file", whatever its name, as every reader says it (not "unknown file type"). */
-    private static void requireExists(Path file) throws SceneFormatException {
+    static void requireExists(Path file) throws SceneFormatException {
         if (!java.nio.file.Files.exists(file)) throw new SceneFormatException(file.toString(), 0, "no such file");
     }
 }
