@@ -21,7 +21,7 @@ public class MyBuilder extends KdTreeBuilder {
         throw new UnsupportedOperationException("TODO: terminate(): when should a node become a leaf?");
     }
 
-    /** findPlane(T, V): the split plane, strictly inside node.voxel(), for a node that does not terminate. */
+    /** findPlane(T, V): the split plane (an axis and a position within node.voxel(); on its face is allowed but useless) for a node that does not terminate. */
     @Override protected SplitPlane findPlane(BuildContext context, BuildNode node) {
         throw new UnsupportedOperationException("TODO: findPlane(): where should this node be cut?");
     }
