@@ -94,7 +94,7 @@ final class SceneReader {
         if (at.minus(eye).normalized().cross(up.normalized()).length() < Tolerance.PARALLEL_SINE) throw c.get("up").error("must not be parallel to the view direction");
         JsonNode fov = c.get("fov");
         double f = fov.number();
-        if (f <= 0 || f >= 180) throw fov.error("field of view must be between 0 and 180 degrees, got " + f);
+        if (f <= 0 || f >= 180) throw fov.error("field of view must be more than 0 and less than 180 degrees (both ends excluded), got " + f);
         return new Camera(eye, at, up, f, c.get("width").integer(Limits.IMAGE_SIDE),
                 c.get("height").integer(Limits.IMAGE_SIDE));
     }

@@ -44,7 +44,11 @@ class RenderCommandTest {
         Files.writeString(bad, "{\"camera\": {\"eye\": [0, 0, 5], \"lookAt\": [0, 0, 0], \"fov\": 400,\n \"width\": 8, \"height\": 8}}");
         CliRun r = run("render", bad.toString(), "-o", dir.resolve("x.png").toString());
         assertThat(r.code()).isEqualTo(2);
-        assertThat(r.err().strip()).isEqualTo("error: " + bad + ":1: $.camera.fov: field of view must be between 0 and 180 degrees, got 400.0");
+        assertThat(r.err().strip()).isEqualTo("error: " + bad + ":1: $.camera.fov: field of view must be more than 0 and less than 180 degrees (both ends excluded), got 400.0");
+        Files.writeString(bad, "{\"camera\": {\"eye\": [0, 0, 5], \"lookAt\": [0, 0, 0], \"fov\": 0,\n \"width\": 8, \"height\": 8}}");
+        r = run("render", bad.toString(), "-o", dir.resolve("x.png").toString());
+        assertThat(r.err().strip()).as("issue 46, item 9: 0 itself is refused, so the ends are said to be excluded")
+                .endsWith("field of view must be more than 0 and less than 180 degrees (both ends excluded), got 0.0");
         r = run("render", dir.resolve("missing.json").toString());
         assertThat(r.code()).isEqualTo(2);
         assertThat(r.err()).contains("missing.json: no such file").doesNotContain("Exception");
