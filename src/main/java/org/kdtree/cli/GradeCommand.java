@@ -109,7 +109,7 @@ final class GradeCommand implements Callable<Integer> {
         StudentJvm.Graded g = jvm.run(studentJar);
         StudentRow row = g.row();
         if (g.report() == null) {
-            System.err.println("grade " + studentJar.getFileName() + ": " + row.problem());
+            System.err.println("error: grade " + studentJar.getFileName() + ": " + row.problem());
             return row.problem().startsWith("not graded") ? Failure.USAGE : Failure.BUILDER;
         }
         System.out.print(g.report().text());

@@ -149,7 +149,7 @@ class ClassGradeSandboxTest {
         assertThat(HOME.resolve(IntrudingBuilder.MARKER)).doesNotExist();
         CliRun notAJar = CliRun.of("grade", "--student-jar", Files.writeString(other.resolve("notes.jar"), "notes").toString(), "-q");
         assertThat(notAJar.code()).isEqualTo(Failure.USAGE);
-        assertThat(notAJar.err().strip()).isEqualTo("grade notes.jar: not graded: not a jar (zip) file");
+        assertThat(notAJar.err().strip()).isEqualTo("error: grade notes.jar: not graded: not a jar (zip) file");   // issue 46, item 9: the prefix of every error
     }
 
     @Test void withoutTheBoxTheSameJarWritesIntoTheTeachersFolderAndEveryRowSaysSo(@TempDir Path other) throws Exception {
