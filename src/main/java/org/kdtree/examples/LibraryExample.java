@@ -27,9 +27,16 @@ public final class LibraryExample {
         TriangleMesh mesh = PrimitivesReader.readMesh(file);                                // .obj or .json: its triangles
         KdTree tree = new SahBuilder().quality(Quality.EXACT).build(mesh);                 // the talk's Kt, Ki, lambda
         Traverser rays = new Traverser(tree);                                              // one per thread
-        double[] aim = new double[3];                                                       // triangle 0's centre
-        for (int a = 0; a < 3; a++) aim[a] = (mesh.corner(0, 0, a) + mesh.corner(0, 1, a) + mesh.corner(0, 2, a)) / 3;
-        Ray ray = new Ray(new double[] {aim[0], aim[1], aim[2] - 100}, new double[] {0, 0, 1});
+        double[] centre = new double[3], e1 = new double[3], e2 = new double[3];           // triangle 0: its centre, two edges
+        for (int a = 0; a < 3; a++) {
+            centre[a] = (mesh.corner(0, 0, a) + mesh.corner(0, 1, a) + mesh.corner(0, 2, a)) / 3;
+            e1[a] = mesh.corner(0, 1, a) - mesh.corner(0, 0, a);
+            e2[a] = mesh.corner(0, 2, a) - mesh.corner(0, 0, a);
+        }
+        double[] normal = {e1[1] * e2[2] - e1[2] * e2[1], e1[2] * e2[0] - e1[0] * e2[2], e1[0] * e2[1] - e1[1] * e2[0]};
+        double[] origin = new double[3];
+        for (int a = 0; a < 3; a++) origin[a] = centre[a] + 1e-3 * normal[a];             // just off its face
+        Ray ray = new Ray(origin, new double[] {-normal[0], -normal[1], -normal[2]});     // aimed straight at it
         Hit hit = new Hit();
         if (rays.closestHit(ray, 0, Double.POSITIVE_INFINITY, hit))
             System.out.println("hit triangle " + hit.primitive + " at t = " + hit.t);
