@@ -68,6 +68,17 @@ class ChartsTest {
         assertWritten(chart);
     }
 
+    /** Issue 46, item 9: in the whole study's chart no two variants share a colour (sah-sorted-l0.8 and sah-maxdepth-16 did, both x). */
+    @Test void everyVariantOfTheWholeStudyHasAColourOfItsOwn() {
+        List<Tradeoff.Result> results = new ArrayList<>();
+        for (Variant v : Variant.all())
+            results.add(new Tradeoff.Result(v.name(), "", 30 + results.size(), 100, 1, 1, 1, 1, 1, 0, 1e5, 1000));
+        List<XYSeries> points = TradeoffChart.chart(results, "test", 10).getSeriesMap().values().stream()
+                .filter(s -> !s.getName().equals("Pareto front")).toList();
+        assertThat(points).hasSize(Variant.all().size());
+        assertThat(points.stream().map(XYSeries::getMarkerColor).distinct()).hasSameSizeAs(points);
+    }
+
     @Test void theGrowthChartHasLabelledLogAxesAndDistinctMarkers() throws Exception {
         Map<String, TreeMap<Integer, Double>> series = new TreeMap<>();
         for (String b : List.of("sah-event", "sah-sorted", "sah-binned", "sah-naive", "median-plane")) {
