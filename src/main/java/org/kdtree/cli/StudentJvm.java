@@ -205,16 +205,17 @@ record StudentJvm(Deadlines deadlines, double seconds, int heapMb, StudentBox bo
     }
 
     /**
-     * The student's name: the jar's manifest's Implementation-Vendor (the starter project writes
-     * its {@code student} property there), else Built-By; else the coordinates of the pom Maven
-     * put in the jar ({@code groupId:artifactId}), unless they are the starter's own; else "".
+     * The student's name as the student declared it: the jar's manifest's Implementation-Vendor
+     * (the starter project writes its {@code student} property there); else the coordinates of the
+     * pom Maven put in the jar ({@code groupId:artifactId}), unless they are the starter's own; else
+     * the jar's file name without {@code .jar}, as the teacher named it. Never Built-By: that is
+     * the login of whoever built the jar ({@code root} in a container), which names no student.
      */
     static String student(Path jar) {
         try (JarFile j = new JarFile(jar.toFile())) {
             var m = j.getManifest();
             if (m != null) {
                 String v = m.getMainAttributes().getValue("Implementation-Vendor");
-                if (v == null || v.isBlank()) v = m.getMainAttributes().getValue("Built-By");
                 if (v != null && !v.isBlank()) return v.strip();
             }
             for (var e : java.util.Collections.list(j.entries())) {
@@ -226,10 +227,10 @@ record StudentJvm(Deadlines deadlines, double seconds, int heapMb, StudentBox bo
                 String coordinates = pom.getProperty("groupId", "") + ":" + pom.getProperty("artifactId", "");
                 if (!coordinates.equals(STARTER_COORDINATES) && !coordinates.equals(":")) return coordinates;
             }
-            return "";
         } catch (IOException | SecurityException | IllegalArgumentException notAJar) {
-            return "";
+            // not a jar: the file's name is all there is
         }
+        return jar.getFileName().toString().replaceFirst("(?i)\\.jar$", "");
     }
 
     /** The starter project's groupId:artifactId, which names no one. */

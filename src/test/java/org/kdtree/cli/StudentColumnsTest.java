@@ -29,15 +29,31 @@ class StudentColumnsTest {
         return jar;
     }
 
-    @Test void theStudentIsTheManifestsVendorElseThePomsCoordinatesUnlessTheStartersOwn(@TempDir Path dir) throws Exception {
+    @Test void theStudentIsTheManifestsVendorElseThePomsCoordinatesUnlessTheStartersOwnElseTheFileName(@TempDir Path dir) throws Exception {
         assertThat(StudentJvm.student(jar(dir, "a.jar", "Alice Martin", "course.kdtree", "my-builder"))).isEqualTo("Alice Martin");
         assertThat(StudentJvm.student(jar(dir, "b.jar", null, "edu.bob", "bob-builder"))).isEqualTo("edu.bob:bob-builder");
-        assertThat(StudentJvm.student(jar(dir, "c.jar", null, "course.kdtree", "my-builder"))).isEmpty();
+        assertThat(StudentJvm.student(jar(dir, "carol-durand.jar", null, "course.kdtree", "my-builder"))).isEqualTo("carol-durand");
+        assertThat(StudentJvm.student(Files.writeString(dir.resolve("judy.jar"), "not a jar"))).isEqualTo("judy");
     }
 
-    @Test void theStartersPomWritesTheStudentIntoTheJar() throws Exception {
+    /** Issue 46, item 9: a jar built as root says Built-By: root; the class table named every such student "root". */
+    @Test void theBuildMachinesLoginNamesNoStudent(@TempDir Path dir) throws Exception {
+        Path jar = dir.resolve("dan.jar");
+        Manifest m = new Manifest();
+        m.getMainAttributes().put(Attributes.Name.MANIFEST_VERSION, "1.0");
+        m.getMainAttributes().putValue("Built-By", "root");
+        m.getMainAttributes().put(Attributes.Name.IMPLEMENTATION_VENDOR, "");
+        try (OutputStream out = Files.newOutputStream(jar); JarOutputStream j = new JarOutputStream(out, m)) {
+            j.putNextEntry(new JarEntry("builder/MyBuilder.class"));
+            j.closeEntry();
+        }
+        assertThat(StudentJvm.student(jar)).isEqualTo("dan");
+    }
+
+    @Test void theStartersPomWritesTheDeclaredStudentIntoTheJarAndNeverTheLogin() throws Exception {
         String pom = Files.readString(Path.of("docs/assignment/template/pom.xml"));
-        assertThat(pom).contains("<student>${user.name}</student>").contains("<Implementation-Vendor>${student}</Implementation-Vendor>");
+        assertThat(pom).contains("<student></student>").contains("<Implementation-Vendor>${student}</Implementation-Vendor>")
+                .doesNotContain("${user.name}");
     }
 
     @Test void aLongFirstFailureIsWholeInTheCsvAndShortenedInTheMarkdown() {
