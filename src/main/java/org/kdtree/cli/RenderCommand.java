@@ -5,7 +5,6 @@ import java.util.concurrent.Callable;
 import org.kdtree.accel.SharedSettings;
 import org.kdtree.io.BundledScenes;
 import org.kdtree.io.FileKind;
-import org.kdtree.io.MeshScene;
 import org.kdtree.io.PrimitivesReader;
 import org.kdtree.limits.Limits;
 import org.kdtree.render.RenderJob;
@@ -57,9 +56,8 @@ final class RenderCommand implements Callable<Integer> {
         Path sceneFile = BundledScenes.resolve(scene);
         requireRenderable(sceneFile);
         CommandFiles.requireNotInput("-o", output, "SCENE", sceneFile);
-        boolean bare = FileKind.of(sceneFile) == FileKind.OBJ;
-        Scene s = bare ? MeshScene.read(sceneFile) : PrimitivesReader.readScene(sceneFile);
-        if (bare) System.err.println("# " + scene + " is " + MeshScene.describe());
+        Scene s = PrimitivesReader.readScene(sceneFile);
+        if (FileKind.of(sceneFile) == FileKind.OBJ) System.err.println("# " + scene + " is " + PrimitivesReader.BARE_MESH);
         if (spp != null) s = s.withSamplesPerPixel(Limits.SAMPLES_PER_PIXEL.check("--spp", spp));
         if (rayDepth != null) s = s.withMaxDepth(Limits.RAY_DEPTH.check("--ray-depth", rayDepth));
         if (width != null || height != null) {

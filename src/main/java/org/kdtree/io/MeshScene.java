@@ -3,7 +3,6 @@ package org.kdtree.io;
 import java.io.IOException;
 import java.io.StringReader;
 import java.nio.file.Path;
-import org.kdtree.geom.Box;
 import org.kdtree.scene.Camera;
 import org.kdtree.scene.Scene;
 import org.kdtree.scene.Vec3;
@@ -16,11 +15,14 @@ import org.kdtree.scene.Vec3;
  * names them (grey diffuse elsewhere, as for any object of a JSON scene). A JSON scene is how a
  * user chooses instead (docs/scene-format.md).
  */
-public final class MeshScene {
+final class MeshScene {
     /** The image's width and height, in pixels. */
-    public static final int SIDE = 512;
+    static final int SIDE = 512;
     /** The vertical field of view, in degrees (the benchmark camera's). */
-    public static final double FOV = 40;
+    static final double FOV = 40;
+    /** What {@link #read} chose, in words. */
+    static final String DESCRIPTION = "a bare mesh: framed by the benchmark's camera (" + SIDE + " x " + SIDE + ", 40 degrees), "
+            + "lit by one directional light, grey where its MTL names no material; a JSON scene chooses these (docs/scene-format.md)";
     private static final Vec3 VIEW = new Vec3(1, 0.5, 2).normalized();
 
     private MeshScene() {
@@ -32,7 +34,7 @@ public final class MeshScene {
      * @param obj an OBJ file
      * @throws IOException if it cannot be read or is malformed, naming the file and line
      */
-    public static Scene read(Path obj) throws IOException {
+    static Scene read(Path obj) throws IOException {
         PrimitivesReader.requireExists(obj);
         String name = obj.getFileName().toString();
         String json = "{\"camera\": {\"eye\": [0, 0, 1], \"lookAt\": [0, 0, 0], \"fov\": " + FOV + ", \"width\": " + SIDE
@@ -45,21 +47,18 @@ public final class MeshScene {
                 s.samplesPerPixel(), s.maxDepth(), s.geometryMayOcclude(), s.seed());
     }
 
-    /** {@return what {@link #read} chose, in one line, for the user to see} */
-    public static String describe() {
-        return "a bare mesh: framed by the benchmark's camera (" + SIDE + " x " + SIDE + ", " + (int) FOV
-                + " degrees), lit by one directional light, grey where its MTL names no material; a JSON scene chooses these "
-                + "(docs/scene-format.md)";
-    }
 
     /** The benchmark's camera around the box of every vertex the scene holds. */
     private static Camera framing(Scene s) {
-        double[] v = s.mesh().vertices();
-        Box b = new Box(3);
-        for (int i = 0; i < v.length; i += 3) b.grow(v, i);
-        Vec3 centre = new Vec3((b.min(0) + b.max(0)) / 2, (b.min(1) + b.max(1)) / 2, (b.min(2) + b.max(2)) / 2);
-        double diagonal = Math.sqrt(b.extent(0) * b.extent(0) + b.extent(1) * b.extent(1) + b.extent(2) * b.extent(2));
-        Vec3 eye = centre.plus(VIEW.times(1.5 * Math.max(diagonal, 1e-9)));
+        double[] v = s.mesh().vertices(), min = {v[0], v[1], v[2]}, max = min.clone();
+        for (int i = 0; i < v.length; i++) {
+            min[i % 3] = Math.min(min[i % 3], v[i]);
+            max[i % 3] = Math.max(max[i % 3], v[i]);
+        }
+        Vec3 low = new Vec3(min[0], min[1], min[2]), high = new Vec3(max[0], max[1], max[2]);
+        Vec3 centre = low.plus(high).times(0.5);
+        double diagonal = high.minus(low).length();
+        Vec3 eye = centre.plus(VIEW.times(1.5 * (diagonal > 0 ? diagonal : 1)));   // a mesh at one point: seen from 1.5 away
         return new Camera(eye, centre, new Vec3(0, 1, 0), FOV, SIDE, SIDE);
     }
 }

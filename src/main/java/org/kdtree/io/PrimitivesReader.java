@@ -50,15 +50,19 @@ public final class PrimitivesReader {
         return mesh(file);
     }
 
+    /** What {@link #readScene} makes of a bare OBJ mesh, in words, for a user to see. */
+    public static final String BARE_MESH = MeshScene.DESCRIPTION;
+
     /**
      * {@return the render scene of a {@code .json} file}: camera, lights, materials and the
-     * triangles of its objects (OBJ files it names are read relative to it)
+     * triangles of its objects (OBJ files it names are read relative to it); or of a bare
+     * {@code .obj} mesh, framed and lit as {@link #BARE_MESH} says
      *
      * @param file the scene file (a bundled one too: {@link BundledScenes#resolve})
      * @throws IOException if it cannot be read or is malformed, naming the file, line and field
      */
     public static Scene readScene(Path file) throws IOException {
-        return SceneReader.read(file);
+        return FileKind.of(file) == FileKind.OBJ ? MeshScene.read(file) : SceneReader.read(file);
     }
 
     /**
