@@ -111,6 +111,6 @@ class SmallThingsTest {
 
     @Test void theReadmeGivesTheQuickBenchmarkCommandAndSaysTheWholeRunTakesHours() throws Exception {
         String readme = Files.readString(Path.of("README.md"));
-        assertThat(readme).contains("java -jar target/benchmarks.jar TraversalBenchmark -f 1").contains("about three hours");
+        assertThat(readme).contains("-f 1 -wi 1 -i 2 -w 1s -r 1s").contains("with no pattern runs every benchmark for hours");
     }
 }
