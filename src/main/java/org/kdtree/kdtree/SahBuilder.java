@@ -81,6 +81,11 @@ public class SahBuilder extends KdTreeBuilder {
     public static final Setting<Integer> LEAF_BELOW = Setting.whole("--leaf-below", Limits.LEAF_BELOW, 1,
             "nodes of fewer references become leaves without a plane search (1 = only empty ones)");
 
+    /** Splits still made along a path past the leaf criterion, on trial. */
+    public static final Setting<Integer> LOOKAHEAD = Setting.whole("--lookahead", Limits.LOOKAHEAD, 0,
+            "splits still made along a path where no plane beats the leaf (the talk's \"a few more iterations\"); "
+                    + "each subtree is kept only where it ends cheaper than the leaf");
+
     /** The preset first, then every kd-tree builder's rows, then the SAH's own. */
     private static final List<Setting<?>> ROWS = rows();
 
@@ -88,7 +93,7 @@ public class SahBuilder extends KdTreeBuilder {
         List<Setting<?>> rows = new ArrayList<>();
         rows.add(QUALITY);
         rows.addAll(KdTreeBuilder.ROWS);
-        rows.addAll(List.of(LAMBDA, ALGORITHM, SharedSettings.BINS, EXACT_BELOW, LEAF_BELOW));
+        rows.addAll(List.of(LAMBDA, ALGORITHM, SharedSettings.BINS, EXACT_BELOW, LEAF_BELOW, LOOKAHEAD));
         return List.copyOf(rows);
     }
 
@@ -100,7 +105,8 @@ public class SahBuilder extends KdTreeBuilder {
 
     /**
      * A leaf if the node is empty or smaller than {@link #leafBelow()}, at the depth cap, or flat (no ray meets it with positive
-     * probability), or if no plane is cheaper than the leaf; else keeps the best plane found.
+     * probability), or if no plane is cheaper than the leaf and the path has made its {@link #lookahead()} of trial splits;
+     * else keeps the best plane found (on trial if it is not cheaper than the leaf).
      */
     @Override protected boolean terminate(BuildContext context, BuildNode node) {
         if (node.size() < leafBelow() || node.depth() >= context.depthCap()) return true;
@@ -111,7 +117,12 @@ public class SahBuilder extends KdTreeBuilder {
         SahSplit best = s.best;
         best.reset();
         search().search(node, sah, best);
-        if (!best.found() || best.cost() >= sah.leafCost(node.size())) return true;
+        if (!best.found()) return true;
+        if (best.cost() >= sah.leafCost(node.size())) {
+            if (node.trialSplits() >= lookahead()) return true;
+            node.keepTrialPlane(best.plane()); // past a local minimum, perhaps: tried, kept only if it pays
+            return false;
+        }
         node.keepPlane(best.plane());
         return false;
     }
@@ -168,6 +179,18 @@ public class SahBuilder extends KdTreeBuilder {
         depthFactor(KdTreeBuilder.DEFAULT_DEPTH_FACTOR);
         return this;
     }
+
+    /** {@return the splits still made along a path where no plane beats the leaf, each on trial} (default 0) */
+    public int lookahead() { return settings().get(LOOKAHEAD); }
+
+    /**
+     * Sets the lookahead: along a path, up to {@code n} splits whose cost does not beat the leaf
+     * are still made, and each subtree is kept only where it ends cheaper than the leaf it replaced.
+     *
+     * @param n splits ({@link Limits#LOOKAHEAD})
+     * @return this builder
+     */
+    public SahBuilder lookahead(int n) { with(LOOKAHEAD, n); return this; }
 
     /** {@return lambda, the weight of a plane that leaves one child empty} */
     public double lambda() { return settings().get(LAMBDA); }
@@ -251,6 +274,7 @@ public class SahBuilder extends KdTreeBuilder {
         Algorithm algorithm = algorithm();
         return "lambda=" + lambda() + " algorithm=" + algorithm.name().toLowerCase(Locale.ROOT)
                 + (!algorithm.exact() ? " bins=" + bins() + " exactBelow=" + exactBelow() : "")
-                + (leafBelow() > 1 ? " leafBelow=" + leafBelow() : "") + " " + super.describeSettings();
+                + (leafBelow() > 1 ? " leafBelow=" + leafBelow() : "")
+                + (lookahead() > 0 ? " lookahead=" + lookahead() : "") + " " + super.describeSettings();
     }
 }
