@@ -242,16 +242,7 @@ public abstract class KdTreeBuilder implements StructureBuilder {
         return all;
     }
 
-    /**
-     * The default depth cap, {@code round(8 + 1.3 log2 N)}, as pbrt and Wald and Havran use.
-     *
-     * @param n N, the number of primitives
-     * @return the cap
-     */
-    public static int defaultMaxDepth(int n) {
-        return automaticDepthCap(n, DEFAULT_DEPTH_FACTOR);
-    }
-
+    /** {@code round(8 + c log2 N)}, at most {@link #DEPTH_LIMIT}: pbrt's and Wald and Havran's cap with c = 1.3. */
     private static int automaticDepthCap(int n, double factor) {
         double log2 = n <= 1 ? 0 : Math.log(n) / Math.log(2);
         return (int) Math.min(DEPTH_LIMIT, Math.round(8 + factor * log2));

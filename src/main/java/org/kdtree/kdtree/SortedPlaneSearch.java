@@ -31,7 +31,7 @@ final class SortedPlaneSearch implements PlaneSearch {
         }
     }
 
-    /** The sweep over one axis's sorted events; shared with the event-based builder. */
+    /** The sweep over one axis's sorted starts, ends and planar positions ({@link EventSweep} counts a node's event lists the same way). */
     static void sweep(SahCost sah, SahSplit best, int axis, int n,
                       double[] starts, double[] ends, int ns, double[] planars, int np) {
         int is = 0, ie = 0, ip = 0;
