@@ -285,6 +285,18 @@ public final class BuildNode {
 
     // ---- for the library's plane searches ----
 
+    /** The array the node's clipped bounds are read from, in either form, from slot {@link #boundsFrom()} (2k values a slot). */
+    double[] boundsArray() {
+        if (boundsArray == null) arrays();
+        return boundsArray;
+    }
+
+    /** The node's first slot in {@link #boundsArray()}. */
+    int boundsFrom() {
+        if (boundsArray == null) arrays();
+        return from;
+    }
+
     NodeStore store() { return store; }
 
     int level() { return d; }

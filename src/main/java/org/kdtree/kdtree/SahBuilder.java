@@ -22,7 +22,7 @@ import org.kdtree.limits.Limits;
  * {@link SahSettings}; a subclass runs the same searches over the same node store.
  */
 public class SahBuilder extends KdTreeBuilder {
-    private static final PlaneSearch NAIVE_SEARCH = new NaivePlaneSearch(), SORTED_SEARCH = new SortedPlaneSearch();
+    private static final PlaneSearch NAIVE_SEARCH = new NaivePlaneSearch();
 
     /** The plane search of the settings it was made for (made again when they change). */
     private PlaneSearch search;
@@ -79,7 +79,7 @@ public class SahBuilder extends KdTreeBuilder {
     private PlaneSearch searchOf(Algorithm a) {
         return switch (a) {
             case NAIVE -> NAIVE_SEARCH;
-            case SORTED -> SORTED_SEARCH;
+            case SORTED -> SortedPlaneSearch.INSTANCE;
             case EVENT -> EventSweep.INSTANCE;
             case BINNED -> new BinnedPlaneSearch(bins(), exactBelow());
         };

@@ -40,7 +40,7 @@
  * <li>{@code Traverser}: how does a ray go through it? Near and far child, tMin, tMax, tSplit
  * (talk 4.3).</li>
  * <li>Then, as needed: {@code SahSettings} and {@code Quality} (settings and presets),
- * {@code BinnedPlaneSearch} and {@code SmallNodeSweep} (the approximate search), the safety nets
+ * {@code BinnedPlaneSearch} (the approximate search), the safety nets
  * ({@code SplitOutcome}, {@code ReferenceBudget}), {@code Supervisor} (a student's builder run
  * under deadlines), {@code MeshTraversal} and {@code Mailbox} (fast tracing).</li>
  * </ol>
