@@ -73,6 +73,39 @@ class LookaheadTest {
         SahAlgorithmsTest.assertSameTree(new SahBuilder().lookahead(2).threads(2).build(scene), one);
     }
 
+    /**
+     * 5,000 big triangles, corners anywhere in the unit cube: every plane cuts most of them, so
+     * the default tree stops at leaves of thousands of references; a split of such a leaf on trial
+     * has children big enough (2,048 references and more) for the right one to be built on another
+     * thread and spliced in, and the trial's outcome, kept or taken back after the splice, is the
+     * sequential build's.
+     */
+    @Test void aTrialSplitWhoseSubtreeIsBuiltOnTwoThreads() {
+        MeshBuilder m = new MeshBuilder();
+        Random r = new Random(47);
+        for (int i = 0; i < 5000; i++)
+            m.triangle(new double[] {r.nextDouble(), r.nextDouble(), r.nextDouble()},
+                    new double[] {r.nextDouble(), r.nextDouble(), r.nextDouble()},
+                    new double[] {r.nextDouble(), r.nextDouble(), r.nextDouble()});
+        TriangleMesh scene = m.build();
+        KdTree none = new SahBuilder().build(scene);
+        int[] largest = {0};
+        none.walk(new TreeVisitor() {
+            @Override public void interior(int node, int depth, Box voxel, int axis, double split) { }
+            @Override public void leaf(int node, int depth, Box voxel, int from, int to) { largest[0] = Math.max(largest[0], to - from); }
+        });
+        assertThat(largest[0]).as("the default tree's largest leaf").isGreaterThanOrEqualTo(2 * 2048);
+        for (int n = 1; n <= 3; n++) {
+            KdTree one = new SahBuilder().lookahead(n).build(scene);
+            SahAlgorithmsTest.assertSameTree(new SahBuilder().lookahead(n).threads(2).build(scene), one, "lookahead " + n);
+            BuildWatch watch = BuildWatch.watched();
+            new SahBuilder().lookahead(n).threads(2).build(scene, watch);
+            assertThat(watch.nodes()).as("lookahead %d: nodes built, some of them taken back", n).isGreaterThan(one.nodeCount());
+            assertThat(one.stats().expectedCost()).isLessThanOrEqualTo(none.stats().expectedCost() * (1 + 1e-12));
+            checkRays(scene, one, 300);
+        }
+    }
+
     /** A trial split is a split like any other: the depth cap and the reference budget still bind. */
     @Test void theDepthCapAndTheReferenceBudgetStillBind() {
         TriangleMesh scene = Meshes.clustered(3000, 0.02, 45);
