@@ -11,6 +11,7 @@ import org.kdtree.bvh.BvhBuilder;
 import org.kdtree.kdtree.KdTreeBuilder;
 import org.kdtree.kdtree.Quality;
 import org.kdtree.kdtree.SahBuilder;
+import org.kdtree.kdtree.SahSettings;
 import org.kdtree.shape.TriangleMesh;
 import org.kdtree.spec.BuilderSpec;
 import org.kdtree.spec.Builders;
@@ -75,12 +76,12 @@ public class BuildBenchmark {
     private static Map<String, BuilderSpec> specs() {
         BuilderSpec sah = BuilderSpec.of("sah");
         Map<String, BuilderSpec> m = new LinkedHashMap<>();
-        m.put("sah-naive", sah.with(SahBuilder.ALGORITHM, SahBuilder.Algorithm.NAIVE));
-        m.put("sah-sorted", sah.with(SahBuilder.ALGORITHM, SahBuilder.Algorithm.SORTED));
-        m.put("sah-event", sah.with(SahBuilder.ALGORITHM, SahBuilder.Algorithm.EVENT));
-        m.put("sah-binned", sah.with(SahBuilder.ALGORITHM, SahBuilder.Algorithm.BINNED));
-        m.put("sah-balanced", sah.with(SahBuilder.QUALITY, Quality.BALANCED));
-        m.put("sah-fast", sah.with(SahBuilder.QUALITY, Quality.FAST));
+        m.put("sah-naive", sah.with(SahSettings.ALGORITHM, SahBuilder.Algorithm.NAIVE));
+        m.put("sah-sorted", sah.with(SahSettings.ALGORITHM, SahBuilder.Algorithm.SORTED));
+        m.put("sah-event", sah.with(SahSettings.ALGORITHM, SahBuilder.Algorithm.EVENT));
+        m.put("sah-binned", sah.with(SahSettings.ALGORITHM, SahBuilder.Algorithm.BINNED));
+        m.put("sah-balanced", sah.with(SahSettings.QUALITY, Quality.BALANCED));
+        m.put("sah-fast", sah.with(SahSettings.QUALITY, Quality.FAST));
         for (String name : Builders.names()) m.putIfAbsent(name, BuilderSpec.of(name));
         m.put(BvhBuilder.NAME, BuilderSpec.of(BvhBuilder.NAME));
         m.put("bvh-width2", BuilderSpec.of(BvhBuilder.NAME).with(BvhBuilder.WIDTH, 2));

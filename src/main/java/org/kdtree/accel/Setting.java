@@ -15,7 +15,7 @@ import org.kdtree.limits.Limits;
  * table in docs/limits.md are made from the rows of every builder known by name.
  *
  * <p>The rows that both structures take are {@link SharedSettings}'; each builder declares its
- * own beside its code (the SAH's lambda in {@code SahBuilder}, the BVH's width in
+ * own beside its code (the SAH's lambda in {@code SahSettings}, the BVH's width in
  * {@code BvhBuilder}), and a plug-in's builder may declare rows of its own the same way.
  *
  * @param <T> the value's type: Double, Integer, Boolean or an enum

@@ -15,6 +15,7 @@ import javax.swing.JSlider;
 import org.kdtree.accel.Setting;
 import org.kdtree.accel.SharedSettings;
 import org.kdtree.kdtree.SahBuilder;
+import org.kdtree.kdtree.SahSettings;
 import org.kdtree.spec.BuilderSpec;
 
 /**
@@ -31,9 +32,9 @@ final class BuilderPanel extends JPanel {
      * The settings the workbench does not offer: a preset (the controls set what it would, and
      * would override it) and threads (its scenes build in milliseconds on one; the tree is the same).
      */
-    private static final Set<Setting<?>> NOT_OFFERED = Set.of(SahBuilder.QUALITY, SharedSettings.THREADS);
+    private static final Set<Setting<?>> NOT_OFFERED = Set.of(SahSettings.QUALITY, SharedSettings.THREADS);
     /** The settings only the binned plane search uses: greyed out, and not given, under the exact ones (a hierarchy always bins). */
-    private static final Set<Setting<?>> BINNED_ONLY = Set.of(SharedSettings.BINS, SahBuilder.EXACT_BELOW);
+    private static final Set<Setting<?>> BINNED_ONLY = Set.of(SharedSettings.BINS, SahSettings.EXACT_BELOW);
 
     /** The model whose builder settings this panel edits. */
     private final WorkbenchModel model;
@@ -47,8 +48,8 @@ final class BuilderPanel extends JPanel {
     private final Map<Setting<?>, SettingControl> controls = new LinkedHashMap<>();
     private final Map<Setting<?>, JLabel> labels = new LinkedHashMap<>();
     /** lambda as a slider, in hundredths. */
-    private final JSlider lambdaSlider = new JSlider((int) Math.round(SahBuilder.LAMBDA.limit().min() * 100),
-            (int) Math.round(SahBuilder.LAMBDA.limit().max() * 100), (int) Math.round(SahBuilder.LAMBDA.defaultValue() * 100));
+    private final JSlider lambdaSlider = new JSlider((int) Math.round(SahSettings.LAMBDA.limit().min() * 100),
+            (int) Math.round(SahSettings.LAMBDA.limit().max() * 100), (int) Math.round(SahSettings.LAMBDA.defaultValue() * 100));
     /** The automatic depth cap the current scene gets. */
     private final JLabel autoDepth = new JLabel();
     /** True while the panel sets its own controls, so that their listeners do not write back. */
@@ -77,7 +78,7 @@ final class BuilderPanel extends JPanel {
             SettingControl c = SettingControl.of(s, this::reject, v -> v != SahBuilder.Algorithm.NAIVE);
             controls.put(s, c);
             labels.put(s, row(y++, c.label(), c.component()));
-            if (s == SahBuilder.LAMBDA) row(y++, "", lambdaSlider);
+            if (s == SahSettings.LAMBDA) row(y++, "", lambdaSlider);
             if (s == SharedSettings.MAX_DEPTH) row(y++, "", autoDepth);
             c.onChange(this::apply);
         }
@@ -96,7 +97,7 @@ final class BuilderPanel extends JPanel {
             }
         });
         lambdaSlider.addChangeListener(e -> {
-            if (!updating) controls.get(SahBuilder.LAMBDA).show(lambdaSlider.getValue() / 100.0);
+            if (!updating) controls.get(SahSettings.LAMBDA).show(lambdaSlider.getValue() / 100.0);
         });
         show(model.settings());
         model.addListener(c -> {
@@ -149,8 +150,8 @@ final class BuilderPanel extends JPanel {
 
     /** Whether {@code setting} counts for builder {@code name} as the controls are set (bins only under a binned search). */
     private boolean live(Setting<?> setting, String name) {
-        return BuilderSpec.applies(setting, name) && (!BINNED_ONLY.contains(setting) || !BuilderSpec.applies(SahBuilder.ALGORITHM, name)
-                || controls.get(SahBuilder.ALGORITHM).value() == SahBuilder.Algorithm.BINNED);
+        return BuilderSpec.applies(setting, name) && (!BINNED_ONLY.contains(setting) || !BuilderSpec.applies(SahSettings.ALGORITHM, name)
+                || controls.get(SahSettings.ALGORITHM).value() == SahBuilder.Algorithm.BINNED);
     }
 
     private void show(BuilderSpec s) {
@@ -164,7 +165,7 @@ final class BuilderPanel extends JPanel {
                 c.component().setVisible(live);
                 labels.get(c.setting()).setVisible(live);
             }
-            SettingControl lambda = controls.get(SahBuilder.LAMBDA);
+            SettingControl lambda = controls.get(SahSettings.LAMBDA);
             lambdaSlider.setValue((int) Math.round((Double) lambda.value() * 100));
             lambdaSlider.setEnabled(lambda.component().isEnabled());
             lambdaSlider.setVisible(lambda.component().isVisible());

@@ -7,7 +7,7 @@ package org.kdtree.kdtree;
  * node, with no sorting; the plane found may cost a little more than the exact minimum.
  *
  * <p>Small nodes, below a threshold (default 64 references), are searched exactly instead, in
- * place ({@link SmallNodeSweep}: their bounds sorted locally, no event lists):
+ * place ({@link SortedPlaneSearch}: their bounds sorted locally, no event lists):
  * there the exact sweep is as cheap as the histograms, and bin boundaries rarely fall where a
  * few triangles can be separated (on the bunny, pure 32-bin SAH costs 10 % more than exact,
  * with the exact sweep below 64 references under 3 %).
@@ -21,7 +21,7 @@ final class BinnedPlaneSearch implements PlaneSearch {
     private final int bins;
     private final int exactBelow;
 
-    /** B bins per axis; nodes with fewer than {@code exactBelow} references get the exact sweep ({@link EventSweep}). */
+    /** B bins per axis; nodes with fewer than {@code exactBelow} references get the exact sweep ({@link SortedPlaneSearch}, or {@link EventSweep} for a node held as events). */
     BinnedPlaneSearch(int bins, int exactBelow) {
         if (bins < 2) throw new IllegalArgumentException("binned SAH needs at least 2 bins, got " + bins);
         this.bins = bins;
@@ -32,7 +32,7 @@ final class BinnedPlaneSearch implements PlaneSearch {
         NodeStore store = node.store();
         int n = node.size(), k = node.dimension(), d = node.level(), c = node.child();
         if (n < exactBelow) {
-            if (store.formOf(d, c) == NodeStore.BOUNDS) SmallNodeSweep.search(node, sah, best);
+            if (store.formOf(d, c) == NodeStore.BOUNDS) SortedPlaneSearch.INSTANCE.search(node, sah, best);
             else EventSweep.INSTANCE.search(node, sah, best);
             return;
         }

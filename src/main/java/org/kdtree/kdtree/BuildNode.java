@@ -22,8 +22,8 @@ public final class BuildNode {
     private final NodeStore store;
     private final Box voxel;
     private final int k;
-    private int d, c, size;
-    private boolean voxelFilled;
+    private int d, c, size, trials;
+    private boolean voxelFilled, onTrial;
     private SplitPlane kept;
     /**
      * Where the node's references and clipped bounds are read, from slot {@link #from}: the
@@ -49,12 +49,14 @@ public final class BuildNode {
         this.eventTo = new int[k];
     }
 
-    /** Points this view at child c of level d of its store; forgets the kept plane. */
-    BuildNode point(int depth, int child) {
+    /** Points this view at child c of level d of its store, below {@code trialSplits} trial splits; forgets the kept plane. */
+    BuildNode point(int depth, int child, int trialSplits) {
         d = depth;
         c = child;
         size = store.size(d, c);
+        trials = trialSplits;
         kept = null;
+        onTrial = false;
         voxelFilled = false;
         refArray = null;
         boundsArray = null;
@@ -150,7 +152,29 @@ public final class BuildNode {
      * with nothing kept.
      * @param plane the plane to keep, or null to forget it
      */
-    public void keepPlane(SplitPlane plane) { kept = plane; }
+    public void keepPlane(SplitPlane plane) {
+        kept = plane;
+        onTrial = false;
+    }
+
+    /**
+     * Keeps {@code plane} as {@link #keepPlane} does, for a split made on trial (the talk's "a few
+     * more iterations" past the point where the cost criterion says stop, which may be a local
+     * minimum): the recursion builds the subtree below it, and keeps it only if its expected cost
+     * ends below that of the leaf it replaces; otherwise the node becomes that leaf after all.
+     * Its descendants see one more {@link #trialSplits()}.
+     * @param plane the plane to try
+     */
+    public void keepTrialPlane(SplitPlane plane) {
+        kept = plane;
+        onTrial = true;
+    }
+
+    /** {@return whether the plane kept for this node is on trial ({@link #keepTrialPlane})} */
+    boolean onTrial() { return onTrial; }
+
+    /** {@return how many of the splits on the path from the root to this node were made on trial ({@link #keepTrialPlane})} */
+    public int trialSplits() { return trials; }
 
     /** {@return the plane kept for this node by {@link #keepPlane}, or null} */
     public SplitPlane keptPlane() { return kept; }
@@ -260,6 +284,18 @@ public final class BuildNode {
     }
 
     // ---- for the library's plane searches ----
+
+    /** The array the node's clipped bounds are read from, in either form, from slot {@link #boundsFrom()} (2k values a slot). */
+    double[] boundsArray() {
+        if (boundsArray == null) arrays();
+        return boundsArray;
+    }
+
+    /** The node's first slot in {@link #boundsArray()}. */
+    int boundsFrom() {
+        if (boundsArray == null) arrays();
+        return from;
+    }
 
     NodeStore store() { return store; }
 

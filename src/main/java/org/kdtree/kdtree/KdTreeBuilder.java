@@ -113,57 +113,79 @@ public abstract class KdTreeBuilder implements StructureBuilder {
     private void recConstRoot(Build build, Box rootVoxel, KdTreeWriter out) {
         NodeStore store = new NodeStore(build.primitives);
         store.writeRoot(rootVoxel, ReferenceBudget.root(referenceBudget(), build.primitives.size()));
-        recConst(build, store, 0, 0, out);
+        recConst(build, store, 0, 0, 0, out);
     }
 
     /**
-     * recConst for child c of level d of {@code store} (the root is child 0 of level 0): the one
-     * place where Algorithm 1 is written. The node's children go to level d + 1.
+     * recConst for child c of level d of {@code store} (the root is child 0 of level 0), below
+     * {@code trials} splits made on trial: the one place where Algorithm 1 is written. The node's
+     * children go to level d + 1.
+     *
+     * <p>A split made on trial ({@link BuildNode#keepTrialPlane}) is kept only if its subtree's
+     * expected cost ends below its leaf's; else the subtree is written over by that leaf (the node
+     * is still in level d: its children lived below it). So under a trial every node returns its
+     * subtree's cost, weighted by area as the tree's statistics weigh it (Kt SA(V) for an interior
+     * node, Ki |T| SA(V) for a leaf); elsewhere it returns 0, and costs nothing.
      */
-    private void recConst(Build build, NodeStore store, int d, int c, KdTreeWriter out) {
-        BuildNode node = store.view.point(d, c);
+    private double recConst(Build build, NodeStore store, int d, int c, int trials, KdTreeWriter out) {
+        BuildNode node = store.view.point(d, c, trials);
         build.watch.node(++store.nodes);
-        if (d >= build.depthCap || BuilderCalls.terminate(this, build, build.watch, node)) {
-            store.leaf(d, c, out);
-            return;
-        }
+        if (d >= build.depthCap || BuilderCalls.terminate(this, build, build.watch, node))
+            return leaf(store, d, c, trials > 0 ? node.voxel().surfaceArea() : 0, out);
         SplitPlane p = BuilderCalls.findPlane(this, build, build.watch, node);
+        boolean trial = node.onTrial();
+        double area = trials > 0 || trial ? node.voxel().surfaceArea() : 0;
         int outcome = store.split(d, c, p.axis(), p.position(), p.planarLeft(), build.perfectSplits);
         if (outcome != SplitOutcome.SPLIT) {
             if (outcome == SplitOutcome.OVER_BUDGET) out.budgetLeaf();
-            store.leaf(d, c, out);
-            return;
+            return leaf(store, d, c, area, out);
         }
-        int interior = out.interior(p.axis(), p.position());
+        KdTreeWriter.Mark before = trial ? out.mark() : null;
+        int interior = out.interior(p.axis(), p.position()), below = trial ? trials + 1 : trials;
+        double cost = costModel.kt() * area;
         if (build.forkThreshold != Integer.MAX_VALUE && store.size(d + 1, 1) >= build.forkThreshold && store.size(d + 1, 0) > 0) {
-            forkRight(build, store, d + 1, interior, out);
-            return;
+            cost += forkRight(build, store, d + 1, below, interior, out);
+        } else {
+            cost += recConst(build, store, d + 1, 0, below, out);
+            out.setRightChild(interior);
+            cost += recConst(build, store, d + 1, 1, below, out);
         }
-        recConst(build, store, d + 1, 0, out);
-        out.setRightChild(interior);
-        recConst(build, store, d + 1, 1, out);
+        if (!trial || cost < leafCost(store, d, c, area)) return cost;
+        out.rewind(before);
+        return leaf(store, d, c, area, out);
+    }
+
+    /** Writes child c of level d as a leaf; returns its cost weighted by {@code area} (0 if not measured). */
+    private double leaf(NodeStore store, int d, int c, double area, KdTreeWriter out) {
+        store.leaf(d, c, out);
+        return leafCost(store, d, c, area);
+    }
+
+    private double leafCost(NodeStore store, int d, int c, double area) {
+        return costModel.ki() * store.size(d, c) * area;
     }
 
     /**
      * Both children of level d, the right one built by another thread: copied into an idle
      * store of the build (with its writer, reused from fork to fork), built there while this
      * thread builds the left one, then spliced in after it. The same recursion, so the same tree,
-     * in the same depth-first order.
+     * in the same depth-first order; returns the two subtrees' cost as recConst does.
      */
-    private void forkRight(Build build, NodeStore store, int d, int interior, KdTreeWriter out) {
+    private double forkRight(Build build, NodeStore store, int d, int trials, int interior, KdTreeWriter out) {
         Spare spare = build.spares.poll();
         if (spare == null) spare = new Spare(new NodeStore(build.primitives), new KdTreeWriter(store.k));
         Spare other = spare;
         store.copyChild(d, 1, other.store);
-        ForkJoinTask<?> right = ForkJoinTask.adapt(() -> {
+        ForkJoinTask<Double> right = ForkJoinTask.adapt(() -> {
             other.out.clear();
-            recConst(build, other.store, d, 1, other.out);
+            return recConst(build, other.store, d, 1, trials, other.out);
         }).fork();
-        recConst(build, store, d, 0, out);
-        right.join();
+        double cost = recConst(build, store, d, 0, trials, out);
+        cost += right.join();
         out.setRightChild(interior);
         out.append(other.out);
         build.spares.push(other);
+        return cost;
     }
 
     /** An idle store and writer for a subtree handed to another thread. */
@@ -220,16 +242,7 @@ public abstract class KdTreeBuilder implements StructureBuilder {
         return all;
     }
 
-    /**
-     * The default depth cap, {@code round(8 + 1.3 log2 N)}, as pbrt and Wald and Havran use.
-     *
-     * @param n N, the number of primitives
-     * @return the cap
-     */
-    public static int defaultMaxDepth(int n) {
-        return automaticDepthCap(n, DEFAULT_DEPTH_FACTOR);
-    }
-
+    /** {@code round(8 + c log2 N)}, at most {@link #DEPTH_LIMIT}: pbrt's and Wald and Havran's cap with c = 1.3. */
     private static int automaticDepthCap(int n, double factor) {
         double log2 = n <= 1 ? 0 : Math.log(n) / Math.log(2);
         return (int) Math.min(DEPTH_LIMIT, Math.round(8 + factor * log2));

@@ -113,15 +113,22 @@ public final class KdTreeWriter {
         return base;
     }
 
+    /** What a writer has written up to some moment ({@link #mark}), to go back to ({@link #rewind}). */
+    record Mark(int nodes, int refs, int budgetLeaves) {
+    }
+
+    /** {@return what has been written so far}, for {@link #rewind} to go back to (a trial split's subtree that did not pay) */
+    Mark mark() { return new Mark(nodeCount, refCount, budgetLeaves); }
+
     /**
-     * Makes room for {@code nodes} nodes and {@code refs} leaf references, so that a builder that
-     * can estimate its tree's size spares the copies of growing by doubling. Writing beyond it still works.
-     * @param nodes the expected number of nodes
-     * @param refs the expected number of leaf references
+     * Forgets what was written after {@code m}, keeping the arrays: the next node written takes the
+     * place of the first node forgotten.
+     * @param m a mark of this writer, taken since its last {@link #clear}
      */
-    public void reserve(int nodes, int refs) {
-        if (this.nodes.length < (long) Nodes.INTS * nodes) this.nodes = Arrays.copyOf(this.nodes, Nodes.INTS * nodes);
-        if (this.refs.length < refs) this.refs = Arrays.copyOf(this.refs, refs);
+    void rewind(Mark m) {
+        nodeCount = m.nodes();
+        refCount = m.refs();
+        budgetLeaves = m.budgetLeaves();
     }
 
     /** Forgets everything written, keeping the arrays, so that the writer can take another (sub)tree. */

@@ -46,14 +46,4 @@ public enum Quality {
 
     /** {@return the binned search's exact threshold, or -1 where the preset leaves it at the setting's default} */
     public int exactBelow() { return exactBelow; }
-
-    /**
-     * Gives {@code sah} this preset ({@link SahBuilder#quality}).
-     *
-     * @param sah the builder to set
-     * @return {@code sah}
-     */
-    public SahBuilder applyTo(SahBuilder sah) {
-        return sah.quality(this);
-    }
 }

@@ -35,6 +35,12 @@ public final class Limits {
     public static final Limit BVH_WIDTH = Limit.whole("BVH width", 2, 8);
     /** The SAH's smallest node it searches a plane for: smaller ones become leaves. */
     public static final Limit LEAF_BELOW = Limit.whole("leaf below", 1, 1 << 16).noting("1 = only empty nodes");
+    /**
+     * Splits the SAH still makes on one path past the point where its cost criterion says stop
+     * (each kept only where its subtree ends cheaper): pbrt-v3 allows 3; past a few, a build spends
+     * more and more on subtrees that are mostly thrown away.
+     */
+    public static final Limit LOOKAHEAD = Limit.whole("lookahead", 0, 8).noting("0 = stop where the cost says so");
     /** How long one call of a supervised builder's terminate or findPlane may take before it is reported as hung ({@link Deadlines}). */
     public static final Limit CALL_DEADLINE = Limit.real("call deadline", 0.1, 3600).noting("seconds");
     /** How long one supervised build may take before it is reported as slow ({@link Deadlines}). */
@@ -100,7 +106,7 @@ public final class Limits {
 
     /** All of them, in the order of docs/limits.md (the workbench's own are in {@code gui.WorkbenchLimits}). */
     public static final List<Limit> ALL = List.of(THREADS, MAX_DEPTH, DEPTH_FACTOR, REFERENCE_BUDGET, KT, KI, LAMBDA,
-            MIN_PRIMITIVES, BINS, EXACT_BELOW, LEAF_BELOW, LEAF_SIZE, BVH_WIDTH, CALL_DEADLINE, BUILD_DEADLINE, STUDENT_DEADLINE, STUDENT_HEAP, IMAGE_SIDE, SAMPLES_PER_PIXEL, RAY_DEPTH, LIGHT_SAMPLES,
+            MIN_PRIMITIVES, BINS, EXACT_BELOW, LEAF_BELOW, LOOKAHEAD, LEAF_SIZE, BVH_WIDTH, CALL_DEADLINE, BUILD_DEADLINE, STUDENT_DEADLINE, STUDENT_HEAP, IMAGE_SIDE, SAMPLES_PER_PIXEL, RAY_DEPTH, LIGHT_SAMPLES,
             SPHERE_SEGMENTS, SPHERE_RINGS, FLAKE_LEVELS,
             RUNS, WARMUP, GRID, RAY_COUNT, RAYS_PER_TRIANGLE,
             NEIGHBOURS, LEAF_BUDGET, EPSILON, POINT_COUNT, QUERY_COUNT, DIMENSION, SCENE_OBJECTS);

@@ -11,7 +11,7 @@ import org.kdtree.accel.Setting;
 /**
  * The one table of builder settings: every row that a builder known by name takes
  * ({@link BuilderSpec#names()}), each declared once by its owner (the shared rows in
- * {@code accel.SharedSettings}, the SAH's in {@code SahBuilder}, the BVH's width in
+ * {@code accel.SharedSettings}, the SAH's in {@code SahSettings}, the BVH's width in
  * {@code BvhBuilder}, a plug-in's in its own class). The command line's options, the workbench's
  * controls and docs/limits.md are made from it, so a plug-in's rows join them when it is loaded.
  * {@link BuilderSpec} is its public face.

@@ -7,7 +7,7 @@ import org.kdtree.bvh.BvhBuilder;
 import org.kdtree.kdtree.KdTreeBuilder;
 import org.kdtree.kdtree.Quality;
 import org.kdtree.kdtree.SahBuilder.Algorithm;
-import org.kdtree.kdtree.SahBuilder;
+import org.kdtree.kdtree.SahSettings;
 import org.kdtree.spec.BuilderSpec;
 import org.kdtree.spec.Builders;
 
@@ -24,7 +24,7 @@ public record Variant(String name, BuilderSpec spec) {
      * Every variant the study compares: the two median builders, exact SAH with lambda 1.0, 0.8
      * and 0.5 (and the sorted algorithm, same tree, for its build time), binned SAH with B = 8,
      * 32, 256 (and pure binning without the exact sweep of small nodes), SAH without perfect
-     * splits, SAH under depth caps 12, 16 and 20, the quality presets fast (binned, leaves below 11
+     * splits, SAH under depth caps 12, 16 and 20, exact SAH with a lookahead of 1, 2 and 3, the quality presets fast (binned, leaves below 11
      * references) and balanced (exact, leaves below 6); then every
      * other registered builder (a student's too) with its default settings; then the bounding
      * volume hierarchy: by default (4 children per node, 32 bins, leaves up to 16), collapsed to 2
@@ -39,17 +39,19 @@ public record Variant(String name, BuilderSpec spec) {
         v.add(new Variant("median-plane", BuilderSpec.of("median-plane")));
         v.add(new Variant("object-median", BuilderSpec.of("object-median")));
         for (double lambda : new double[] {1.0, 0.8, 0.5})
-            v.add(new Variant("sah-exact-l" + lambda, sah.with(SahBuilder.LAMBDA, lambda)));
-        v.add(new Variant("sah-sorted-l0.8", sah.with(SahBuilder.ALGORITHM, Algorithm.SORTED)));
-        BuilderSpec binned = sah.with(SahBuilder.ALGORITHM, Algorithm.BINNED);
+            v.add(new Variant("sah-exact-l" + lambda, sah.with(SahSettings.LAMBDA, lambda)));
+        v.add(new Variant("sah-sorted-l0.8", sah.with(SahSettings.ALGORITHM, Algorithm.SORTED)));
+        BuilderSpec binned = sah.with(SahSettings.ALGORITHM, Algorithm.BINNED);
         for (int b : new int[] {8, 32, 256})
             v.add(new Variant("sah-binned-b" + b, binned.with(SharedSettings.BINS, b)));
-        v.add(new Variant("sah-binned-b32-pure", binned.with(SharedSettings.BINS, 32).with(SahBuilder.EXACT_BELOW, 0)));
+        v.add(new Variant("sah-binned-b32-pure", binned.with(SharedSettings.BINS, 32).with(SahSettings.EXACT_BELOW, 0)));
         v.add(new Variant("sah-no-perfect-splits", sah.with(KdTreeBuilder.PERFECT_SPLITS, false)));
         for (int d : new int[] {12, 16, 20})
             v.add(new Variant("sah-maxdepth-" + d, sah.with(SharedSettings.MAX_DEPTH, d)));
-        v.add(new Variant("sah-fast", sah.with(SahBuilder.QUALITY, Quality.FAST)));
-        v.add(new Variant("sah-balanced", sah.with(SahBuilder.QUALITY, Quality.BALANCED)));
+        for (int n : new int[] {1, 2, 3})
+            v.add(new Variant("sah-lookahead-" + n, sah.with(SahSettings.LOOKAHEAD, n)));
+        v.add(new Variant("sah-fast", sah.with(SahSettings.QUALITY, Quality.FAST)));
+        v.add(new Variant("sah-balanced", sah.with(SahSettings.QUALITY, Quality.BALANCED)));
         for (String name : Builders.names())
             if (v.stream().noneMatch(x -> x.spec().builder().equals(name))) v.add(new Variant(name, BuilderSpec.of(name)));
         v.addAll(bvh());

@@ -52,7 +52,7 @@ class WorkbenchGuiTest {
         window.comboBox("builder").selectItem("sah");
         assertThat(stats()).isEqualTo(sah);
         window.spinner("lambda").select(0.2);
-        assertThat(bench.model().settings().get(org.kdtree.kdtree.SahBuilder.LAMBDA)).isEqualTo(0.2);
+        assertThat(bench.model().settings().get(org.kdtree.kdtree.SahSettings.LAMBDA)).isEqualTo(0.2);
         assertThat(stats()).as("lambda 0.2 cuts off more empty space than 0.8").isNotEqualTo(sah);
 
         window.toggleButton("tool.RAY").click();

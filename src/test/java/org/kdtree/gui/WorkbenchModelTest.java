@@ -17,7 +17,7 @@ class WorkbenchModelTest {
         m.addListener(heard::add);
         m.setScene("t", Shapes.clustered(300, 3).shapes());
         int sahNodes = m.tree().nodeCount();
-        m.setSettings(m.settings().with(org.kdtree.kdtree.SahBuilder.LAMBDA, 1.0));
+        m.setSettings(m.settings().with(org.kdtree.kdtree.SahSettings.LAMBDA, 1.0));
         assertThat(m.tree()).isNotNull();
         m.setSettings(m.settings().forBuilder("median-plane").with(org.kdtree.kdtree.CyclingAxisBuilder.MIN_PRIMITIVES, 1));
         assertThat(m.tree().builderName()).isEqualTo("median-plane");
@@ -29,7 +29,7 @@ class WorkbenchModelTest {
         assertThat(heard).containsOnly(WorkbenchModel.Change.TREE).hasSize(5);
         assertThat(sahNodes).isGreaterThan(1);
 
-        m.setSettings(BuilderSpec.of("sah").with(org.kdtree.kdtree.SahBuilder.ALGORITHM, org.kdtree.kdtree.SahBuilder.Algorithm.SORTED));
+        m.setSettings(BuilderSpec.of("sah").with(org.kdtree.kdtree.SahSettings.ALGORITHM, org.kdtree.kdtree.SahBuilder.Algorithm.SORTED));
         assertThat(m.tree().nodeCount()).as("every exact plane search builds the same tree").isEqualTo(sahNodes);
     }
 

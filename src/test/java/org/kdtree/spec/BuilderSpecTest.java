@@ -12,6 +12,7 @@ import org.kdtree.kdtree.KdTreeBuilder;
 import org.kdtree.kdtree.MedianPlaneBuilder;
 import org.kdtree.kdtree.Quality;
 import org.kdtree.kdtree.SahBuilder;
+import org.kdtree.kdtree.SahSettings;
 import org.kdtree.kdtree.SlidingMidpointBuilder;
 import org.kdtree.shape.TriangleMesh;
 import org.kdtree.testing.Trees;
@@ -34,7 +35,7 @@ class BuilderSpecTest {
     }
 
     @Test void aSpecBuildsTheTreeOfTheSameFluentSettings() {
-        BuilderSpec spec = BuilderSpec.of("sah").with(SahBuilder.LAMBDA, 0.5).with(SahBuilder.ALGORITHM, SahBuilder.Algorithm.BINNED)
+        BuilderSpec spec = BuilderSpec.of("sah").with(SahSettings.LAMBDA, 0.5).with(SahSettings.ALGORITHM, SahBuilder.Algorithm.BINNED)
                 .with(SharedSettings.BINS, 8).with(SharedSettings.KT, 10.0).with(KdTreeBuilder.PERFECT_SPLITS, false).with(SharedSettings.MAX_DEPTH, 14);
         KdTreeBuilder fluent = new SahBuilder().lambda(0.5).algorithm(SahBuilder.Algorithm.BINNED).bins(8).costs(10, 20)
                 .perfectSplits(false).maxDepth(14);
@@ -45,25 +46,25 @@ class BuilderSpecTest {
     }
 
     @Test void aPresetComesFirstSoThatAnExplicitDepthOverridesIt() {
-        KdTreeBuilder b = BuilderSpec.of("sah").with(SharedSettings.MAX_DEPTH, 5).with(SahBuilder.QUALITY, Quality.FAST).create();
+        KdTreeBuilder b = BuilderSpec.of("sah").with(SharedSettings.MAX_DEPTH, 5).with(SahSettings.QUALITY, Quality.FAST).create();
         assertThat(b.maxDepth()).isEqualTo(5);
         assertThat(((SahBuilder) b).leafBelow()).isEqualTo(Quality.FAST.leafBelow());
     }
 
     @Test void aValueOutOfRangeIsRefusedWhenGivenNamingTheSetting() {
-        assertThatThrownBy(() -> BuilderSpec.of("sah").with(SahBuilder.LAMBDA, 2.0))
+        assertThatThrownBy(() -> BuilderSpec.of("sah").with(SahSettings.LAMBDA, 2.0))
                 .hasMessage("lambda must be between 0.01 and 1, got 2");
         assertThatThrownBy(() -> BuilderSpec.of("median-plane").with(CyclingAxisBuilder.MIN_PRIMITIVES, -1))
                 .hasMessageStartingWith("Kmintri must be between 0 and");
     }
 
     @Test void aSettingThatDoesNotApplyIsRefusedNotIgnoredNamingTheSetting() {
-        assertThatThrownBy(() -> BuilderSpec.of("median-plane").with(SahBuilder.LAMBDA, 0.5).with(SharedSettings.BINS, 8).create())
+        assertThatThrownBy(() -> BuilderSpec.of("median-plane").with(SahSettings.LAMBDA, 0.5).with(SharedSettings.BINS, 8).create())
                 .isInstanceOf(IllegalArgumentException.class)
                 .hasMessage("lambda applies to the sah builder only, not to median-plane");
         assertThatThrownBy(() -> BuilderSpec.of("median-plane").with(SharedSettings.BINS, 8).create())
                 .hasMessage("bins applies to the sah and bvh builders only, not to median-plane");
-        assertThatThrownBy(() -> BuilderSpec.of("bvh").with(SahBuilder.LAMBDA, 0.5).structureBuilder())
+        assertThatThrownBy(() -> BuilderSpec.of("bvh").with(SahSettings.LAMBDA, 0.5).structureBuilder())
                 .hasMessage("lambda applies to the sah builder only, not to bvh");
         assertThatThrownBy(() -> BuilderSpec.of("bvh").with(KdTreeBuilder.PERFECT_SPLITS, false).structureBuilder())
                 .hasMessage("perfect splits applies to the kd-tree builders only, not to bvh");
@@ -76,18 +77,18 @@ class BuilderSpecTest {
     }
 
     @Test void carryingSettingsToAnotherBuilderKeepsThoseThatApply() {
-        BuilderSpec sah = BuilderSpec.of("sah").with(SahBuilder.LAMBDA, 0.5).with(SharedSettings.KT, 3.0);
+        BuilderSpec sah = BuilderSpec.of("sah").with(SahSettings.LAMBDA, 0.5).with(SharedSettings.KT, 3.0);
         BuilderSpec median = sah.forBuilder("median-plane");
-        assertThat(median.get(SahBuilder.LAMBDA)).isNull();
+        assertThat(median.get(SahSettings.LAMBDA)).isNull();
         assertThat(median.get(SharedSettings.KT)).isEqualTo(3.0);
         assertThat(median.create().costModel().kt()).isEqualTo(3.0);
-        assertThat(median.forBuilder("sah").get(SahBuilder.LAMBDA)).as("dropped, not remembered").isNull();
+        assertThat(median.forBuilder("sah").get(SahSettings.LAMBDA)).as("dropped, not remembered").isNull();
     }
 
     @Test void valuesNotGivenAreTheBuildersDefaults() {
         BuilderSpec sah = BuilderSpec.of("sah");
-        assertThat(sah.value(SahBuilder.LAMBDA)).isEqualTo(0.8);
-        assertThat(sah.value(SahBuilder.ALGORITHM)).isEqualTo(SahBuilder.Algorithm.EVENT);
+        assertThat(sah.value(SahSettings.LAMBDA)).isEqualTo(0.8);
+        assertThat(sah.value(SahSettings.ALGORITHM)).isEqualTo(SahBuilder.Algorithm.EVENT);
         assertThat(sah.value(CyclingAxisBuilder.MIN_PRIMITIVES)).as("sah takes no Kmintri").isNull();
         assertThat(BuilderSpec.applies(CyclingAxisBuilder.MIN_PRIMITIVES, "object-median")).isTrue();
         assertThat(BuilderSpec.applies(SharedSettings.BINS, "median-plane")).isFalse();
@@ -101,7 +102,7 @@ class BuilderSpecTest {
         assertThat(b.name()).isEqualTo("centre-midpoint");
         assertThat(b.threads()).isEqualTo(2);
         assertThat(b.maxDepth()).isEqualTo(9);
-        assertThatThrownBy(() -> BuilderSpec.of("centre-midpoint").with(SahBuilder.LAMBDA, 0.5).create())
+        assertThatThrownBy(() -> BuilderSpec.of("centre-midpoint").with(SahSettings.LAMBDA, 0.5).create())
                 .hasMessage("lambda applies to the sah builder only, not to centre-midpoint");
         assertThatThrownBy(() -> BuilderSpec.of("nothing").create()).hasMessageStartingWith("unknown builder 'nothing'");
     }

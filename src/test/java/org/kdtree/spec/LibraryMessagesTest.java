@@ -13,6 +13,7 @@ import org.junit.jupiter.api.io.TempDir;
 import org.kdtree.accel.Setting;
 import org.kdtree.generate.Points;
 import org.kdtree.kdtree.SahBuilder;
+import org.kdtree.kdtree.SahSettings;
 import org.kdtree.measure.RayBatch;
 
 /**
@@ -41,7 +42,7 @@ class LibraryMessagesTest {
 
     @Test void theApiAndTheSpecNameTheSetting() {
         assertThatThrownBy(() -> new SahBuilder().lambda(2)).hasMessage("lambda must be between 0.01 and 1, got 2");
-        assertThatThrownBy(() -> BuilderSpec.of("sah").with(SahBuilder.LAMBDA, 2.0)).hasMessage("lambda must be between 0.01 and 1, got 2");
+        assertThatThrownBy(() -> BuilderSpec.of("sah").with(SahSettings.LAMBDA, 2.0)).hasMessage("lambda must be between 0.01 and 1, got 2");
         assertThatThrownBy(() -> new SahBuilder().threads(0)).hasMessage("threads must be between 1 and 256, got 0");
         assertThatThrownBy(() -> new RayBatch(0, () -> null)).hasMessage("threads must be between 1 and 256, got 0");
         assertThatThrownBy(() -> Points.named("gaussian", 1, 1, 1)).hasMessageNotContaining("--");

@@ -9,7 +9,7 @@ import java.util.stream.Collectors;
 import org.junit.jupiter.api.Test;
 import org.kdtree.accel.Setting;
 import org.kdtree.kdtree.KdTreeBuilder;
-import org.kdtree.kdtree.SahBuilder;
+import org.kdtree.kdtree.SahSettings;
 
 /**
  * The builder settings are declared once, in {@link Setting}: docs/limits.md's table of them is
@@ -58,6 +58,6 @@ class SettingsTableTest {
     @Test void eachOptionAndNameIsOneSettings() {
         assertThat(SettingsTable.all().stream().map(Setting::option).distinct()).hasSameSizeAs(SettingsTable.all());
         assertThat(SettingsTable.all().stream().map(Setting::name).distinct()).hasSameSizeAs(SettingsTable.all());
-        assertThat(SettingsTable.all().get(0)).as("the preset comes first, so that the other settings override it").isSameAs(SahBuilder.QUALITY);
+        assertThat(SettingsTable.all().get(0)).as("the preset comes first, so that the other settings override it").isSameAs(SahSettings.QUALITY);
     }
 }
