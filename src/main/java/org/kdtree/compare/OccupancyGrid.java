@@ -11,8 +11,7 @@ import org.kdtree.geom.Box;
  */
 final class OccupancyGrid {
     private final int k, axes, cells;
-    private final double[] centre, extent;
-    private final double scale;
+    private final RootFrame frame;
     private final double[] values;
     /** Per grid axis: the first cell a leaf overlaps, how many, and the share of each it covers. */
     private final int[] first, count;
@@ -24,15 +23,7 @@ final class OccupancyGrid {
         axes = TreeSignature.gridAxes(k);
         int bits = TreeSignature.cellBits(k);
         cells = 1 << bits;
-        centre = new double[k];
-        extent = new double[k];
-        double longest = 0;
-        for (int a = 0; a < k; a++) {
-            centre[a] = (root.min(a) + root.max(a)) / 2;
-            extent[a] = root.extent(a);
-            longest = Math.max(longest, extent[a]);
-        }
-        scale = longest > 0 ? 1 / longest : 1;
+        frame = new RootFrame(root);
         values = new double[1 << (bits * axes)];
         first = new int[axes];
         count = new int[axes];
@@ -43,7 +34,7 @@ final class OccupancyGrid {
     /** Adds a leaf's depth to the cells its voxel overlaps. */
     void add(Box voxel, int depth) {
         double weight = depth;
-        for (int a = axes; a < k; a++) if (extent[a] > 0) weight *= voxel.extent(a) / extent[a];
+        for (int a = axes; a < k; a++) weight *= frame.share(a, voxel.extent(a));
         for (int a = 0; a < axes; a++) if (!overlap(a, voxel)) return;
         if (weight == 0) return;
         java.util.Arrays.fill(at, 0);
@@ -64,9 +55,9 @@ final class OccupancyGrid {
     /** The cells the voxel overlaps along grid axis {@code a} and the share of each; false if none. */
     private boolean overlap(int a, Box voxel) {
         double lo, hi;
-        if (extent[a] > 0) {
-            lo = ((voxel.min(a) - centre[a]) * scale + 0.5) * cells;
-            hi = ((voxel.max(a) - centre[a]) * scale + 0.5) * cells;
+        if (!frame.flat(a)) {
+            lo = frame.toUnit(a, voxel.min(a)) * cells;
+            hi = frame.toUnit(a, voxel.max(a)) * cells;
         } else {   // a flat axis is projected: every leaf spans all of it
             lo = 0;
             hi = cells;

@@ -15,6 +15,7 @@ final class SignatureWalk implements TreeVisitor {
     private final double[] depths = new double[TreeSignature.DEPTH_BINS];
     private final double[] splits;
     private final OccupancyGrid grid;
+    private final RootFrame frame;
     private int leaves, maxDepth;
 
     SignatureWalk(KdTree tree) {
@@ -25,6 +26,7 @@ final class SignatureWalk implements TreeVisitor {
         for (int a = 0; a < k; a++) rootExtent[a] = root.extent(a);
         splits = new double[TreeSignature.SPLIT_DEPTHS * k * TreeSignature.POSITION_BINS];
         grid = new OccupancyGrid(root);
+        frame = new RootFrame(root);
         tree.walk(this);
     }
 
@@ -52,8 +54,8 @@ final class SignatureWalk implements TreeVisitor {
         depths[Math.min(depth, depths.length - 1)]++;
         double lnFraction = 0, fraction = 1;
         for (int a = 0; a < k; a++) {
-            if (!(rootExtent[a] > 0)) continue;   // a flat axis: every leaf spans all of it
-            double f = voxel.extent(a) / rootExtent[a];
+            if (frame.flat(a)) continue;   // a flat axis: every leaf spans all of it
+            double f = frame.share(a, voxel.extent(a));
             fraction *= f;
             lnFraction += f > 0 ? Math.log(f) : Double.NEGATIVE_INFINITY;
         }
