@@ -56,10 +56,12 @@ final class CompareChart {
         g.setRenderingHint(RenderingHints.KEY_TEXT_ANTIALIASING, RenderingHints.VALUE_TEXT_ANTIALIAS_ON);
         g.setColor(Color.WHITE);
         g.fillRect(0, 0, width, height);
-        double[] depthA = projected(a.signature()), depthB = projected(b.signature()), diff = new double[depthA.length];
+        double[] occupancyA = a.signature().occupancy(), occupancyB = b.signature().occupancy(), diff = new double[occupancyA.length];
+        for (int c = 0; c < diff.length; c++) diff[c] = Math.abs(occupancyA[c] - occupancyB[c]);
+        double[] depthA = projected(occupancyA, a.signature(), true), depthB = projected(occupancyB, b.signature(), true);
+        diff = projected(diff, a.signature(), false);
         double maxDepth = 0, maxDiff = 0;
         for (int c = 0; c < diff.length; c++) {
-            diff[c] = Math.abs(depthA[c] - depthB[c]);
             maxDepth = Math.max(maxDepth, Math.max(depthA[c], depthB[c]));
             maxDiff = Math.max(maxDiff, diff[c]);
         }
@@ -164,12 +166,12 @@ final class CompareChart {
         g.setFont(new Font(Font.SANS_SERIF, Font.PLAIN, 13));
         ramp(g, GAP, y, new Color(225, 236, 250), new Color(30, 80, 160), "leaf depth 0", String.format(Locale.ROOT, "%.1f", maxDepth));
         g.setColor(Color.BLACK);
-        g.drawString("red: split planes (thicker nearer the root); dark: the data"
-                + (k > 2 ? "; projected on axes 0 and 1" : ""), 2 * GAP + SIDE, y + 12);
-        ramp(g, 3 * GAP + 2 * SIDE, y, new Color(255, 236, 200), new Color(150, 0, 0), "|depth A - depth B| 0",
+        g.drawString("red: split planes (thicker nearer the root); dark: the data", 2 * GAP + SIDE, y + 12);
+        ramp(g, 3 * GAP + 2 * SIDE, y, new Color(255, 236, 200), new Color(150, 0, 0), "|depth A - depth B|: 0",
                 String.format(Locale.ROOT, "%.1f levels", maxDiff));
         g.setColor(Color.DARK_GRAY);
-        g.drawString("both roots centred and scaled by their longest side: a shifted or scaled copy looks the same", GAP, y + 36);
+        g.drawString("both roots centred and scaled by their longest side: a shifted or scaled copy looks the same"
+                + (k > 2 ? ". Projected on axes 0 and 1: the trees' deepest leaf, the differences' mean over the other axes" : ""), GAP, y + 36);
     }
 
     private static void ramp(Graphics2D g, int x, int y, Color low, Color high, String from, String to) {
@@ -184,18 +186,21 @@ final class CompareChart {
         g.drawString(to, x + w + 132, y + 12);
     }
 
-    /** The occupancy picture on axes 0 and 1, at most 64 cells a side: the mean over the other grid axes (and, in 1-D, over runs of cells). */
-    static double[] projected(TreeSignature s) {
+    /**
+     * A grid picture on axes 0 and 1, at most 64 cells a side: over the other grid axes (and, in
+     * 1-D, over runs of cells) the largest value ({@code deepest}) or the mean.
+     */
+    static double[] projected(double[] values, TreeSignature s, boolean deepest) {
         int side = s.cellsPerAxis(), bits = Integer.numberOfTrailingZeros(side), out = Math.min(side, 64);
         boolean twoAxes = s.gridAxes() > 1;
-        double[] occupancy = s.occupancy(), sum = new double[out * out];
+        double[] sum = new double[out * out];
         int[] count = new int[out * out];
-        for (int c = 0; c < occupancy.length; c++) {
+        for (int c = 0; c < values.length; c++) {
             int x = (c & (side - 1)) * out / side, y = twoAxes ? ((c >>> bits) & (side - 1)) * out / side : 0;
-            sum[y * out + x] += occupancy[c];
+            sum[y * out + x] = deepest ? Math.max(sum[y * out + x], values[c]) : sum[y * out + x] + values[c];
             count[y * out + x]++;
         }
-        for (int c = 0; c < sum.length; c++) sum[c] = count[c] > 0 ? sum[c] / count[c] : 0;
+        if (!deepest) for (int c = 0; c < sum.length; c++) sum[c] = count[c] > 0 ? sum[c] / count[c] : 0;
         if (!twoAxes) for (int y = 1; y < out; y++) System.arraycopy(sum, 0, sum, y * out, out);   // 1-D: the strip fills the square
         return sum;
     }
