@@ -7,7 +7,9 @@ import org.kdtree.compare.Term;
 import org.kdtree.compare.TreeDistance;
 import org.kdtree.compare.TreeSignature;
 import org.kdtree.files.AtomicFile;
+import org.kdtree.gui.TreeComparisonPicture;
 import org.kdtree.kdtree.KdTree;
+import org.kdtree.kdtree.Supervisor;
 import org.kdtree.shape.Primitives;
 import org.kdtree.spec.BuilderSpec;
 import picocli.CommandLine.Command;
@@ -40,6 +42,9 @@ final class CompareTreesCommand implements Callable<Integer> {
     @Mixin
     ProgressOption progress;
 
+    @Mixin
+    DeadlineOptions deadlines;
+
     @Option(names = "--csv", paramLabel = "FILE", description = "Also write the terms as CSV: term,weight,value (and the total).")
     Path csv;
 
@@ -60,7 +65,8 @@ final class CompareTreesCommand implements Callable<Integer> {
         TreeData.requireComparable("A", fileA, a, "B", fileB, b);
         BuilderSpec spec = TreeData.builder(options, a);
         String builder = spec.builder() + " (" + spec.describe() + ")";
-        KdTree treeA = TreeData.build(spec, a), treeB = TreeData.build(spec, b);
+        Supervisor supervisor = deadlines.supervisor();
+        KdTree treeA = TreeData.build(spec, a, supervisor), treeB = TreeData.build(spec, b, supervisor);
         TreeSignature sa = TreeSignature.of(treeA), sb = TreeSignature.of(treeB);
         TreeDistance d = TreeDistance.between(sa, sb);
         System.out.printf(Locale.ROOT, "compare-trees: %s, %s, builder %s%n", fileA, TreeData.describe(a), builder);
@@ -75,8 +81,8 @@ final class CompareTreesCommand implements Callable<Integer> {
             out.write(String.format(Locale.ROOT, "total,1,%.6f%n", d.total()));
         });
         if (chart != null)
-            CompareChart.write(chart, new CompareChart.Side("A " + fileA.getFileName(), a, treeA, sa),
-                    new CompareChart.Side("B " + fileB.getFileName(), b, treeB, sb), d, spec.builder());
+            TreeComparisonPicture.write(chart, new TreeComparisonPicture.Side("A " + fileA.getFileName(), a, treeA, sa),
+                    new TreeComparisonPicture.Side("B " + fileB.getFileName(), b, treeB, sb), d, spec.builder());
         return 0;
     }
 }

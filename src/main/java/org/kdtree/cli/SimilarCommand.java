@@ -14,6 +14,7 @@ import org.kdtree.compare.TreeDistance;
 import org.kdtree.compare.TreeSignature;
 import org.kdtree.files.AtomicFile;
 import org.kdtree.io.FileKind;
+import org.kdtree.kdtree.Supervisor;
 import org.kdtree.limits.Limits;
 import org.kdtree.shape.Primitives;
 import org.kdtree.spec.BuilderSpec;
@@ -51,6 +52,9 @@ final class SimilarCommand implements Callable<Integer> {
     @Mixin
     ProgressOption progress;
 
+    @Mixin
+    DeadlineOptions deadlines;
+
     @Option(names = "--cache", paramLabel = "DIR",
             description = "Where the signatures are kept (default: $XDG_CACHE_HOME/kdtree/signatures, else ~/.cache/kdtree/signatures).")
     Path cacheFolder;
@@ -73,14 +77,15 @@ final class SimilarCommand implements Callable<Integer> {
         BuilderSpec spec = TreeData.builder(options, q);
         String builder = spec.builder() + " (" + spec.describe() + ")";
         SignatureCache cache = new SignatureCache(cacheFolder != null ? cacheFolder : SignatureCache.defaultFolder(), builder);
-        TreeSignature qs = cache.get(query, () -> TreeSignature.of(TreeData.build(spec, q)));
+        Supervisor supervisor = deadlines.supervisor();
+        TreeSignature qs = cache.get(query, () -> TreeSignature.of(TreeData.build(spec, q, supervisor)));
         List<Ranked> ranked = new ArrayList<>();
         int otherKind = 0, otherData = 0, unreadable = 0;
         for (Path f : candidates()) {
             if (!sameKind(f)) { otherKind++; continue; }
             if (SameFile.same(f, query) || csv != null && SameFile.same(f, csv)) continue;
             try {
-                TreeSignature s = cache.get(f, () -> TreeSignature.of(TreeData.build(spec, TreeData.read("file", f))));
+                TreeSignature s = cache.get(f, () -> TreeSignature.of(TreeData.build(spec, TreeData.read("file", f), supervisor)));
                 if (s.dimension() != qs.dimension())   // kept in the cache all the same: the next query may be of its dimension
                     throw new IllegalArgumentException(f + ": " + s.dimension() + "-D data, the query's is " + qs.dimension() + "-D");
                 ranked.add(new Ranked(f, TreeDistance.between(qs, s)));

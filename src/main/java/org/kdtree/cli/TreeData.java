@@ -6,6 +6,7 @@ import java.nio.file.Path;
 import org.kdtree.io.FileKind;
 import org.kdtree.io.PrimitivesReader;
 import org.kdtree.kdtree.KdTree;
+import org.kdtree.kdtree.Supervisor;
 import org.kdtree.limits.Limits;
 import org.kdtree.shape.PointsKd;
 import org.kdtree.shape.Primitives;
@@ -72,8 +73,8 @@ final class TreeData {
         return options.builder() != null ? options.spec() : options.spec(data instanceof PointsKd ? POINTS_BUILDER : SCENE_BUILDER);
     }
 
-    /** {@return the tree the builder makes over the data} */
-    static KdTree build(BuilderSpec spec, Primitives data) {
-        return spec.create().build(data);
+    /** {@return the tree the builder makes over the data}, a plug-in's under the supervisor (the library's builders are trusted) */
+    static KdTree build(BuilderSpec spec, Primitives data, Supervisor supervisor) {
+        return supervisor.build(spec.create(), data);
     }
 }

@@ -1,4 +1,4 @@
-package org.kdtree.cli;
+package org.kdtree.gui;
 
 import java.awt.BasicStroke;
 import java.awt.Color;
@@ -11,47 +11,75 @@ import java.awt.image.BufferedImage;
 import java.io.IOException;
 import java.nio.file.Path;
 import java.util.Locale;
-import javax.imageio.ImageIO;
 import org.kdtree.compare.RootFrame;
 import org.kdtree.compare.Term;
 import org.kdtree.compare.TreeDistance;
 import org.kdtree.compare.TreeSignature;
-import org.kdtree.files.AtomicFile;
 import org.kdtree.geom.Box;
 import org.kdtree.kdtree.KdTree;
 import org.kdtree.kdtree.TreeVisitor;
 import org.kdtree.shape.Primitives;
 
 /**
- * {@code compare-trees --chart}: the two trees side by side, each in its root's unit frame (the
+ * Two data sets' kd-trees compared in one picture ({@code compare-trees --chart} and the
+ * workbench's "Compare data" view): the two trees side by side, each in its root's unit frame (the
  * signature's: centred, scaled by the longest side), the voxels shaded by their leaves' depth,
  * the data and the split lines over them; and a third panel, a heat map of where the leaf depths
  * differ. Above 2-D, the picture is the projection on the first two axes (the mean over the
  * others, and the split lines of those two axes only).
  */
-final class CompareChart {
+public final class TreeComparisonPicture {
     private static final int SIDE = 420, GAP = 24, TOP = 86, BOTTOM = 64, MAX_DRAWN = 20_000;
     private static final Color SPLIT = new Color(200, 40, 30), DATA = new Color(40, 40, 40);
 
-    /** One side of the comparison. */
-    record Side(String name, Primitives data, KdTree tree, TreeSignature signature) {
+    /** The picture's width in pixels. */
+    public static final int WIDTH = 3 * SIDE + 4 * GAP;
+    /** The picture's height in pixels. */
+    public static final int HEIGHT = TOP + SIDE + BOTTOM;
+
+    /**
+     * One side of the comparison.
+     *
+     * @param name      what the picture calls it
+     * @param data      the data the tree is over
+     * @param tree      its kd-tree
+     * @param signature the tree's signature
+     */
+    public record Side(String name, Primitives data, KdTree tree, TreeSignature signature) {
     }
 
-    private CompareChart() {
+    private TreeComparisonPicture() {
     }
 
-    /** Draws the comparison and writes it as a PNG, whole or not at all. */
-    static void write(Path file, Side a, Side b, TreeDistance d, String builder) throws IOException {
-        BufferedImage image = draw(a, b, d, builder);
-        AtomicFile.write(file, out -> {
-            if (!ImageIO.write(image, "png", out)) throw new IOException("no PNG writer available");
-        });
-    }
-
-    static BufferedImage draw(Side a, Side b, TreeDistance d, String builder) {
-        int width = 3 * SIDE + 4 * GAP, height = TOP + SIDE + BOTTOM;
-        BufferedImage image = new BufferedImage(width, height, BufferedImage.TYPE_INT_RGB);
+    /**
+     * Draws the comparison and writes it as a PNG, whole or not at all.
+     *
+     * @param file    the PNG file
+     * @param a       the first data set
+     * @param b       the second, of {@code a}'s dimension
+     * @param d       the distance between their signatures
+     * @param builder the builder of both trees, as the title names it
+     * @throws IOException if the file cannot be written; it is then left as it was
+     */
+    public static void write(Path file, Side a, Side b, TreeDistance d, String builder) throws IOException {
+        BufferedImage image = new BufferedImage(WIDTH, HEIGHT, BufferedImage.TYPE_INT_RGB);
         Graphics2D g = image.createGraphics();
+        paint(g, a, b, d, builder);
+        g.dispose();
+        PngExport.write(image, file);
+    }
+
+    /**
+     * Paints the comparison into {@code g}, {@link #WIDTH} x {@link #HEIGHT} pixels from its origin.
+     *
+     * @param g       where to paint
+     * @param a       the first data set
+     * @param b       the second, of {@code a}'s dimension
+     * @param d       the distance between their signatures
+     * @param builder the builder of both trees, as the title names it
+     */
+    public static void paint(Graphics2D g, Side a, Side b, TreeDistance d, String builder) {
+        int width = WIDTH, height = HEIGHT;
         g.setRenderingHint(RenderingHints.KEY_ANTIALIASING, RenderingHints.VALUE_ANTIALIAS_ON);
         g.setRenderingHint(RenderingHints.KEY_TEXT_ANTIALIASING, RenderingHints.VALUE_TEXT_ANTIALIAS_ON);
         g.setColor(Color.WHITE);
@@ -71,8 +99,6 @@ final class CompareChart {
         panel(g, 2 * GAP + SIDE, b, depthB, maxDepth, k);
         heat(g, 3 * GAP + 2 * SIDE, diff, maxDiff);
         legend(g, maxDepth, maxDiff, k);
-        g.dispose();
-        return image;
     }
 
     private static void header(Graphics2D g, Side a, Side b, TreeDistance d, String builder) {
@@ -190,7 +216,7 @@ final class CompareChart {
      * A grid picture on axes 0 and 1, at most 64 cells a side: over the other grid axes (and, in
      * 1-D, over runs of cells) the largest value ({@code deepest}) or the mean.
      */
-    static double[] projected(double[] values, TreeSignature s, boolean deepest) {
+    private static double[] projected(double[] values, TreeSignature s, boolean deepest) {
         int side = s.cellsPerAxis(), bits = Integer.numberOfTrailingZeros(side), out = Math.min(side, 64);
         boolean twoAxes = s.gridAxes() > 1;
         double[] sum = new double[out * out];
