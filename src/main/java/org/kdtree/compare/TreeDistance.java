@@ -47,10 +47,9 @@ public record TreeDistance(double total, double[] terms) {
     }
 
     /**
-     * {@return one term's value}
+     * {@return one term's value, in [0, 1]}
      *
      * @param term which term
-     * @return its value, in [0, 1]
      */
     public double term(Term term) {
         return terms[term.ordinal()];
