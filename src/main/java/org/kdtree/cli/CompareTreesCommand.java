@@ -35,8 +35,7 @@ final class CompareTreesCommand implements Callable<Integer> {
     Path fileB;
 
     @Mixin
-    BuilderOptions options = BuilderOptions.kdTrees(null,
-            "the builder of both trees (default: " + TreeData.POINTS_BUILDER + " for points, " + TreeData.SCENE_BUILDER + " for scenes and meshes)");
+    BuilderOptions options = TreeData.builderOptions("both trees");
 
     /** Taken as every command takes it (compare-trees draws no bar: it prints a few lines). */
     @Mixin

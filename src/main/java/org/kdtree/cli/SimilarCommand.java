@@ -45,8 +45,7 @@ final class SimilarCommand implements Callable<Integer> {
     int top;
 
     @Mixin
-    BuilderOptions options = BuilderOptions.kdTrees(null,
-            "the builder of every tree (default: " + TreeData.POINTS_BUILDER + " for points, " + TreeData.SCENE_BUILDER + " for scenes and meshes)");
+    BuilderOptions options = TreeData.builderOptions("every tree");
 
     /** Taken as every command takes it (similar draws no bar). */
     @Mixin

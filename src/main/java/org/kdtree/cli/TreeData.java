@@ -64,6 +64,17 @@ final class TreeData {
     }
 
     /**
+     * {@return the builder options of a command comparing trees}: a kd-tree builder, by default
+     * the one for the data's kind
+     *
+     * @param trees which trees the builder builds, for the help (e.g. "both trees")
+     */
+    static BuilderOptions builderOptions(String trees) {
+        return BuilderOptions.kdTrees(null, "the builder of " + trees + " (default: " + POINTS_BUILDER + " for points, "
+                + SCENE_BUILDER + " for scenes and meshes)");
+    }
+
+    /**
      * {@return the builder of a data set's tree}: the one the options name, or else the default for its kind
      *
      * @param options the command's builder options
