@@ -155,7 +155,8 @@ public final class TreeSignature {
         try (DataInputStream in = new DataInputStream(new ByteArrayInputStream(bytes))) {
             if (in.readInt() != MAGIC || in.readInt() != VERSION) throw new IllegalArgumentException("not a tree signature of this version");
             int dimension = in.readInt(), leaves = in.readInt(), maxDepth = in.readInt(), cellBits = in.readInt();
-            if (dimension < 1 || dimension > Limits.DIMENSION.max() || cellBits != cellBits(dimension))
+            if (dimension < 1 || dimension > Limits.DIMENSION.max() || cellBits != cellBits(dimension) || leaves < 1
+                    || maxDepth < 0 || maxDepth >= DEPTH_BINS)
                 throw new IllegalArgumentException("a tree signature of an impossible shape");
             double[] volumes = read(in, VOLUME_BINS), depths = read(in, DEPTH_BINS),
                     splits = read(in, SPLIT_DEPTHS * dimension * POSITION_BINS), occupancy = read(in, 1 << (cellBits * gridAxes(dimension)));

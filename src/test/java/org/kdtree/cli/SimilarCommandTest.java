@@ -57,6 +57,18 @@ class SimilarCommandTest {
         assertThat(last).doesNotContain("ring-");
     }
 
+    @Test void aCacheThatCannotBeWrittenIsSaidOnceAndTheSearchGoesOn() throws Exception {
+        Path data = Files.createDirectory(dir.resolve("data"));
+        for (int i = 0; i < 3; i++) csv(data, "u" + i + ".csv", Points.uniform(300, 2, i), 1, 0);
+        Path query = csv(dir, "q.csv", Points.uniform(300, 2, 9), 1, 0), notAFolder = dir.resolve("cache-file");
+        Files.writeString(notAFolder, "a file where the cache folder should be\n");
+        CliRun r = CliRun.of("similar", query.toString(), data.toString(), "--cache", notAFolder.toString());
+        assertThat(r.code()).as(r.err()).isZero();
+        assertThat(r.err().lines().toList()).singleElement().asString().startsWith("similar: note: cannot keep signatures in " + notAFolder);
+        assertThat(r.out()).contains("against 3 data sets").contains("0 from the cache, 4 made");
+        assertThat(Files.readString(notAFolder)).startsWith("a file where");
+    }
+
     @Test void badInputIsOneLine() throws Exception {
         Path query = csv(dir, "q.csv", Points.uniform(100, 2, 1), 1, 0);
         assertError(CliRun.of("similar", query.toString(), dir.resolve("nowhere").toString()),
