@@ -143,6 +143,86 @@ public final class Points {
         return new PointsKd(k, c);
     }
 
+    /**
+     * {@code n} points near a circle: radius 0.4 about the unit cube's centre in the plane of
+     * the first two axes, every coordinate then moved by Gaussian noise of standard deviation
+     * {@code noise} (a 1-D set has no circle: its points lie near 0.1 and 0.9).
+     *
+     * @param n     how many points
+     * @param k     coordinates per point
+     * @param noise the noise's standard deviation per axis
+     * @param seed  the random seed
+     * @return the points
+     */
+    public static PointsKd ring(int n, int k, double noise, long seed) {
+        Random r = new Random(seed);
+        double[] c = new double[Math.multiplyExact(n, k)];
+        for (int i = 0; i < n; i++) {
+            double angle = 2 * Math.PI * r.nextDouble();
+            for (int a = 0; a < k; a++) c[i * k + a] = 0.5 + noise * r.nextGaussian();
+            c[i * k] += 0.4 * Math.cos(angle);
+            if (k > 1) c[i * k + 1] += 0.4 * Math.sin(angle);
+        }
+        return new PointsKd(k, c);
+    }
+
+    /**
+     * {@code n} points near a segment through the unit cube, from a random point near one corner
+     * to one near the opposite corner, every coordinate moved by Gaussian noise of standard
+     * deviation {@code noise}.
+     *
+     * @param n     how many points
+     * @param k     coordinates per point
+     * @param noise the noise's standard deviation per axis
+     * @param seed  the random seed
+     * @return the points
+     */
+    public static PointsKd line(int n, int k, double noise, long seed) {
+        Random r = new Random(seed);
+        double[] from = new double[k], to = new double[k], c = new double[Math.multiplyExact(n, k)];
+        for (int a = 0; a < k; a++) {
+            from[a] = 0.2 * r.nextDouble();
+            to[a] = 1 - 0.2 * r.nextDouble();
+        }
+        for (int i = 0; i < n; i++) {
+            double t = r.nextDouble();
+            for (int a = 0; a < k; a++) c[i * k + a] = from[a] + t * (to[a] - from[a]) + noise * r.nextGaussian();
+        }
+        return new PointsKd(k, c);
+    }
+
+    /**
+     * {@code n} points at the nodes of a regular grid of {@code side} nodes per axis filling the
+     * unit cube, each node taken once (in random order; again only once all are taken), each
+     * coordinate then moved by Gaussian noise of standard deviation {@code jitter} times the
+     * grid's spacing: a lattice, not a uniform sample.
+     *
+     * @param n      how many points
+     * @param k      coordinates per point
+     * @param side   nodes per axis, at least 2, at most 2<sup>24</sup> nodes in all
+     * @param jitter the noise's standard deviation, as a share of the spacing
+     * @param seed   the random seed
+     * @return the points
+     */
+    public static PointsKd jitteredGrid(int n, int k, int side, double jitter, long seed) {
+        double nodes = Math.pow(side, k);
+        if (side < 2 || nodes > 1 << 24)
+            throw new IllegalArgumentException("a grid needs 2 nodes per axis or more and 2^24 nodes or fewer, got " + side + "^" + k);
+        Random r = new Random(seed);
+        int[] order = new int[(int) nodes];
+        for (int i = 0; i < order.length; i++) order[i] = i;
+        double spacing = 1.0 / (side - 1);
+        double[] c = new double[Math.multiplyExact(n, k)];
+        for (int i = 0; i < n; i++) {
+            int pick = i % order.length, swap = pick + r.nextInt(order.length - pick);   // Fisher-Yates, as far as needed
+            int node = order[swap];
+            order[swap] = order[pick];
+            order[pick] = node;
+            for (int a = 0; a < k; a++, node /= side) c[i * k + a] = (node % side + jitter * r.nextGaussian()) * spacing;
+        }
+        return new PointsKd(k, c);
+    }
+
     private static PointsKd members(Clusters clusters, int n, int k, Random r) {
         double[] c = new double[Math.multiplyExact(n, k)];
         for (int i = 0; i < n; i++) clusters.member(r, clusters.pick(r), SPREAD, c, i * k);

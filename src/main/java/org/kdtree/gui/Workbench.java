@@ -72,6 +72,8 @@ public final class Workbench extends JFrame {
     private final View3D view3D;
     /** The ball collisions view. */
     private final CollisionsView collisions;
+    /** Two scenes' trees compared (the talk's section 5.2). */
+    private final CompareDataView compareData;
 
     /** Builds the window on the built-in talk-figures scene (call on the event thread). */
     public Workbench() {
@@ -115,6 +117,11 @@ public final class Workbench extends JFrame {
         tabs.addTab("Collisions", collisions);
         tabs.setMnemonicAt(3, KeyEvent.VK_L);
         tabs.setToolTipTextAt(3, "Balls bouncing off the 2-D scene under gravity, with the tree's tests against brute force's (Alt+L)");
+        compareData = new CompareDataView(model);
+        tabs.addTab("Compare data", compareData);
+        tabs.setMnemonicAt(4, KeyEvent.VK_A);   // Alt+D is the 3-D view's Build
+        tabs.setDisplayedMnemonicIndexAt(4, "Compare data".indexOf("data") + 1);
+        tabs.setToolTipTextAt(4, "Two scenes' kd-trees side by side, where their leaf depths differ, and the distance of their signatures (Alt+A)");
         setContentPane(tabs);
         setJMenuBar(menus());
         pack();   // what every panel asks for, then at least 1280 x 860, but never more than the screen holds
@@ -160,6 +167,8 @@ public final class Workbench extends JFrame {
     public View3D view3D() { return view3D; }
     /** {@return the ball collisions view} */
     public CollisionsView collisions() { return collisions; }
+    /** {@return the compare data view} */
+    CompareDataView compareData() { return compareData; }
     /** {@return the scene panel} */
     public ScenePanel scenes() { return scenePanel; }
 

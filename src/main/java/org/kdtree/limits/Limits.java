@@ -93,6 +93,8 @@ public final class Limits {
     public static final Limit LEAF_BUDGET = Limit.whole("leaf budget", 1, 1_000_000_000);
     /** eps of the (1 + eps) bound of an approximate nearest-neighbour search; 0 is exact. */
     public static final Limit EPSILON = Limit.real("epsilon", 0, 1000).noting("0 = exact");
+    /** Data sets a similarity search prints, nearest first. */
+    public static final Limit RANKED = Limit.whole("ranked data sets", 1, 100_000);
     /** Points of a generated point set. */
     public static final Limit POINT_COUNT = Limit.whole("points", 1, 50_000_000);
     /** Query points of a generated query set. */
@@ -109,7 +111,7 @@ public final class Limits {
             MIN_PRIMITIVES, BINS, EXACT_BELOW, LEAF_BELOW, LOOKAHEAD, LEAF_SIZE, BVH_WIDTH, CALL_DEADLINE, BUILD_DEADLINE, STUDENT_DEADLINE, STUDENT_HEAP, IMAGE_SIDE, SAMPLES_PER_PIXEL, RAY_DEPTH, LIGHT_SAMPLES,
             SPHERE_SEGMENTS, SPHERE_RINGS, FLAKE_LEVELS,
             RUNS, WARMUP, GRID, RAY_COUNT, RAYS_PER_TRIANGLE,
-            NEIGHBOURS, LEAF_BUDGET, EPSILON, POINT_COUNT, QUERY_COUNT, DIMENSION, SCENE_OBJECTS);
+            NEIGHBOURS, LEAF_BUDGET, EPSILON, RANKED, POINT_COUNT, QUERY_COUNT, DIMENSION, SCENE_OBJECTS);
 
     private Limits() {
     }

@@ -45,7 +45,7 @@ class FailureTest {
     @Test void anUnknownCommandIsAnErrorEvenWithHelp() {
         CliRun r = CliRun.of("nearest", "--help");
         assertThat(r.code()).isEqualTo(2);
-        assertThat(r.err().strip()).isEqualTo("error: unknown command 'nearest'; the commands are gui, stats, raycast, render, tradeoff, knn, knn-study, grade, grade-class (kdtree --help)");
+        assertThat(r.err().strip()).isEqualTo("error: unknown command 'nearest'; the commands are gui, stats, raycast, render, tradeoff, knn, knn-study, compare-trees, similar, grade, grade-class (kdtree --help)");
     }
 
     @Test void countsAgreeWithTheirNouns() {
