@@ -11,10 +11,17 @@ import org.kdtree.geom.Box;
  * events and merge them in. Linear in the node's events plus {@code s log s} for {@code s}
  * straddlers, with nothing allocated: sides live in one byte per primitive, everything else
  * in the build's {@link NodeStore} and in scratch arrays kept from node to node.
+ *
+ * <p>Without perfect splits a straddler's box is only cut by the plane: its events on the other
+ * axes stay as they are, and on the split axis its end in the left child and its start in the
+ * right one become the plane. So its events are copied to both children in order, as the
+ * one-sided ones are, and the plane's new events go at the end of the left list and the head of
+ * the right one (every event left of the plane is at or below it, every one right of it at or
+ * above): one pass, no bounds, no clipping, no sort (Sunflow's build works so; docs/sah.md).
  */
 final class EventSplit {
-    /** The side of a primitive in the node being split; a straddler's events are copied to neither child. */
-    private static final byte STRADDLES = 0, LEFT = 1, RIGHT = 2;
+    /** The side of a primitive in the node being split; a straddler's events are copied to neither child, or to both. */
+    private static final byte STRADDLES = 0, LEFT = 1, RIGHT = 2, BOTH = 3;
 
     private final NodeStore store;
     private final int k;
@@ -48,11 +55,12 @@ final class EventSplit {
         if (straddlers.length < n) { straddlers = new int[n]; goesTo = new int[n]; }
         long counts = classify(store.positions(d), code, from, to, xi, planarLeft ? LEFT : RIGHT);
         int nl = (int) (counts >>> 32), nb = (int) counts, nr = n - nl - nb;
-        long added = clipStraddlers(d, c, axis, xi, nb, perfectSplits);
+        long added = perfectSplits ? clipStraddlers(d, c, axis, xi, nb) : (long) nb << 32 | nb;   // uncut, a straddler goes both ways
         int sizeL = nl + (int) (added >>> 32), sizeR = nr + (int) added;
         int outcome = SplitOutcome.of(n, sizeL, sizeR, store.budget(d)[c]);
         if (outcome != SplitOutcome.SPLIT) return outcome;
-        writeChildEvents(d, c, nb, sizeL, sizeR);
+        if (perfectSplits) writeChildEvents(d, c, nb, sizeL, sizeR);
+        else copyChildEvents(d, c, axis, xi, nb, sizeL, sizeR);
         store.writeChildren(d, c, axis, xi, sizeL, sizeR, NodeStore.EVENTS);
         return SplitOutcome.SPLIT;
     }
@@ -94,15 +102,14 @@ final class EventSplit {
      * {@link #goesTo} which children each reaches (a clip can miss a child the bounds touched).
      * Returns how many go left and right, as {@code left << 32 | right}.
      */
-    private long clipStraddlers(int d, int c, int axis, double xi, int nb, boolean perfectSplits) {
+    private long clipStraddlers(int d, int c, int axis, double xi, int nb) {
         if (nb == 0) return 0;
         store.voxel(d, c, voxel);
         if (bounds.length < 6 * k * nb) bounds = new double[NodeStore.grown(bounds.length, 6 * k * nb)];
-        if (!perfectSplits) parentBounds(d, c, nb);
         int left = 0, right = 0;
         for (int i = 0; i < nb; i++) {
             int to = Partition.straddlerBounds(store.prims, straddlers[i], bounds, 2 * nb + i, voxel, axis, xi,
-                    perfectSplits, clipLeft, clipRight, bounds, i, bounds, nb + i);
+                    true, clipLeft, clipRight, bounds, i, bounds, nb + i);
             goesTo[i] = to;
             left += to & 1;
             right += to >>> 1;
@@ -110,31 +117,28 @@ final class EventSplit {
         return (long) left << 32 | right;
     }
 
-    /** The straddlers' bounds in the node (slots [2nb, 3nb)), recovered from their events on every axis. */
-    private void parentBounds(int d, int c, int nb) {
-        int[] slotOf = store.perPrimitive();
-        for (int i = 0; i < nb; i++) slotOf[straddlers[i]] = 2 * nb + i;
-        double[] pos = store.positions(d);
-        int[] code = store.codes(d), meta = store.eventMeta(d);
-        int at = store.metaAt(c);
-        for (int a = 0; a < k; a++) {
-            for (int e = meta[at + 1 + 2 * a], to = meta[at + 2 + 2 * a]; e < to; e++) {
-                int p = EventCode.primitive(code[e]);
-                if (side[p] != STRADDLES) continue;
-                int kind = EventCode.kind(code[e]), o = 2 * k * slotOf[p];
-                if (kind != EventCode.END) bounds[o + a] = pos[e];
-                if (kind != EventCode.START) bounds[o + k + a] = pos[e];
-            }
-        }
+    /** Writes both children's events with perfect splits: the one-sided ones copied, the clipped straddlers' merged in. */
+    private void writeChildEvents(int d, int c, int nb, int sizeL, int sizeR) {
+        writeChildren(d, c, nb, sizeL, sizeR, -1, 0);
     }
 
     /**
-     * Writes both children's events into level d + 1: sizes, and per axis the one-sided events
-     * copied in order with the straddlers' new events merged in. Each child's region on an axis
-     * is sized before anything is copied: its one-sided events are among the node's, and each of
-     * its primitives has at most two; one slot more for the branch-free copy.
+     * Writes both children's events without perfect splits (the class comment): the straddlers
+     * marked {@link #BOTH}, their events copied with the one-sided ones, the plane's new ones added.
      */
-    private void writeChildEvents(int d, int c, int nb, int sizeL, int sizeR) {
+    private void copyChildEvents(int d, int c, int axis, double xi, int nb, int sizeL, int sizeR) {
+        for (int i = 0; i < nb; i++) side[straddlers[i]] = BOTH;
+        writeChildren(d, c, nb, sizeL, sizeR, axis, xi);
+    }
+
+    /**
+     * Writes both children's events into level d + 1: sizes, and per axis the events copied in
+     * order, with the straddlers' clipped events merged in ({@code cut < 0}), or, uncut, the plane's
+     * events added on axis {@code cut}. Each child's region on an axis is sized before anything is
+     * copied: its events are among the node's plus at most two per straddler; one slot more for the
+     * branch-free copy.
+     */
+    private void writeChildren(int d, int c, int nb, int sizeL, int sizeR, int cut, double xi) {
         double[] pos = store.positions(d);
         int[] code = store.codes(d), meta = store.eventMeta(d);
         int at = store.metaAt(c);
@@ -153,10 +157,16 @@ final class EventSplit {
         int startL = 0, startR = 0;
         for (int a = 0; a < k; a++) startR += Math.min(meta[at + 2 + 2 * a] - meta[at + 1 + 2 * a] + 2 * nb, 2 * sizeL) + 1;
         for (int a = 0; a < k; a++) {
-            int from = meta[at + 1 + 2 * a], to = meta[at + 2 + 2 * a];
-            long ends = copyOneSided(pos, code, from, to, outPos, outCode, startL, startR);
-            int endL = mergeStraddlers(0, a, nb, outPos, outCode, startL, (int) (ends >>> 32));
-            int endR = mergeStraddlers(1, a, nb, outPos, outCode, startR, (int) ends);
+            int from = meta[at + 1 + 2 * a], to = meta[at + 2 + 2 * a], endL, endR;
+            if (a == cut) {
+                long ends = copyAtThePlane(pos, code, from, to, xi, nb, outPos, outCode, startL, startR);
+                endL = (int) (ends >>> 32);
+                endR = (int) ends;
+            } else {
+                long ends = copyOneSided(pos, code, from, to, outPos, outCode, startL, startR);
+                endL = cut < 0 ? mergeStraddlers(0, a, nb, outPos, outCode, startL, (int) (ends >>> 32)) : (int) (ends >>> 32);
+                endR = cut < 0 ? mergeStraddlers(1, a, nb, outPos, outCode, startR, (int) ends) : (int) ends;
+            }
             below[atL + 1 + 2 * a] = startL;
             below[atL + 2 + 2 * a] = endL;
             below[atR + 1 + 2 * a] = startR;
@@ -167,9 +177,35 @@ final class EventSplit {
     }
 
     /**
+     * The split axis, uncut: the right child's events start with a start at the plane for each
+     * straddler, then each event is copied to its side, a straddler's start to the left only and
+     * its end to the right only; the left child's end with an end at the plane for each straddler.
+     * Returns both ends, as {@code endL << 32 | endR}.
+     */
+    private long copyAtThePlane(double[] pos, int[] code, int from, int to, double xi, int nb, double[] outPos, int[] outCode,
+                                int atL, int atR) {
+        int endL = atL, endR = atR;
+        for (int i = 0; i < nb; i++) {
+            outPos[endR] = xi;
+            outCode[endR++] = EventCode.of(EventCode.START, straddlers[i]);
+        }
+        for (int e = from; e < to; e++) {
+            int cd = code[e], s = side[EventCode.primitive(cd)];
+            if (s == BOTH) s = EventCode.kind(cd) == EventCode.START ? LEFT : RIGHT;
+            if ((s & LEFT) != 0) { outPos[endL] = pos[e]; outCode[endL++] = cd; }
+            if ((s & RIGHT) != 0) { outPos[endR] = pos[e]; outCode[endR++] = cd; }
+        }
+        for (int i = 0; i < nb; i++) {
+            outPos[endL] = xi;
+            outCode[endL++] = EventCode.of(EventCode.END, straddlers[i]);
+        }
+        return (long) endL << 32 | endR;
+    }
+
+    /**
      * Copies the events {@code [from, to)} in order to the left region from {@code atL} and the
      * right one from {@code atR}, each where its primitive's side sends it (a straddler's to
-     * neither). Branch-free: every event is written to both regions and kept where its side bit
+     * neither, or, marked {@link #BOTH}, to both). Branch-free: every event is written to both regions and kept where its side bit
      * says. Returns both ends, as {@code endL << 32 | endR}.
      */
     private long copyOneSided(double[] pos, int[] code, int from, int to, double[] outPos, int[] outCode, int atL, int atR) {
