@@ -36,7 +36,10 @@ import picocli.CommandLine.Parameters;
                 "  P_hits P_tsum P_mrays R_hits R_tsum R_mrays",
                 "With --rays FILE --hits FILE: traces the rays of FILE, one per line as",
                 "'ox oy oz dx dy dz [tmin tmax]', and writes one 't triangle' or 'miss' line",
-                "per ray."})
+                "per ray.",
+                "The vector path (the BVH's Vector API loops): run on JDK 25 with",
+                "--add-modules jdk.incubator.vector (a jar built on JDK 25, or with -Djdk25.home);",
+                "stderr says which path traced ('# path: vector' or '# path: scalar')."})
 final class RaycastCommand implements Callable<Integer> {
     /** The SPEC line's columns, as a comment line (docs/benchmark-spec.md, "Output"). */
     static final String COLUMNS = "# system mesh tris build_ms nodes leaves depth P_hits P_tsum P_mrays R_hits R_tsum R_mrays";

@@ -47,6 +47,7 @@ class HelpTextTest {
 
     @Test void raycastsHelpShowsVerify() {
         assertThat(CliRun.of("raycast", "--help").out()).contains("--verify=STRIDE", "brute force");
+        assertThat(CliRun.of("raycast", "--help").out()).as("how to turn the vector path on").contains("--add-modules jdk.incubator.vector");
     }
 
     @Test void theAlgorithmsHelpSaysBinnedBuildsAnotherTree() {
