@@ -102,7 +102,7 @@ final class Roster {
             if (!handedIn.contains(s.file()))
                 lines.add("roster: " + s.name() + (s.id().isEmpty() ? "" : " (" + s.id() + ")") + ": no jar " + s.file() + " in the folder");
         for (String jar : jars)
-            if (!byFile.containsKey(jar)) lines.add("roster: " + jar + " is not on the roster: named by its jar");
+            if (!byFile.containsKey(jar)) lines.add("roster: " + jar + " is not on the roster: named as before (its manifest, else its file name)");
         return lines;
     }
 }
