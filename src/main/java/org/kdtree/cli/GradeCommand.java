@@ -170,9 +170,7 @@ final class GradeCommand implements Callable<Integer> {
 
     private void requireReportName() {
         String n = output.getFileName().toString().toLowerCase(Locale.ROOT);
-        if (gradescope() && !n.endsWith(".json")) throw new IllegalArgumentException("-o " + output + ": --format gradescope writes JSON: "
-                + "name it results.json");
-        if (!gradescope() && !n.endsWith(".md") && !n.endsWith(".csv"))
+        if (!gradescope() && !n.endsWith(".md") && !n.endsWith(".csv"))   // Gradescope's file is JSON whatever its name
             throw new IllegalArgumentException("-o " + output + ": write a .md (Markdown) or .csv report");
         CommandFiles.requireWritable("-o", output);
     }
