@@ -3,7 +3,6 @@ package org.kdtree.cli;
 import com.google.gson.JsonElement;
 import com.google.gson.JsonObject;
 import com.google.gson.JsonParseException;
-import com.google.gson.JsonParser;
 import com.google.gson.stream.JsonReader;
 import java.io.IOException;
 import java.io.StringReader;
@@ -120,8 +119,8 @@ final class Rubric {
         }
         JsonElement root;
         try {
-            JsonReader in = new JsonReader(new StringReader(text));   // strict: no comments, no single quotes
-            root = JsonParser.parseReader(in);
+            JsonReader in = new JsonReader(new StringReader(text));   // strict (JsonParser would make it lenient): no comments, no trailing comma
+            root = new com.google.gson.Gson().getAdapter(JsonElement.class).read(in);
             if (in.peek() != com.google.gson.stream.JsonToken.END_DOCUMENT) throw new JsonParseException("content after the end");
         } catch (JsonParseException | IOException | IllegalStateException e) {
             throw new IllegalArgumentException(where + ": not a JSON rubric (" + firstLine(e.getMessage()) + ")");
@@ -202,6 +201,7 @@ final class Rubric {
     private static String firstLine(String s) {
         if (s == null) return "malformed JSON";
         return s.replaceFirst("^com\\.google\\.gson\\.stream\\.MalformedJsonException: ", "")
+                .replaceFirst("Use JsonReader\\.setLenient\\(true\\) to accept malformed JSON", "malformed JSON")
                 .replaceFirst("\\s*See https://github.com/google/gson\\S*", "").split("\\R", 2)[0];
     }
 

@@ -110,6 +110,8 @@ class RubricTest {
                 {"{\"checks\": {\"talk figures\": {\"points\": 2, \"full_at\": 1}}}", "checks.\"talk figures\".full_at: no such field"},
                 {"{\"check\": {}}", "check: no such field; the rubric takes checks, title, visibility"},
                 {"{\"checks\": {\"talk figures\": {\"points\": 2},}}", "not a JSON rubric ("},
+                {"{\"checks\": {}} // the points\n", "not a JSON rubric (malformed JSON at line 1 column "},
+                {"", "not a JSON rubric ("},
         };
         for (String[] c : cases) {
             Path bad = write(dir, "bad.json", c[0]);
