@@ -51,13 +51,8 @@ final class ClassGradeCommand implements Callable<Integer> {
             + "not on it, are each said in one line.")
     Path roster;
 
-    @Option(names = "--rubric", paramLabel = "FILE", description = "Points and visibility per check (JSON: see the handout); "
-            + "adds each student's score to the table. Without it the verdicts stand alone.")
-    Path rubric;
-
-    @Option(names = "--junit-xml", paramLabel = "FILE", description = "Also write the grades as JUnit XML: one test case per "
-            + "check per student, a failure for each check lost, with the student's fault.")
-    Path junitXml;
+    @Mixin
+    ScoringOptions scoring;
 
     @Option(names = {"-j", "--jobs"}, paramLabel = "N",
             description = "Students graded at once (default: the cores, fewer if memory is short for that many heaps).")
@@ -83,13 +78,13 @@ final class ClassGradeCommand implements Callable<Integer> {
     @Override public Integer call() throws IOException, InterruptedException {
         List<Path> jars = jars();
         for (Path out : List.of(csv, markdown)) CommandFiles.requireWritable(out == csv ? "--csv" : "--markdown", out);
-        if (junitXml != null) CommandFiles.requireWritable("--junit-xml", junitXml);
-        for (Path out : java.util.Arrays.asList(csv, markdown, junitXml)) {   // a table never replaces the roster or the rubric
+        if (scoring.junitXml != null) CommandFiles.requireWritable("--junit-xml", scoring.junitXml);
+        for (Path out : java.util.Arrays.asList(csv, markdown, scoring.junitXml)) {   // a table never replaces the roster or the rubric
             CommandFiles.requireNotInput("an output", out, "--roster", roster);
-            CommandFiles.requireNotInput("an output", out, "--rubric", rubric);
+            CommandFiles.requireNotInput("an output", out, "--rubric", scoring.rubric);
         }
         Roster names = roster == null ? null : Roster.read("--roster", roster);
-        Rubric points = rubric == null ? null : Rubric.read("--rubric", rubric);
+        Rubric points = scoring.read();
         StudentJvm jvm = new StudentJvm(deadlines.deadlines(Deadlines.GRADE), seconds(), heap(), box(noSandbox, "grade-class"));
         int n = jobs == null ? defaultJobs(jvm.heapMb()) : jobs;
         Limits.THREADS.check("--jobs", n);
@@ -102,16 +97,16 @@ final class ClassGradeCommand implements Callable<Integer> {
             rosterLines = names.mismatches(jars.stream().map(j -> j.getFileName().toString()).toList());
         }
         List<Scorecard> cards = new ArrayList<>();
-        Rubric scoring = points != null ? points : Rubric.onePointEach();
-        for (int i = 0; i < rows.size(); i++) cards.add(Scorecard.of(scoring, rows.get(i), graded.get(i).report()));
+        Rubric worth = ScoringOptions.orOnePointEach(points);
+        for (int i = 0; i < rows.size(); i++) cards.add(Scorecard.of(worth, rows.get(i), graded.get(i).report()));
         Map<String, Scorecard> scores = new LinkedHashMap<>();
         if (points != null) for (Scorecard c : cards) scores.put(c.row().file(), c);
         ClassTable table = new ClassTable(rows, CourseScenes.all().stream().map(CourseScenes.Named::name).toList(), scores, rosterLines);
         System.out.print(table.markdown());
         List<String> lost = save(table, csv, markdown);
-        if (junitXml != null) save(junitXml, JunitXml.of(cards), ".xml", lost);
+        if (scoring.junitXml != null) save(scoring.junitXml, JunitXml.of(cards), ".xml", lost);
         System.out.printf(Locale.ROOT, "%ngraded in %.0f s, %d at once; table: %s, %s%s%n", (System.nanoTime() - t0) / 1e9, n, csv, markdown,
-                junitXml == null ? "" : "; JUnit XML: " + junitXml);
+                scoring.junitXml == null ? "" : "; JUnit XML: " + scoring.junitXml);
         rosterLines.forEach(System.out::println);
         lost.forEach(System.err::println);
         return lost.isEmpty() ? 0 : Failure.USAGE;

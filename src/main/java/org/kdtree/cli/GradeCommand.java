@@ -64,13 +64,8 @@ final class GradeCommand implements Callable<Integer> {
                     + "results.json, with --student-jar: one test per check, scored by --rubric).")
     String format;
 
-    @Option(names = "--rubric", paramLabel = "FILE", description = "Points and visibility per check (JSON: see the handout); "
-            + "prints the score. Without it the verdict stands alone (and Gradescope's results give each pass/fail check one point).")
-    Path rubric;
-
-    @Option(names = "--junit-xml", paramLabel = "FILE", description = "Also write the grade as JUnit XML: one test case per check, "
-            + "a failure for each check lost, with the builder's fault.")
-    Path junitXml;
+    @Mixin
+    ScoringOptions scoring;
 
     @Mixin
     ProgressOption progress;
@@ -120,30 +115,30 @@ final class GradeCommand implements Callable<Integer> {
     /** Refuses, before any work, a file that cannot be written or a rubric that cannot be read; {@return the rubric, or null} */
     private Rubric checkOutputs() {
         if (output != null) requireReportName();
-        if (junitXml != null) CommandFiles.requireWritable("--junit-xml", junitXml);
-        for (Path out : java.util.Arrays.asList(output, junitXml)) {
-            CommandFiles.requireNotInput(out == output ? "-o" : "--junit-xml", out, "--rubric", rubric);
+        if (scoring.junitXml != null) CommandFiles.requireWritable("--junit-xml", scoring.junitXml);
+        for (Path out : java.util.Arrays.asList(output, scoring.junitXml)) {
+            CommandFiles.requireNotInput(out == output ? "-o" : "--junit-xml", out, "--rubric", scoring.rubric);
             CommandFiles.requireNotInput(out == output ? "-o" : "--junit-xml", out, "--student-jar", studentJar);
         }
-        return rubric == null ? null : Rubric.read("--rubric", rubric);
+        return scoring.read();
     }
 
     /** Prints the report (and the score, with a rubric) and writes the files asked for; {@code report} null if the jar was not graded. */
     private void write(Report report, StudentRow row, Rubric points) throws IOException {
-        Scorecard card = Scorecard.of(points != null ? points : Rubric.onePointEach(), row, report);
+        Scorecard card = Scorecard.of(ScoringOptions.orOnePointEach(points), row, report);
         if (report != null) System.out.print(report.text());
         if (report != null && studentJar != null && !row.problem().isEmpty()) System.out.println("the student's JVM: " + row.problem());
         if (report != null && studentJar != null && row.unboxed()) System.out.println(ClassTable.UNBOXED);
         if (report != null && points != null) System.out.print(card.text());
-        if (output != null) {
+        if (output != null && (report != null || gradescope())) {   // a jar not graded has no report to write, but a score of 0
             String name = output.toString().toLowerCase(Locale.ROOT);
             AtomicFile.writeString(output, gradescope() ? GradescopeResults.of(card, report)
                     : name.endsWith(".csv") ? report.csv() : report.markdown() + (points == null ? "" : "\n## Score\n\n```" + card.text() + "```\n"));
             System.out.println((gradescope() ? "Gradescope results: " : "report: ") + output);
         }
-        if (junitXml != null) {
-            AtomicFile.writeString(junitXml, JunitXml.of(List.of(card)));
-            System.out.println("JUnit XML: " + junitXml);
+        if (scoring.junitXml != null) {
+            AtomicFile.writeString(scoring.junitXml, JunitXml.of(List.of(card)));
+            System.out.println("JUnit XML: " + scoring.junitXml);
         }
     }
 
@@ -160,7 +155,7 @@ final class GradeCommand implements Callable<Integer> {
         StudentJvm.Graded g = jvm.run(studentJar);
         StudentRow row = g.row();
         if (g.report() == null) {
-            if (gradescope() || junitXml != null) write(null, row, points); // the student's score is 0, and says why
+            if (gradescope() || scoring.junitXml != null) write(null, row, points); // the student's score is 0, and says why
             System.err.println("error: grade " + studentJar.getFileName() + ": " + row.problem());
             return row.problem().startsWith("not graded") ? Failure.USAGE : Failure.BUILDER;
         }

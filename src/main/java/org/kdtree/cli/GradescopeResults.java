@@ -59,7 +59,7 @@ final class GradescopeResults {
                 r.builder().isEmpty() ? "(none graded)" : r.builder(), report != null ? report.verdict() : r.verdict() + ": " + r.problem(),
                 card.line()));
         if (report != null && !r.problem().isEmpty()) s.append("your JVM: ").append(r.problem()).append('\n');
-        s.append("graded outside your builder's JVM, from the trees it built").append(r.unboxed() ? " (no box here: " + ClassTable.UNBOXED + ")" : ", in a box")
+        s.append("graded outside your builder's JVM, from the trees it built").append(r.unboxed() ? ", without a box (--no-sandbox)" : ", in a box")
                 .append('\n');
         return s.toString();
     }

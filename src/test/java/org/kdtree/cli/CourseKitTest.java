@@ -142,6 +142,19 @@ class CourseKitTest {
         }
     }
 
+    /** A jar that is none: exit 2 and one line, its JUnit XML every check failed saying why, no report (there is none). */
+    @Test void aJarNotGradedGetsItsJunitXmlButNoReport(@TempDir Path dir) throws Exception {
+        BoxTests.assumeABoxCanBeMade();
+        Path notAJar = Files.writeString(dir.resolve("notes.jar"), "my notes, not a jar"), xml = dir.resolve("g.xml");
+        CliRun run = CliRun.of("grade", "--student-jar", notAJar.toString(), "-o", dir.resolve("g.md").toString(), "--junit-xml",
+                xml.toString(), "-q");
+        assertThat(run.code()).isEqualTo(Failure.USAGE);
+        assertThat(run.err().strip()).isEqualTo("error: grade notes.jar: not graded: not a jar (zip) file");
+        assertThat(dir.resolve("g.md")).doesNotExist();
+        XmlCheck.assertWellFormed(xml);
+        assertThat(Files.readString(xml)).contains("failures=\"" + Rubric.checks().size() + "\"", "message=\"not graded: not a jar (zip) file\"");
+    }
+
     /** The fields and types of Gradescope's results.json ("Autograder Specifications", output format). */
     static void assertGradescopeShape(JsonObject r, String what) {
         Set<String> top = Set.of("score", "execution_time", "output", "output_format", "test_output_format", "test_name_format",
