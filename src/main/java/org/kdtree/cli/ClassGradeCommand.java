@@ -4,8 +4,10 @@ import java.io.IOException;
 import java.nio.file.Files;
 import java.nio.file.Path;
 import java.util.ArrayList;
+import java.util.LinkedHashMap;
 import java.util.List;
 import java.util.Locale;
+import java.util.Map;
 import java.util.concurrent.Callable;
 import java.util.concurrent.ExecutionException;
 import java.util.concurrent.ExecutorService;
@@ -44,6 +46,14 @@ final class ClassGradeCommand implements Callable<Integer> {
             description = "The table as Markdown, with how many of each verdict (default: ${DEFAULT-VALUE}).")
     Path markdown;
 
+    @Option(names = "--roster", paramLabel = "FILE", description = "The class's roster: a CSV file with the header file,name,id "
+            + "(the jar's file name, the student's name and id), which names the rows; a student without a jar, and a jar "
+            + "not on it, are each said in one line.")
+    Path roster;
+
+    @Mixin
+    ScoringOptions scoring;
+
     @Option(names = {"-j", "--jobs"}, paramLabel = "N",
             description = "Students graded at once (default: the cores, fewer if memory is short for that many heaps).")
     Integer jobs;
@@ -68,15 +78,36 @@ final class ClassGradeCommand implements Callable<Integer> {
     @Override public Integer call() throws IOException, InterruptedException {
         List<Path> jars = jars();
         for (Path out : List.of(csv, markdown)) CommandFiles.requireWritable(out == csv ? "--csv" : "--markdown", out);
+        if (scoring.junitXml != null) CommandFiles.requireWritable("--junit-xml", scoring.junitXml);
+        for (Path out : java.util.Arrays.asList(csv, markdown, scoring.junitXml)) {   // a table never replaces the roster or the rubric
+            CommandFiles.requireNotInput("an output", out, "--roster", roster);
+            CommandFiles.requireNotInput("an output", out, "--rubric", scoring.rubric);
+        }
+        Roster names = roster == null ? null : Roster.read("--roster", roster);
+        Rubric points = scoring.read();
         StudentJvm jvm = new StudentJvm(deadlines.deadlines(Deadlines.GRADE), seconds(), heap(), box(noSandbox, "grade-class"));
         int n = jobs == null ? defaultJobs(jvm.heapMb()) : jobs;
         Limits.THREADS.check("--jobs", n);
         long t0 = System.nanoTime();
-        List<StudentRow> rows = gradeAll(jars, jvm, n);
-        ClassTable table = new ClassTable(rows, CourseScenes.all().stream().map(CourseScenes.Named::name).toList());
+        List<StudentJvm.Graded> graded = gradeAll(jars, jvm, n);
+        List<StudentRow> rows = graded.stream().map(StudentJvm.Graded::row).toList();
+        List<String> rosterLines = List.of();
+        if (names != null) {
+            rows = names.name(rows);
+            rosterLines = names.mismatches(jars.stream().map(j -> j.getFileName().toString()).toList());
+        }
+        List<Scorecard> cards = new ArrayList<>();
+        Rubric worth = ScoringOptions.orOnePointEach(points);
+        for (int i = 0; i < rows.size(); i++) cards.add(Scorecard.of(worth, rows.get(i), graded.get(i).report()));
+        Map<String, Scorecard> scores = new LinkedHashMap<>();
+        if (points != null) for (Scorecard c : cards) scores.put(c.row().file(), c);
+        ClassTable table = new ClassTable(rows, CourseScenes.all().stream().map(CourseScenes.Named::name).toList(), scores, rosterLines);
         System.out.print(table.markdown());
         List<String> lost = save(table, csv, markdown);
-        System.out.printf(Locale.ROOT, "%ngraded in %.0f s, %d at once; table: %s, %s%n", (System.nanoTime() - t0) / 1e9, n, csv, markdown);
+        if (scoring.junitXml != null) save(scoring.junitXml, JunitXml.of(cards), ".xml", lost);
+        System.out.printf(Locale.ROOT, "%ngraded in %.0f s, %d at once; table: %s, %s%s%n", (System.nanoTime() - t0) / 1e9, n, csv, markdown,
+                scoring.junitXml == null ? "" : "; JUnit XML: " + scoring.junitXml);
+        rosterLines.forEach(System.out::println);
         lost.forEach(System.err::println);
         return lost.isEmpty() ? 0 : Failure.USAGE;
     }
@@ -88,38 +119,40 @@ final class ClassGradeCommand implements Callable<Integer> {
      */
     static List<String> save(ClassTable table, Path csv, Path markdown) {
         List<String> lost = new ArrayList<>();
-        for (Path file : List.of(csv, markdown)) {
-            String content = file == csv ? table.csv() : table.markdown();
-            try {
-                AtomicFile.writeString(file, content);
-            } catch (IOException e) {
-                String ext = file == csv ? ".csv" : ".md";
-                try {
-                    Path kept = Files.createTempFile("class-grades-", ext);
-                    AtomicFile.writeString(kept, content);
-                    lost.add("error: " + e.getMessage() + "; the table is kept in " + kept);
-                } catch (IOException again) {
-                    lost.add("error: " + e.getMessage() + "; the table is only in the output above");
-                }
-            }
-        }
+        save(csv, table.csv(), ".csv", lost);
+        save(markdown, table.markdown(), ".md", lost);
         return lost;
     }
 
+    /** Writes {@code file}; if it cannot be, keeps the content in a temporary file ending {@code ext} and adds to {@code lost} where. */
+    static void save(Path file, String content, String ext, List<String> lost) {
+        try {
+            AtomicFile.writeString(file, content);
+        } catch (IOException e) {
+            try {
+                Path kept = Files.createTempFile("class-grades-", ext);
+                AtomicFile.writeString(kept, content);
+                lost.add("error: " + e.getMessage() + "; the table is kept in " + kept);
+            } catch (IOException again) {
+                lost.add("error: " + e.getMessage() + "; the table is only in the output above");
+            }
+        }
+    }
+
     /** Every student at once up to {@code n}, each on a thread that waits for its JVM; the bar counts those done. */
-    private List<StudentRow> gradeAll(List<Path> jars, StudentJvm jvm, int n) throws InterruptedException {
+    private List<StudentJvm.Graded> gradeAll(List<Path> jars, StudentJvm jvm, int n) throws InterruptedException {
         ExecutorService pool = Executors.newFixedThreadPool(n);
         AtomicInteger done = new AtomicInteger();
         try (ProgressBar bar = progress.bar(jars.size(), "students")) {
             bar.step(0, n + " at once"); // drawn now, so that the first minute shows the time too
-            List<Future<StudentRow>> running = new ArrayList<>();
+            List<Future<StudentJvm.Graded>> running = new ArrayList<>();
             for (Path jar : jars) running.add(pool.submit(() -> {
-                StudentRow r = jvm.grade(jar);
+                StudentJvm.Graded g = jvm.run(jar);
                 bar.update(done.incrementAndGet());
-                return r;
+                return g;
             }));
-            List<StudentRow> rows = new ArrayList<>();
-            for (Future<StudentRow> f : running) rows.add(f.get());
+            List<StudentJvm.Graded> rows = new ArrayList<>();
+            for (Future<StudentJvm.Graded> f : running) rows.add(f.get());
             return rows;
         } catch (ExecutionException e) {
             throw new IllegalStateException("grading a student failed: " + e.getCause(), e.getCause());

@@ -55,8 +55,17 @@ final class GradeCommand implements Callable<Integer> {
     @Option(names = "--in-box", hidden = true)
     boolean inBox;
 
-    @Option(names = {"-o", "--output"}, paramLabel = "FILE", description = "Also write the report: .md (Markdown) or .csv.")
+    @Option(names = {"-o", "--output"}, paramLabel = "FILE", description = "Also write the report: .md (Markdown) or .csv; "
+            + "with --format gradescope, Gradescope's results.json.")
     Path output;
+
+    @Option(names = "--format", paramLabel = "FORMAT", defaultValue = "report",
+            description = "What -o writes: report (Markdown or CSV, by the file's name; the default) or gradescope (Gradescope's "
+                    + "results.json, with --student-jar: one test per check, scored by --rubric).")
+    String format;
+
+    @Mixin
+    ScoringOptions scoring;
 
     @Mixin
     ProgressOption progress;
@@ -78,22 +87,59 @@ final class GradeCommand implements Callable<Integer> {
 
     @Override public Integer call() throws IOException {
         if (inBox) return inBox();
+        if (!List.of("report", "gradescope").contains(format))
+            throw new IllegalArgumentException("--format " + format + ": give report (Markdown or CSV) or gradescope (results.json)");
+        if (gradescope() && studentJar == null)
+            throw new IllegalArgumentException("--format gradescope grades a student's jar as Gradescope's autograder does: give --student-jar JAR");
+        if (gradescope() && output == null) throw new IllegalArgumentException("--format gradescope needs -o FILE (results.json)");
         if (studentJar != null) return boxed();
         String builder = options.builder();
         if (builder == null) throw new IllegalArgumentException("grade needs --builder NAME or --student-jar JAR (a folder of students' jars: grade-class FOLDER)");
         graded = options.spec(builder);
         graded.create(); // an unknown name, or a setting it does not take, fails here in one line
-        if (output != null) requireReportName();
+        Rubric points = checkOutputs();
+        long t0 = System.nanoTime();
         Report report;
         try (ProgressBar bar = progress.bar(steps(), "checks")) {
             report = new GradeRun(graded::create, null).run(builder, deadlines.deadlines(Deadlines.GRADE), bar);
         }
-        System.out.print(report.text());
-        if (output != null) {
-            AtomicFile.writeString(output, output.toString().toLowerCase(Locale.ROOT).endsWith(".csv") ? report.csv() : report.markdown());
-            System.out.println("report: " + output);
-        }
+        StudentRow row = StudentRow.parse(builder, builder, report.csv(), (System.nanoTime() - t0) / 1e9, "none (in this JVM)");
+        write(report, row, points);
         return report.contract().stream().allMatch(Check::passed) ? 0 : 1;
+    }
+
+    private boolean gradescope() {
+        return format.equals("gradescope");
+    }
+
+    /** Refuses, before any work, a file that cannot be written or a rubric that cannot be read; {@return the rubric, or null} */
+    private Rubric checkOutputs() {
+        if (output != null) requireReportName();
+        if (scoring.junitXml != null) CommandFiles.requireWritable("--junit-xml", scoring.junitXml);
+        for (Path out : java.util.Arrays.asList(output, scoring.junitXml)) {
+            CommandFiles.requireNotInput(out == output ? "-o" : "--junit-xml", out, "--rubric", scoring.rubric);
+            CommandFiles.requireNotInput(out == output ? "-o" : "--junit-xml", out, "--student-jar", studentJar);
+        }
+        return scoring.read();
+    }
+
+    /** Prints the report (and the score, with a rubric) and writes the files asked for; {@code report} null if the jar was not graded. */
+    private void write(Report report, StudentRow row, Rubric points) throws IOException {
+        Scorecard card = Scorecard.of(ScoringOptions.orOnePointEach(points), row, report);
+        if (report != null) System.out.print(report.text());
+        if (report != null && studentJar != null && !row.problem().isEmpty()) System.out.println("the student's JVM: " + row.problem());
+        if (report != null && studentJar != null && row.unboxed()) System.out.println(ClassTable.UNBOXED);
+        if (report != null && points != null) System.out.print(card.text());
+        if (output != null && (report != null || gradescope())) {   // a jar not graded has no report to write, but a score of 0
+            String name = output.toString().toLowerCase(Locale.ROOT);
+            AtomicFile.writeString(output, gradescope() ? GradescopeResults.of(card, report)
+                    : name.endsWith(".csv") ? report.csv() : report.markdown() + (points == null ? "" : "\n## Score\n\n```" + card.text() + "```\n"));
+            System.out.println((gradescope() ? "Gradescope results: " : "report: ") + output);
+        }
+        if (scoring.junitXml != null) {
+            AtomicFile.writeString(scoring.junitXml, JunitXml.of(List.of(card)));
+            System.out.println("JUnit XML: " + scoring.junitXml);
+        }
     }
 
     /**
@@ -103,28 +149,23 @@ final class GradeCommand implements Callable<Integer> {
      */
     private int boxed() throws IOException {
         if (!Files.isRegularFile(studentJar)) throw new IllegalArgumentException("--student-jar " + studentJar + ": no such file");
-        if (output != null) requireReportName();
+        Rubric points = checkOutputs();
         StudentJvm jvm = new StudentJvm(deadlines.deadlines(Deadlines.GRADE), Limits.STUDENT_SECONDS, Limits.STUDENT_HEAP_MB,
                 ClassGradeCommand.box(noSandbox, "grade --student-jar"));
         StudentJvm.Graded g = jvm.run(studentJar);
         StudentRow row = g.row();
         if (g.report() == null) {
+            if (gradescope() || scoring.junitXml != null) write(null, row, points); // the student's score is 0, and says why
             System.err.println("error: grade " + studentJar.getFileName() + ": " + row.problem());
             return row.problem().startsWith("not graded") ? Failure.USAGE : Failure.BUILDER;
         }
-        System.out.print(g.report().text());
-        if (!row.problem().isEmpty()) System.out.println("the student's JVM: " + row.problem());
-        if (row.unboxed()) System.out.println(ClassTable.UNBOXED);
-        if (output != null) {
-            AtomicFile.writeString(output, output.toString().toLowerCase(Locale.ROOT).endsWith(".csv") ? g.report().csv() : g.report().markdown());
-            System.out.println("report: " + output);
-        }
+        write(g.report(), row, points);
         return g.report().contract().stream().allMatch(Check::passed) ? 0 : 1;
     }
 
     private void requireReportName() {
         String n = output.getFileName().toString().toLowerCase(Locale.ROOT);
-        if (!n.endsWith(".md") && !n.endsWith(".csv"))
+        if (!gradescope() && !n.endsWith(".md") && !n.endsWith(".csv"))   // Gradescope's file is JSON whatever its name
             throw new IllegalArgumentException("-o " + output + ": write a .md (Markdown) or .csv report");
         CommandFiles.requireWritable("-o", output);
     }

@@ -10,7 +10,8 @@ import java.util.Map;
  * builds (outside the box: {@link StudentJvm}), or, where there is none, the reason why.
  *
  * @param file        the jar's file name
- * @param student     the student's name from the jar's manifest, or ""
+ * @param student     the student's name: the roster's, else the jar's manifest's (see {@link StudentJvm#student}), else the file's
+ * @param id          the student's id from the roster, or ""
  * @param builder     the builder's name, or "" if none was graded
  * @param verdict     FAIL, CORRECT or GOOD
  * @param failure     the first contract failure, one line, or ""
@@ -21,19 +22,24 @@ import java.util.Map;
  * @param seconds     how long the student's JVM ran
  * @param box         what the student's JVM ran in: "bubblewrap", or "none (--no-sandbox)"
  */
-record StudentRow(String file, String student, String builder, String verdict, String failure, String quality,
+record StudentRow(String file, String student, String id, String builder, String verdict, String failure, String quality,
                   Map<String, double[]> ratios, double buildMs, String problem, double seconds, String box) {
     private static final int LONGEST = 200;
 
     /** A row for a jar that was not graded to the end: {@code problem} says why. */
     static StudentRow failed(String file, String student, String problem, double seconds, String box) {
-        return new StudentRow(file, student, "", "FAIL", "", "", Map.of(), 0, problem, seconds, box);
+        return new StudentRow(file, student, "", "", "FAIL", "", "", Map.of(), 0, problem, seconds, box);
     }
 
     /** This row with {@code note} added to its problem column. */
     StudentRow withNote(String note) {
-        return new StudentRow(file, student, builder, verdict, failure, quality, ratios, buildMs,
+        return new StudentRow(file, student, id, builder, verdict, failure, quality, ratios, buildMs,
                 problem.isEmpty() ? note : problem + "; " + note, seconds, box);
+    }
+
+    /** This row naming the student as the roster does. */
+    StudentRow named(String name, String studentId) {
+        return new StudentRow(file, name, studentId, builder, verdict, failure, quality, ratios, buildMs, problem, seconds, box);
     }
 
     /** Whether the student's JVM ran without a box ({@code --no-sandbox}). */
@@ -61,7 +67,7 @@ record StudentRow(String file, String student, String builder, String verdict, S
                 default -> { }
             }
         }
-        return new StudentRow(file, student, builder, verdict.isEmpty() ? "FAIL" : verdict, failure, String.join("; ", quality),
+        return new StudentRow(file, student, "", builder, verdict.isEmpty() ? "FAIL" : verdict, failure, String.join("; ", quality),
                 ratios(scenes), ownMs(scenes), problem, seconds, box);
     }
 

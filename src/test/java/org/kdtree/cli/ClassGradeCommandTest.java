@@ -60,7 +60,7 @@ class ClassGradeCommandTest {
         assertThat(rows.get("judy.jar").get("problem")).isEqualTo("not graded: not a jar (zip) file");
         for (String bad : List.of("carol.jar", "dan.jar", "erin.jar", "frank.jar", "grace.jar", "heidi.jar", "ivan.jar", "judy.jar"))
             assertThat(rows.get(bad).get("verdict")).as(bad).isEqualTo("FAIL");
-        assertThat(Files.readString(md)).contains("10 jars: 8 FAIL").contains("| alice.jar | Alice | plugin-midpoint |");
+        assertThat(Files.readString(md)).contains("10 jars: 8 FAIL").contains("| alice.jar | Alice |  | plugin-midpoint |");
     }
 
     /** Issue 34, item 3: a builder's System.exit(n) is told from running out of memory by what the JVM said, for any n. */
