@@ -58,6 +58,7 @@ public final class PrimitivesReader {
      * @throws IOException if it cannot be read or is malformed, naming the file, line and field
      */
     public static Scene readScene(Path file) throws IOException {
+        requireNotTree(file);
         return SceneReader.read(file);
     }
 
@@ -68,6 +69,7 @@ public final class PrimitivesReader {
      * @throws IOException if it cannot be read or is malformed, naming the file and line
      */
     public static Scene2D readScene2D(Path file) throws IOException {
+        requireNotTree(file);
         return Scene2DReader.read(file);
     }
 
@@ -79,6 +81,7 @@ public final class PrimitivesReader {
      * @throws IOException if it cannot be read or is malformed, naming the file and line
      */
     public static PointsKd readPoints(Path file) throws IOException {
+        requireNotTree(file);
         return PointCsvReader.read(file);
     }
 
@@ -95,8 +98,16 @@ public final class PrimitivesReader {
         return m;
     }
 
-    /** A missing file is "no such file", whatever its name, as every reader says it (not "unknown file type"). */
-    private static void requireExists(Path file) throws SceneFormatException {
+    /** A missing file is "no such file", whatever its name, as every reader says it (not "unknown file type"); a saved tree is named. */
+    private static void requireExists(Path file) throws IOException {
         if (!java.nio.file.Files.exists(file)) throw new SceneFormatException(file.toString(), 0, "no such file");
+        requireNotTree(file);
+    }
+
+    /** A saved tree given where a scene or points are due is named as one, whatever its name (not a line of binary). */
+    private static void requireNotTree(Path file) throws IOException {
+        if (org.kdtree.treefile.TreeFile.isTreeFile(file))
+            throw new SceneFormatException(file.toString(), 0, "is a saved tree (--save-tree), not a scene or point file: give the "
+                    + "scene it was built over, and this file with --tree");
     }
 }
