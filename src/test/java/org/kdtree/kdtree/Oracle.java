@@ -48,13 +48,26 @@ final class Oracle {
     }
 
     /**
-     * One oracle per registered builder, one for the BVH (traced 4 wide), and one for the BVH
-     * traced on its compact binary layout (width 2: one cache line per node).
+     * One oracle per registered builder, one for the BVH (traced 4 wide), one for the BVH
+     * traced on its compact binary layout (width 2: one cache line per node), and one per
+     * builder and the BVH for its structure saved to a tree file and loaded again.
      */
     static List<Oracle> allBuilders(Primitives scene, Intersector prims) {
         List<Oracle> all = new java.util.ArrayList<>(BuilderSpec.names().stream().map(b -> new Oracle(scene, prims, b)).toList());
         all.add(new Oracle(prims, new BvhBuilder().width(2).build(scene), BvhBuilder.NAME + "-width2"));
+        for (String b : BuilderSpec.names()) all.add(new Oracle(prims, savedAndLoaded(BuilderSpec.of(b), scene), b + " saved and loaded"));
         return List.copyOf(all);
+    }
+
+    /** {@code spec}'s structure over {@code scene}, written to a tree file's bytes and read back (issue 43: the hard cases through a load). */
+    static AccelerationStructure savedAndLoaded(BuilderSpec spec, Primitives scene) {
+        try {
+            java.io.ByteArrayOutputStream out = new java.io.ByteArrayOutputStream();
+            org.kdtree.treefile.TreeFile.write(out, spec.build(scene, null), spec, scene);
+            return org.kdtree.treefile.TreeFile.read(new java.io.ByteArrayInputStream(out.toByteArray()), spec.builder(), scene).structure();
+        } catch (java.io.IOException e) {
+            throw new java.io.UncheckedIOException(e);
+        }
     }
 
     /** Checks closest hit (fast and generic paths), any hit and all hits; returns whether it hit. */
