@@ -46,6 +46,9 @@ final class RenderCommand implements Callable<Integer> {
     Integer height;
 
     @Mixin
+    TreeOptions trees = new TreeOptions();
+
+    @Mixin
     ProgressOption progress;
 
     @Mixin
@@ -56,6 +59,7 @@ final class RenderCommand implements Callable<Integer> {
         Path sceneFile = BundledScenes.resolve(scene);
         requireJsonScene(sceneFile);
         CommandFiles.requireNotInput("-o", output, "SCENE", sceneFile);
+        trees.check("SCENE", sceneFile, output);
         Scene s = PrimitivesReader.readScene(sceneFile);
         if (spp != null) s = s.withSamplesPerPixel(Limits.SAMPLES_PER_PIXEL.check("--spp", spp));
         if (rayDepth != null) s = s.withMaxDepth(Limits.RAY_DEPTH.check("--ray-depth", rayDepth));
@@ -74,12 +78,19 @@ final class RenderCommand implements Callable<Integer> {
         java.util.concurrent.atomic.AtomicInteger quarter = new java.util.concurrent.atomic.AtomicInteger();
         long t0 = System.nanoTime();
         try (ProgressBar bar = progress.bar(1, "tiles")) {
-            job = RenderJob.run(s, spec, deadlines.supervisor(), o.withProgress((done, total, image) -> {
+            Scene sc = s;
+            Renderer.Options withProgress = o.withProgress((done, total, image) -> {
                 bar.update(done, total);
                 int q = (int) (4L * done / Math.max(1, total)), before = quarter.get();
                 if (log && q > before && q < 4 && quarter.compareAndSet(before, q))
                     System.out.printf(java.util.Locale.ROOT, "rendered %d %% of the tiles (%.0f s)%n", 25 * q, (System.nanoTime() - t0) / 1e9);
-            }));
+            });
+            java.util.function.Supplier<TreeOptions.Obtained> obtain = trees.obtaining(options, s.mesh(),
+                    () -> spec.build(sc.mesh(), deadlines.supervisor()));
+            TreeOptions.Obtained[] made = new TreeOptions.Obtained[1];
+            String who = trees.loads() ? "loaded from " + trees.tree + ", not built" : spec.builder();
+            job = TreeOptions.unwrap(() -> RenderJob.run(sc, who, () -> (made[0] = obtain.get()).structure(), withProgress));
+            trees.save(made[0].structure(), made[0].spec(), sc.mesh());
         }
         job.result().image().writePng(output);
         System.out.print(job.summary());

@@ -104,8 +104,14 @@ public final class PrimitivesReader {
         requireNotTree(file);
     }
 
-    /** A saved tree given where a scene or points are due is named as one, whatever its name (not a line of binary). */
-    private static void requireNotTree(Path file) throws IOException {
+    /**
+     * Refuses a saved tree given where a scene or points are due, naming it as one whatever its
+     * name (rather than reporting a line of binary), as every reader here does.
+     *
+     * @param file the file given as a scene
+     * @throws IOException naming the file as a saved tree, or if it cannot be read
+     */
+    public static void requireNotTree(Path file) throws IOException {
         if (org.kdtree.treefile.TreeFile.isTreeFile(file))
             throw new SceneFormatException(file.toString(), 0, "is a saved tree (--save-tree), not a scene or point file: give the "
                     + "scene it was built over, and this file with --tree");
