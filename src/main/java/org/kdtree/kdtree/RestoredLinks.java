@@ -1,5 +1,6 @@
 package org.kdtree.kdtree;
 
+import org.kdtree.accel.TreeStats;
 import org.kdtree.geom.Box;
 
 /**
@@ -13,15 +14,31 @@ final class RestoredLinks {
     private RestoredLinks() {
     }
 
+    /** What the check counts on its way, all of a tree's statistics but the expected cost, which needs the voxels. */
+    record Counts(int nodes, int leaves, int empty, int maxDepth, long depthSum, long refs) {
+        /**
+         * {@return {@code stated}, checked to be these counts' statistics}, with its expected cost as stated
+         * @throws IllegalArgumentException if a count differs
+         */
+        TreeStats confirm(TreeStats stated, long memoryBytes) {
+            TreeStats counted = KdTreeStats.of(nodes, leaves, empty, maxDepth, depthSum, refs, memoryBytes, stated.expectedCost());
+            if (!counted.equals(stated))
+                throw new IllegalArgumentException("the statistics it states (" + stated + ") are not its tree's (" + counted + ")");
+            return stated;
+        }
+    }
+
     /**
+     * {@return the counts of the tree}
      * @throws IllegalArgumentException naming the first node or reference that breaks a rule
      */
-    static void check(int[] nodes, int[] refs, Box bounds, int primitives) {
+    static Counts check(int[] nodes, int[] refs, Box bounds, int primitives) {
         if (nodes.length == 0 || nodes.length % Nodes.INTS != 0)
             throw new IllegalArgumentException("a node array of " + nodes.length + " ints is not whole nodes of " + Nodes.INTS);
         int k = bounds.dimension(), bits = Nodes.axisBits(k), count = nodes.length / Nodes.INTS;
         int[] stack = new int[KdTreeBuilder.DEPTH_LIMIT + 4], depths = new int[stack.length];
-        int sp = 0, next = 0;
+        int sp = 0, next = 0, leaves = 0, empty = 0, maxDepth = 0;
+        long depthSum = 0, refCount = 0;
         stack[sp++] = 0;
         while (sp > 0) {
             int node = stack[--sp], depth = depths[sp];
@@ -34,6 +51,11 @@ final class RestoredLinks {
                 if (start < 0 || end > refs.length)
                     throw new IllegalArgumentException("leaf " + node + " holds references " + start + " to " + end + ", outside the "
                             + refs.length + " references");
+                leaves++;
+                if (end == start) empty++;
+                refCount += end - start;
+                depthSum += depth;
+                maxDepth = Math.max(maxDepth, depth);
                 continue;
             }
             int axis = Nodes.axis(w, bits), right = Nodes.rightChild(w, bits), left = Nodes.leftChild(node);
@@ -56,5 +78,6 @@ final class RestoredLinks {
         for (int i = 0; i < refs.length; i++)
             if (refs[i] < 0 || refs[i] >= primitives)
                 throw new IllegalArgumentException("reference " + i + " names primitive " + refs[i] + " of " + primitives);
+        return new Counts(count, leaves, empty, maxDepth, depthSum, refCount);
     }
 }

@@ -28,7 +28,8 @@ import org.kdtree.spec.BuilderSpec;
  * line: the magic (not a tree file), the version (naming both), the stated length against
  * {@link Limits#TREE_FILE} and against the bytes there are (truncated), the checksum (damaged),
  * then every count, link and name inside (a file whose checksum was forged), the primitives'
- * fingerprint against the scene's, and the statistics against the tree's.
+ * fingerprint against the scene's, and the statistics against the tree's (a kd-tree's counts as
+ * its links are checked, its expected cost taken as stated: {@link KdTree#restore}).
  *
  * <p>A file is mapped, not read: its arrays are copied once, from the mapping into the tree's.
  */
@@ -129,7 +130,7 @@ final class TreeFileReader {
                 in.getLong(), in.getDouble());
         BuilderSpec spec = spec(structure);
         String settings = string("the settings' summary");
-        AccelerationStructure tree = structure == TreeFormat.KD_TREE ? kdTree(primitives, cost, spec.builder()) : bvh(primitives, cost);
+        AccelerationStructure tree = structure == TreeFormat.KD_TREE ? kdTree(primitives, cost, spec.builder(), stats) : bvh(primitives, cost);
         if (in.hasRemaining()) throw damaged(in.remaining() + " bytes after the tree");
         if (!tree.stats().equals(stats))
             throw damaged("the statistics it states (" + stats + ") are not its tree's (" + tree.stats() + ")");
@@ -184,7 +185,7 @@ final class TreeFileReader {
         return spec.with(row, type.cast(value));
     }
 
-    private KdTree kdTree(Primitives primitives, CostModel cost, String builder) throws TreeFileException {
+    private KdTree kdTree(Primitives primitives, CostModel cost, String builder, TreeStats stats) throws TreeFileException {
         int k = primitives.dimension();
         need(16L * k, "the root voxel");
         double[] min = new double[k], max = new double[k];
@@ -194,7 +195,7 @@ final class TreeFileReader {
         int[] nodes = ints(3L * count("the nodes", 12), "the nodes");
         int[] refs = ints(count("the references", 4), "the references");
         try {
-            return KdTree.restore(primitives, new Box(min, max), cost, builder, nodes, refs, budgetLeaves);
+            return KdTree.restore(primitives, new Box(min, max), cost, builder, nodes, refs, budgetLeaves, stats);
         } catch (IllegalArgumentException e) {
             throw damaged(e.getMessage());
         }

@@ -117,6 +117,19 @@ class BadTreeFilesTest {
         assertThat(refusal(forged(file), MESH)).contains("damaged: it states 1000000000 of the nodes, more than its remaining");
     }
 
+    /** Statistics that are not the tree's, in files whose checksum was made to match: the counts of a kd-tree, anything of a BVH. */
+    @Test void statedStatisticsThatAreNotTheTreesAreRefused() {
+        for (byte[] file : new byte[][] {kdFile(), bvhFile()}) {
+            ByteBuffer b = ByteBuffer.wrap(file).order(ByteOrder.LITTLE_ENDIAN);
+            b.putInt(68, b.getInt(68) + 1);   // leaves
+            assertThat(refusal(forged(file), MESH)).contains("damaged: the statistics it states (TreeStats[nodes=");
+        }
+        byte[] bvh = bvhFile();
+        ByteBuffer b = ByteBuffer.wrap(bvh).order(ByteOrder.LITTLE_ENDIAN);
+        b.putDouble(112, b.getDouble(112) + 1);   // expected cost: a BVH's is counted again on loading
+        assertThat(refusal(forged(bvh), MESH)).contains("damaged: the statistics it states");
+    }
+
     /** Node links out of range, in files whose checksum was made to match: named by the node. */
     @Test void aLinkOutOfRangeIsRefusedNamingTheNode() {
         byte[] file = kdFile();
