@@ -120,32 +120,25 @@ final class TreeFileWriter {
         Sink i64(long v) throws IOException { room(8).buffer.putLong(v); return this; }
         Sink f64(double v) throws IOException { room(8).buffer.putDouble(v); return this; }
 
-        Sink bytes(byte[] b) throws IOException {
-            for (int at = 0; at < b.length; ) {
-                int n = Math.min(b.length - at, room(1).buffer.remaining());
-                buffer.put(b, at, n);
-                at += n;
-            }
-            return this;
-        }
+        Sink bytes(byte[] b) throws IOException { return chunks(b.length, 1, (at, n) -> buffer.slice().put(b, at, n)); }
 
         Sink string(byte[] utf8) throws IOException { return i32(utf8.length).bytes(utf8); }
 
-        Sink ints(int[] a) throws IOException {
-            for (int at = 0; at < a.length; ) {
-                int n = Math.min(a.length - at, room(4).buffer.remaining() / 4);
-                buffer.asIntBuffer().put(a, at, n);
-                buffer.position(buffer.position() + 4 * n);
-                at += n;
-            }
-            return this;
+        Sink ints(int[] a) throws IOException { return chunks(a.length, 4, (at, n) -> buffer.asIntBuffer().put(a, at, n)); }
+
+        Sink doubles(double[] a) throws IOException { return chunks(a.length, 8, (at, n) -> buffer.asDoubleBuffer().put(a, at, n)); }
+
+        /** Puts items {@code at .. at + n} of an array into the buffer from its position (a view of it, which moves nothing). */
+        private interface Chunk {
+            void put(int at, int n);
         }
 
-        Sink doubles(double[] a) throws IOException {
-            for (int at = 0; at < a.length; ) {
-                int n = Math.min(a.length - at, room(8).buffer.remaining() / 8);
-                buffer.asDoubleBuffer().put(a, at, n);
-                buffer.position(buffer.position() + 8 * n);
+        /** Puts an array of {@code length} items of {@code width} bytes, as many at a time as the buffer holds. */
+        private Sink chunks(int length, int width, Chunk put) throws IOException {
+            for (int at = 0; at < length; ) {
+                int n = Math.min(length - at, room(width).buffer.remaining() / width);
+                put.put(at, n);
+                buffer.position(buffer.position() + width * n);
                 at += n;
             }
             return this;
