@@ -10,6 +10,8 @@ public final class TreeFileException extends IOException {
     private static final long serialVersionUID = 1L;
 
     /**
+     * A refusal of {@code file}, in one line: the file, then the reason.
+     *
      * @param file   the file as the user named it
      * @param reason what is wrong, in one line
      */
