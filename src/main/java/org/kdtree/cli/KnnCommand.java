@@ -61,7 +61,7 @@ final class KnnCommand implements Callable<Integer> {
         if (radius != null && !(radius >= 0 && radius < Double.POSITIVE_INFINITY))
             throw new IllegalArgumentException("--radius must be a finite number >= 0, got " + radius);
         KdTreeBuilder b = trees.loads() ? null : options.spec().create();
-        trees.check("POINTS", pointsFile, queriesFile, outFile);
+        trees.check("POINTS", pointsFile, "--queries", queriesFile, "--out", outFile);
         CommandFiles.requireWritable("--out", outFile);
         CommandFiles.requireNotInput("--out", outFile, "POINTS", pointsFile);
         CommandFiles.requireNotInput("--out", outFile, "--queries", queriesFile);

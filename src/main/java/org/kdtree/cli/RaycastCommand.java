@@ -86,7 +86,7 @@ final class RaycastCommand implements Callable<Integer> {
         }
         if (raysFile != null && !Files.isRegularFile(raysFile))
             throw new java.io.IOException("--rays " + raysFile + (Files.isDirectory(raysFile) ? ": is a folder, not a file" : ": no such file"));
-        trees.check("MESH", CommandFiles.meshFile(mesh), raysFile);
+        trees.check("MESH", CommandFiles.meshFile(mesh), "--rays", raysFile, "--hits", hitsFile);
         if (!trees.loads()) spec.describe();        // refuses settings the builder does not take, before the mesh is read
         TriangleMesh scene = MeshGrid.grid(CommandFiles.readMesh(mesh, "raycast"), grid);
         threads = spec.value(org.kdtree.accel.SharedSettings.THREADS);

@@ -59,7 +59,7 @@ final class RenderCommand implements Callable<Integer> {
         Path sceneFile = BundledScenes.resolve(scene);
         requireJsonScene(sceneFile);
         CommandFiles.requireNotInput("-o", output, "SCENE", sceneFile);
-        trees.check("SCENE", sceneFile, output);
+        trees.check("SCENE", sceneFile, "-o", output);
         Scene s = PrimitivesReader.readScene(sceneFile);
         if (spp != null) s = s.withSamplesPerPixel(Limits.SAMPLES_PER_PIXEL.check("--spp", spp));
         if (rayDepth != null) s = s.withMaxDepth(Limits.RAY_DEPTH.check("--ray-depth", rayDepth));

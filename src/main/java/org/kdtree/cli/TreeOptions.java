@@ -35,17 +35,22 @@ final class TreeOptions {
     boolean loads() { return tree != null; }
 
     /**
-     * Refuses, before any work, what cannot be: both options, a tree file that is an input of
-     * the command, an output that cannot be written.
+     * Refuses, before any work, what cannot be: both options, a {@code --save-tree} file that is
+     * one of the command's other files (by any spelling or link), an output that cannot be written.
      *
-     * @param input  the command's input, as its help names it (e.g. "SCENE")
-     * @param inputs the command's input files
+     * @param namesAndFiles the command's other files, each after its name as its help gives it
+     *                      ("SCENE", scene, "-o", output, ...); a null file is left out
      */
-    void check(String input, Path... inputs) {
+    void check(Object... namesAndFiles) {
         if (saveTree != null && tree != null)
             throw new IllegalArgumentException("--tree " + tree + " loads a tree, --save-tree " + saveTree + " saves the one built: give one of them");
         if (saveTree == null) return;
-        for (Path in : inputs) CommandFiles.requireNotInput("--save-tree", saveTree, input, in);
+        for (int i = 0; i + 1 < namesAndFiles.length; i += 2) {
+            Path other = (Path) namesAndFiles[i + 1];
+            if (other != null && !other.toString().equals("-") && SameFile.same(saveTree, other))
+                throw new IllegalArgumentException("--save-tree " + saveTree + " is " + namesAndFiles[i] + " (" + other
+                        + "); save the tree elsewhere");
+        }
         CommandFiles.requireWritable("--save-tree", saveTree);
     }
 

@@ -121,7 +121,11 @@ class TreeFileCommandsTest {
                 "--tree " + tree + " holds a tree built by sah; the builder options ask for another");
         oneLine(CliRun.of("stats", "scenes:clustered-spheres", "--tree", tree.toString(), "--save-tree", dir.resolve("x").toString()),
                 "give one of them");
-        oneLine(CliRun.of("stats", "scenes/clustered-spheres.obj", "--save-tree", "scenes/clustered-spheres.obj"), "is the input SCENE");
+        oneLine(CliRun.of("stats", "scenes/clustered-spheres.obj", "--save-tree", "scenes/clustered-spheres.obj"),
+                "--save-tree scenes/clustered-spheres.obj is SCENE (scenes/clustered-spheres.obj); save the tree elsewhere");
+        Path png = dir.resolve("out.png");
+        oneLine(CliRun.of("render", "scenes:cornell-box", "-o", png.toString(), "--save-tree", png.toString()),
+                "--save-tree " + png + " is -o (" + png + "); save the tree elsewhere");
         oneLine(CliRun.of("stats", "scenes:clustered-spheres", "--save-tree", dir.resolve("no/such/folder/t.kdtree").toString()), "--save-tree ");
         assertThat(Files.readAllBytes(tree)).as("the good file untouched").isEqualTo(good);
     }
