@@ -82,6 +82,33 @@ class BadTreeFilesTest {
         }
     }
 
+    /** The file's two readers, its mapping and a stream, refuse a damaged or forged file in the same words. */
+    @Test void theMappingAndTheStreamRefuseAlike(@TempDir Path dir) throws Exception {
+        Path f = dir.resolve("t.kdtree");
+        for (byte[] file : new byte[][] {kdFile(), bvhFile()}) {
+            for (int i = 0; i < file.length; i += 37) {
+                for (boolean forge : new boolean[] {false, true}) {
+                    byte[] bad = file.clone();
+                    bad[i] ^= 0x40;
+                    if (forge) forged(bad);
+                    Files.write(f, bad);
+                    String streamed = outcome(() -> Saved.read(bad, MESH)).replace("test.kdtree: ", "");
+                    String mapped = outcome(() -> TreeFile.load(f, MESH)).replace(f + ": ", "");
+                    assertThat(mapped).as("byte %d, forged %s", i, forge).isEqualTo(streamed);
+                    if (!forge && i >= TreeFormat.PREFIX) assertThat(mapped).contains("damaged: its checksum is ");
+                }
+            }
+        }
+    }
+
+    /** "loaded" (a forged file may make a tree), or the refusal's message. */
+    private static String outcome(org.assertj.core.api.ThrowableAssert.ThrowingCallable load) {
+        Throwable t = org.assertj.core.api.Assertions.catchThrowable(load);
+        if (t == null) return "loaded";
+        assertThat(t).isInstanceOf(TreeFileException.class);
+        return t.getMessage();
+    }
+
     @Test void anotherMagicIsNotATreeFile() {
         byte[] file = kdFile();
         file[1] = 'X';
