@@ -60,6 +60,39 @@ public final class Bvh implements AccelerationStructure {
         this.wide = new WideNodes(this, width);
     }
 
+    private Bvh(Primitives built, double[] box, int[] link, int[] size, int[] primitives, CostModel costModel, int width, int maxDepth) {
+        this.built = built;
+        this.k = built.dimension();
+        this.box = box;
+        this.link = link;
+        this.size = size;
+        this.primitives = primitives;
+        this.costModel = costModel;
+        this.maxDepth = maxDepth;
+        this.wide = new WideNodes(this, width);
+    }
+
+    /**
+     * A hierarchy saved earlier, restored from its binary layout over the primitives it was built
+     * over (a saved tree's reader); the arrays are checked to make one tree before any query reads
+     * them, and the wide layout is made from them as a build makes it.
+     *
+     * @param built      what it was built over (its fingerprint checked by the caller)
+     * @param box        per node, k minima then k maxima, as {@link #min} and {@link #max} give them (kept, not copied)
+     * @param link       per node, an interior node's left child ({@link #left}) or {@code ~}{@link #leafStart} of a leaf (kept)
+     * @param size       per node, a leaf's {@link #leafSize}, 0 for an interior node (kept)
+     * @param primitives the primitives in leaf order, as {@link #primitive} gives them (kept)
+     * @param costModel  Kt and Ki it was built with
+     * @param width      children per node of the wide layout ({@link #width()})
+     * @return the hierarchy
+     * @throws IllegalArgumentException naming the first node, link or primitive that does not make a tree over these primitives
+     */
+    public static Bvh restore(Primitives built, double[] box, int[] link, int[] size, int[] primitives, CostModel costModel, int width) {
+        org.kdtree.limits.Limits.BVH_WIDTH.check("the width", width);
+        int depth = RestoredLinks.check(built, box, link, size, primitives);
+        return new Bvh(built, box, link, size, primitives, costModel, width, depth);
+    }
+
     static Bvh of(Primitives built, BuildNode root, int[] primitives, BvhBuilder settings) {
         return new Bvh(built, built.dimension(), root.size(), primitives, settings.costModel(), root, settings.width());
     }

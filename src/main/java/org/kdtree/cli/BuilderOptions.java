@@ -93,6 +93,16 @@ final class BuilderOptions {
         return builder != null ? builder : defaultBuilder;
     }
 
+    /** {@return whether {@code -b} was given} */
+    boolean builderGiven() {
+        return builder != null;
+    }
+
+    /** {@return the settings given, in the order given} */
+    Map<Setting<?>, Object> givenSettings() {
+        return java.util.Collections.unmodifiableMap(given);
+    }
+
     /** {@return whether any builder option was given} ({@code -b} or a setting) */
     public boolean given() {
         return builder != null || !given.isEmpty();

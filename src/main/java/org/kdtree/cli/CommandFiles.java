@@ -38,6 +38,7 @@ final class CommandFiles {
         Path mesh = meshFile(given);
         requireNotFolder("MESH", given);
         if (!java.nio.file.Files.exists(mesh)) throw new IllegalArgumentException(given + ": no such file");
+        PrimitivesReader.requireNotTree(mesh);
         if (FileKind.of(mesh) != FileKind.OBJ)
             throw new IllegalArgumentException(given + ": " + command + " traces rays through a triangle mesh; give an OBJ file (bundled: "
                     + String.join(", ", BundledScenes.FILES.stream().filter(f -> FileKind.of(f) == FileKind.OBJ)

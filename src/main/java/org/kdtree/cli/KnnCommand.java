@@ -6,7 +6,9 @@ import java.util.Locale;
 import java.util.concurrent.Callable;
 import org.kdtree.files.AtomicFile;
 import org.kdtree.io.PrimitivesReader;
+import org.kdtree.kdtree.KdTree;
 import org.kdtree.kdtree.KdTreeBuilder;
+import org.kdtree.spec.Structures;
 import org.kdtree.limits.Limits;
 import org.kdtree.points.NearestQuery;
 import org.kdtree.points.PointTree;
@@ -48,6 +50,9 @@ final class KnnCommand implements Callable<Integer> {
     @Mixin
     ProgressOption progress;
 
+    @Mixin
+    TreeOptions trees = new TreeOptions();
+
     @Option(names = "--out", required = true, paramLabel = "FILE", description = "Where the neighbour lines go.")
     Path outFile;
 
@@ -55,7 +60,8 @@ final class KnnCommand implements Callable<Integer> {
         Limits.NEIGHBOURS.check("--k", k);
         if (radius != null && !(radius >= 0 && radius < Double.POSITIVE_INFINITY))
             throw new IllegalArgumentException("--radius must be a finite number >= 0, got " + radius);
-        KdTreeBuilder b = options.spec().create();
+        KdTreeBuilder b = trees.loads() ? null : options.spec().create();
+        trees.check("POINTS", pointsFile, "--queries", queriesFile, "--out", outFile);
         CommandFiles.requireWritable("--out", outFile);
         CommandFiles.requireNotInput("--out", outFile, "POINTS", pointsFile);
         CommandFiles.requireNotInput("--out", outFile, "--queries", queriesFile);
@@ -65,12 +71,18 @@ final class KnnCommand implements Callable<Integer> {
             throw new IllegalArgumentException(queriesFile + ": the queries are " + queries.dimension() + "-D, the points "
                     + points.dimension() + "-D (" + pointsFile + ")");
         long t0 = System.nanoTime();
-        PointTree tree = PointTree.build(points, b);
+        TreeOptions.Obtained made = trees.obtain(options, points, () -> PointTree.build(points, b).tree());
+        KdTree kd = Structures.match(made.structure(), t -> t, h -> {
+            throw new IllegalArgumentException("--tree " + trees.tree + " holds a bounding volume hierarchy, which answers ray queries "
+                    + "only; knn needs a kd-tree");
+        });
+        PointTree tree = new PointTree(points, kd);
         long buildNanos = System.nanoTime() - t0;
+        trees.save(kd, made.spec(), points);
         long queryNanos = answer(tree, queries, Math.min(k, points.size()));
-        System.out.println(String.format(Locale.ROOT, "knn: %d points, %d queries, %d-D, k %d%s, builder %s, build %.1f ms, query %.1f ms",
-                points.size(), queries.size(), points.dimension(), k, radius != null ? ", radius " + radius : "", b.name(),
-                buildNanos / 1e6, queryNanos / 1e6));
+        System.out.println(String.format(Locale.ROOT, "knn: %d points, %d queries, %d-D, k %d%s, builder %s, %s %.1f ms, query %.1f ms",
+                points.size(), queries.size(), points.dimension(), k, radius != null ? ", radius " + radius : "", made.spec().builder(),
+                trees.loads() ? "load" : "build", buildNanos / 1e6, queryNanos / 1e6));
         return 0;
     }
 

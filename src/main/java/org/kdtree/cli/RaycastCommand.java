@@ -71,6 +71,9 @@ final class RaycastCommand implements Callable<Integer> {
     int verifyStride;
 
     @Mixin
+    TreeOptions trees = new TreeOptions();
+
+    @Mixin
     ProgressOption progress;
 
     @Mixin
@@ -89,20 +92,22 @@ final class RaycastCommand implements Callable<Integer> {
         }
         if (raysFile != null && !Files.isRegularFile(raysFile))
             throw new java.io.IOException("--rays " + raysFile + (Files.isDirectory(raysFile) ? ": is a folder, not a file" : ": no such file"));
-        String settings = spec.describe();        // also refuses settings the builder does not take, before the mesh is read
+        trees.check("MESH", CommandFiles.meshFile(mesh), "--rays", raysFile, "--hits", hitsFile);
+        if (!trees.loads()) spec.describe();        // refuses settings the builder does not take, before the mesh is read
         TriangleMesh scene = MeshGrid.grid(CommandFiles.readMesh(mesh, "raycast"), grid);
         threads = spec.value(org.kdtree.accel.SharedSettings.THREADS);
         if (raysFile != null) return traceFile(scene, spec);
-        return benchmark(scene, spec, settings);
+        return benchmark(scene, spec);
     }
 
     private int traceFile(TriangleMesh scene, BuilderSpec spec) throws Exception {
-        AccelerationStructure tree;
-        try (ProgressBar bar = progress.bar(1, "builds")) {
-            bar.step(0, "build");
-            tree = spec.build(scene, deadlines.supervisor());
+        TreeOptions.Obtained tree;
+        try (ProgressBar bar = progress.bar(1, trees.loads() ? "loads" : "builds")) {
+            bar.step(0, trees.loads() ? "load" : "build");
+            tree = trees.obtain(options, scene, () -> spec.build(scene, deadlines.supervisor()));
         }
-        RayQuery traverser = tree.query();
+        trees.save(tree.structure(), tree.spec(), scene);
+        RayQuery traverser = tree.structure().query();
         try (BufferedReader in = Files.newBufferedReader(raysFile, StandardCharsets.UTF_8)) {
             if (hitsFile.toString().equals("-")) RayFile.trace(in, raysFile.toString(), traverser, new PrintWriter(System.out));
             else AtomicFile.writeText(hitsFile, out -> RayFile.trace(in, raysFile.toString(), traverser, new PrintWriter(out)));
@@ -110,33 +115,39 @@ final class RaycastCommand implements Callable<Integer> {
         return 0;
     }
 
-    private int benchmark(TriangleMesh scene, BuilderSpec spec, String settings) throws Exception {
+    private int benchmark(TriangleMesh scene, BuilderSpec spec) throws Exception {
         int passes = timed.warmup + timed.runs;
-        Timing.Timed<AccelerationStructure> build;
+        Timing.Timed<TreeOptions.Obtained> build;
         Timing.Timed<RayBatch.Checksum> pr, rr;
         RaySet p, r;
         Supervisor supervisor = deadlines.supervisor();
         try (ProgressBar bar = progress.bar(3 * passes, "steps")) {
-            build = Timing.median(timed.warmup, timed.runs, steps(bar, 0, "build"), () -> spec.build(scene, supervisor));
+            build = TreeOptions.unwrap(() -> Timing.median(timed.warmup, timed.runs, steps(bar, 0, trees.loads() ? "load" : "build"),
+                    trees.obtaining(options, scene, () -> spec.build(scene, supervisor))));
             p = RaySet.primary(scene, RaySet.SPEC_IMAGE);
             r = RaySet.random(scene, RaySet.SPEC_RANDOM_RAYS);
-            AccelerationStructure built = build.value();
+            AccelerationStructure built = build.value().structure();
             try (RayBatch batch = new RayBatch(threads, built::query)) {
                 pr = Timing.median(timed.warmup, timed.runs, steps(bar, passes, "P rays"), () -> batch.trace(p));
                 rr = Timing.median(timed.warmup, timed.runs, steps(bar, 2 * passes, "R rays"), () -> batch.trace(r));
             }
         }
-        AccelerationStructure tree = build.value();
+        AccelerationStructure tree = build.value().structure();
+        BuilderSpec builtWith = build.value().spec();
+        trees.save(tree, builtWith, scene);
         TreeStats st = tree.stats();
         String meshName = CommandFiles.meshFile(mesh).getFileName().toString().replaceFirst("\\.[oO][bB][jJ]$", "")
                 + (grid > 1 ? "-grid" + grid : "");
         System.err.println(COLUMNS);   // the SPEC line stays alone on stdout, for scripts; its columns named beside it
         System.out.println(String.format(Locale.ROOT, "kdtree-%s %s %d %.1f %d %d %d %d %.6f %.3f %d %.6f %.3f",
-                spec.builder(), meshName, scene.size(), build.millis(), st.nodes(), st.leaves(), st.maxDepth(),
+                builtWith.builder(), meshName, scene.size(), build.millis(), st.nodes(), st.leaves(), st.maxDepth(),
                 pr.value().hits(), pr.value().tSum(), p.size() / pr.seconds() / 1e6,
                 rr.value().hits(), rr.value().tSum(), r.size() / rr.seconds() / 1e6));
+        if (trees.loads())
+            System.err.println("# build_ms is the time to load the tree saved in " + trees.tree + " (fingerprint and checks included),"
+                    + " not to build it");
         System.err.println(String.format(Locale.ROOT, "# %s, %d thread(s); references per non-empty leaf %.2f",
-                settings, threads, st.averageRefsPerLeaf()));
+                builtWith.describe(), threads, st.averageRefsPerLeaf()));
         // Which path traced: the BVH's vector traversal when the JVM has the Vector API, else the Java 17 one.
         System.err.println("# path: " + tree.describePath());
         if (verifyStride > 0) {

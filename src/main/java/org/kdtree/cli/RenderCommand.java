@@ -46,6 +46,9 @@ final class RenderCommand implements Callable<Integer> {
     Integer height;
 
     @Mixin
+    TreeOptions trees = new TreeOptions();
+
+    @Mixin
     ProgressOption progress;
 
     @Mixin
@@ -56,6 +59,7 @@ final class RenderCommand implements Callable<Integer> {
         Path sceneFile = BundledScenes.resolve(scene);
         requireRenderable(sceneFile);
         CommandFiles.requireNotInput("-o", output, "SCENE", sceneFile);
+        trees.check("SCENE", sceneFile, "-o", output);
         Scene s = PrimitivesReader.readScene(sceneFile);
         if (FileKind.of(sceneFile) == FileKind.OBJ) System.err.println("# " + scene + " is " + PrimitivesReader.BARE_MESH);
         if (spp != null) s = s.withSamplesPerPixel(Limits.SAMPLES_PER_PIXEL.check("--spp", spp));
@@ -72,7 +76,14 @@ final class RenderCommand implements Callable<Integer> {
         if (!progress.quiet) System.out.printf(java.util.Locale.ROOT, "rendering %s: %d x %d, %d sample%s per pixel, into %s%n", scene,
                 s.camera().width(), s.camera().height(), s.samplesPerPixel(), s.samplesPerPixel() == 1 ? "" : "s", output);
         try (ProgressBar bar = progress.bar(1, "tiles")) {
-            job = RenderJob.run(s, spec, deadlines.supervisor(), o.withProgress((done, total, image) -> bar.update(done, total)));
+            Scene sc = s;
+            Renderer.Options withProgress = o.withProgress((done, total, image) -> bar.update(done, total));
+            java.util.function.Supplier<TreeOptions.Obtained> obtain = trees.obtaining(options, s.mesh(),
+                    () -> spec.build(sc.mesh(), deadlines.supervisor()));
+            TreeOptions.Obtained[] made = new TreeOptions.Obtained[1];
+            String who = trees.loads() ? "loaded from " + trees.tree + ", not built" : spec.builder();
+            job = TreeOptions.unwrap(() -> RenderJob.run(sc, who, () -> (made[0] = obtain.get()).structure(), withProgress));
+            trees.save(made[0].structure(), made[0].spec(), sc.mesh());
         }
         job.result().image().writePng(output);
         System.out.print(job.summary());

@@ -22,7 +22,7 @@ import picocli.CommandLine.Parameters;
 /** {@code stats SCENE}: build a kd-tree or a bounding volume hierarchy and print its statistics and build time. */
 @Command(name = "stats", mixinStandardHelpOptions = true,
         description = "Build a kd-tree, or with -b bvh a bounding volume hierarchy, over a scene (an OBJ, 2-D or JSON scene file) "
-                + "and print its statistics and build time.")
+                + "and print its statistics and build time; or load one saved earlier (--tree) and print its load time.")
 final class StatsCommand implements Callable<Integer> {
     @Parameters(paramLabel = "SCENE", description = "An OBJ mesh, a .scene2d or a JSON scene file, or a bundled scene: "
             + "scenes:cornell-box (or plain cornell-box where no such file exists).")
@@ -39,6 +39,9 @@ final class StatsCommand implements Callable<Integer> {
     int grid;
 
     @Mixin
+    TreeOptions trees = new TreeOptions();
+
+    @Mixin
     ProgressOption progress;
 
     @Mixin
@@ -48,24 +51,33 @@ final class StatsCommand implements Callable<Integer> {
         timed.check();
         Limits.GRID.check("--grid", grid);
         BuilderSpec spec = options.spec();
-        Primitives prims = PrimitivesReader.read(CommandFiles.requireNotFolder("SCENE", BundledScenes.resolve(scene)));
+        Path sceneFile = CommandFiles.requireNotFolder("SCENE", BundledScenes.resolve(scene));
+        trees.check("SCENE", sceneFile);
+        Primitives prims = PrimitivesReader.read(sceneFile);
         if (grid != 1) {
             if (!(prims instanceof TriangleMesh mesh)) throw new IllegalArgumentException("--grid applies to OBJ meshes only");
             prims = MeshGrid.grid(mesh, grid);
         }
-        String settings = spec.describe();       // also refuses settings the builder does not take, before building
+        if (!trees.loads()) spec.describe();       // refuses settings the builder does not take, before building
         Primitives scenePrims = prims;
         Supervisor supervisor = deadlines.supervisor();
-        Timing.Timed<AccelerationStructure> build;
-        try (ProgressBar bar = progress.bar(timed.warmup + timed.runs, "builds")) {
-            build = Timing.median(timed.warmup, timed.runs, (i, warmUp) -> bar.step(i, warmUp ? "warm-up build" : "timed build"),
-                    () -> spec.build(scenePrims, supervisor));
+        Timing.Timed<TreeOptions.Obtained> build;
+        String what = trees.loads() ? "load" : "build";
+        try (ProgressBar bar = progress.bar(timed.warmup + timed.runs, what + "s")) {
+            build = TreeOptions.unwrap(() -> Timing.median(timed.warmup, timed.runs,
+                    (i, warmUp) -> bar.step(i, warmUp ? "warm-up " + what : "timed " + what),
+                    trees.obtaining(options, scenePrims, () -> spec.build(scenePrims, supervisor))));
         }
-        AccelerationStructure built = build.value();
+        AccelerationStructure built = build.value().structure();
+        BuilderSpec builtWith = build.value().spec();
+        trees.save(built, builtWith, prims);
         System.out.printf(Locale.ROOT, "scene: %s (%s, %d-D)%n", scene, RenderJob.count(prims.size(), "primitive"), prims.dimension());
-        System.out.printf(Locale.ROOT, "builder: %s (%s)%n", spec.builder(), settings);
-        System.out.printf(Locale.ROOT, "build time: %.1f ms%s%n", build.millis(),
+        System.out.printf(Locale.ROOT, "builder: %s (%s)%s%n", builtWith.builder(), builtWith.describe(),
+                trees.loads() ? ", saved in " + trees.tree : "");
+        System.out.printf(Locale.ROOT, "%s time: %.1f ms%s%n", what, build.millis(),
                 timed.runs > 1 ? " (median of " + timed.runs + ", after " + timed.warmup + " warm-up)" : "");
+        if (trees.saveTree != null) System.out.printf(Locale.ROOT, "saved the tree in %s (%,d bytes)%n", trees.saveTree,
+                java.nio.file.Files.size(trees.saveTree));
         System.out.println(built.stats().describe());
         for (String note : built.notes()) System.out.println("note: " + note);
         return 0;

@@ -74,7 +74,8 @@ final class StatsPanel extends JPanel {
     private void show(WorkbenchModel m) {
         TreeStats s = m.built().stats();
         set("objects", Integer.toString(m.scene().size()));
-        set("build time", String.format(Locale.ROOT, "%.2f ms", m.buildMillis()));
+        set("build time", String.format(Locale.ROOT, "%.2f ms", m.buildMillis())
+                + (m.loadedFrom() != null ? " (a load of " + m.loadedFrom().getFileName() + ")" : ""));
         set("nodes", Integer.toString(s.nodes()));
         set("leaves", Integer.toString(s.leaves()));
         set("empty leaves", Integer.toString(s.emptyLeaves()));

@@ -31,6 +31,7 @@ import org.kdtree.examples.CentreMidpointBuilder;
 import org.kdtree.io.FileKind;
 import org.kdtree.spec.BuilderSpec;
 import org.kdtree.spec.Builders;
+import org.kdtree.treefile.TreeFile;
 
 /**
  * The workbench window: the 2-D build canvas with its builder controls, statistics, tree view,
@@ -277,6 +278,10 @@ public final class Workbench extends JFrame {
         file.add(action("Open scene...", ctrl(KeyEvent.VK_O), "Open a 2-D scene (.scene2d), or a JSON scene or OBJ mesh for the 3-D tab", this::openScene));
         file.add(action("Save scene...", ctrl(KeyEvent.VK_S), "Save the scene as a .scene2d file", this::saveScene));
         file.add(action("Export canvas as PNG...", ctrl(KeyEvent.VK_E), "Save the canvas as a PNG image", this::exportPng));
+        file.add(action("Save tree...", ctrlShift(KeyEvent.VK_S), "Save the tree of the scene shown, to open it again instead of building it",
+                this::saveTree));
+        file.add(action("Open tree...", ctrlShift(KeyEvent.VK_O), "Show a tree saved earlier over the scene shown, instead of building one",
+                this::openTree));
         file.addSeparator();
         file.add(action("Quit", ctrl(KeyEvent.VK_Q), "Close the workbench", this::dispose));
         bar.add(file);
@@ -418,6 +423,26 @@ public final class Workbench extends JFrame {
             model.save(p);
         } catch (IOException e) {
             error("Cannot save the scene", e);
+        }
+    }
+
+    private void saveTree() {
+        JFileChooser c = chooser(TreeFile.EXTENSION.substring(1), "Saved trees (" + TreeFile.EXTENSION + ")");
+        if (c.showSaveDialog(this) != JFileChooser.APPROVE_OPTION) return;
+        try {
+            model.saveTree(withExtension(c.getSelectedFile().toPath(), TreeFile.EXTENSION));
+        } catch (IOException | RuntimeException e) {
+            error("Cannot save the tree", e);
+        }
+    }
+
+    private void openTree() {
+        JFileChooser c = chooser(TreeFile.EXTENSION.substring(1), "Saved trees (" + TreeFile.EXTENSION + ")");
+        if (c.showOpenDialog(this) != JFileChooser.APPROVE_OPTION) return;
+        try {
+            model.loadTree(c.getSelectedFile().toPath());
+        } catch (IOException | RuntimeException e) {
+            error("Cannot open the tree", e);
         }
     }
 

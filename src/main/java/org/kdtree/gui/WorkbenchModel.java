@@ -67,6 +67,10 @@ final class WorkbenchModel {
     private String sceneName = "";
     private BuilderSpec settings = BuilderSpec.of("sah");
     private Built built;
+    /** What {@link #built} was built with (the settings may have moved on while a build runs). */
+    private BuilderSpec builtWith = settings;
+    /** The tree file {@link #built} was loaded from, or null if it was built here. */
+    private java.nio.file.Path loadedFrom;
     private double buildMillis;
     private boolean building;
     private final BackgroundBuild builds = new BackgroundBuild("workbench build");
@@ -188,8 +192,48 @@ final class WorkbenchModel {
     /** {@return what the last build made, a kd-tree or a hierarchy} (the previous one while a background build runs) */
     public Built built() { return built; }
 
-    /** {@return the wall-clock time of the last build, in milliseconds} */
+    /** {@return the wall-clock time of the last build (or load: {@link #loadedFrom()}), in milliseconds} */
     public double buildMillis() { return buildMillis; }
+
+    /** {@return the tree file the tree shown was loaded from, or null if it was built here} */
+    public java.nio.file.Path loadedFrom() { return loadedFrom; }
+
+    /**
+     * Saves the tree shown, with the settings it was built with, for {@link #loadTree} (File &gt; Save tree).
+     *
+     * @param file the tree file, replaced whole if it exists
+     * @throws java.io.IOException if writing fails
+     * @throws IllegalStateException while the tree shown is not the scene's (a build under way, or failed)
+     */
+    public void saveTree(java.nio.file.Path file) throws java.io.IOException {
+        requireCurrent("save");
+        org.kdtree.treefile.TreeFile.save(file, built.structure(), builtWith, scene);
+    }
+
+    /**
+     * Shows the tree saved in {@code file} instead of building one: it must have been built over
+     * this scene; its builder and settings become the workbench's (File &gt; Open tree).
+     *
+     * @param file a tree file
+     * @throws java.io.IOException in one line if the file is not a tree of this scene, or cannot be read
+     * @throws IllegalStateException while a build is under way or the tree shown is stale
+     */
+    public void loadTree(java.nio.file.Path file) throws java.io.IOException {
+        requireCurrent("replace");
+        long t0 = System.nanoTime();
+        org.kdtree.treefile.SavedTree saved = org.kdtree.treefile.TreeFile.load(file, scene);
+        double ms = (System.nanoTime() - t0) / 1e6;
+        settings = saved.spec();
+        install(scene, saved.spec(), Built.of(saved.structure()), ms);
+        loadedFrom = file;
+        fire(Change.TREE);
+    }
+
+    private void requireCurrent(String what) {
+        if (building || stale())
+            throw new IllegalStateException("the tree shown is not the scene's yet (" + (building ? "a build is under way" : "its build failed")
+                    + "): cannot " + what + " it");
+    }
 
     /** {@return whether a background build is under way} (the views still show the previous tree). */
     public boolean building() { return building; }
@@ -210,18 +254,20 @@ final class WorkbenchModel {
 
     private void rebuild() {
         Scene2D next = new Scene2D(shapes);
-        if (builds.start(settings, next, next.size() <= BACKGROUND_ABOVE, o -> finish(next, o))) return;
+        BuilderSpec spec = settings;
+        if (builds.start(spec, next, next.size() <= BACKGROUND_ABOVE, o -> finish(next, spec, o))) return;
         building = true;
         fire(Change.BUILDING);
     }
 
     /** Shows the newest build's outcome: its tree, or its builder's fault over the last tree, then stale. */
-    private void finish(Scene2D builtScene, BackgroundBuild.Outcome o) {
+    private void finish(Scene2D builtScene, BuilderSpec spec, BackgroundBuild.Outcome o) {
         building = false;
         if (o.fault() == null) {
             fault = null;
             hung.remove(o.built().builderName());
-            install(builtScene, o.built(), o.millis());
+            install(builtScene, spec, o.built(), o.millis());
+            fire(Change.TREE);
             return;
         }
         fault = o.fault();
@@ -230,13 +276,14 @@ final class WorkbenchModel {
     }
 
     /** Publishes a scene and its tree together, so that the views never pair a tree with another scene. */
-    private void install(Scene2D builtScene, Built b, double ms) {
+    private void install(Scene2D builtScene, BuilderSpec spec, Built b, double ms) {
         scene = builtScene;
         built = b;
+        builtWith = spec;
+        loadedFrom = null;
         buildMillis = ms;
         if (selectedNode >= built.nodeCount()) selectedNode = -1;
         if (selectedShape >= shapes.size()) selectedShape = -1;
-        fire(Change.TREE);
     }
 
     // ---- selection ----

@@ -62,6 +62,7 @@ public final class PrimitivesReader {
      * @throws IOException if it cannot be read or is malformed, naming the file, line and field
      */
     public static Scene readScene(Path file) throws IOException {
+        requireNotTree(file);
         return FileKind.of(file) == FileKind.OBJ ? MeshScene.read(file) : SceneReader.read(file);
     }
 
@@ -72,6 +73,7 @@ public final class PrimitivesReader {
      * @throws IOException if it cannot be read or is malformed, naming the file and line
      */
     public static Scene2D readScene2D(Path file) throws IOException {
+        requireNotTree(file);
         return Scene2DReader.read(file);
     }
 
@@ -83,6 +85,7 @@ public final class PrimitivesReader {
      * @throws IOException if it cannot be read or is malformed, naming the file and line
      */
     public static PointsKd readPoints(Path file) throws IOException {
+        requireNotTree(file);
         return PointCsvReader.read(file);
     }
 
@@ -99,8 +102,22 @@ public final class PrimitivesReader {
         return m;
     }
 
-    /** A missing file is "no such file", whatever its name, as every reader says it (not "unknown file type"). */
-    static void requireExists(Path file) throws SceneFormatException {
+    /** A missing file is "no such file", whatever its name, as every reader says it (not "unknown file type"); a saved tree is named. */
+    static void requireExists(Path file) throws IOException {
         if (!java.nio.file.Files.exists(file)) throw new SceneFormatException(file.toString(), 0, "no such file");
+        requireNotTree(file);
+    }
+
+    /**
+     * Refuses a saved tree given where a scene or points are due, naming it as one whatever its
+     * name (rather than reporting a line of binary), as every reader here does.
+     *
+     * @param file the file given as a scene
+     * @throws IOException naming the file as a saved tree, or if it cannot be read
+     */
+    public static void requireNotTree(Path file) throws IOException {
+        if (org.kdtree.treefile.TreeFile.isTreeFile(file))
+            throw new SceneFormatException(file.toString(), 0, "is a saved tree (--save-tree), not a scene or point file: give the "
+                    + "scene it was built over, and this file with --tree");
     }
 }

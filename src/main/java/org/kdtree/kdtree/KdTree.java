@@ -61,6 +61,36 @@ public final class KdTree implements AccelerationStructure {
     }
 
     /**
+     * A tree saved earlier, restored from its arrays over the primitives it was built over (a
+     * saved tree's reader); the arrays are checked to make one tree before any query reads them.
+     *
+     * @param primitives  what it was built over (its fingerprint checked by the caller)
+     * @param bounds      the root voxel
+     * @param cost        the Kt and Ki of its expected cost
+     * @param builderName the builder that made it
+     * @param nodes       the nodes in {@link Nodes}'s layout, as {@link #nodeArray()} gave them (kept, not copied)
+     * @param refs        the leaves' references, as {@link #refArray()} gave them (kept, not copied)
+     * @param budgetLeaves the {@link #budgetLeaves()} of the saved tree
+     * @param stated      the statistics saved with it, or null to count them on the first {@link #stats()}: every count
+     *                    is checked against the arrays as they are checked, and the expected cost, which needs every
+     *                    voxel's area, is taken as stated (a load stays linear in the file, without a walk of the voxels)
+     * @return the tree
+     * @throws IllegalArgumentException naming the first node, link or reference that does not make a tree over these
+     *         primitives, or a stated count that is not the tree's
+     */
+    public static KdTree restore(Primitives primitives, Box bounds, CostModel cost, String builderName, int[] nodes, int[] refs,
+                                 int budgetLeaves, TreeStats stated) {
+        if (bounds.dimension() != primitives.dimension())
+            throw new IllegalArgumentException("a " + bounds.dimension() + "-D root voxel over " + primitives.dimension() + "-D primitives");
+        if (!bounds.isFinite() && primitives.size() > 0) throw new IllegalArgumentException("the root voxel " + bounds + " is not finite");
+        if (budgetLeaves < 0) throw new IllegalArgumentException("a negative count of early leaves, " + budgetLeaves);
+        RestoredLinks.Counts counts = RestoredLinks.check(nodes, refs, bounds, primitives.size());
+        KdTree tree = new KdTree(primitives, bounds.copy(), cost, builderName, nodes, refs, budgetLeaves);
+        if (stated != null) tree.stats = counts.confirm(stated, tree.memoryBytes());
+        return tree;
+    }
+
+    /**
      * The ray tests of the primitives it was built over, made once (a mesh's corners are copied
      * then, not during the build).
      */

@@ -13,10 +13,14 @@ final class KdTreeStats {
     static TreeStats of(KdTree tree) {
         Walk s = new Walk(tree);
         tree.walk(s);
-        int nonEmpty = s.leaves - s.empty;
-        return new TreeStats(s.interiors + s.leaves, s.leaves, s.empty, s.maxDepth,
-                s.leaves == 0 ? 0 : (double) s.depthSum / s.leaves, s.refs,
-                nonEmpty == 0 ? 0 : (double) s.refs / nonEmpty, tree.memoryBytes(), s.weightedCost);
+        return of(s.interiors + s.leaves, s.leaves, s.empty, s.maxDepth, s.depthSum, s.refs, tree.memoryBytes(), s.weightedCost);
+    }
+
+    /** {@return the statistics of these counts}: the averages made from them as every tree's are */
+    static TreeStats of(int nodes, int leaves, int empty, int maxDepth, long depthSum, long refs, long memoryBytes, double expectedCost) {
+        int nonEmpty = leaves - empty;
+        return new TreeStats(nodes, leaves, empty, maxDepth, leaves == 0 ? 0 : (double) depthSum / leaves, refs,
+                nonEmpty == 0 ? 0 : (double) refs / nonEmpty, memoryBytes, expectedCost);
     }
 
     /** Counts the statistics of one tree as the walk visits its nodes. */

@@ -102,6 +102,10 @@ public final class Limits {
     /** Dimensions of a tree (and so of a point set): {@code KdTree.MAX_DIMENSION} is this limit's maximum. */
     public static final Limit DIMENSION = Limit.whole("dimension", 1, 64);
 
+    // Saved trees.
+    /** A saved tree's file, in MB: what loading one may read and hold (one mapped buffer and Java's int arrays end at 2 GB). */
+    public static final Limit TREE_FILE = Limit.whole("tree file", 1, 2047).noting("MB");
+
     // Scenes.
     /** Objects in a generated 2-D scene. */
     public static final Limit SCENE_OBJECTS = Limit.whole("objects", 1, 100_000);
@@ -111,7 +115,7 @@ public final class Limits {
             MIN_PRIMITIVES, BINS, EXACT_BELOW, LEAF_BELOW, LOOKAHEAD, LEAF_SIZE, BVH_WIDTH, CALL_DEADLINE, BUILD_DEADLINE, STUDENT_DEADLINE, STUDENT_HEAP, IMAGE_SIDE, SAMPLES_PER_PIXEL, RAY_DEPTH, LIGHT_SAMPLES,
             SPHERE_SEGMENTS, SPHERE_RINGS, FLAKE_LEVELS,
             RUNS, WARMUP, GRID, RAY_COUNT, RAYS_PER_TRIANGLE,
-            NEIGHBOURS, LEAF_BUDGET, EPSILON, RANKED, POINT_COUNT, QUERY_COUNT, DIMENSION, SCENE_OBJECTS);
+            NEIGHBOURS, LEAF_BUDGET, EPSILON, RANKED, POINT_COUNT, QUERY_COUNT, DIMENSION, TREE_FILE, SCENE_OBJECTS);
 
     private Limits() {
     }

@@ -67,7 +67,16 @@ public record RenderJob(Scene scene, AccelerationStructure structure, String bui
         return run(scene, spec.builder(), () -> spec.build(scene.mesh(), supervisor), options);
     }
 
-    private static RenderJob run(Scene scene, String builderName, Supplier<AccelerationStructure> build, Renderer.Options options) {
+    /**
+     * Makes the structure with {@code build} (a build, or a load of a saved tree), timed, then renders.
+     *
+     * @param scene the scene
+     * @param builderName who made the structure, as the summary says it
+     * @param build makes the structure over the scene's triangles
+     * @param options threads, tiles and progress
+     * @return the finished job
+     */
+    public static RenderJob run(Scene scene, String builderName, Supplier<AccelerationStructure> build, Renderer.Options options) {
         long t0 = System.nanoTime();
         AccelerationStructure structure = build.get();
         long buildNanos = System.nanoTime() - t0;

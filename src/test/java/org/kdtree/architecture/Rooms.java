@@ -21,7 +21,7 @@ final class Rooms {
     private static Map<String, List<String>> rooms() {
         Map<String, List<String>> rooms = new LinkedHashMap<>();
         rooms.put("library", List.of("limits", "geom", "files", "shape", "accel", "kdtree", "bvh", "spec", "generate",
-                "points", "collide", "compare", "scene", "io"));
+                "points", "collide", "compare", "scene", "io", "treefile"));
         rooms.put("rendering", List.of("render"));
         rooms.put("course", List.of("check", "examples"));
         rooms.put("applications", List.of("measure", "tradeoff", "gui", "cli"));

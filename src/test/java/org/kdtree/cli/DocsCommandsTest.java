@@ -190,7 +190,7 @@ class DocsCommandsTest {
     }
 
     /** Options whose value is a file the command writes: run in the temporary folder. */
-    private static final List<String> OUTPUTS = List.of("-o", "--out", "--csv", "--chart", "--hits", "--markdown");
+    private static final List<String> OUTPUTS = List.of("-o", "--out", "--csv", "--chart", "--hits", "--markdown", "--save-tree");
 
     /**
      * The mesh that stands in for {@code bunny.obj} (the reader's copy of the Stanford bunny, not in
@@ -233,6 +233,7 @@ class DocsCommandsTest {
     static List<Plan> plans(Path dir, Path plugin) throws IOException {
         List<Plan> plans = new ArrayList<>();
         Map<List<String>, String> seen = new java.util.HashMap<>();
+        Map<String, String> savedTrees = new java.util.HashMap<>();   // a tree file a docs command saves, where it went here
         for (Command c : commands()) {
             List<String> args = new ArrayList<>(arguments(c.text()));
             if (synopsis(args)) { plans.add(new Plan(c, args, "a synopsis (placeholders): the parser only", false)); continue; }
@@ -275,7 +276,10 @@ class DocsCommandsTest {
             for (int i = 0; i + 1 < args.size(); i++)
                 if (OUTPUTS.contains(args.get(i)) && !args.get(i + 1).equals("-")) {
                     Path out = dir.resolve(plans.size() + "-" + Path.of(args.get(i + 1)).getFileName());
+                    if (args.get(i).equals("--save-tree")) savedTrees.put(args.get(i + 1), out.toString());
                     args.set(i + 1, out.toString());
+                } else if (args.get(i).equals("--tree") && savedTrees.containsKey(args.get(i + 1))) {   // loads what a command above saved
+                    args.set(i + 1, savedTrees.get(args.get(i + 1)));
                 }
             if (name.equals("tradeoff") || name.equals("knn-study"))   // their default outputs go to the current folder
                 for (String option : List.of("--csv", "--chart"))

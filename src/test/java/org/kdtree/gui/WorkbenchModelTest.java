@@ -47,6 +47,37 @@ class WorkbenchModelTest {
                 .hasMessageContaining("bad.scene2d").hasMessageContaining("1");
     }
 
+    /** Issue 43: File > Save tree and Open tree: the same tree and statistics, its settings the workbench's; another scene's refused. */
+    @Test void treesSaveAndOpenOverTheSceneShown(@org.junit.jupiter.api.io.TempDir java.nio.file.Path dir) throws Exception {
+        WorkbenchModel m = new WorkbenchModel();
+        m.setScene("mixed", Shapes.mixed(300, 2).shapes());
+        BuilderSpec spec = BuilderSpec.of("sah").with(org.kdtree.kdtree.SahBuilder.LAMBDA, 0.6);
+        m.setSettings(spec);
+        java.nio.file.Path f = dir.resolve("mixed.kdtree");
+        m.saveTree(f);
+        org.kdtree.accel.TreeStats built = m.built().stats();
+        WorkbenchModel n = new WorkbenchModel();
+        n.setScene("mixed", Shapes.mixed(300, 2).shapes());
+        List<WorkbenchModel.Change> heard = new ArrayList<>();
+        n.addListener(heard::add);
+        n.loadTree(f);
+        assertThat(heard).containsExactly(WorkbenchModel.Change.TREE);
+        assertThat(n.built().stats()).isEqualTo(built);
+        assertThat(n.settings()).isEqualTo(spec);
+        assertThat(n.loadedFrom()).isEqualTo(f);
+        assertThat(new StatsPanel(n).value("build time")).endsWith("(a load of mixed.kdtree)");
+        n.setScene("other", Shapes.mixed(300, 3).shapes());
+        assertThat(n.loadedFrom()).as("an edit builds anew").isNull();
+        org.assertj.core.api.Assertions.assertThatThrownBy(() -> n.loadTree(f)).isInstanceOf(org.kdtree.treefile.TreeFileException.class)
+                .hasMessageContaining("the tree was built over other 300 2-D shapes");
+        m.setSettings(BuilderSpec.of("bvh"));
+        m.saveTree(f);
+        n.setScene("mixed", Shapes.mixed(300, 2).shapes());
+        n.loadTree(f);
+        assertThat(n.settings().builder()).isEqualTo("bvh");
+        assertThat(n.built().stats()).isEqualTo(m.built().stats());
+    }
+
     @Test void theCanvasExportsAsPng(@org.junit.jupiter.api.io.TempDir java.nio.file.Path dir) throws Exception {
         WorkbenchModel m = new WorkbenchModel();
         m.setScene("talk", BuiltinScenes.talkFigures());

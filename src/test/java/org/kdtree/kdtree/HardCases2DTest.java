@@ -10,10 +10,13 @@ import org.kdtree.geom.Ray;
 import org.kdtree.shape.Scene2D;
 import org.kdtree.shape.Shape2D;
 
-/** The hard cases in 2-D (segments, filled rectangles and triangles, points), for every builder, against brute force. */
+/**
+ * The hard cases in 2-D (segments, filled rectangles and triangles, points), for every builder and
+ * its tree saved and loaded again (issue 43), against brute force.
+ */
 class HardCases2DTest {
     private static List<Oracle> oracles(Scene2D scene) {
-        return Oracle.allBuilders(scene, Intersector.of(scene));
+        return Oracle.allBuildersAndSavedTrees(scene, Intersector.of(scene));
     }
 
     private static List<double[]> directions() {

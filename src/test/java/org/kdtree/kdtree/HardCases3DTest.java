@@ -12,8 +12,9 @@ import org.kdtree.geom.Ray;
 import org.kdtree.shape.TriangleMesh;
 
 /**
- * Havran's hard cases in 3-D, for every builder, each ray checked against brute force by
- * {@link Oracle} (closest t within 1e-9 relative, same or equally close primitive, any hit).
+ * Havran's hard cases in 3-D, for every builder and for each builder's tree saved and loaded
+ * again (issue 43), each ray checked against brute force by {@link Oracle} (closest t within
+ * 1e-9 relative, same or equally close primitive, any hit).
  * The scenes are axis-aligned: every face, edge and vertex lies in a candidate split plane.
  */
 class HardCases3DTest {
@@ -60,7 +61,7 @@ class HardCases3DTest {
     private static int shoot(TriangleMesh mesh, double[][] origins, List<double[]> dirs, double scale) {
         int hits = 0;
         Ray ray = new Ray(3);
-        for (Oracle o : Oracle.allBuilders(mesh, new TriangleIntersector(mesh))) {
+        for (Oracle o : Oracle.allBuildersAndSavedTrees(mesh, new TriangleIntersector(mesh))) {
             for (double[] p : origins) {
                 for (double[] d : dirs) {
                     ray.set(p[0] * scale, p[1] * scale, p[2] * scale, d[0], d[1], d[2]);
@@ -114,7 +115,7 @@ class HardCases3DTest {
             TriangleMesh m = MeshBuilder.moved(boxes(), offset);
             int hits = 0;
             Ray ray = new Ray(3);
-            for (Oracle o : Oracle.allBuilders(m, new TriangleIntersector(m)))
+            for (Oracle o : Oracle.allBuildersAndSavedTrees(m, new TriangleIntersector(m)))
                 for (double[] p : origins())
                     for (double[] d : directions()) {
                         ray.set(p[0] + offset[0], p[1] + offset[1], p[2] + offset[2], d[0], d[1], d[2]);
@@ -138,7 +139,7 @@ class HardCases3DTest {
 
     @Test void originsFarAwayAimedAtVerticesAndEdges() {
         TriangleMesh m = boxes();
-        List<Oracle> oracles = Oracle.allBuilders(m, new TriangleIntersector(m));
+        List<Oracle> oracles = Oracle.allBuildersAndSavedTrees(m, new TriangleIntersector(m));
         Ray ray = new Ray(3);
         int hits = 0;
         for (double[] d : directions()) {
@@ -176,7 +177,7 @@ class HardCases3DTest {
 
     @Test void grazingRaysAlongFacesAndEdges() {
         TriangleMesh m = boxes();
-        List<Oracle> oracles = Oracle.allBuilders(m, new TriangleIntersector(m));
+        List<Oracle> oracles = Oracle.allBuildersAndSavedTrees(m, new TriangleIntersector(m));
         Ray ray = new Ray(3);
         java.util.Random rnd = new java.util.Random(11);
         int hits = 0;

@@ -57,6 +57,24 @@ final class Oracle {
         return List.copyOf(all);
     }
 
+    /** {@link #allBuilders}, and one per builder and the BVH for its structure saved to a tree file and loaded again: the hard cases' oracles. */
+    static List<Oracle> allBuildersAndSavedTrees(Primitives scene, Intersector prims) {
+        List<Oracle> all = new java.util.ArrayList<>(allBuilders(scene, prims));
+        for (String b : BuilderSpec.names()) all.add(new Oracle(prims, savedAndLoaded(BuilderSpec.of(b), scene), b + " saved and loaded"));
+        return List.copyOf(all);
+    }
+
+    /** {@code spec}'s structure over {@code scene}, written to a tree file's bytes and read back (issue 43: the hard cases through a load). */
+    static AccelerationStructure savedAndLoaded(BuilderSpec spec, Primitives scene) {
+        try {
+            java.io.ByteArrayOutputStream out = new java.io.ByteArrayOutputStream();
+            org.kdtree.treefile.TreeFile.write(out, spec.build(scene, null), spec, scene);
+            return org.kdtree.treefile.TreeFile.read(new java.io.ByteArrayInputStream(out.toByteArray()), spec.builder(), scene).structure();
+        } catch (java.io.IOException e) {
+            throw new java.io.UncheckedIOException(e);
+        }
+    }
+
     /** Checks closest hit (fast and generic paths), any hit and all hits; returns whether it hit. */
     boolean check(Ray ray, double tMin, double tMax) {
         boolean want = brute.closestHit(ray, tMin, tMax, expected);
