@@ -51,7 +51,7 @@ class WorkbenchModelTest {
     @Test void treesSaveAndOpenOverTheSceneShown(@org.junit.jupiter.api.io.TempDir java.nio.file.Path dir) throws Exception {
         WorkbenchModel m = new WorkbenchModel();
         m.setScene("mixed", Shapes.mixed(300, 2).shapes());
-        BuilderSpec spec = BuilderSpec.of("sah").with(org.kdtree.kdtree.SahBuilder.LAMBDA, 0.6);
+        BuilderSpec spec = BuilderSpec.of("sah").with(org.kdtree.kdtree.SahSettings.LAMBDA, 0.6);
         m.setSettings(spec);
         java.nio.file.Path f = dir.resolve("mixed.kdtree");
         m.saveTree(f);

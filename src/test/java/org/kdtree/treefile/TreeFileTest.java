@@ -41,7 +41,7 @@ class TreeFileTest {
     private static List<BuilderSpec> specs() {
         List<BuilderSpec> all = new java.util.ArrayList<>(BuilderSpec.names().stream().map(BuilderSpec::of).toList());
         all.add(BuilderSpec.of("bvh").with(org.kdtree.bvh.BvhBuilder.WIDTH, 2));
-        all.add(BuilderSpec.of("sah").with(SahBuilder.LAMBDA, 0.5).with(SahBuilder.ALGORITHM, SahBuilder.Algorithm.BINNED)
+        all.add(BuilderSpec.of("sah").with(org.kdtree.kdtree.SahSettings.LAMBDA, 0.5).with(org.kdtree.kdtree.SahSettings.ALGORITHM, SahBuilder.Algorithm.BINNED)
                 .with(org.kdtree.kdtree.KdTreeBuilder.PERFECT_SPLITS, false));
         return all;
     }
