@@ -12,7 +12,7 @@ import org.kdtree.geom.Box;
 import org.kdtree.shape.Primitives;
 
 /**
- * A bounding volume hierarchy, immutable, in two layouts of flat arrays:
+ * A bounding volume hierarchy in flat arrays. Two layouts are made when it is built:
  * <ul>
  * <li>the binary tree the builder found, for reading (the workbench draws it, the listening
  * traversal steps through it): node 0 is the root, an interior node's children are
@@ -21,6 +21,11 @@ import org.kdtree.shape.Primitives;
  * <li>the same tree collapsed to {@link #width()} children per node, which the fast 3-D
  * traversal reads: fewer, wider nodes whose child boxes are tested together.</li>
  * </ul>
+ * The tree never changes once built, but the layouts the other loops read are made on their first
+ * query, under the object's lock: the ray tests of its primitives and, over a mesh, the corners in
+ * leaf order ({@link #leafCorners}); the compact binary layout that packets trace ({@link
+ * #pairs}); the wide layout at the vector lanes' width ({@link #lanes}) and the vector path's leaf
+ * blocks ({@link #leafBlocks}).
  * Unlike a kd-tree's voxels, sibling boxes may overlap and need not cover the scene, so a
  * traversal visits children by their entry distance and stops at none before its closest hit.
  */
@@ -174,7 +179,6 @@ public final class Bvh implements AccelerationStructure {
     /** The binary layout's arrays, for the traversals of this package. */
     double[] boxArray() { return box; }
     int[] linkArray() { return link; }
-    int[] sizeArray() { return size; }
     int[] primitiveArray() { return primitives; }
     WideNodes wide() { return wide; }
 
@@ -221,7 +225,10 @@ public final class Bvh implements AccelerationStructure {
         return leafCorners;
     }
 
-    /** {@return the bytes its arrays hold, both layouts} (not the leaf-ordered corners a triangle query adds) */
+    /**
+     * {@return the bytes its arrays hold, the binary and the wide layout} (not those made on a first
+     * query: the leaf-ordered corners, the compact binary layout, the vector path's lanes and blocks)
+     */
     public long memoryBytes() {
         return 8L * box.length + 4L * (link.length + size.length + primitives.length) + wide.memoryBytes();
     }

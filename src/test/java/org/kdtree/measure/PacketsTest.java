@@ -22,7 +22,8 @@ import org.kdtree.shape.TriangleMesh;
  * queries, whether it is blocked), through each
  * structure that traces packets: camera tiles on generated meshes, rays aimed exactly at shared
  * vertices and edges of a lattice (ties between triangles), cut intervals, and packets that mix
- * direction signs (traced one by one).
+ * direction signs (split into one packet per octant of directions, a ray with a zero direction
+ * component traced alone).
  */
 class PacketsTest {
     private static List<AccelerationStructure> structures(TriangleMesh mesh) {
