@@ -4,6 +4,7 @@ import java.util.Objects;
 import org.kdtree.accel.AccelerationStructure;
 import org.kdtree.accel.CostModel;
 import org.kdtree.accel.Intersector;
+import org.kdtree.accel.PacketQuery;
 import org.kdtree.accel.RayQuery;
 import org.kdtree.accel.TraversalListener;
 import org.kdtree.accel.TreeStats;
@@ -246,12 +247,22 @@ public final class Bvh implements AccelerationStructure {
      * ({@link org.kdtree.accel.PacketQuery}); otherwise the binary layout's, with any {@link Intersector}.
      */
     @Override public RayQuery query() {
-        Intersector prims = intersector();
-        if (prims instanceof TriangleIntersector) {
-            if (VectorPath.enabled()) return VectorPath.packets(this, VectorPath.query(this));
-            return new PacketTraversal(this, width() == 2 ? new PairTraversal(this) : new WideTraversal(this));
-        }
+        if (intersector() instanceof TriangleIntersector) return packetQuery();
         return new BvhTraverser(this, TraversalListener.NONE);
+    }
+
+    /**
+     * {@return its packet loop}: the vector one when this JVM has the Vector API, else the Java 17
+     * one ({@link PacketTraversal}), each over the compact binary layout with the fast single-ray
+     * query for the rays it leaves out
+     *
+     * @throws IllegalArgumentException if it was not built over a 3-D triangle mesh
+     */
+    @Override public PacketQuery packetQuery() {
+        if (!(intersector() instanceof TriangleIntersector))
+            throw new IllegalArgumentException("packets are traced against a triangle mesh; this " + k + "-D hierarchy holds other primitives");
+        if (VectorPath.enabled()) return VectorPath.packets(this, VectorPath.query(this));
+        return new PacketTraversal(this, width() == 2 ? new PairTraversal(this) : new WideTraversal(this));
     }
 
     @Override public RayQuery query(TraversalListener listener) {

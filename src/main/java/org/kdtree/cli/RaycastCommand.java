@@ -109,15 +109,17 @@ final class RaycastCommand implements Callable<Integer> {
         Timing.Timed<AccelerationStructure> build;
         Timing.Timed<RayBatch.Checksum> pr, rr;
         RaySet p, r;
+        String loops;
         Supervisor supervisor = deadlines.supervisor();
         try (ProgressBar bar = progress.bar(3 * passes, "steps")) {
             build = Timing.median(timed.warmup, timed.runs, steps(bar, 0, "build"), () -> spec.build(scene, supervisor));
             p = RaySet.primary(scene, RaySet.SPEC_IMAGE);
             r = RaySet.random(scene, RaySet.SPEC_RANDOM_RAYS);
             AccelerationStructure built = build.value();
-            try (RayBatch batch = new RayBatch(threads, built::query)) {
+            try (RayBatch batch = new RayBatch(threads, built)) {
                 pr = Timing.median(timed.warmup, timed.runs, steps(bar, passes, "P rays"), () -> batch.trace(p));
                 rr = Timing.median(timed.warmup, timed.runs, steps(bar, 2 * passes, "R rays"), () -> batch.trace(r));
+                loops = batch.describeLoops();
             }
         }
         AccelerationStructure tree = build.value();
@@ -130,7 +132,9 @@ final class RaycastCommand implements Callable<Integer> {
                 rr.value().hits(), rr.value().tSum(), r.size() / rr.seconds() / 1e6));
         System.err.println(String.format(Locale.ROOT, "# %s, %d thread(s); references per non-empty leaf %.2f",
                 settings, threads, st.averageRefsPerLeaf()));
-        // Which path traced: the BVH's vector traversal when the JVM has the Vector API, else the Java 17 one.
+        // Which structure, loops and path traced: the BVH's vector traversal when the JVM has the Vector API, else the Java 17 one.
+        System.err.println("# structure: " + tree.kind() + " (" + spec.builder() + ")");
+        System.err.println("# loops: " + loops);
         System.err.println("# path: " + tree.describePath());
         if (verifyStride > 0) {
             BruteCheck check = new BruteCheck(new TriangleIntersector(scene), tree, verifyStride, threads);

@@ -82,6 +82,11 @@ final class RenderCommand implements Callable<Integer> {
             }));
         }
         job.result().image().writePng(output);
+        if (!progress.quiet) {     // which structure, tracer and loop, and which path, as raycast says them
+            System.err.println("# structure: " + job.structure().kind() + " (" + job.builderName() + ")");
+            System.err.println("# tracer: " + job.result().tracer());
+            System.err.println("# path: " + job.structure().describePath());
+        }
         System.out.print(job.summary());
         System.out.println("wrote " + output);
         return 0;

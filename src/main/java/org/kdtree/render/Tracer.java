@@ -6,10 +6,10 @@ import org.kdtree.scene.Scene;
 
 /**
  * One thread's ray tracer: the recursive tracer ({@link WhittedTracer}) one pixel at a time, and,
- * when the query traces packets ({@link PacketQuery}: the BVH), the block tracer ({@link
- * BlockTracer}) 8 x 8 pixels at a time, their rays in packets. Both follow the records of one
- * {@link Shader}, so a pixel's colour and rays are the same, bit for bit, whichever traces it.
- * Tracing allocates nothing.
+ * when given a packet query that traces a packet's rays together ({@link
+ * PacketQuery#tracesTogether}: the BVH's), the block tracer ({@link BlockTracer}) 8 x 8 pixels at
+ * a time, their rays in packets. Both follow the records of one {@link Shader}, so a pixel's
+ * colour and rays are the same, bit for bit, whichever traces it. Tracing allocates nothing.
  */
 final class Tracer {
     /**
@@ -24,27 +24,48 @@ final class Tracer {
 
     private final RayCounts counts = new RayCounts();
     private final WhittedTracer pixels;
-    /** The block tracer, when the query traces packets and the lights take at most {@link #MAX_SLOTS} samples per point; else null. */
+    /**
+     * The block tracer, when given packets traced together and lights of at most {@link
+     * #MAX_SLOTS} samples per point; else null.
+     */
     private final BlockTracer blocks;
+    /** How it traces, for the render's report. */
+    private final String describe;
 
     /**
-     * A tracer for one thread.
+     * A tracer for one thread, one pixel at a time.
      *
      * @param scene the scene
      * @param plan  which rays to cast
      * @param query this thread's ray queries against the structure
      */
     Tracer(Scene scene, EffectPlan plan, RayQuery query) {
-        this(scene, plan, query, SHADOW_BUDGET);
+        this(scene, plan, query, null, SHADOW_BUDGET);
     }
 
-    /** {@link #Tracer(Scene, EffectPlan, RayQuery)} with the block's budget of light samples kept aside (tests make it small). */
-    Tracer(Scene scene, EffectPlan plan, RayQuery query, int shadowBudget) {
+    /**
+     * A tracer for one thread, in blocks of pixels when {@code packets} traces a packet's rays
+     * together (else one pixel at a time).
+     *
+     * @param scene        the scene
+     * @param plan         which rays to cast
+     * @param query        this thread's ray queries against the structure
+     * @param packets      this thread's packet queries against it, or null
+     * @param shadowBudget the block's budget of light samples kept aside ({@link #SHADOW_BUDGET}; tests make it small)
+     */
+    Tracer(Scene scene, EffectPlan plan, RayQuery query, PacketQuery packets, int shadowBudget) {
         Shader shader = new Shader(scene, plan);
         pixels = new WhittedTracer(scene, shader, plan.maxDepth(), query, counts);
-        blocks = query instanceof PacketQuery packets && shader.slots() <= MAX_SLOTS
-                ? new BlockTracer(scene, shader, packets, pixels, counts, shadowBudget) : null;
+        boolean together = packets != null && packets.tracesTogether(), fits = shader.slots() <= MAX_SLOTS;
+        blocks = together && fits ? new BlockTracer(scene, shader, packets, pixels, counts, shadowBudget) : null;
+        describe = blocks != null ? "blocks of 8 x 8 pixels, breadth first, their rays in packets through the packet loop"
+                : "the recursive tracer, one pixel at a time, each ray through the single-ray loop" + (packets == null ? ""
+                : !together ? " (the structure's packets would trace each ray alone)"
+                : " (more than " + MAX_SLOTS + " light samples per point for the block tracer)");
     }
+
+    /** {@return how it traces, in a few words: which tracer, and which loop} */
+    String describe() { return describe; }
 
     /** {@return the rays this tracer has cast so far} */
     RayCounts counts() { return counts; }
