@@ -4,8 +4,8 @@ import java.util.Arrays;
 
 /**
  * Rays kept as columns, origin and direction per axis, in arrays that grow as they are needed and
- * are then kept: a hit's shadow rays ({@link LightSamples}), the rays of a block's ray trees
- * ({@link RayTree}) and its shadow rays ({@link Shadows}), until they are gathered into packets.
+ * are then kept: the rays of a block's ray trees ({@link RayTree}) and its shadow rays ({@link
+ * Shadows}), until they are gathered into packets.
  */
 final class RayColumns {
     double[] ox = new double[0], oy = ox, oz = ox, dx = ox, dy = ox, dz = ox;
@@ -28,15 +28,5 @@ final class RayColumns {
         dx[i] = d[0];
         dy[i] = d[1];
         dz[i] = d[2];
-    }
-
-    /** Sets ray {@code i} to {@code from}'s ray {@code j}. */
-    void set(int i, RayColumns from, int j) {
-        ox[i] = from.ox[j];
-        oy[i] = from.oy[j];
-        oz[i] = from.oz[j];
-        dx[i] = from.dx[j];
-        dy[i] = from.dy[j];
-        dz[i] = from.dz[j];
     }
 }

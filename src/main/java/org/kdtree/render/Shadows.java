@@ -49,13 +49,13 @@ final class Shadows {
     /** Keeps point {@code i}'s light samples, each in its slot, with their shadow rays. */
     void keep(int i, LightSamples samples) {
         for (int j = 0, n = samples.size(); j < n; j++) {
-            int e = i * slots + samples.slot[j];
-            boolean shadowed = samples.shadowed[j];
+            int e = i * slots + samples.slot(j);
+            boolean shadowed = samples.shadowed(j);
             state[e] = shadowed ? SHADOWED : LIGHT;
-            System.arraycopy(samples.light, 3 * j, light, 3 * e, 3);
+            for (int c = 0; c < 3; c++) light[3 * e + c] = samples.light(j, c);
             if (shadowed) {
-                ray.set(e, samples.ray, j);
-                tMax[e] = samples.tMax[j];
+                samples.copyShadowRay(j, ray, e);
+                tMax[e] = samples.end(j);
             }
         }
     }

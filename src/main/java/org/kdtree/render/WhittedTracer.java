@@ -108,10 +108,10 @@ final class WhittedTracer {
     private void directLight(LightSamples samples) {
         double l0 = 0, l1 = 0, l2 = 0;
         for (int i = 0, n = samples.size(); i < n; i++) {
-            if (samples.shadowed[i] && blocked(samples, i)) continue;
-            l0 = l0 + samples.light[3 * i];
-            l1 = l1 + samples.light[3 * i + 1];
-            l2 = l2 + samples.light[3 * i + 2];
+            if (samples.shadowed(i) && blocked(samples, i)) continue;
+            l0 = l0 + samples.light(i, 0);
+            l1 = l1 + samples.light(i, 1);
+            l2 = l2 + samples.light(i, 2);
         }
         light[0] = l0;
         light[1] = l1;
@@ -121,9 +121,7 @@ final class WhittedTracer {
     /** Casts sample {@code i}'s shadow ray: {@return whether anything blocks it} */
     private boolean blocked(LightSamples samples, int i) {
         counts.add(RayKind.SHADOW);
-        RayColumns r = samples.ray;
-        ray.set(r.ox[i], r.oy[i], r.oz[i], r.dx[i], r.dy[i], r.dz[i]);
-        return query.anyHit(ray, 0, samples.tMax[i]);
+        return query.anyHit(samples.shadowRay(i, ray), 0, samples.end(i));
     }
 
     /** Adds to {@code c} the colour of {@code r}, when followed, times its weight. */
