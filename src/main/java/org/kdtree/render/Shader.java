@@ -47,6 +47,9 @@ final class Shader {
     private final double[] background;
     /** Per light: the unit direction toward a directional light; an area light's edges and power per sample. */
     private final double[][] towardLight, edgeU, edgeV, perSample;
+    /** Per material: its diffuse colour, its specular colour (null: no highlight) and shininess, as arrays for the light's inner loop. */
+    private final double[][] diffuse, specular;
+    private final double[] shininess;
     /** Per light, its first slot ({@link LightSamples}: an area light has one per sample, others one); the total last. */
     private final int[] slotOf;
 
@@ -74,6 +77,15 @@ final class Shader {
         this.materials = scene.materials();
         this.lights = scene.lights();
         this.background = set(scene.background(), new double[3]);
+        diffuse = new double[materials.size()][];
+        specular = new double[materials.size()][];
+        shininess = new double[materials.size()];
+        for (int i = 0; i < materials.size(); i++) {
+            Material m = materials.get(i);
+            diffuse[i] = set(m.diffuse(), new double[3]);
+            specular[i] = m.specular().isZero() ? null : set(m.specular(), new double[3]);
+            shininess[i] = m.shininess();
+        }
         int n = lights.size();
         towardLight = new double[n][];
         edgeU = new double[n][];
@@ -127,7 +139,7 @@ final class Shader {
         if (plan.lit(material)) {
             out.lit = true;
             sampler.startPoint(point);
-            directLight(m, dir, sampler, out.lights);
+            directLight(dir, sampler, out.lights);
         }
         if (depth(point) < plan.maxDepth()) secondary(m, dir, weight, out);
     }
@@ -156,25 +168,25 @@ final class Shader {
     }
 
     /** Records the light samples of every light, with the shadow rays the plan asks for. */
-    private void directLight(Material m, double[] dir, PixelSampler sampler, LightSamples out) {
+    private void directLight(double[] dir, PixelSampler sampler, LightSamples out) {
         for (int i = 0; i < 3; i++) toEye[i] = -dir[i];
         for (int li = 0; li < lights.size(); li++) {
             Light light = lights.get(li);
             boolean shadows = plan.shadowRays(li);
             if (light instanceof Light.Directional d) {
-                fromDirection(m, towardLight[li], d.color(), shadows, slotOf[li], out);
+                fromDirection(towardLight[li], d.color(), shadows, slotOf[li], out);
             } else if (light instanceof Light.Point pt) {
-                fromPoint(m, set(pt.position(), q), set(pt.color(), power), shadows, slotOf[li], out);
+                fromPoint(set(pt.position(), q), set(pt.color(), power), shadows, slotOf[li], out);
             } else if (light instanceof Light.Area a) {
-                fromArea(m, a, li, shadows, sampler, out);
+                fromArea(a, li, shadows, sampler, out);
             }
         }
     }
 
     /** The light of colour {@code c} arriving from unit direction {@code toward}, when the surface faces it. */
-    private void fromDirection(Material m, double[] toward, Vec3 c, boolean shadows, int slot, LightSamples out) {
+    private void fromDirection(double[] toward, Vec3 c, boolean shadows, int slot, LightSamples out) {
         if (!(dot(toward, ng) > 0)) return;
-        brdf(m, ns, toward, term);
+        brdf(ns, toward, term);
         int i = out.add(slot, term[0] * c.x(), term[1] * c.y(), term[2] * c.z());
         if (shadows) {
             leave(p, ng, toward, scale, o);
@@ -183,7 +195,7 @@ final class Shader {
     }
 
     /** The light of area light {@code li}, sampled at the plan's number of points over its square. */
-    private void fromArea(Material m, Light.Area a, int li, boolean shadows, PixelSampler sampler, LightSamples out) {
+    private void fromArea(Light.Area a, int li, boolean shadows, PixelSampler sampler, LightSamples out) {
         int n = plan.lightSamples(li);
         Vec3 c = a.center(), normal = a.normal();
         double[] u = edgeU[li], v = edgeV[li], each = perSample[li];
@@ -198,19 +210,19 @@ final class Shader {
             double cosLight = normal.x() * fromLight[0] + normal.y() * fromLight[1] + normal.z() * fromLight[2];
             if (cosLight > 0) {
                 for (int k = 0; k < 3; k++) power[k] = each[k] * cosLight;
-                fromPoint(m, q, power, shadows, slotOf[li] + i, out);
+                fromPoint(q, power, shadows, slotOf[li] + i, out);
             }
         }
     }
 
     /** The light of {@code power} at point {@code to}, falling off with the squared distance, when the surface faces it. */
-    private void fromPoint(Material m, double[] to, double[] power, boolean shadows, int slot, LightSamples out) {
+    private void fromPoint(double[] to, double[] power, boolean shadows, int slot, LightSamples out) {
         for (int k = 0; k < 3; k++) l[k] = to[k] - p[k];
         double d2 = dot(l, l);
         double inv = 1 / Math.sqrt(d2);
         for (int k = 0; k < 3; k++) l[k] = l[k] * inv;
         if (dot(l, ng) <= 0 || d2 == 0) return;
-        brdf(m, ns, l, term);
+        brdf(ns, l, term);
         double falloff = 1 / d2;
         int i = out.add(slot, term[0] * power[0] * falloff, term[1] * power[1] * falloff, term[2] * power[2] * falloff);
         if (shadows) {
@@ -220,22 +232,25 @@ final class Shader {
         }
     }
 
-    /** Lambert plus Phong for unit light direction {@code light} and the unit direction to the eye, into {@code out}. */
-    private void brdf(Material m, double[] n, double[] light, double[] out) {
+    /**
+     * Lambert plus Phong for the surface's material, unit light direction {@code light} and the
+     * unit direction to the eye, into {@code out}.
+     */
+    private void brdf(double[] n, double[] light, double[] out) {
         double cos = Math.max(0, dot(n, light));
-        Vec3 kd = m.diffuse(), ks = m.specular();
-        out[0] = kd.x() * cos;
-        out[1] = kd.y() * cos;
-        out[2] = kd.z() * cos;
-        if (!ks.isZero()) {
+        double[] kd = diffuse[material], ks = specular[material];
+        out[0] = kd[0] * cos;
+        out[1] = kd[1] * cos;
+        out[2] = kd[2] * cos;
+        if (ks != null) {
             for (int k = 0; k < 3; k++) incoming[k] = -light[k];
             reflect(incoming, n, mirrored);
             double rv = dot(mirrored, toEye);
             if (rv > 0) {
-                double highlight = Math.pow(rv, m.shininess());
-                out[0] = out[0] + ks.x() * highlight;
-                out[1] = out[1] + ks.y() * highlight;
-                out[2] = out[2] + ks.z() * highlight;
+                double highlight = Math.pow(rv, shininess[material]);
+                out[0] = out[0] + ks[0] * highlight;
+                out[1] = out[1] + ks[1] * highlight;
+                out[2] = out[2] + ks[2] * highlight;
             }
         }
     }
