@@ -59,7 +59,10 @@ public final class RaysOldAgainstNew {
                 }
             };
             Class<?> rayBatch = cl.loadClass("org.kdtree.measure.RayBatch");
-            batch[i] = rayBatch.getConstructor(int.class, Supplier.class).newInstance(1, queries);
+            Class<?> accel = cl.loadClass("org.kdtree.accel.AccelerationStructure");
+            // A jar whose batch takes the structure traces P through its packet query, as raycast does; older ones take queries.
+            batch[i] = hasConstructor(rayBatch, int.class, accel) ? rayBatch.getConstructor(int.class, accel).newInstance(1, structure)
+                    : rayBatch.getConstructor(int.class, Supplier.class).newInstance(1, queries);
             trace[i] = rayBatch.getMethod("trace", raySet);
         }
         ThreadMXBean mx = ManagementFactory.getThreadMXBean();
@@ -89,6 +92,16 @@ public final class RaysOldAgainstNew {
         }
         Object b = cl.loadClass("org.kdtree.spec.Builders").getMethod("create", String.class).invoke(null, spec);
         return cl.loadClass("org.kdtree.kdtree.KdTreeBuilder").getMethod("build", prims).invoke(b, mesh);
+    }
+
+    /** {@return whether {@code c} has a public constructor taking {@code types}} */
+    static boolean hasConstructor(Class<?> c, Class<?>... types) {
+        try {
+            c.getConstructor(types);
+            return true;
+        } catch (NoSuchMethodException e) {
+            return false;
+        }
     }
 
     /** {@return the structure's silent query method}: {@code query()} now, {@code query(Intersector)} in older jars */

@@ -46,6 +46,7 @@ public final class RenderOldAgainstNew {
             return false;
         };
         Method[] render = new Method[2], rays = new Method[2];
+        // Per jar: its scene, what its renderer traces (a supplier of queries, or the structure), its options.
         Object[] scenes = new Object[2], queries = new Object[2], options = new Object[2];
         for (int i = 0; i < 2; i++) {
             ClassLoader cl = new URLClassLoader(new URL[] {Path.of(args[i]).toUri().toURL()}, ClassLoader.getPlatformClassLoader());
@@ -75,7 +76,12 @@ public final class RenderOldAgainstNew {
             Object o = opts.getMethod("defaults").invoke(null);
             o = opts.getMethod("withThreads", int.class).invoke(o, 1);
             options[i] = opts.getMethod("withStop", BooleanSupplier.class).invoke(o, clock);
-            render[i] = renderer.getMethod("render", cl.loadClass("org.kdtree.scene.Scene"), Supplier.class, opts);
+            // A jar whose renderer takes the structure picks its tracer from the structure's packets, as render does; older ones take queries.
+            Class<?> sceneClass = cl.loadClass("org.kdtree.scene.Scene"), accel = cl.loadClass("org.kdtree.accel.AccelerationStructure");
+            boolean takesStructure = Arrays.stream(renderer.getMethods()).anyMatch(m -> m.getName().equals("render")
+                    && Arrays.equals(m.getParameterTypes(), new Class<?>[] {sceneClass, accel, opts}));
+            render[i] = takesStructure ? renderer.getMethod("render", sceneClass, accel, opts) : renderer.getMethod("render", sceneClass, Supplier.class, opts);
+            if (takesStructure) queries[i] = structure;
             rays[i] = cl.loadClass("org.kdtree.render.RenderResult").getMethod("rays");
         }
         double[][] ms = new double[2][runs];

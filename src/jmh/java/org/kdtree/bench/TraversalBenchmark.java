@@ -1,7 +1,6 @@
 package org.kdtree.bench;
 
 import java.util.concurrent.TimeUnit;
-import org.kdtree.accel.RayQuery;
 import org.kdtree.accel.TriangleIntersector;
 import org.kdtree.measure.RayBatch;
 import org.kdtree.measure.RaySet;
@@ -53,8 +52,7 @@ public class TraversalBenchmark {
     @Setup(Level.Trial)
     public void setUp() {
         TriangleMesh m = BenchScenes.make(mesh, n);
-        RayQuery query = BuildBenchmark.structure(builder, m).query();
-        batch = new RayBatch(1, () -> query);
+        batch = new RayBatch(1, BuildBenchmark.structure(builder, m));
         set = rays.equals("P") ? RaySet.primary(m, RaySet.SPEC_IMAGE) : RaySet.random(m, RaySet.SPEC_RANDOM_RAYS);
     }
 

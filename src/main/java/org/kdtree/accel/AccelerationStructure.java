@@ -56,4 +56,15 @@ public interface AccelerationStructure {
      * @throws IllegalArgumentException if it was built over primitives no ray is traced against (points)
      */
     RayQuery query(TraversalListener listener);
+
+    /**
+     * A new packet query for one thread over the triangle mesh it was built over: every structure
+     * answers packets of rays, each ray exactly as {@link #query()} answers it alone. Whether its
+     * loop traces a packet's rays together or each alone, {@link PacketQuery#tracesTogether} says
+     * (the kd-tree's, for now, traces each ray through its fast single-ray loop).
+     *
+     * @return the packet query
+     * @throws IllegalArgumentException if it was not built over a 3-D triangle mesh (packets are 3-D rays)
+     */
+    PacketQuery packetQuery();
 }

@@ -3,12 +3,22 @@ package org.kdtree.accel;
 import org.kdtree.geom.Ray;
 
 /**
- * A ray query that also traces coherent rays together: a packet's rays share the structure's
- * node reads, and a box or cell that no ray of the packet can enter is skipped for all of them
- * at once. Each ray's answer is exactly its {@link RayQuery#closestHit} answer (primitive, t,
- * barycentrics). Not thread safe: one per thread, like the query.
+ * A ray query that also answers packets of rays ({@link AccelerationStructure#packetQuery}: every
+ * structure gives one). A packet loop traces coherent rays together: a packet's rays share the
+ * structure's node reads, and a box or cell that no ray of the packet can enter is skipped for
+ * all of them at once; a structure without one answers each ray of the packet alone ({@link
+ * SingleRayPackets}), and {@link #tracesTogether} says which it is. Either way each ray's answer
+ * is exactly its {@link RayQuery#closestHit} answer (primitive, t, barycentrics). Not thread
+ * safe: one per thread, like the query.
  */
 public interface PacketQuery extends RayQuery {
+    /**
+     * {@return whether a packet's rays are traced together}, sharing the structure's node reads (a
+     * packet loop), rather than each alone through the single-ray loop ({@link SingleRayPackets}):
+     * a renderer gathers its rays into packets only where that is repaid
+     */
+    boolean tracesTogether();
+
     /**
      * The closest hit of every ray of the packet, written to the packet's results.
      *

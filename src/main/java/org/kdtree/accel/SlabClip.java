@@ -4,17 +4,21 @@ import org.kdtree.geom.Ray;
 import org.kdtree.geom.Tolerance;
 
 /**
- * The one slab clip of a ray against an axis-aligned box, shared by every structure's traversal
- * (the kd-tree clips a ray to its scene box, the bounding volume hierarchy to its node boxes), so
- * that both round the same way ({@link Tolerance#TRAVERSAL_SLACK}).
+ * The slab clip of a ray against an axis-aligned box, shared by the two listening traversals (the
+ * kd-tree's {@code Traverser} clips a ray to its scene box, the bounding volume hierarchy's {@code
+ * BvhTraverser} to its node boxes), so that both round the same way ({@link
+ * Tolerance#TRAVERSAL_SLACK}). The fast loops clip with the same slack in forms of their own: the
+ * kd-tree's {@code MeshTraversal} writes this clip out on its locals; the BVH's wide, pair and
+ * packet loops widen a non-negative interval by factors ({@code t0 * (1 - slack) <= t1 * (1 +
+ * slack)}) instead of by {@code |t| * slack}.
  */
 public final class SlabClip {
     private SlabClip() {
     }
 
     /**
-     * The slab test of every traversal that clips a ray to a box (the kd-tree's scene box, a
-     * bounding volume hierarchy's node boxes): {@code [tMin, tMax]} clipped to the box, widened by
+     * The slab test of the listening traversals (the kd-tree's scene box, a bounding volume
+     * hierarchy's node boxes): {@code [tMin, tMax]} clipped to the box, widened by
      * the slack, into {@code interval}. A NaN slab bound (origin on a face of a flat box,
      * direction 0 on that axis) constrains nothing.
      *

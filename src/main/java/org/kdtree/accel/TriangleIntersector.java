@@ -87,8 +87,11 @@ public final class TriangleIntersector implements Intersector {
      * The test proper, on corners {@code c[b .. b+9)}, with the origin's coordinates given in the
      * sheared frame's axis order and the per-ray shear constants. Records a hit with
      * {@code tMin <= t <= tMax} and {@code t < hit.t} in {@code hit} (or {@code t == hit.t} and
-     * {@code prim < hit.primitive}: of two hits equally close the lower index wins, in any order). (The kd-tree's fast path
-     * inlines a copy; the BVH's wide traversal calls this.)
+     * {@code prim < hit.primitive}: of two hits equally close the lower index wins, in any order). At 342 bytes of
+     * bytecode it is above HotSpot's limit for inlining a hot callee ({@code FreqInlineSize}, 325), so the JIT calls it
+     * (JDK 17 and 25, {@code -XX:+PrintInlining}: "hot method too big"): the kd-tree's fast loop ({@code
+     * MeshTraversal}) writes a copy out in its loop; the BVH's single-ray and packet loops call this; the vector
+     * path's leaf tests repeat its operations lane by lane.
      *
      * @param c    corner coordinates, 9 per triangle
      * @param b    where this triangle's 9 start
@@ -124,7 +127,7 @@ public final class TriangleIntersector implements Intersector {
         return record(hit, prim, t, v / det, w / det);
     }
 
-    /** Kept apart so that {@link #test} stays small enough for the JIT to inline into hot loops. */
+    /** Kept apart to keep {@link #test} short (it is still above the JIT's inlining limit: see there). */
     private static boolean record(Hit hit, int prim, double t, double u, double v) {
         hit.primitive = prim;
         hit.t = t;

@@ -4,6 +4,7 @@ import java.util.Objects;
 import org.kdtree.accel.AccelerationStructure;
 import org.kdtree.accel.CostModel;
 import org.kdtree.accel.Intersector;
+import org.kdtree.accel.PacketQuery;
 import org.kdtree.accel.RayQuery;
 import org.kdtree.accel.TraversalListener;
 import org.kdtree.accel.TreeStats;
@@ -12,7 +13,7 @@ import org.kdtree.geom.Box;
 import org.kdtree.shape.Primitives;
 
 /**
- * A bounding volume hierarchy, immutable, in two layouts of flat arrays:
+ * A bounding volume hierarchy in flat arrays. Two layouts are made when it is built:
  * <ul>
  * <li>the binary tree the builder found, for reading (the workbench draws it, the listening
  * traversal steps through it): node 0 is the root, an interior node's children are
@@ -21,6 +22,11 @@ import org.kdtree.shape.Primitives;
  * <li>the same tree collapsed to {@link #width()} children per node, which the fast 3-D
  * traversal reads: fewer, wider nodes whose child boxes are tested together.</li>
  * </ul>
+ * The tree never changes once built, but the layouts the other loops read are made on their first
+ * query, under the object's lock: the ray tests of its primitives and, over a mesh, the corners in
+ * leaf order ({@link #leafCorners}); the compact binary layout that packets trace ({@link
+ * #pairs}); the wide layout at the vector lanes' width ({@link #lanes}) and the vector path's leaf
+ * blocks ({@link #leafBlocks}).
  * Unlike a kd-tree's voxels, sibling boxes may overlap and need not cover the scene, so a
  * traversal visits children by their entry distance and stops at none before its closest hit.
  */
@@ -207,7 +213,6 @@ public final class Bvh implements AccelerationStructure {
     /** The binary layout's arrays, for the traversals of this package. */
     double[] boxArray() { return box; }
     int[] linkArray() { return link; }
-    int[] sizeArray() { return size; }
     int[] primitiveArray() { return primitives; }
     WideNodes wide() { return wide; }
 
@@ -254,7 +259,10 @@ public final class Bvh implements AccelerationStructure {
         return leafCorners;
     }
 
-    /** {@return the bytes its arrays hold, both layouts} (not the leaf-ordered corners a triangle query adds) */
+    /**
+     * {@return the bytes its arrays hold, the binary and the wide layout} (not those made on a first
+     * query: the leaf-ordered corners, the compact binary layout, the vector path's lanes and blocks)
+     */
     public long memoryBytes() {
         return 8L * box.length + 4L * (link.length + size.length + primitives.length) + wide.memoryBytes();
     }
@@ -272,12 +280,22 @@ public final class Bvh implements AccelerationStructure {
      * ({@link org.kdtree.accel.PacketQuery}); otherwise the binary layout's, with any {@link Intersector}.
      */
     @Override public RayQuery query() {
-        Intersector prims = intersector();
-        if (prims instanceof TriangleIntersector) {
-            if (VectorPath.enabled()) return VectorPath.packets(this, VectorPath.query(this));
-            return new PacketTraversal(this, width() == 2 ? new PairTraversal(this) : new WideTraversal(this));
-        }
+        if (intersector() instanceof TriangleIntersector) return packetQuery();
         return new BvhTraverser(this, TraversalListener.NONE);
+    }
+
+    /**
+     * {@return its packet loop}: the vector one when this JVM has the Vector API, else the Java 17
+     * one ({@link PacketTraversal}), each over the compact binary layout with the fast single-ray
+     * query for the rays it leaves out
+     *
+     * @throws IllegalArgumentException if it was not built over a 3-D triangle mesh
+     */
+    @Override public PacketQuery packetQuery() {
+        if (!(intersector() instanceof TriangleIntersector))
+            throw new IllegalArgumentException("packets are traced against a triangle mesh; this " + k + "-D hierarchy holds other primitives");
+        if (VectorPath.enabled()) return VectorPath.packets(this, VectorPath.query(this));
+        return new PacketTraversal(this, width() == 2 ? new PairTraversal(this) : new WideTraversal(this));
     }
 
     @Override public RayQuery query(TraversalListener listener) {

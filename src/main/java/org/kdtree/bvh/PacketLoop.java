@@ -55,6 +55,9 @@ abstract class PacketLoop implements PacketQuery {
         return single.closestHit(ray, tMin, tMax, hit);
     }
 
+    /** {@return true: a coherent packet's rays share the node reads} */
+    @Override public boolean tracesTogether() { return true; }
+
     @Override public boolean anyHit(Ray ray, double tMin, double tMax) {
         return single.anyHit(ray, tMin, tMax);
     }

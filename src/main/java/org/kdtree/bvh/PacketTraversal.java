@@ -18,7 +18,8 @@ import org.kdtree.geom.Tolerance;
  * active: the child is entered with the range from the first ray that enters it to the last.</li>
  * <li>The nearer child (by its first ray's entry distance) is taken next, the other saved with
  * its range.</li>
- * <li>At a leaf, every ray of the range tests the leaf's triangles with the one watertight test.</li>
+ * <li>At a leaf, every ray of the range tests the leaf's triangles with the watertight test
+ * ({@link TriangleIntersector#test}).</li>
  * </ol>
  * Every per-ray test is the single-ray traversal's, in the same arithmetic, and the whole-packet
  * bounds are taken with the same operations on the extreme values (rounding is monotonic, so a

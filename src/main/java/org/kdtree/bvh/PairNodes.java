@@ -86,10 +86,6 @@ final class PairNodes {
         words[link + 1] = 1;      // a "leaf" no ray reaches: its box is empty
     }
 
-    long memoryBytes() {
-        return 4L * words.length;
-    }
-
     /** A child's code, from its link at {@code link} of {@code words}: its record's index, or {@code -1 - link} for a leaf. */
     static int code(int[] words, int link) {
         return words[link + 1] > 0 ? -1 - link : words[link];

@@ -16,7 +16,7 @@ import org.kdtree.geom.Tolerance;
  * beyond the closest hit is dropped when it is popped. Intervals combine with plain compares
  * (no {@code Math.max}/{@code min}: with no NaN bound and t &gt;= 0 a compare is exact, and
  * cheaper). Leaves test their triangles from the corners in leaf order
- * ({@link Bvh#leafCorners}) with the one watertight test.
+ * ({@link Bvh#leafCorners}) with the watertight test ({@link TriangleIntersector#test}).
  *
  * <p>Box intervals are widened by {@link Tolerance#TRAVERSAL_SLACK} as factors on a
  * non-negative interval, as in {@link WideTraversal}; rays with a zero direction component or a

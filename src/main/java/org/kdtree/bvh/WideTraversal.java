@@ -10,9 +10,10 @@ import org.kdtree.geom.Tolerance;
  * The fast traversal of a {@link Bvh} over a triangle mesh: its wide layout ({@link WideNodes}),
  * one node's child boxes tested in one loop with the ray's near and far planes chosen once per
  * ray, the children entered pushed farthest first so that the nearest is taken next, a saved
- * entry dropped when it starts beyond the closest hit, and the one watertight triangle test
+ * entry dropped when it starts beyond the closest hit, and the watertight triangle test
  * ({@link TriangleIntersector#test}) on the corners in leaf order. Box intervals are widened by
- * {@link Tolerance#TRAVERSAL_SLACK}, as in every traversal of the project. Allocation-free per
+ * {@link Tolerance#TRAVERSAL_SLACK}, as in every traversal of the project, here as factors on a
+ * non-negative interval. Allocation-free per
  * ray; not thread safe: one per thread.
  */
 final class WideTraversal implements RayQuery {

@@ -120,6 +120,7 @@ final class RaycastCommand implements Callable<Integer> {
         Timing.Timed<TreeOptions.Obtained> build;
         Timing.Timed<RayBatch.Checksum> pr, rr;
         RaySet p, r;
+        String loops;
         Supervisor supervisor = deadlines.supervisor();
         try (ProgressBar bar = progress.bar(3 * passes, "steps")) {
             build = TreeOptions.unwrap(() -> Timing.median(timed.warmup, timed.runs, steps(bar, 0, trees.loads() ? "load" : "build"),
@@ -127,9 +128,10 @@ final class RaycastCommand implements Callable<Integer> {
             p = RaySet.primary(scene, RaySet.SPEC_IMAGE);
             r = RaySet.random(scene, RaySet.SPEC_RANDOM_RAYS);
             AccelerationStructure built = build.value().structure();
-            try (RayBatch batch = new RayBatch(threads, built::query)) {
+            try (RayBatch batch = new RayBatch(threads, built)) {
                 pr = Timing.median(timed.warmup, timed.runs, steps(bar, passes, "P rays"), () -> batch.trace(p));
                 rr = Timing.median(timed.warmup, timed.runs, steps(bar, 2 * passes, "R rays"), () -> batch.trace(r));
+                loops = batch.describeLoops();
             }
         }
         AccelerationStructure tree = build.value().structure();
@@ -148,7 +150,9 @@ final class RaycastCommand implements Callable<Integer> {
                     + " not to build it");
         System.err.println(String.format(Locale.ROOT, "# %s, %d thread(s); references per non-empty leaf %.2f",
                 builtWith.describe(), threads, st.averageRefsPerLeaf()));
-        // Which path traced: the BVH's vector traversal when the JVM has the Vector API, else the Java 17 one.
+        // Which structure, loops and path traced: the BVH's vector traversal when the JVM has the Vector API, else the Java 17 one.
+        System.err.println("# structure: " + tree.kind() + " (" + builtWith.builder() + ")");
+        System.err.println("# loops: " + loops);
         System.err.println("# path: " + tree.describePath());
         if (verifyStride > 0) {
             BruteCheck check = new BruteCheck(new TriangleIntersector(scene), tree, verifyStride, threads);

@@ -86,6 +86,11 @@ final class RenderCommand implements Callable<Integer> {
             trees.save(made[0].structure(), made[0].spec(), sc.mesh());
         }
         job.result().image().writePng(output);
+        if (!progress.quiet) {     // which structure, tracer and loop, and which path, as raycast says them
+            System.err.println("# structure: " + job.structure().kind() + " (" + job.builderName() + ")");
+            System.err.println("# tracer: " + job.result().tracer());
+            System.err.println("# path: " + job.structure().describePath());
+        }
         System.out.print(job.summary());
         System.out.println("wrote " + output);
         return 0;

@@ -120,9 +120,6 @@ final class BuilderPanel extends JPanel {
         return s.replace("&", "&amp;").replace("<", "&lt;").replace(">", "&gt;");
     }
 
-    /** {@return the fault shown, as its plain line, or null} (for tests) */
-    String faultShown() { return fault.getToolTipText(); }
-
     /** Shows why the value just typed is not taken (null: the text is valid again). */
     private void reject(String why) {
         rejection.setText(why == null ? " " : why);

@@ -4,6 +4,8 @@ import org.kdtree.accel.AccelerationStructure;
 import org.kdtree.accel.CostModel;
 import org.kdtree.accel.Hit;
 import org.kdtree.accel.Intersector;
+import org.kdtree.accel.PacketQuery;
+import org.kdtree.accel.SingleRayPackets;
 import org.kdtree.accel.RayQuery;
 import org.kdtree.accel.TraversalListener;
 import org.kdtree.accel.TreeStats;
@@ -257,6 +259,18 @@ public final class KdTree implements AccelerationStructure {
 
     /** {@return a {@link Traverser} over this tree and the primitives it was built over} */
     @Override public RayQuery query() { return new Traverser(this); }
+
+    /**
+     * {@return packets answered one ray at a time ({@link SingleRayPackets}), each ray through the
+     * fast single-ray loop}: the kd-tree has no packet loop yet
+     *
+     * @throws IllegalArgumentException if it was not built over a 3-D triangle mesh
+     */
+    @Override public PacketQuery packetQuery() {
+        if (!(intersector() instanceof TriangleIntersector))
+            throw new IllegalArgumentException("packets are traced against a triangle mesh; this " + dimension() + "-D tree holds other primitives");
+        return new SingleRayPackets(query());
+    }
 
     /** {@return a {@link Traverser} over this tree and its primitives that reports every step to {@code listener}} */
     @Override public RayQuery query(TraversalListener listener) {

@@ -128,7 +128,7 @@ final class MeshTraversal {
                 int p = refs[r];
                 if (box[p] == stamp) continue;
                 box[p] = stamp;
-                // TriangleIntersector.test, inlined (the JIT will not inline a method that large).
+                // TriangleIntersector.test, written out: the JIT will not inline it (342 bytes of bytecode, above FreqInlineSize).
                 int q = 9 * p;
                 double az = c[q + kz] - okz, bz = c[q + 3 + kz] - okz, cz = c[q + 6 + kz] - okz;
                 double ax = c[q + kx] - okx - sx * az, ay = c[q + ky] - oky - sy * az;

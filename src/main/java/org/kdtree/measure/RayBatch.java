@@ -22,9 +22,10 @@ import org.kdtree.limits.Limits;
  * t in (0, +infinity), as docs/benchmark-spec.md defines it ({@link #T_MIN}).
  *
  * <p>Rays are handed out in blocks of 4096; hit counts and t sums are kept per block and added in
- * block order, so the checksum is the same for any thread count. The rays of an image (set P)
- * are traced in tiles of 8 x 8 as packets when the structure's query traces packets
- * ({@link PacketQuery}), and summed in the same order: the same checksum either way.
+ * block order, so the checksum is the same for any thread count. Given a structure, the rays of an
+ * image (set P) are traced in tiles of 8 x 8 as packets ({@link AccelerationStructure#packetQuery}:
+ * every structure answers them; {@link #describeLoops} says how), and summed in the same order:
+ * the same checksum either way. Given only single-ray queries, every set goes one ray at a time.
  */
 public final class RayBatch implements AutoCloseable {
     /**
@@ -47,18 +48,38 @@ public final class RayBatch implements AutoCloseable {
     }
 
     private final RayQuery[] queries;
+    /** Per thread, its packet query; null when only single rays are traced. */
+    private final PacketQuery[] packets;
     private final ExecutorService pool;
 
     /**
-     * A tracer with {@code threads} query objects from {@code factory} (one per thread).
+     * A tracer with {@code threads} query objects from {@code factory} (one per thread), each ray
+     * traced alone.
      *
      * @param threads threads tracing each set ({@link Limits#THREADS})
      * @param factory makes a query object (each thread needs its own)
      */
     public RayBatch(int threads, Supplier<? extends RayQuery> factory) {
+        this(threads, factory, null);
+    }
+
+    /**
+     * A tracer of {@code structure} on {@code threads} threads: an image's rays (set P) in packets
+     * through its packet queries, other sets one ray at a time through its queries.
+     *
+     * @param threads   threads tracing each set ({@link Limits#THREADS})
+     * @param structure the structure traced, over a 3-D triangle mesh
+     */
+    public RayBatch(int threads, AccelerationStructure structure) {
+        this(threads, structure::query, structure::packetQuery);
+    }
+
+    private RayBatch(int threads, Supplier<? extends RayQuery> factory, Supplier<PacketQuery> packetFactory) {
         Limits.THREADS.check(Limits.THREADS.title(), threads);
         queries = new RayQuery[threads];
         for (int i = 0; i < threads; i++) queries[i] = factory.get();
+        packets = packetFactory == null ? null : new PacketQuery[threads];
+        if (packets != null) for (int i = 0; i < threads; i++) packets[i] = packetFactory.get();
         pool = threads > 1 ? Executors.newFixedThreadPool(threads, r -> {
             Thread t = new Thread(r, "ray-batch");
             t.setDaemon(true);
@@ -77,12 +98,12 @@ public final class RayBatch implements AutoCloseable {
         long[] hits = new long[blocks];
         double[] sums = new double[blocks];
         AtomicInteger next = new AtomicInteger();
-        if (packets(rays)) {
+        if (packets != null && rays.imageWidth() > 0) {
             double[] t = new double[n];
-            run(q -> tiles(q, rays, next, t));
+            run(packets, q -> tiles(q, rays, next, t));
             sumInBlocks(t, hits, sums);
         } else {
-            run(q -> work(q, rays, next, hits, sums));
+            run(queries, q -> work(q, rays, next, hits, sums));
         }
         long h = 0;
         double s = 0;
@@ -90,22 +111,25 @@ public final class RayBatch implements AutoCloseable {
         return new Checksum(h, s);
     }
 
-    /** Whether the set is traced in tiles of packets: an image, and every query traces packets. */
-    private boolean packets(RaySet rays) {
-        if (rays.imageWidth() <= 0) return false;
-        for (RayQuery q : queries) if (!(q instanceof PacketQuery)) return false;
-        return true;
+    /**
+     * {@return how it traces each kind of set, for a report}: one ray at a time, and for an image's
+     * rays, packets through a packet loop or each ray alone through the single-ray loop
+     */
+    public String describeLoops() {
+        if (packets == null) return "every ray alone, through the single-ray loop";
+        return "rays not of an image (set R) alone, through the single-ray loop; an image's rays (set P) in 8 x 8 packets, "
+                + (packets[0].tracesTogether() ? "through the packet loop" : "each ray alone through the single-ray loop (no packet loop)");
     }
 
-    /** Runs {@code job} with each query, on the pool's threads or this one. */
-    private void run(java.util.function.Consumer<RayQuery> job) {
+    /** Runs {@code job} with each thread's query, on the pool's threads or this one. */
+    private <Q extends RayQuery> void run(Q[] each, java.util.function.Consumer<Q> job) {
         if (pool == null) {
-            job.accept(queries[0]);
+            job.accept(each[0]);
             return;
         }
-        Future<?>[] f = new Future<?>[queries.length];
-        for (int i = 0; i < queries.length; i++) {
-            RayQuery q = queries[i];
+        Future<?>[] f = new Future<?>[each.length];
+        for (int i = 0; i < each.length; i++) {
+            Q q = each[i];
             f[i] = pool.submit(() -> job.accept(q));
         }
         try {
@@ -122,8 +146,7 @@ public final class RayBatch implements AutoCloseable {
      * Traces an image's rays in tiles of {@link #TILE} x {@link #TILE} pixels, one packet each,
      * bands of {@link #TILE} rows handed out in turn; writes each ray's hit distance (NaN for a miss) to {@code t}.
      */
-    private static void tiles(RayQuery q, RaySet rays, AtomicInteger next, double[] t) {
-        PacketQuery pq = (PacketQuery) q;
+    private static void tiles(PacketQuery pq, RaySet rays, AtomicInteger next, double[] t) {
         RayPacket packet = new RayPacket();
         int[] pixel = new int[TILE * TILE];
         double[] r = rays.raw();

@@ -1,21 +1,26 @@
 package org.kdtree.render;
 
+import org.kdtree.scene.Camera;
+
 /**
  * Random numbers in streams of their own, one per pixel, camera sample and point of the ray tree,
  * so that no number depends on which thread renders a pixel, in which order, or whether its rays
  * were traced one at a time or in packets: images are reproducible, identical across thread
- * counts and across the per-pixel and the packet paths ({@link Tracer}).
+ * counts and across the recursive tracer and the block tracer ({@link WhittedTracer}, {@link BlockTracer}).
  *
- * <p>A stream is picked by {@link #start} (a hash of the scene's seed, the pixel, the sample's
- * index and the node of the ray tree) and then steps a 64-bit counter through a bijective mixer
+ * <p>A stream is picked by {@link #startSample} and {@link #startPoint} (a hash of the scene's
+ * seed, the pixel, the sample's index and the node of the ray tree) and then steps a 64-bit counter through a bijective mixer
  * (Steele, Lea and Flood's SplitMix64, the generator behind {@link java.util.SplittableRandom}).
- * One long of state: nothing is allocated per pixel or per stream.
+ * Two longs of state: nothing is allocated per pixel or per stream.
  */
 final class PixelSampler {
     /** The odd step of the counter (the golden ratio's 64-bit fraction). */
     private static final long GOLDEN = 0x9E3779B97F4A7C15L;
     private final long seed;
-    private long state;
+    /** The hash of the current camera sample ({@link #startSample}) and the state of the current stream. */
+    private long pixelSample, state;
+    /** A camera sample's jitter over its pixel. */
+    private final double[] st = new double[2];
 
     /**
      * A sampler whose streams derive from {@code seed}.
@@ -27,19 +32,46 @@ final class PixelSampler {
     }
 
     /**
-     * Starts the stream of pixel (x, y), camera sample {@code sample}, node {@code node} of the ray
-     * tree (0: the camera ray's jitter; 1: the camera ray's hit; a hit's reflection child is
-     * {@code 2 node}, its refraction child {@code 2 node + 1}).
+     * Starts the streams of pixel (x, y)'s camera sample {@code sample}: each point of its ray tree
+     * then has a stream of its own ({@link #startPoint}).
      *
      * @param x      the pixel's column
      * @param y      the pixel's row
      * @param sample the camera sample's index in the pixel
-     * @param node   the point of the ray tree the numbers are for
      */
-    void start(int x, int y, int sample, long node) {
+    void startSample(int x, int y, int sample) {
         long h = mix(seed ^ GOLDEN * ((long) y << 32 | (x & 0xffffffffL)));
-        h = mix(h + GOLDEN * (sample + 1L));
-        state = mix(h ^ GOLDEN * (node + 1));
+        pixelSample = mix(h + GOLDEN * (sample + 1L));
+    }
+
+    /**
+     * Starts the stream of point {@code node} of the current camera sample's ray tree (0: the
+     * camera ray's jitter; 1: the camera ray's hit; a hit's reflection child is {@code 2 node},
+     * its refraction child {@code 2 node + 1}).
+     *
+     * @param node the point of the ray tree the numbers are for
+     */
+    void startPoint(long node) {
+        state = mix(pixelSample ^ GOLDEN * (node + 1));
+    }
+
+    /**
+     * Starts the streams of pixel (x, y)'s camera sample {@code i} of {@code n} and writes the
+     * direction of its camera ray to {@code dir}: through the pixel's centre for one sample, else
+     * jittered ({@link #square}) by the numbers of the ray tree's point 0.
+     *
+     * @param camera the scene's camera
+     * @param x      the pixel's column
+     * @param y      the pixel's row
+     * @param i      the camera sample's index in the pixel
+     * @param n      the camera samples per pixel
+     * @param dir    receives the unit direction of the camera ray
+     */
+    void startCameraSample(Camera camera, int x, int y, int i, int n, double[] dir) {
+        startSample(x, y, i);
+        startPoint(0);
+        square(i, n, st);
+        camera.direction(x + st[0], y + st[1], dir);
     }
 
     /** {@return the next number of the stream, in [0, 1)} */

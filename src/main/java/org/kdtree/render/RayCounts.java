@@ -14,6 +14,14 @@ final class RayCounts {
     public void add(RayKind kind) { counts[kind.ordinal()]++; }
 
     /**
+     * Counts {@code n} rays of {@code kind}.
+     *
+     * @param kind the rays' kind
+     * @param n    how many
+     */
+    public void add(RayKind kind, int n) { counts[kind.ordinal()] += n; }
+
+    /**
      * {@return the rays of {@code kind} counted}
      *
      * @param kind the kind

@@ -9,10 +9,10 @@ import org.kdtree.accel.RayPacket;
  * are traced together as packets and a parent always comes before its children. Per node: its
  * ray, the block's pixel and the point of the ray tree it belongs to (1 the camera ray, {@code 2n}
  * node {@code n}'s reflection, {@code 2n + 1} its refraction, as the random streams count them),
- * the path's weight, its closest hit, and what shading put aside: the emitted and ambient light,
- * whether it is lit (its direct light kept in {@link Shadows} under the node's index), the
+ * the path's weight, its closest hit, and what its {@link Shading} records: the emitted and ambient
+ * light, whether it is lit (its light samples kept in {@link Shadows} under the node's index), the
  * reflection's and refraction's weights and nodes. {@link #colour} then sums a node's colour in
- * the order the depth-first tracer does. The arrays grow with the largest tree a block has needed
+ * the order {@link Shading} gives, the recursive tracer's. The arrays grow with the largest tree a block has needed
  * and are kept: nothing is allocated per ray.
  */
 final class RayTree {
@@ -65,13 +65,17 @@ final class RayTree {
         System.arraycopy(c, 0, base, 3 * n, 3);
     }
 
-    /** {@return node {@code n}'s depth in its ray tree: 0 for a camera ray} */
-    int depth(int n) { return 63 - Long.numberOfLeadingZeros(point[n]); }
-
     /** {@return the kind of node {@code n}'s ray} */
     RayKind kind(int n) {
         long p = point[n];
         return p == 1 ? RayKind.CAMERA : (p & 1) == 0 ? RayKind.REFLECTION : RayKind.REFRACTION;
+    }
+
+    /** Makes node {@code child} the ray {@code r} that node {@code parent} sends on, its colour to be added with {@code r}'s weight. */
+    void link(int parent, int child, SecondaryRay r) {
+        if (r.kind == RayKind.REFLECTION) reflection[parent] = child;
+        else refraction[parent] = child;
+        System.arraycopy(r.weight, 0, r.kind == RayKind.REFLECTION ? kr : kt, 3 * parent, 3);
     }
 
     /** Records packet ray {@code r}'s closest hit as node {@code n}'s. */
@@ -85,7 +89,7 @@ final class RayTree {
     /**
      * Sums each node's colour, children before parents: its emitted and ambient light, its direct
      * light ({@code shadows}, traced), then the reflection's colour times its weight and the
-     * refraction's, each step rounded as the depth-first tracer rounds it.
+     * refraction's, each step rounded as the recursive tracer ({@link WhittedTracer}) rounds it.
      */
     void colour(Shadows shadows) {
         for (int n = size - 1; n >= 0; n--) {

@@ -80,7 +80,7 @@ public record RenderJob(Scene scene, AccelerationStructure structure, String bui
         long t0 = System.nanoTime();
         AccelerationStructure structure = build.get();
         long buildNanos = System.nanoTime() - t0;
-        RenderResult result = Renderer.render(scene, structure::query, options);
+        RenderResult result = Renderer.render(scene, structure, options);
         return new RenderJob(scene, structure, builderName, buildNanos, result);
     }
 

@@ -10,9 +10,10 @@ package org.kdtree.render;
  * @param threads     threads used
  * @param pixelRays   per kind, rays cast on behalf of each pixel (row-major), or null when not recorded
  * @param stopped     whether the render was stopped before every tile was done
+ * @param tracer      how the rays were traced: which tracer, through which loop of the structure
  */
 public record RenderResult(Image image, EffectPlan plan, RayCounts rays, long renderNanos, int threads,
-                           int[][] pixelRays, boolean stopped) {
+                           int[][] pixelRays, boolean stopped, String tracer) {
 
     /**
      * {@return rays of {@code kind} cast for pixel (x, y)}; needs a render that recorded them.

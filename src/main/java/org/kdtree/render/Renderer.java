@@ -9,6 +9,8 @@ import java.util.concurrent.Future;
 import java.util.concurrent.atomic.AtomicInteger;
 import java.util.function.BooleanSupplier;
 import java.util.function.Supplier;
+import org.kdtree.accel.AccelerationStructure;
+import org.kdtree.accel.PacketQuery;
 import org.kdtree.accel.RayQuery;
 import org.kdtree.scene.Scene;
 
@@ -70,7 +72,7 @@ public final class Renderer {
     }
 
     /**
-     * {@return the rendered image and its statistics}
+     * {@return the rendered image and its statistics}, one pixel at a time by the recursive tracer
      *
      * @param scene the scene
      * @param queries makes one ray query (tree traversal) per thread
@@ -78,6 +80,25 @@ public final class Renderer {
      */
     public static RenderResult render(Scene scene, Supplier<? extends RayQuery> queries, Options options) {
         EffectPlan plan = new EffectPlan(scene);
+        return render(scene, plan, () -> new Tracer(scene, plan, queries.get()), options);
+    }
+
+    /**
+     * {@return the rendered image and its statistics}, with the structure's queries and packet
+     * queries: in blocks of 8 x 8 pixels with their rays in packets where its packet loop traces
+     * a packet's rays together ({@link PacketQuery#tracesTogether}), else one pixel at a time;
+     * the same image either way ({@link RenderResult#tracer} says which)
+     *
+     * @param scene     the scene
+     * @param structure the structure built over the scene's mesh
+     * @param options   threads, tiles and progress
+     */
+    public static RenderResult render(Scene scene, AccelerationStructure structure, Options options) {
+        EffectPlan plan = new EffectPlan(scene);
+        return render(scene, plan, () -> new Tracer(scene, plan, structure.query(), structure.packetQuery(), Tracer.SHADOW_BUDGET), options);
+    }
+
+    private static RenderResult render(Scene scene, EffectPlan plan, Supplier<Tracer> tracers, Options options) {
         int w = scene.camera().width(), h = scene.camera().height(), ts = options.tileSize();
         int tilesX = (w + ts - 1) / ts, tilesY = (h + ts - 1) / ts, tiles = tilesX * tilesY;
         Image image = new Image(w, h);
@@ -92,22 +113,23 @@ public final class Renderer {
             return t;
         });
         long t0 = System.nanoTime();
-        List<Future<RayCounts>> workers = new ArrayList<>();
+        List<Future<Tracer>> workers = new ArrayList<>();
         try {
             for (int i = 0; i < threads; i++) {
                 workers.add(pool.submit(() -> {
-                    Tracer tracer = new Tracer(scene, plan, queries.get());
+                    Tracer tracer = tracers.get();
                     for (int tile; !stop.getAsBoolean() && (tile = next.getAndIncrement()) < tiles; ) {
                         int x0 = (tile % tilesX) * ts, y0 = (tile / tilesX) * ts;
                         renderTile(tracer, image, pixelRays, x0, y0, Math.min(w, x0 + ts), Math.min(h, y0 + ts));
                         progress.tilesDone(done.incrementAndGet(), tiles, image);
                     }
-                    return tracer.counts();
+                    return tracer;
                 }));
             }
             RayCounts total = new RayCounts();
-            for (Future<RayCounts> f : workers) total.merge(f.get());
-            return new RenderResult(image, plan, total, System.nanoTime() - t0, threads, pixelRays, done.get() < tiles);
+            for (Future<Tracer> f : workers) total.merge(f.get().counts());
+            return new RenderResult(image, plan, total, System.nanoTime() - t0, threads, pixelRays, done.get() < tiles,
+                    workers.get(0).get().describe());
         } catch (InterruptedException e) {
             Thread.currentThread().interrupt();
             throw new IllegalStateException("render interrupted", e);

@@ -4,10 +4,10 @@ import java.util.Arrays;
 import org.kdtree.accel.PacketQuery;
 
 /**
- * The direct light of a block's shaded points put aside: per point and slot (a light's sample: an
- * area light has one per sample, other lights one), the light it would bring and the shadow ray
- * that may block it. The shadow rays are then traced as packets ({@link OctantPackets}, any hit)
- * and each point's light summed in the slots' order, as the tracer sums it ray by ray. The arrays
+ * The light samples of a block's shaded points ({@link LightSamples}) put aside: per point and
+ * slot (a light's sample: an area light has one per sample, other lights one), the light it would
+ * bring and the shadow ray that may block it. The shadow rays are then traced as packets ({@link OctantPackets}, any hit)
+ * and each point's light summed in the slots' order, as the recursive tracer sums it ray by ray. The arrays
  * grow with the most points a block has needed and are kept: nothing is allocated per point.
  */
 final class Shadows {
@@ -46,20 +46,18 @@ final class Shadows {
         Arrays.fill(state, i * slots, (i + 1) * slots, NONE);
     }
 
-    /** Keeps the shadow ray {@code o + t d}, {@code 0 <= t <= tMax}, of point {@code i}'s light sample {@code slot}. */
-    void keepShadow(int slot, int i, double[] o, double[] d, double tMax) {
-        int e = i * slots + slot;
-        ray.set(e, o, d);
-        this.tMax[e] = tMax;
-    }
-
-    /** Keeps the light (r, g, b) of point {@code i}'s light sample {@code slot}, behind its shadow ray if {@code shadowed}. */
-    void keepLight(int slot, int i, double r, double g, double b, boolean shadowed) {
-        int e = i * slots + slot;
-        state[e] = shadowed ? SHADOWED : LIGHT;
-        light[3 * e] = r;
-        light[3 * e + 1] = g;
-        light[3 * e + 2] = b;
+    /** Keeps point {@code i}'s light samples, each in its slot, with their shadow rays. */
+    void keep(int i, LightSamples samples) {
+        for (int j = 0, n = samples.size(); j < n; j++) {
+            int e = i * slots + samples.slot(j);
+            boolean shadowed = samples.shadowed(j);
+            state[e] = shadowed ? SHADOWED : LIGHT;
+            for (int c = 0; c < 3; c++) light[3 * e + c] = samples.light(j, c);
+            if (shadowed) {
+                samples.copyShadowRay(j, ray, e);
+                tMax[e] = samples.end(j);
+            }
+        }
     }
 
     /**

@@ -4,7 +4,6 @@ import java.util.ArrayList;
 import java.util.List;
 import java.util.Locale;
 import org.kdtree.accel.AccelerationStructure;
-import org.kdtree.accel.RayQuery;
 import org.kdtree.accel.SharedSettings;
 import org.kdtree.accel.TraversalStats;
 import org.kdtree.accel.TreeStats;
@@ -70,9 +69,8 @@ public final class Tradeoff {
         Timing.Timed<AccelerationStructure> build = Timing.median(1, runs, Timing.QUIET, () -> spec.build(mesh, supervisor));
         AccelerationStructure structure = build.value();
         TreeStats s = structure.stats();
-        RayQuery query = structure.query();
         double traceSeconds;
-        try (RayBatch batch = new RayBatch(1, () -> query)) {
+        try (RayBatch batch = new RayBatch(1, structure)) {
             traceSeconds = Timing.median(1, runs, Timing.QUIET, () -> batch.trace(rays)).seconds();
         }
         TraversalStats counts = RayBatch.count(structure, rays, countedRays);

@@ -133,6 +133,21 @@ class RaycastCommandTest {
         assertThat(counts[1]).as("every ray from inside a closed cube hits").isEqualTo(RaySet.SPEC_RANDOM_RAYS);
     }
 
+    /** Every figure names its engine: the structure, the loop of each ray set, the path. */
+    @Test void theBenchmarkNamesItsStructureLoopsAndPath() throws Exception {
+        Path obj = cube();
+        Run kd = run("raycast", obj.toString(), "--runs", "1", "--warmup", "0");
+        assertThat(kd.code()).as(kd.err()).isZero();
+        assertThat(kd.err()).contains("# structure: kd-tree (sah)")
+                .contains("# loops: rays not of an image (set R) alone, through the single-ray loop; an image's rays (set P) in 8 x 8 packets, "
+                        + "each ray alone through the single-ray loop (no packet loop)")
+                .contains("# path: ");
+        Run bvh = run("raycast", obj.toString(), "--runs", "1", "--warmup", "0", "-b", "bvh");
+        assertThat(bvh.code()).as(bvh.err()).isZero();
+        assertThat(bvh.err()).contains("# structure: bvh (bvh)").contains("in 8 x 8 packets, through the packet loop").contains("# path: ");
+        assertThat(bvh.out().split(" ")[7]).as("the same P hits through either structure's packets").isEqualTo(kd.out().split(" ")[7]);
+    }
+
     private static long[] bruteForceHits(TriangleMesh mesh, RaySet... sets) {
         BruteForce brute = new BruteForce(new TriangleIntersector(mesh));
         long[] n = new long[sets.length];

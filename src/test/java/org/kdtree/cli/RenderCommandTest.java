@@ -30,6 +30,21 @@ class RenderCommandTest {
         assertThat(r.err()).as("no bar redrawn into output that is not a terminal").doesNotContain("\r").doesNotContain("tiles)");
     }
 
+    /** The render names on stderr its structure, which tracer traced it through which loop, and the path. */
+    @Test void theRenderNamesItsStructureTracerAndPath() throws Exception {
+        CliRun kd = run("render", "scenes/cornell-box.json", "-o", dir.resolve("k.png").toString(), "--spp", "1", "--width", "16", "--height", "16");
+        assertThat(kd.code()).as(kd.err()).isZero();
+        assertThat(kd.err()).contains("# structure: kd-tree (sah)")
+                .contains("# tracer: the recursive tracer, one pixel at a time, each ray through the single-ray loop "
+                        + "(the structure's packets would trace each ray alone)")
+                .contains("# path: ");
+        CliRun bvh = run("render", "scenes/cornell-box.json", "-o", dir.resolve("b.png").toString(), "--spp", "1", "--width", "16", "--height", "16",
+                "-b", "bvh");
+        assertThat(bvh.code()).as(bvh.err()).isZero();
+        assertThat(bvh.err()).contains("# structure: bvh (bvh)")
+                .contains("# tracer: blocks of 8 x 8 pixels, breadth first, their rays in packets through the packet loop").contains("# path: ");
+    }
+
     @Test void rayDepthZeroTurnsReflectionAndRefractionOff() throws Exception {
         CliRun r = run("render", "scenes/cornell-box.json", "-o", dir.resolve("c.png").toString(), "--ray-depth", "0",
                 "--spp", "1", "--width", "16", "--height", "16", "-q");

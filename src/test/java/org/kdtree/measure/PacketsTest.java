@@ -15,14 +15,16 @@ import org.kdtree.accel.TriangleIntersector;
 import org.kdtree.bvh.BvhBuilder;
 import org.kdtree.generate.Meshes;
 import org.kdtree.geom.Ray;
+import org.kdtree.spec.Builders;
 import org.kdtree.shape.TriangleMesh;
 
 /**
  * Packets give every ray its single-ray answer, bit for bit (primitive, t, u, v; and for any-hit
- * queries, whether it is blocked), through each
- * structure that traces packets: camera tiles on generated meshes, rays aimed exactly at shared
+ * queries, whether it is blocked), through every structure's packet query (the BVH's packet loop,
+ * the kd-tree's rays one at a time): camera tiles on generated meshes, rays aimed exactly at shared
  * vertices and edges of a lattice (ties between triangles), cut intervals, and packets that mix
- * direction signs (traced one by one).
+ * direction signs (split into one packet per octant of directions, a ray with a zero direction
+ * component traced alone).
  */
 class PacketsTest {
     private static List<AccelerationStructure> structures(TriangleMesh mesh) {
@@ -30,6 +32,7 @@ class PacketsTest {
         all.add(new BvhBuilder().build(mesh));
         all.add(new BvhBuilder().width(2).build(mesh));
         all.add(new BvhBuilder().width(8).leafSize(4).build(mesh));
+        all.add(Builders.create("sah").build(mesh));             // every structure answers packets: the kd-tree's one ray at a time
         return all;
     }
 
@@ -105,9 +108,8 @@ class PacketsTest {
     /** Traces the image's rays in 8 x 8 tiles as packets and one by one; every answer the same bits. */
     private static void agree(AccelerationStructure s, TriangleMesh mesh, double[] rays, int w, double tMin, double tMax) {
         TriangleIntersector tris = new TriangleIntersector(mesh);
-        RayQuery q = s.query();
-        assertThat(q).as(s.kind()).isInstanceOf(PacketQuery.class);
-        PacketQuery pq = (PacketQuery) q;
+        PacketQuery pq = s.packetQuery();
+        assertThat(pq.tracesTogether()).as(s.kind() + ": a packet loop, or each ray alone").isEqualTo(s.kind().equals("bvh"));
         RayQuery single = s.query();
         RayPacket packet = new RayPacket();
         Ray ray = new Ray(3);

@@ -5,7 +5,6 @@ import static org.assertj.core.api.Assertions.assertThat;
 import org.junit.jupiter.api.Test;
 import org.kdtree.accel.AccelerationStructure;
 import org.kdtree.accel.Hit;
-import org.kdtree.accel.PacketQuery;
 import org.kdtree.accel.RayQuery;
 import org.kdtree.accel.TriangleIntersector;
 import org.kdtree.bvh.BvhBuilder;
@@ -24,8 +23,9 @@ class PacketRenderTest {
             for (int spp : new int[] {1, 4}) {
                 Scene s = TestRenders.scene(file, 61, 45, spp);
                 AccelerationStructure bvh = new BvhBuilder().build(s.mesh());
-                assertThat(bvh.query()).isInstanceOf(PacketQuery.class);
-                RenderResult packets = Renderer.render(s, () -> bvh.query(), Renderer.Options.defaults().withThreads(2).recordingPixelRays());
+                assertThat(bvh.packetQuery().tracesTogether()).isTrue();
+                RenderResult packets = Renderer.render(s, bvh, Renderer.Options.defaults().withThreads(2).recordingPixelRays());
+                assertThat(packets.tracer()).startsWith("blocks of 8 x 8 pixels");
                 RenderResult single = Renderer.render(s, () -> alone(bvh.query()), Renderer.Options.defaults().withThreads(2).recordingPixelRays());
                 String what = file + ", " + spp + " spp, pixel ";
                 for (int y = 0; y < 45; y++)
@@ -54,7 +54,7 @@ class PacketRenderTest {
             Tracer single = new Tracer(s, plan, alone(bvh.query()));
             double[] want = new double[3], got = new double[3];
             for (int budget : new int[] {1, 66 * 16, 72 * 16}) {
-                Tracer packets = new Tracer(s, plan, bvh.query(), budget);
+                Tracer packets = new Tracer(s, plan, bvh.query(), bvh.packetQuery(), budget);
                 assertThat(packets.tracesPackets()).isTrue();
                 for (int by = 0; by < 16; by += 8)
                     for (int bx = 0; bx < 24; bx += 8) {

@@ -30,7 +30,8 @@ class TracerAllocationTest {
 
     @Test void blocksWithPacketsAllocateNothingPerPixel() throws Exception {
         Scene scene = TestRenders.scene("cornell-box.json", 32, 32, 4);
-        Tracer tracer = new Tracer(scene, new EffectPlan(scene), new BvhBuilder().build(scene.mesh()).query());
+        var bvh = new BvhBuilder().build(scene.mesh());
+        Tracer tracer = new Tracer(scene, new EffectPlan(scene), bvh.query(), bvh.packetQuery(), Tracer.SHADOW_BUDGET);
         assertThat(tracer.tracesPackets()).isTrue();
         double[] rgb = new double[3];
         assertAllocatesLittle(tracer, () -> {
