@@ -30,13 +30,14 @@ import org.knowm.xchart.style.markers.SeriesMarkers;
 public final class ChartFile {
     private static final Marker[] MARKERS = {SeriesMarkers.CIRCLE, SeriesMarkers.DIAMOND, SeriesMarkers.SQUARE,
             SeriesMarkers.TRIANGLE_UP, SeriesMarkers.TRIANGLE_DOWN, SeriesMarkers.CROSS, SeriesMarkers.PLUS};
-    /** Tableau's 20 colours (each hue dark, then light) and four more: one colour a series for every study's variants. */
+    /** Tableau's 20 colours (each hue dark, then light) and twelve more: one colour a series for every study's variants. */
     private static final Color[] COLOURS = {new Color(0x1f77b4), new Color(0xff7f0e), new Color(0x2ca02c),
             new Color(0xd62728), new Color(0x9467bd), new Color(0x8c564b), new Color(0xe377c2), new Color(0x7f7f7f),
             new Color(0xbcbd22), new Color(0x17becf), new Color(0xaec7e8), new Color(0xffbb78), new Color(0x98df8a),
             new Color(0xff9896), new Color(0xc5b0d5), new Color(0xc49c94), new Color(0xf7b6d2), new Color(0x4d4d4d),
             new Color(0xdbdb8d), new Color(0x9edae5), new Color(0x000080), new Color(0x808000), new Color(0x800000),
-            new Color(0x008080)};
+            new Color(0x008080), new Color(0x393b79), new Color(0x637939), new Color(0x8c6d31), new Color(0x843c39),
+            new Color(0x7b4173), new Color(0x5254a3), new Color(0xe7ba52), new Color(0xad494a)};
     /** The caption's font, and the height of one of its lines. */
     private static final Font CAPTION_FONT = new Font(Font.SANS_SERIF, Font.PLAIN, 12);
     private static final int CAPTION_LINE = 16;
@@ -173,9 +174,9 @@ public final class ChartFile {
     }
 
     /**
-     * Gives the i-th series colour i mod 24 and marker i mod 7: up to 24 series (the whole trade-off
+     * Gives the i-th series colour i mod 32 and marker i mod 7: up to 32 series (the whole trade-off
      * study's variants) each have a colour of their own, and the markers tell apart any pair whose
-     * colours are near (24 and 7 are coprime: no two of up to 168 series share both).
+     * colours are near (32 and 7 are coprime: no two of up to 224 series share both).
      *
      * @param series the chart's series, in the order they were added
      */
