@@ -28,7 +28,7 @@ final class EventSplit {
     private final byte[] side;
     /** The straddlers' primitives, then per straddler bit 0 "goes left", bit 1 "goes right". */
     private int[] straddlers = new int[16], goesTo = new int[16];
-    /** Straddler bounds, 2k values a slot: slots [0, nb) left child's, [nb, 2nb) right's, [2nb, 3nb) parent's. */
+    /** Clipped straddler bounds, 2k values a slot: slots [0, nb) the left child's, [nb, 2nb) the right's. */
     private double[] bounds = new double[0];
     /** One child's new events on one axis. */
     private double[] extraPos = new double[16], sortPos = new double[16];
@@ -105,10 +105,10 @@ final class EventSplit {
     private long clipStraddlers(int d, int c, int axis, double xi, int nb) {
         if (nb == 0) return 0;
         store.voxel(d, c, voxel);
-        if (bounds.length < 6 * k * nb) bounds = new double[NodeStore.grown(bounds.length, 6 * k * nb)];
+        if (bounds.length < 4 * k * nb) bounds = new double[NodeStore.grown(bounds.length, 4 * k * nb)];
         int left = 0, right = 0;
         for (int i = 0; i < nb; i++) {
-            int to = Partition.straddlerBounds(store.prims, straddlers[i], bounds, 2 * nb + i, voxel, axis, xi,
+            int to = Partition.straddlerBounds(store.prims, straddlers[i], null, 0, voxel, axis, xi,   // clipped: no parent bounds read
                     true, clipLeft, clipRight, bounds, i, bounds, nb + i);
             goesTo[i] = to;
             left += to & 1;
