@@ -3,6 +3,8 @@ package org.kdtree.io;
 import java.io.IOException;
 import java.io.StringReader;
 import java.nio.file.Path;
+import org.kdtree.generate.MeshGrid;
+import org.kdtree.geom.Box;
 import org.kdtree.scene.Camera;
 import org.kdtree.scene.Scene;
 import org.kdtree.scene.Vec3;
@@ -21,7 +23,7 @@ final class MeshScene {
     /** The vertical field of view, in degrees (the benchmark camera's). */
     static final double FOV = 40;
     /** What {@link #read} chose, in words. */
-    static final String DESCRIPTION = "a bare mesh: framed by the benchmark's camera (" + SIDE + " x " + SIDE + ", 40 degrees), "
+    static final String DESCRIPTION = "a bare mesh: framed by the benchmark's camera (" + SIDE + " x " + SIDE + ", " + (int) FOV + " degrees), "
             + "lit by one directional light, grey where its MTL names no material; a JSON scene chooses these (docs/scene-format.md)";
     private static final Vec3 VIEW = new Vec3(1, 0.5, 2).normalized();
 
@@ -35,7 +37,6 @@ final class MeshScene {
      * @throws IOException if it cannot be read or is malformed, naming the file and line
      */
     static Scene read(Path obj) throws IOException {
-        PrimitivesReader.requireExists(obj);
         String name = obj.getFileName().toString();
         String json = "{\"camera\": {\"eye\": [0, 0, 1], \"lookAt\": [0, 0, 0], \"fov\": " + FOV + ", \"width\": " + SIDE
                 + ", \"height\": " + SIDE + "}, \"ambient\": [0.12, 0.12, 0.12],"
@@ -47,15 +48,10 @@ final class MeshScene {
                 s.samplesPerPixel(), s.maxDepth(), s.geometryMayOcclude(), s.seed());
     }
 
-
     /** The benchmark's camera around the box of every vertex the scene holds. */
     private static Camera framing(Scene s) {
-        double[] v = s.mesh().vertices(), min = {v[0], v[1], v[2]}, max = min.clone();
-        for (int i = 0; i < v.length; i++) {
-            min[i % 3] = Math.min(min[i % 3], v[i]);
-            max[i % 3] = Math.max(max[i % 3], v[i]);
-        }
-        Vec3 low = new Vec3(min[0], min[1], min[2]), high = new Vec3(max[0], max[1], max[2]);
+        Box b = MeshGrid.vertexBounds(s.mesh());   // the benchmark's box: every vertex, used or not
+        Vec3 low = new Vec3(b.min(0), b.min(1), b.min(2)), high = new Vec3(b.max(0), b.max(1), b.max(2));
         Vec3 centre = low.plus(high).times(0.5);
         double diagonal = high.minus(low).length();
         Vec3 eye = centre.plus(VIEW.times(1.5 * (diagonal > 0 ? diagonal : 1)));   // a mesh at one point: seen from 1.5 away

@@ -62,7 +62,7 @@ public final class PrimitivesReader {
      * @throws IOException if it cannot be read or is malformed, naming the file, line and field
      */
     public static Scene readScene(Path file) throws IOException {
-        requireNotTree(file);
+        requireExists(file);
         return FileKind.of(file) == FileKind.OBJ ? MeshScene.read(file) : SceneReader.read(file);
     }
 
