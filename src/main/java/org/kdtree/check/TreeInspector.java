@@ -67,18 +67,18 @@ final class TreeInspector {
      */
     public List<Leaf> leavesContaining(double[] p, double eps) {
         List<Leaf> out = new ArrayList<>();
-        collect(0, tree.bounds(), p, eps, out);
+        collect(0, p, eps, out);
         return out;
     }
 
-    private void collect(int node, Box voxel, double[] p, double eps, List<Leaf> out) {
+    private void collect(int node, double[] p, double eps, List<Leaf> out) {
         if (tree.isLeaf(node)) {
             out.add(leafByNode.get(node));
             return;
         }
         int axis = tree.axis(node);
         double xi = tree.split(node);
-        if (p[axis] <= xi + eps) collect(tree.leftChild(node), voxel.lowerPart(axis, xi), p, eps, out);
-        if (p[axis] >= xi - eps) collect(tree.rightChild(node), voxel.upperPart(axis, xi), p, eps, out);
+        if (p[axis] <= xi + eps) collect(tree.leftChild(node), p, eps, out);
+        if (p[axis] >= xi - eps) collect(tree.rightChild(node), p, eps, out);
     }
 }
