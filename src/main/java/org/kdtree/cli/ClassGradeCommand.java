@@ -85,11 +85,19 @@ final class ClassGradeCommand implements Callable<Integer> {
         }
         Roster names = roster == null ? null : Roster.read("--roster", roster);
         Rubric points = scoring.read();
-        StudentJvm jvm = new StudentJvm(deadlines.deadlines(Deadlines.GRADE), seconds(), heap(), box(noSandbox, "grade-class"));
-        int n = jobs == null ? defaultJobs(jvm.heapMb()) : jobs;
+        StudentJvm plain = new StudentJvm(deadlines.deadlines(Deadlines.GRADE), seconds(), heap(), box(noSandbox, "grade-class"));
+        int n = jobs == null ? defaultJobs(plain.heapMb()) : jobs;
         Limits.THREADS.check("--jobs", n);
         long t0 = System.nanoTime();
-        List<StudentJvm.Graded> graded = gradeAll(jars, jvm, n);
+        Path scratch = Files.createTempDirectory("grade-class-");
+        List<StudentJvm.Graded> graded;
+        StudentJvm jvm;
+        try {
+            jvm = plain.forClass(scratch);
+            graded = gradeAll(jars, jvm, n);
+        } finally {
+            deleteQuietly(scratch);
+        }
         List<StudentRow> rows = graded.stream().map(StudentJvm.Graded::row).toList();
         List<String> rosterLines = List.of();
         if (names != null) {
@@ -105,8 +113,8 @@ final class ClassGradeCommand implements Callable<Integer> {
         System.out.print(table.markdown());
         List<String> lost = save(table, csv, markdown);
         if (scoring.junitXml != null) save(scoring.junitXml, JunitXml.of(cards), ".xml", lost);
-        System.out.printf(Locale.ROOT, "%ngraded in %.0f s, %d at once; table: %s, %s%s%n", (System.nanoTime() - t0) / 1e9, n, csv, markdown,
-                scoring.junitXml == null ? "" : "; JUnit XML: " + scoring.junitXml);
+        System.out.printf(Locale.ROOT, "%ngraded in %.0f s, %d at once (%s); table: %s, %s%s%n", (System.nanoTime() - t0) / 1e9, n,
+                jvm.start().describe(), csv, markdown, scoring.junitXml == null ? "" : "; JUnit XML: " + scoring.junitXml);
         rosterLines.forEach(System.out::println);
         lost.forEach(System.err::println);
         return lost.isEmpty() ? 0 : Failure.USAGE;
@@ -158,6 +166,15 @@ final class ClassGradeCommand implements Callable<Integer> {
             throw new IllegalStateException("grading a student failed: " + e.getCause(), e.getCause());
         } finally {
             pool.shutdownNow();
+        }
+    }
+
+    /** Deletes the class's scratch folder (its archive); what cannot be deleted stays in the temporary folder. */
+    private static void deleteQuietly(Path folder) {
+        try (var all = Files.walk(folder)) {
+            for (Path p : all.sorted(java.util.Comparator.reverseOrder()).toList()) Files.deleteIfExists(p);
+        } catch (IOException | java.io.UncheckedIOException leftInTmp) {
+            // a temporary folder: the system's to clear
         }
     }
 

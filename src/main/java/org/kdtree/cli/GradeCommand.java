@@ -51,10 +51,6 @@ final class GradeCommand implements Callable<Integer> {
     @Option(names = "--no-sandbox", description = "With --student-jar: run the student's JVM without a box (where bubblewrap cannot run).")
     boolean noSandbox;
 
-    /** {@code grade-class}'s child in its box: send the builds to the trusted side as a tape ({@link #inBox}). */
-    @Option(names = "--in-box", hidden = true)
-    boolean inBox;
-
     @Option(names = {"-o", "--output"}, paramLabel = "FILE", description = "Also write the report: .md (Markdown) or .csv; "
             + "with --format gradescope, Gradescope's results.json.")
     Path output;
@@ -86,7 +82,6 @@ final class GradeCommand implements Callable<Integer> {
     }
 
     @Override public Integer call() throws IOException {
-        if (inBox) return inBox();
         if (!List.of("report", "gradescope").contains(format))
             throw new IllegalArgumentException("--format " + format + ": give report (Markdown or CSV) or gradescope (results.json)");
         if (gradescope() && studentJar == null)
@@ -151,7 +146,7 @@ final class GradeCommand implements Callable<Integer> {
         if (!Files.isRegularFile(studentJar)) throw new IllegalArgumentException("--student-jar " + studentJar + ": no such file");
         Rubric points = checkOutputs();
         StudentJvm jvm = new StudentJvm(deadlines.deadlines(Deadlines.GRADE), Limits.STUDENT_SECONDS, Limits.STUDENT_HEAP_MB,
-                ClassGradeCommand.box(noSandbox, "grade --student-jar"));
+                ClassGradeCommand.box(noSandbox, "grade --student-jar")).withReference();
         StudentJvm.Graded g = jvm.run(studentJar);
         StudentRow row = g.row();
         if (g.report() == null) {
@@ -173,31 +168,5 @@ final class GradeCommand implements Callable<Integer> {
     /** The checks and the course scenes: the progress bar's steps. */
     static int steps() {
         return Contract.cases().size() + Contract.randomCases().size() + CourseScenes.all().size();
-    }
-
-    /**
-     * {@code grade-class}'s child, in its box: builds with the student's one builder what the checks
-     * build, and sends every tree (or fault) down standard output as a {@link TreeTape} for the
-     * trusted side to check; prints nothing else there (the builder's own printing goes to standard error).
-     */
-    private int inBox() {
-        if (studentJar == null) throw new IllegalArgumentException("--in-box needs --student-jar");
-        java.io.OutputStream channel = System.out; // raw bytes through it; from here on, what anyone prints goes to standard error
-        System.setOut(System.err);
-        String builder = onlyBuilder(studentJar);
-        graded = options.spec(builder);
-        TreeTape.Recorder tape = new TreeTape.Recorder(channel, graded.create());
-        new GradeRun(graded::create, tape).run(builder, deadlines.deadlines(Deadlines.GRADE), new ProgressBar(null, 1, "checks"));
-        tape.end();
-        return 0;
-    }
-
-    /** The name of the one builder a student's jar lists; a jar with none or several is refused in one line. */
-    private static String onlyBuilder(Path jar) {
-        List<String> names = Builders.loadPlugins(jar);
-        if (names.size() != 1)
-            throw new IllegalArgumentException(jar.getFileName() + " lists " + names.size() + " builders (" + String.join(", ", names)
-                    + "); a student's jar lists one");
-        return names.get(0);
     }
 }

@@ -34,6 +34,8 @@ final class GradeRun {
 
     private final Supplier<KdTreeBuilder> create;
     private final TreeTape tape;
+    /** The SAH's build times to compare the graded builder's with, by scene, or null for this JVM's own. */
+    private final Map<String, Double> sahMillis;
     /** Each failure's message and the check that reported it first (said once: see {@link #run(ContractCase)}). */
     private final Map<String, String> firstFailures = new HashMap<>();
     /** Why the remaining checks are not run (a hung or slow builder, said once), or null while they are. */
@@ -44,8 +46,18 @@ final class GradeRun {
      * @param tape null to run in place, else the tape the graded builder's builds go into or come from
      */
     GradeRun(Supplier<KdTreeBuilder> create, TreeTape tape) {
+        this(create, tape, null);
+    }
+
+    /**
+     * @param create makes the graded builder (a stand-in of it for a replay)
+     * @param tape null to run in place, else the tape the graded builder's builds go into or come from
+     * @param sahMillis the SAH's build time on each course scene in a JVM started as the graded builder's, or null for this JVM's own
+     */
+    GradeRun(Supplier<KdTreeBuilder> create, TreeTape tape, Map<String, Double> sahMillis) {
         this.create = create;
         this.tape = tape;
+        this.sahMillis = sahMillis;
     }
 
     /** Runs every check; on the untrusted side of a box, only up to the graded builder's own trees. */
@@ -125,7 +137,12 @@ final class GradeRun {
     /** Adds the built-ins' rows of {@code scene} (once per scene for a class's replays); returns the median plane's expected cost. */
     private double builtIns(CourseScenes.Named scene, List<GradeCommand.Row> rows) {
         List<GradeCommand.Row> own = tape == null ? builtInRows(scene) : BUILT_IN_ROWS.computeIfAbsent(scene.name(), k -> builtInRows(scene));
-        rows.addAll(own);
+        int sah = GradeCommand.BUILT_INS.indexOf("sah");
+        for (int i = 0; i < own.size(); i++) {
+            GradeCommand.Row r = own.get(i);
+            Double ms = i == sah && sahMillis != null ? sahMillis.get(scene.name()) : null;
+            rows.add(ms == null ? r : new GradeCommand.Row(r.scene(), r.builder(), r.cost(), r.nodes(), r.depth(), ms));
+        }
         return own.get(GradeCommand.BUILT_INS.indexOf("median-plane")).cost();
     }
 

@@ -100,14 +100,16 @@ final class StudentBox {
      * The command that runs {@code java ARGS} in a box of its own, the student's jar (fed on the
      * standard input: see {@link #jarInside}) read-only inside.
      * @param classPath the library's class path entries (jars or folders), mounted read-only as {@code /box/lib/N}
+     * @param extraBinds more of bubblewrap's bind options (the class's archive of the library's classes)
      * @param jvmOptions the JVM's options (heap)
      * @param jarName the student jar's file name
      * @param mainAndArgs the main class and its arguments (the jar as {@link #jarInside})
      * @return the command
      */
-    List<String> command(List<String> classPath, List<String> jvmOptions, String jarName, List<String> mainAndArgs) {
+    List<String> command(List<String> classPath, List<String> extraBinds, List<String> jvmOptions, String jarName, List<String> mainAndArgs) {
         List<String> binds = new ArrayList<>(List.of("--ro-bind", System.getProperty("java.home"), "/box/jdk",
                 "--perms", "0755", "--dir", "/box/lib"));
+        binds.addAll(extraBinds);
         List<String> inside = new ArrayList<>();
         for (int i = 0; i < classPath.size(); i++) {
             String at = "/box/lib/" + i + (Files.isDirectory(Path.of(classPath.get(i))) ? "" : ".jar");

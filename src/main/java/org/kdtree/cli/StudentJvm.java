@@ -9,8 +9,10 @@ import java.nio.file.Files;
 import java.nio.file.Path;
 import java.util.ArrayList;
 import java.util.Arrays;
+import java.util.HashMap;
 import java.util.List;
 import java.util.Locale;
+import java.util.Map;
 import java.util.concurrent.CompletableFuture;
 import java.util.concurrent.TimeUnit;
 import java.util.concurrent.atomic.AtomicBoolean;
@@ -19,8 +21,7 @@ import org.kdtree.check.TreeTape;
 import org.kdtree.limits.Deadlines;
 
 /**
- * One student's grade: the student's builder runs in a JVM of its own ({@code grade --student-jar
- * JAR --in-box}), in an operating-system box ({@link StudentBox}) unless there is none, and the
+ * One student's grade: the student's builder runs in a JVM of its own ({@link StudentMain}), in an operating-system box ({@link StudentBox}) unless there is none, and the
  * grade is made here, outside it. So students' builders of the same name never meet; one that
  * hangs, calls System.exit or fills its heap ends only its own JVM (killed at the student deadline,
  * bounded by {@code -Xmx}); and whatever its code writes cannot change its verdict: its JVM sends
@@ -28,12 +29,26 @@ import org.kdtree.limits.Deadlines;
  * building the scenes' built-ins itself. A report that does not match the checks is the builder's
  * fault, named in its row.
  *
+ * <p>Each child is started as {@link JvmStart} says. The build times a student's are compared
+ * with are the library's SAH's timed in a child started the same way ({@link #withReference}),
+ * not this JVM's.
+ *
  * @param deadlines the per-call and per-build deadlines the child enforces itself
  * @param seconds   the student deadline: the child is killed past it
  * @param heapMb    the child's heap
  * @param box       the box each child runs in, or null for none ({@code --no-sandbox})
+ * @param start     how each child is started
+ * @param sahMillis the library's SAH's build time on each course scene in such a child, or null for this JVM's own
  */
-record StudentJvm(Deadlines deadlines, double seconds, int heapMb, StudentBox box) {
+record StudentJvm(Deadlines deadlines, double seconds, int heapMb, StudentBox box, JvmStart start, Map<String, Double> sahMillis) {
+    /** A child started plainly, the SAH's times this JVM's own: see {@link #withReference}. */
+    StudentJvm(Deadlines deadlines, double seconds, int heapMb, StudentBox box) {
+        this(deadlines, seconds, heapMb, box, JvmStart.PLAIN, null);
+    }
+
+    /** The reference's row name: the library's SAH, graded as a student is. */
+    static final String REFERENCE = "the library's sah";
+
     /** How long a child may take to end once its report is done, before it is killed. */
     static final double GRACE_SECONDS = 5;
     /** A graded jar: its row, and the report made here (null if the jar was not graded to the end). */
@@ -47,13 +62,68 @@ record StudentJvm(Deadlines deadlines, double seconds, int heapMb, StudentBox bo
 
     /** Grades {@code jar}, with the report made here. */
     Graded run(Path jar) {
-        String file = jar.getFileName().toString(), student = student(jar);
+        return run(jar, null);
+    }
+
+    /**
+     * This, with the library's SAH's build times taken in a child started as the students' are
+     * (the same compiler, collector and classes), so that a student's build time is compared with
+     * the SAH's in the same kind of JVM; unchanged, saying why on standard error, if that run fails.
+     */
+    StudentJvm withReference() {
+        Graded ref = run(null, null);
+        if (ref.report() != null) return timedBy(ref);
+        System.err.println("warning: the library's SAH could not be timed as the students are (" + ref.row().problem()
+                + "): their build times are compared with this JVM's");
+        return this;
+    }
+
+    /**
+     * This, for a class: the library's classes archived once in {@code folder} by a trusted run
+     * (the library's SAH graded as a student is), each student's JVM then mapping them; and the
+     * SAH's reference times ({@link #withReference}), taken in a JVM that must map the archive, so
+     * that an archive the JVM cannot use is found here, said in one line, and not used.
+     */
+    StudentJvm forClass(Path folder) throws IOException {
+        Path dir = Files.createDirectory(folder.resolve("cds"));
+        dir.toFile().setWritable(true, false); // the box's user (nobody, for a root teacher) writes the archive
+        dir.toFile().setExecutable(true, false);
+        Graded dump = run(null, dir);
+        Path archive = dir.resolve(JvmStart.FILE);
+        if (dump.report() == null || !Files.isRegularFile(archive)) {
+            System.err.println("warning: the library's classes could not be archived for the class (" + (dump.report() == null
+                    ? dump.row().problem() : "the JVM made no archive: are they a folder rather than a jar?") + "): each student's JVM reads them itself");
+            return withReference();
+        }
+        Graded ref = with(new JvmStart(archive, true)).run(null, null);
+        if (ref.report() != null) return with(new JvmStart(archive, false)).timedBy(ref);
+        System.err.println("warning: the class's archive of the library's classes cannot be used here (" + ref.row().problem()
+                + "): each student's JVM reads them itself");
+        return withReference();
+    }
+
+    StudentJvm with(JvmStart s) {
+        return new StudentJvm(deadlines, seconds, heapMb, box, s, sahMillis);
+    }
+
+    /** This, the SAH's build times those of the reference's report. */
+    private StudentJvm timedBy(Graded ref) {
+        Map<String, Double> ms = new HashMap<>();
+        List<GradeCommand.Row> rows = ref.report().rows();
+        for (int i = 0; i < rows.size(); i += GradeCommand.BUILT_INS.size() + 1) ms.put(rows.get(i).scene(), rows.get(i).ms());
+        return new StudentJvm(deadlines, seconds, heapMb, box, start, Map.copyOf(ms));
+    }
+
+    /** Grades {@code jar}, or the library's SAH if it is null (archiving the classes it loaded into {@code dumpInto} unless that is null). */
+    private Graded run(Path jar, Path dumpInto) {
+        String file = jar == null ? REFERENCE : jar.getFileName().toString(), student = jar == null ? REFERENCE : student(jar);
         String boxed = box == null ? "none (--no-sandbox)" : "bubblewrap";
         long t0 = System.nanoTime();
         Process p;
         try {
-            ProcessBuilder pb = new ProcessBuilder(command(jar));
-            pb.redirectInput(box == null ? ProcessBuilder.Redirect.from(StudentBox.nullDevice()) : ProcessBuilder.Redirect.from(jar.toFile()));
+            ProcessBuilder pb = new ProcessBuilder(command(jar, dumpInto));
+            pb.redirectInput(box == null || jar == null ? ProcessBuilder.Redirect.from(StudentBox.nullDevice())
+                    : ProcessBuilder.Redirect.from(jar.toFile()));
             p = pb.start();
         } catch (IOException e) {
             return new Graded(StudentRow.failed(file, student, "not graded: " + e.getMessage(), 0, boxed), null);
@@ -67,7 +137,7 @@ record StudentJvm(Deadlines deadlines, double seconds, int heapMb, StudentBox bo
         try {
             tape = new TreeTape.Player(p.getInputStream());
             TreeTape.Player replay = tape;
-            report = new GradeRun(replay::builder, replay).run(replay.builderName(), deadlines, new ProgressBar(null, 1, "checks"));
+            report = new GradeRun(replay::builder, replay, sahMillis).run(replay.builderName(), deadlines, new ProgressBar(null, 1, "checks"));
             tape.end();
         } catch (TreeTape.Mismatch m) {
             mismatch = m;
@@ -154,7 +224,7 @@ record StudentJvm(Deadlines deadlines, double seconds, int heapMb, StudentBox bo
         last = last.substring(last.lastIndexOf('\n') + 1).strip();
         boolean ours = last.startsWith("error: ");
         String said = last.replaceFirst("^error: ", "");   // the library names the jar it loaded: the row names it already
-        for (String named : List.of(jar.toAbsolutePath() + ": ", StudentBox.jarInside(jar.getFileName().toString()) + ": "))
+        for (String named : jar == null ? List.<String>of() : List.of(jar.toAbsolutePath() + ": ", StudentBox.jarInside(jar.getFileName().toString()) + ": "))
             if (said.startsWith(named)) said = said.substring(named.length());
         if (ours && code == Failure.MEMORY && said.startsWith("out of memory") || err.contains("java.lang.OutOfMemoryError"))
             return "crashed: out of memory (heap " + heapMb + " MB)";
@@ -166,24 +236,27 @@ record StudentJvm(Deadlines deadlines, double seconds, int heapMb, StudentBox bo
                 + (last.isBlank() ? "" : ": " + StudentRow.oneLine(last));
     }
 
-    /** The child's command line: this JVM's java, the library's class path, the student's jar and nothing else; in its box if there is one. */
-    private List<String> command(Path jar) {
-        // the JVM's own warnings (a thread it could not start) go to standard error: standard output is the report channel
-        // and no performance data file (hsperfdata) in the temporary folder, in the box or not
-        List<String> jvm = List.of("-Xmx" + heapMb + "m", "-Djava.awt.headless=true", "-Xlog:disable", "-Xlog:all=warning:stderr",
-                "-XX:-UsePerfData");
-        List<String> args = List.of("--in-box", "--quiet", "--call-deadline", Double.toString(deadlines.callSeconds()),
-                "--build-deadline", Double.toString(deadlines.buildSeconds()));
-        String name = jar.getFileName().toString();
-        if (box != null) {
-            List<String> main = new ArrayList<>(List.of(Main.class.getName(), "grade", "--student-jar", StudentBox.jarInside(name)));
-            main.addAll(args);
-            return box.command(Arrays.asList(classPath().split(File.pathSeparator)), jvm, name, main);
+    /**
+     * The child's command line: this JVM's java, the library's class path, the student's jar (none
+     * for the reference: the library's SAH) and nothing else; in its box if there is one.
+     */
+    private List<String> command(Path jar, Path dumpInto) {
+        List<String> jvm = new ArrayList<>(start.options(heapMb, box != null));
+        List<String> binds = new ArrayList<>(start.binds());
+        if (dumpInto != null) {
+            jvm.addAll(JvmStart.dump(dumpInto, box != null));
+            binds.addAll(JvmStart.dumpBinds(dumpInto));
         }
+        String name = jar == null ? "none.jar" : jar.getFileName().toString();
+        List<String> main = new ArrayList<>(List.of(StudentMain.class.getName()));
+        if (jar == null) main.add("--reference");
+        else main.addAll(List.of("--student-jar", box != null ? StudentBox.jarInside(name) : jar.toAbsolutePath().toString()));
+        main.addAll(List.of("--call-deadline", Double.toString(deadlines.callSeconds()), "--build-deadline", Double.toString(deadlines.buildSeconds())));
+        if (box != null) return box.command(Arrays.asList(classPath().split(File.pathSeparator)), binds, jvm, name, main);
         List<String> cmd = new ArrayList<>(List.of(Path.of(System.getProperty("java.home"), "bin", "java").toString()));
         cmd.addAll(jvm);
-        cmd.addAll(List.of("-cp", classPath(), Main.class.getName(), "grade", "--student-jar", jar.toAbsolutePath().toString()));
-        cmd.addAll(args);
+        cmd.addAll(List.of("-cp", classPath()));
+        cmd.addAll(main);
         return cmd;
     }
 
