@@ -24,9 +24,17 @@ public final class CourseScenes {
     private CourseScenes() {
     }
 
-    /** {@return the course scenes, read once per call} */
+    /**
+     * {@return the course scenes} Made once per JVM: primitives are read-only, and a class's
+     * grades replay them for every student.
+     */
     public static List<Named> all() {
-        return List.of(
+        return Made.ALL;
+    }
+
+    /** Made on first use. */
+    private static final class Made {
+        static final List<Named> ALL = List.of(
                 bundled("talk-figures.scene2d"),
                 new Named("mixed 2-D shapes", Shapes.named("mixed", 400)),
                 new Named("corner clusters", Meshes.cornerClusters(600, 4)),
