@@ -32,16 +32,33 @@ public final class TradeoffChartFromCsv {
         int triangles = Integer.parseInt(args[1]);
         List<Tradeoff.Result> results = new ArrayList<>();
         List<String> lines = Files.readAllLines(Path.of(args[0]));
-        // Columns by name: files written before boxes_per_ray was added have none (a kd-tree's 0).
+        // Columns by name: files written before boxes_per_ray (a kd-tree's 0) or engine was added have none.
         List<String> header = List.of(lines.get(0).split(","));
         for (String line : lines.subList(1, lines.size())) {
-            String[] f = line.split(",", header.size());   // the last field, the settings, is quoted and may hold commas
-            ToDoubleFunction<String> col = name -> header.contains(name) ? Double.parseDouble(f[header.indexOf(name)]) : 0;
-            results.add(new Tradeoff.Result(f[0], f[header.size() - 1], col.applyAsDouble("build_ms"), col.applyAsDouble("expected_cost"),
+            List<String> f = fields(line);
+            ToDoubleFunction<String> col = name -> header.contains(name) ? Double.parseDouble(f.get(header.indexOf(name))) : 0;
+            java.util.function.Function<String, String> text = name -> header.contains(name) ? f.get(header.indexOf(name)) : "";
+            results.add(new Tradeoff.Result(f.get(0), text.apply("settings"), col.applyAsDouble("build_ms"), col.applyAsDouble("expected_cost"),
                     (int) col.applyAsDouble("nodes"), (int) col.applyAsDouble("leaves"), (long) col.applyAsDouble("memory_bytes"),
                     col.applyAsDouble("nodes_per_ray"), col.applyAsDouble("tests_per_ray"), col.applyAsDouble("boxes_per_ray"),
-                    col.applyAsDouble("mrays_per_s") * 1e6, triangles));
+                    col.applyAsDouble("mrays_per_s") * 1e6, triangles, text.apply("engine")));
         }
         Tradeoff.writeChart(results, args[2], 10, args[3] + " · data: " + Path.of(args[0]).getFileName(), Path.of(args[4]));
+    }
+
+    /** One CSV line's fields: the quoted ones (settings, engine) may hold commas. */
+    static List<String> fields(String line) {
+        List<String> out = new ArrayList<>();
+        StringBuilder f = new StringBuilder();
+        boolean quoted = false;
+        for (char c : line.toCharArray()) {
+            if (c == '"') quoted = !quoted;
+            else if (c == ',' && !quoted) {
+                out.add(f.toString());
+                f.setLength(0);
+            } else f.append(c);
+        }
+        out.add(f.toString());
+        return out;
     }
 }

@@ -131,6 +131,7 @@ final class TradeoffCommand implements Callable<Integer> {
                 base, m.size(), set.name(), set.size(), runs, runs == 1 ? "" : "s"), threads);
         Tradeoff.writeChart(results, base + ": build time vs trace time (" + set.name() + " rays)", chartRaysPerTriangle,
                 caption, pngOut);
+        results.stream().map(Tradeoff.Result::engine).distinct().forEach(e -> System.out.println("traced by " + e));
         System.out.println("wrote " + csvOut + " and " + pngOut);
         if (!skipped.isEmpty())
             System.out.println("skipped " + skipped.size() + " variant" + (skipped.size() == 1 ? "" : "s") + " whose builder failed (not in the CSV "

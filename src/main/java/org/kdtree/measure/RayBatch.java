@@ -121,6 +121,16 @@ public final class RayBatch implements AutoCloseable {
                 + (packets[0].tracesTogether() ? "through the packet loop" : "each ray alone through the single-ray loop (no packet loop)");
     }
 
+    /**
+     * {@return the loop that traces {@code rays}, in a few words, for a study's engine column}:
+     * single rays, or for an image's rays 8 x 8 packets through a packet loop or each ray alone
+     * @param rays a ray set
+     */
+    public String loopOf(RaySet rays) {
+        if (packets == null || rays.imageWidth() <= 0) return "single rays";
+        return packets[0].tracesTogether() ? "8 x 8 packets, packet loop" : "8 x 8 packets, each ray alone";
+    }
+
     /** Runs {@code job} with each thread's query, on the pool's threads or this one. */
     private <Q extends RayQuery> void run(Q[] each, java.util.function.Consumer<Q> job) {
         if (pool == null) {

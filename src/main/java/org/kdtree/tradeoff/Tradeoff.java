@@ -70,14 +70,16 @@ public final class Tradeoff {
         AccelerationStructure structure = build.value();
         TreeStats s = structure.stats();
         double traceSeconds;
+        String engine;
         try (RayBatch batch = new RayBatch(1, structure)) {
             traceSeconds = Timing.median(1, runs, Timing.QUIET, () -> batch.trace(rays)).seconds();
+            engine = structure.kind() + "; " + batch.loopOf(rays) + "; " + structure.describePath();
         }
         TraversalStats counts = RayBatch.count(structure, rays, countedRays);
         double perRay = Math.max(1, counts.rays);
         return new Result(v.name(), settings, build.millis(), s.expectedCost(), s.nodes(),
                 s.leaves(), s.memoryBytes(), counts.nodes / perRay, counts.primitiveTests / perRay, counts.boxTests / perRay,
-                rays.size() / traceSeconds, mesh.size());
+                rays.size() / traceSeconds, mesh.size(), engine);
     }
 
     /**
@@ -142,10 +144,11 @@ public final class Tradeoff {
      * @param boxesPerRay   average bounding boxes tested per ray (a BVH's; a kd-tree tests none)
      * @param raysPerSecond closest-hit rays traced per second, one thread
      * @param triangles     triangles of the scene, for the totals
+     * @param engine        which structure, which loop and which path traced the rays
      */
     public record Result(String variant, String settings, double buildMs, double expectedCost, int nodes, int leaves,
                                  long memoryBytes, double nodesPerRay, double testsPerRay, double boxesPerRay, double raysPerSecond,
-                                 int triangles) {
+                                 int triangles, String engine) {
 
         /**
          * Time to trace {@code raysPerTriangle x triangles} rays, in ms.
@@ -169,13 +172,13 @@ public final class Tradeoff {
 
         static String csvHeader() {
             return "variant,build_ms,expected_cost,nodes,leaves,memory_bytes,nodes_per_ray,tests_per_ray,boxes_per_ray,mrays_per_s,"
-                    + "total_ms_1rpt,total_ms_10rpt,total_ms_100rpt,pareto,settings";
+                    + "total_ms_1rpt,total_ms_10rpt,total_ms_100rpt,pareto,settings,engine";
         }
 
         String csvRow(boolean pareto) {
-            return String.format(Locale.ROOT, "%s,%.2f,%.3f,%d,%d,%d,%.2f,%.2f,%.2f,%.4f,%.1f,%.1f,%.1f,%s,\"%s\"",
+            return String.format(Locale.ROOT, "%s,%.2f,%.3f,%d,%d,%d,%.2f,%.2f,%.2f,%.4f,%.1f,%.1f,%.1f,%s,\"%s\",\"%s\"",
                     variant, buildMs, expectedCost, nodes, leaves, memoryBytes, nodesPerRay, testsPerRay,
-                    boxesPerRay, raysPerSecond / 1e6, totalMs(1), totalMs(10), totalMs(100), pareto, settings);
+                    boxesPerRay, raysPerSecond / 1e6, totalMs(1), totalMs(10), totalMs(100), pareto, settings, engine);
         }
     }
 }

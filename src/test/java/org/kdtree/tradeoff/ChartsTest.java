@@ -57,7 +57,7 @@ class ChartsTest {
     @Test void theTradeoffChartHasLabelledLogAxesDistinctMarkersAndUnits() throws Exception {
         List<Tradeoff.Result> results = new ArrayList<>();
         for (int i = 0; i < 12; i++)
-            results.add(new Tradeoff.Result("variant-" + i, "", 30 + 40 * i, 100, 1, 1, 1, 1, 1, 0, 1e5 * (1 + i % 5), 1000));
+            results.add(new Tradeoff.Result("variant-" + i, "", 30 + 40 * i, 100, 1, 1, 1, 1, 1, 0, 1e5 * (1 + i % 5), 1000, "test"));
         XYChart chart = TradeoffChart.chart(results, "test", 10);
         assertLabelledLogAxes(chart, 30, 470, 10, 100);
         assertThat(chart.getXAxisTitle()).contains("(ms)");
@@ -72,7 +72,7 @@ class ChartsTest {
     @Test void everyVariantOfTheWholeStudyHasAColourOfItsOwn() {
         List<Tradeoff.Result> results = new ArrayList<>();
         for (Variant v : Variant.all())
-            results.add(new Tradeoff.Result(v.name(), "", 30 + results.size(), 100, 1, 1, 1, 1, 1, 0, 1e5, 1000));
+            results.add(new Tradeoff.Result(v.name(), "", 30 + results.size(), 100, 1, 1, 1, 1, 1, 0, 1e5, 1000, "test"));
         List<XYSeries> points = TradeoffChart.chart(results, "test", 10).getSeriesMap().values().stream()
                 .filter(s -> !s.getName().equals("Pareto front")).toList();
         assertThat(points).hasSize(Variant.all().size());

@@ -97,6 +97,20 @@ class TradeoffTest {
         assertThat(TradeoffChart.chart(rs, "t", 10).getSeriesMap()).containsKeys("sah-exact-l0.8", "bvh", "bvh-width8");
     }
 
+    /** Issue 45, item 5: every row names the structure, the loop and the path that traced its rays, both structures alike. */
+    @Test void everyRowNamesTheEngineThatTracedIt() {
+        TriangleMesh m = Meshes.surface(300, 7);
+        for (RaySet rays : new RaySet[] {RaySet.random(m, 500), RaySet.primary(m, 24)}) {
+            Tradeoff t = new Tradeoff(m, rays, 1, 1, 100);
+            for (String variant : List.of("sah-exact-l0.8", "bvh")) {
+                Tradeoff.Result r = t.run(Variant.all().stream().filter(v -> v.name().equals(variant)).findFirst().orElseThrow());
+                assertThat(r.engine()).as(variant).startsWith(variant.equals("bvh") ? "bvh; " : "kd-tree; ")
+                        .contains(rays.imageWidth() > 0 ? "; 8 x 8 packets" : "; single rays; ");
+                assertThat(Tradeoff.csv(List.of(r))).contains("\"" + r.engine() + "\"");
+            }
+        }
+    }
+
     @Test void theCommandTakesTheBvhAsAnotherVariant() throws IOException {
         Path obj = writeObj(Meshes.surface(200, 7));
         Path csv = dir.resolve("bvh.csv"), png = dir.resolve("bvh.png");
@@ -118,7 +132,7 @@ class TradeoffTest {
     }
 
     private static Tradeoff.Result result(String name, double buildMs, double raysPerSecond) {
-        return new Tradeoff.Result(name, "", buildMs, 1, 1, 1, 1, 1, 1, 0, raysPerSecond, 1000);
+        return new Tradeoff.Result(name, "", buildMs, 1, 1, 1, 1, 1, 1, 0, raysPerSecond, 1000, "test");
     }
 
     private Path writeObj(TriangleMesh m) throws IOException {
