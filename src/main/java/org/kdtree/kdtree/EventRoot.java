@@ -6,13 +6,9 @@ package org.kdtree.kdtree;
  * exact threshold. Every reference's clipped bounds become its events (a planar event where the
  * bounds are flat on an axis, else a start and an end), sorted once per axis; below, the splits
  * keep them sorted ({@link EventSplit}). At the root of a parallel build the axes are sorted in
- * parallel. A large node's events are packed in longs and radix-sorted ({@link PackedEventSort}),
- * a small one's sorted as doubles ({@link EventSort}): the same order either way.
+ * parallel. One sort serves every node: {@link EventSort}, events packed in longs.
  */
 final class EventRoot {
-    /** From this many events on an axis they are made and sorted as packed longs ({@link PackedEventSort}); fewer go through {@link EventSort}. */
-    private static final int PACKED_MIN = 2048;
-
     private EventRoot() {
     }
 
@@ -38,17 +34,8 @@ final class EventRoot {
         for (int a = 0; a < k; a++) {
             int axis = a, from = meta[m0 + 1 + 2 * a], to = meta[m0 + 2 + 2 * a];
             axes[a] = () -> {
-                if (to - from >= PACKED_MIN) {
-                    if (parallel) PackedEventSort.write(bounds, k, refs, at, n, axis, pos, code, from, new long[to - from],
-                            new long[to - from], new double[to - from], new int[PackedEventSort.countLength()]);
-                    else PackedEventSort.write(bounds, k, refs, at, n, axis, pos, code, from, store.sortKeys(to - from),
-                            store.sortKeysTmp(), store.sortPositions(to - from), store.sortCounts());
-                    return;
-                }
-                int m = from;
-                for (int j = 0; j < n; j++) m = addEvents(bounds, k, at + j, refs[at + j], axis, pos, code, m);
-                if (parallel) EventSort.sort(pos, code, from, to, new double[to - from], new int[to - from]);
-                else EventSort.sort(pos, code, from, to, store.sortPositions(to - from), store.sortCodes());
+                for (int j = 0, m = from; j < n; j++) m = addEvents(bounds, k, at + j, refs[at + j], axis, pos, code, m);
+                (parallel ? new EventSort() : store.sort).sort(pos, code, from, to);
             };
         }
         if (parallel) java.util.Arrays.stream(axes).parallel().forEach(Runnable::run);

@@ -1,127 +1,107 @@
 package org.kdtree.kdtree;
 
 /**
- * Sorts events, kept as parallel arrays of positions and int codes, by position. Only the
- * position order matters: the sweep counts the kinds of all events at one position together.
- *
- * <p>Large ranges (the root's events) go through an LSD radix sort on the order-preserving
- * bits of the doubles, skipping the digits where all keys agree (most of the exponent);
- * small ones (a node's straddlers) through insertion sort, and the ones between through a
- * merge sort. Both work in the caller's scratch arrays: no objects per event, no allocation.
+ * The one sort of events (positions and {@link EventCode}s in parallel arrays) by position, as
+ * Sunflow's kd-tree sorts them: each event packed in one {@code long}, the order-preserving bits
+ * of its position rounded down to a float in the high 32 bits, its code in the low 32, the exact
+ * position carried alongside; one LSD radix sort on the high bits (three 11-bit digits, skipping
+ * those where every key agrees); then each run of equal float keys (positions closer than a
+ * float's ulp) put in the order of the doubles by insertion. A few events go by insertion alone.
+ * Either way the order is that of a stable sort of the doubles (-0.0 may come before or after
+ * 0.0: the sweep counts equal positions together). Scratch lives in the instance, one per
+ * thread of a build: nothing is allocated once it has grown.
  */
 final class EventSort {
-    private static final int INSERTION = 32;
-    private static final int RADIX_MIN = 2048;
-    private static final int DIGIT_BITS = 11;
-    private static final int BUCKETS = 1 << DIGIT_BITS;
+    /** At most this many events are sorted by insertion alone. */
+    static final int INSERTION = 32;
+    private static final int DIGIT_BITS = 11, BUCKETS = 1 << DIGIT_BITS;
 
-    private EventSort() {
+    private long[] keys = new long[0], tmpKeys = new long[0];
+    private double[] tmpPos = new double[0];
+    private final int[] count = new int[3 * BUCKETS];
+
+    /** Sorts {@code pos[from, to)} ascending, moving {@code code} along. */
+    void sort(double[] pos, int[] code, int from, int to) {
+        int n = to - from;
+        if (n <= INSERTION) {
+            insertion(pos, code, from, to);
+            return;
+        }
+        if (keys.length < n) {
+            keys = new long[NodeStore.grown(keys.length, n)];
+            tmpKeys = new long[keys.length];
+            tmpPos = new double[keys.length];
+        }
+        for (int i = 0; i < n; i++) keys[i] = high(pos[from + i]) | code[from + i] & 0xFFFF_FFFFL;
+        radix(pos, from, n);
+        for (int i = 0; i < n; i++) code[from + i] = (int) keys[i];
+        for (int i = 0; i < n; ) {   // runs of equal float keys, nearly always one event long
+            int end = i + 1;
+            while (end < n && keys[end] >>> 32 == keys[i] >>> 32) end++;
+            if (end - i > 1) insertion(pos, code, from + i, from + end);
+            i = end;
+        }
+    }
+
+    /** The high 32 bits of a key: the unsigned-comparable bits of {@code x} rounded down to a float. */
+    private static long high(double x) {
+        float f = (float) x;
+        if (f > x) f = Math.nextDown(f);   // round down, so that the float order never contradicts the doubles'
+        int b = Float.floatToRawIntBits(f);
+        return (long) (b < 0 ? ~b : b ^ Integer.MIN_VALUE) << 32;
     }
 
     /**
-     * Sorts {@code pos[from..to)} ascending, moving {@code code} along; {@code tmpPos} and
-     * {@code tmpCode} are scratch for at least {@code to - from} events.
+     * LSD radix sort of {@code keys[0, n)} on bits 32..63 (the low bits ride along), each key's
+     * position {@code pos[from + i]} moving with it, through the scratch arrays; the three
+     * histograms are counted in one pass. The keys end in {@link #keys}, the positions in {@code pos}.
      */
-    static void sort(double[] pos, int[] code, int from, int to, double[] tmpPos, int[] tmpCode) {
-        int n = to - from;
-        if (n <= INSERTION) insertion(pos, code, from, to);
-        else if (n < RADIX_MIN) mergeSort(pos, code, from, n, tmpPos, tmpCode);
-        else radix(pos, code, from, n, tmpPos, tmpCode);
+    private void radix(double[] pos, int from, int n) {
+        java.util.Arrays.fill(count, 0);
+        long and = -1L, or = 0;
+        for (int i = 0; i < n; i++) {
+            long key = keys[i];
+            and &= key;
+            or |= key;
+            for (int p = 0; p < 3; p++) count[p * BUCKETS + digit(key, p)]++;
+        }
+        long[] sk = keys, dk = tmpKeys;
+        double[] sp = pos, dp = tmpPos;
+        int sAt = from, dAt = 0;
+        for (int p = 0; p < 3; p++) {
+            if (digit(and ^ or, p) == 0) continue;
+            for (int i = p * BUCKETS, sum = 0; i < (p + 1) * BUCKETS; i++) { int c = count[i]; count[i] = sum; sum += c; }
+            for (int i = 0; i < n; i++) {
+                int to = count[p * BUCKETS + digit(sk[i], p)]++;
+                dk[to] = sk[i];
+                dp[dAt + to] = sp[sAt + i];
+            }
+            long[] t = sk; sk = dk; dk = t;
+            double[] u = sp; sp = dp; dp = u;
+            int v = sAt; sAt = dAt; dAt = v;
+        }
+        if (sk != keys) {
+            System.arraycopy(sk, 0, keys, 0, n);
+            System.arraycopy(sp, sAt, pos, from, n);
+        }
     }
 
-    /** Unsigned-comparable bits of a double: the order of the doubles (with -0.0 below 0.0). */
-    private static long key(double x) {
-        long b = Double.doubleToRawLongBits(x);
-        return b < 0 ? ~b : b ^ Long.MIN_VALUE;
+    /** Digit p (0 lowest) of a key's high 32 bits; the top digit has 10 bits. */
+    private static int digit(long key, int p) {
+        return (int) (key >>> (32 + p * DIGIT_BITS)) & (BUCKETS - 1);
     }
 
     /** Sorts {@code pos[from, to)} by position, stably, carrying {@code code} along: for short runs. */
     static void insertion(double[] pos, int[] code, int from, int to) {
         for (int i = from + 1; i < to; i++) {
             double p = pos[i];
-            int c = code[i];
-            int j = i - 1;
-            while (j >= from && pos[j] > p) {
+            int c = code[i], j = i - 1;
+            for (; j >= from && pos[j] > p; j--) {
                 pos[j + 1] = pos[j];
                 code[j + 1] = code[j];
-                j--;
             }
             pos[j + 1] = p;
             code[j + 1] = c;
         }
-    }
-
-    /** Runs of {@link #INSERTION} sorted in place, then merged pairwise through the scratch arrays. */
-    private static void mergeSort(double[] pos, int[] code, int from, int n, double[] tp, int[] tc) {
-        for (int i = 0; i < n; i += INSERTION) insertion(pos, code, from + i, from + Math.min(n, i + INSERTION));
-        double[] sp = pos, dp = tp;
-        int[] sc = code, dc = tc;
-        int sAt = from, dAt = 0;
-        for (int w = INSERTION; w < n; w *= 2) {
-            for (int lo = 0; lo < n; lo += 2 * w) {
-                int mid = Math.min(n, lo + w), hi = Math.min(n, lo + 2 * w);
-                merge(sp, sc, sAt + lo, sAt + mid, sAt + hi, dp, dc, dAt + lo);
-            }
-            double[] t = sp; sp = dp; dp = t;
-            int[] u = sc; sc = dc; dc = u;
-            int v = sAt; sAt = dAt; dAt = v;
-        }
-        copyBack(sp, sc, sAt, pos, code, from, n);
-    }
-
-    /** Merges the sorted runs {@code [ia, mid)} and {@code [mid, end)} of one array into {@code d} from {@code at}. */
-    private static void merge(double[] p, int[] c, int ia, int mid, int end, double[] dp, int[] dc, int at) {
-        int ib = mid;
-        while (ia < mid && ib < end) {
-            if (p[ib] < p[ia]) { dp[at] = p[ib]; dc[at++] = c[ib++]; }
-            else { dp[at] = p[ia]; dc[at++] = c[ia++]; }
-        }
-        while (ia < mid) { dp[at] = p[ia]; dc[at++] = c[ia++]; }
-        while (ib < end) { dp[at] = p[ib]; dc[at++] = c[ib++]; }
-    }
-
-    /**
-     * LSD radix sort of {@code pos[from .. from + n)} on {@link #key}, recomputed from the doubles
-     * at each pass, ping-ponging through {@code tp} and {@code tc}: nothing is allocated but the
-     * bucket counts.
-     */
-    private static void radix(double[] pos, int[] code, int from, int n, double[] tp, int[] tc) {
-        long and = -1L, or = 0;
-        for (int i = from; i < from + n; i++) {
-            long k = key(pos[i]);
-            and &= k;
-            or |= k;
-        }
-        long varying = and ^ or;
-        double[] sp = pos, dp = tp;
-        int[] sc = code, dc = tc;
-        int sAt = from, dAt = 0;
-        int[] count = new int[BUCKETS];
-        for (int shift = 0; shift < 64; shift += DIGIT_BITS) {
-            if (((varying >>> shift) & (BUCKETS - 1)) == 0) continue;
-            java.util.Arrays.fill(count, 0);
-            for (int i = sAt; i < sAt + n; i++) count[digit(sp[i], shift)]++;
-            for (int b = 0, sum = 0; b < BUCKETS; b++) { int c = count[b]; count[b] = sum; sum += c; }
-            for (int i = sAt; i < sAt + n; i++) {
-                int at = dAt + count[digit(sp[i], shift)]++;
-                dp[at] = sp[i];
-                dc[at] = sc[i];
-            }
-            double[] t = sp; sp = dp; dp = t;
-            int[] u = sc; sc = dc; dc = u;
-            int v = sAt; sAt = dAt; dAt = v;
-        }
-        copyBack(sp, sc, sAt, pos, code, from, n);
-    }
-
-    private static int digit(double x, int shift) {
-        return (int) (key(x) >>> shift) & (BUCKETS - 1);
-    }
-
-    /** Copies the sorted run {@code [sAt, sAt + n)} of {@code sp, sc} back to {@code pos, code} at {@code from}, unless it is already there. */
-    private static void copyBack(double[] sp, int[] sc, int sAt, double[] pos, int[] code, int from, int n) {
-        if (sp == pos) return;
-        System.arraycopy(sp, sAt, pos, from, n);
-        System.arraycopy(sc, sAt, code, from, n);
     }
 }

@@ -31,8 +31,8 @@ final class EventSplit {
     /** Clipped straddler bounds, 2k values a slot: slots [0, nb) the left child's, [nb, 2nb) the right's. */
     private double[] bounds = new double[0];
     /** One child's new events on one axis. */
-    private double[] extraPos = new double[16], sortPos = new double[16];
-    private int[] extraCode = new int[16], sortCode = new int[16];
+    private double[] extraPos = new double[16];
+    private int[] extraCode = new int[16];
     private final Box voxel, clipLeft, clipRight;
 
     EventSplit(NodeStore store) {
@@ -233,14 +233,12 @@ final class EventSplit {
         if (extraPos.length < 2 * nb) {
             extraPos = new double[NodeStore.grown(extraPos.length, 2 * nb)];
             extraCode = new int[extraPos.length];
-            sortPos = new double[extraPos.length];
-            sortCode = new int[extraPos.length];
         }
         int m = 0;
         for (int i = 0; i < nb; i++)
             if ((goesTo[i] & (1 << child)) != 0)
                 m = EventRoot.addEvents(bounds, k, child * nb + i, straddlers[i], axis, extraPos, extraCode, m);
-        EventSort.sort(extraPos, extraCode, 0, m, sortPos, sortCode);
+        store.sort.sort(extraPos, extraCode, 0, m);
         mergeBackward(outPos, outCode, from, end, extraPos, extraCode, m);
         return end + m;
     }

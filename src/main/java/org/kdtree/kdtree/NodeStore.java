@@ -58,11 +58,8 @@ final class NodeStore {
     /** Per primitive, a slot or a side: scratch of the event split and of {@link BuildNode}'s bounds of an event node. */
     private int[] slotOf;
     private int[] leafRefs = new int[16];
-    private double[] sortPos = new double[16];
-    private int[] sortCode = new int[16];
-    private long[] sortKeys = new long[0], sortKeysTmp = new long[0];
-    /** The packed sort's digit counts: small (24 KB), so made with the store. */
-    private final int[] sortCounts = new int[PackedEventSort.countLength()];
+    /** The one sort of this thread's events ({@link EventSort}), with its scratch. */
+    final EventSort sort = new EventSort();
     private int[] minBin = new int[0], maxBin = new int[0];
     private EventSplit eventSplit;
     private BoundsSplit boundsSplit;
@@ -281,31 +278,6 @@ final class NodeStore {
 
     /** Where child c's entries begin in {@link #eventMeta}. */
     int metaAt(int c) { return (2 * k + 1) * c; }
-
-    /** Sort scratch for at least {@code n} positions (and as many codes, {@link #sortCodes}). */
-    double[] sortPositions(int n) {
-        if (sortPos.length < n) {
-            sortPos = new double[grown(sortPos.length, n)];
-            sortCode = new int[sortPos.length];
-        }
-        return sortPos;
-    }
-
-    int[] sortCodes() { return sortCode; }
-
-    /** Packed-event sort scratch ({@link PackedEventSort}): keys for at least {@code n} events, as many more ({@link #sortKeysTmp}), and its counts ({@link #sortCounts}). */
-    long[] sortKeys(int n) {
-        if (sortKeys.length < n) {
-            int size = grown(sortKeys.length, n);   // the keys and their radix passes' second array
-            sortKeys = new long[size];
-            sortKeysTmp = new long[size];
-        }
-        return sortKeys;
-    }
-
-    long[] sortKeysTmp() { return sortKeysTmp; }
-
-    int[] sortCounts() { return sortCounts; }
 
     /** The binned SAH's histogram of minima, at least {@code bins} long (and as many maxima: {@link #maxBins}). */
     int[] minBins(int bins) {

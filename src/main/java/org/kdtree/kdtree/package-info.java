@@ -30,8 +30,8 @@
  * <li>{@code SortedPlaneSearch}: each node's events sorted, then swept, O(N log^2 N).</li>
  * <li>{@code EventCode}, {@code EventRoot}, {@code EventSweep}, {@code EventSplit}: O(N log N)
  * (Wald and Havran 2006, 4.3): what an event is, the one sort at the root, the sweep, and the
- * split that keeps the children's events sorted ({@code PackedEventSort} and {@code EventSort}
- * sort them).</li>
+ * split that keeps the children's events sorted ({@code EventSort}, the one sort, packs them in
+ * longs).</li>
  * <li>{@code Partition}, {@code BoundsSplit}: where does a primitive go, and what is left of it
  * there (perfect splits)?</li>
  * <li>{@code NodeStore}: where do the nodes of a build live? One level per depth, in either form.</li>
