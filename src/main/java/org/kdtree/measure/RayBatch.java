@@ -128,7 +128,7 @@ public final class RayBatch implements AutoCloseable {
      */
     public String loopOf(RaySet rays) {
         if (packets == null || rays.imageWidth() <= 0) return "single rays";
-        return packets[0].tracesTogether() ? "8 x 8 packets, packet loop" : "8 x 8 packets, each ray alone";
+        return packets[0].tracesTogether() ? "8 x 8 packets through the packet loop" : "8 x 8 packets each ray alone";
     }
 
     /** Runs {@code job} with each thread's query, on the pool's threads or this one. */

@@ -73,7 +73,8 @@ public final class Tradeoff {
         String engine;
         try (RayBatch batch = new RayBatch(1, structure)) {
             traceSeconds = Timing.median(1, runs, Timing.QUIET, () -> batch.trace(rays)).seconds();
-            engine = structure.kind() + "; " + batch.loopOf(rays) + "; " + structure.describePath();
+            // one CSV field without a comma: the study's readers (and a spreadsheet's quick import) split on every comma
+            engine = (structure.kind() + "; " + batch.loopOf(rays) + "; " + structure.describePath()).replace(',', ';');
         }
         TraversalStats counts = RayBatch.count(structure, rays, countedRays);
         double perRay = Math.max(1, counts.rays);
