@@ -109,6 +109,8 @@ public record RenderJob(Scene scene, AccelerationStructure structure, String bui
         s.append(String.format(Locale.ROOT, "render time: %.1f ms%s%n", result.renderNanos() / 1e6,
                 result.stopped() ? " (stopped before the last tile)" : ""));
         s.append(rayLines(result.rays(), result.renderNanos()));
+        // which engine made the figures above: the same words as render's and raycast's notes on standard error
+        s.append(String.format(Locale.ROOT, "traced by: %s, %s; path: %s%n", structure.kind(), result.tracer(), structure.describePath()));
         s.append(structure.kind()).append(':').append(System.lineSeparator());
         for (String line : structure.stats().describe().split("\\R")) s.append("  ").append(line).append(System.lineSeparator());
         return s.toString();

@@ -30,4 +30,15 @@ class RenderJobTest {
         assertThat(summary).contains("1 light)").contains("1 sample per pixel, 1 thread").contains("build time:")
                 .contains("rays:").contains("kd-tree:");
     }
+
+    /** Issue 45, item 5: the statistics a render shows (the workbench's too) name the structure, the tracer and its loop, and the path. */
+    @Test void theSummaryNamesTheEngineThatTracedTheRender() throws Exception {
+        Scene s = TestRenders.scene("cornell-box.json", 16, 12, 1);
+        for (String builder : new String[] {"sah", "bvh"}) {
+            RenderJob job = RenderJob.run(s, org.kdtree.spec.BuilderSpec.of(builder),
+                    org.kdtree.kdtree.Supervisor.of(org.kdtree.limits.Deadlines.COMMAND_LINE), Renderer.Options.defaults().withThreads(1));
+            assertThat(job.summary()).as(builder).contains("traced by: " + job.structure().kind() + ", " + job.result().tracer()
+                    + "; path: " + job.structure().describePath());
+        }
+    }
 }
