@@ -5,7 +5,6 @@ import org.kdtree.accel.CostModel;
 import org.kdtree.accel.Hit;
 import org.kdtree.accel.Intersector;
 import org.kdtree.accel.PacketQuery;
-import org.kdtree.accel.SingleRayPackets;
 import org.kdtree.accel.RayQuery;
 import org.kdtree.accel.TraversalListener;
 import org.kdtree.accel.TreeStats;
@@ -259,15 +258,15 @@ public final class KdTree implements AccelerationStructure {
     @Override public RayQuery query() { return new Traverser(this); }
 
     /**
-     * {@return packets answered one ray at a time ({@link SingleRayPackets}), each ray through the
-     * fast single-ray loop}: the kd-tree has no packet loop yet
+     * {@return a packet loop over this tree ({@link PacketTraversal}: Wald's coherent ray tracing,
+     * one node read for all the packet's rays), its single rays through {@link #query()}'s fast loop}
      *
      * @throws IllegalArgumentException if it was not built over a 3-D triangle mesh
      */
     @Override public PacketQuery packetQuery() {
-        if (!(intersector() instanceof TriangleIntersector))
+        if (leafCorners == null || dimension() != 3)
             throw new IllegalArgumentException("packets are traced against a triangle mesh; this " + dimension() + "-D tree holds other primitives");
-        return new SingleRayPackets(query());
+        return new PacketTraversal(this, query());
     }
 
     /** {@return a {@link Traverser} over this tree and its primitives that reports every step to {@code listener}} */
