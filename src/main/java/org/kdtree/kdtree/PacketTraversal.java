@@ -50,7 +50,8 @@ final class PacketTraversal implements PacketQuery {
     private final OctantSplit split;
     private final int[] nodes, refs;
     private final double[] corners;
-    private final double lx, ly, lz, hx, hy, hz;
+    /** The scene box, 3 minima then 3 maxima, and a ray's clip to it ({@link MeshTraversal#clip}). */
+    private final double[] scene, interval = new double[2];
     private final Hit hit = new Hit();
 
     /** Per axis, per ray: origin and inverse direction. */
@@ -89,8 +90,7 @@ final class PacketTraversal implements PacketQuery {
         refs = tree.refs;
         corners = tree.leafCorners;
         Box b = tree.bounds();
-        lx = b.min(0); ly = b.min(1); lz = b.min(2);
-        hx = b.max(0); hy = b.max(1); hz = b.max(2);
+        scene = new double[] {b.min(0), b.min(1), b.min(2), b.max(0), b.max(1), b.max(2)};
         int depth = tree.stats().maxDepth() + 2;
         stackNode = new int[depth];
         stackFirst = new int[depth];
@@ -295,27 +295,13 @@ final class PacketTraversal implements PacketQuery {
 
     /** Clips ray {@code i} to the scene box, as {@link MeshTraversal} does: {@return whether it enters it} */
     private boolean clip(RayPacket p, int i) {
-        double ox = p.ox[i], oy = p.oy[i], oz = p.oz[i], ix = p.ix[i], iy = p.iy[i], iz = p.iz[i];
-        double tMin = p.tMin[i], tMax = p.tMax[i], t0 = tMin, t1 = tMax, a, b;
-        a = (lx - ox) * ix; b = (hx - ox) * ix;
-        if (ix < 0) { double s = a; a = b; b = s; }
-        if (a > t0) t0 = a;
-        if (b < t1) t1 = b;
-        a = (ly - oy) * iy; b = (hy - oy) * iy;
-        if (iy < 0) { double s = a; a = b; b = s; }
-        if (a > t0) t0 = a;
-        if (b < t1) t1 = b;
-        a = (lz - oz) * iz; b = (hz - oz) * iz;
-        if (iz < 0) { double s = a; a = b; b = s; }
-        if (a > t0) t0 = a;
-        if (b < t1) t1 = b;
-        t0 = Math.max(tMin, t0 - Math.abs(t0) * SLACK);
-        t1 = Math.min(tMax, t1 + Math.abs(t1) * SLACK);
+        boolean enters = MeshTraversal.clip(scene, p.ox[i], p.oy[i], p.oz[i], p.ix[i], p.iy[i], p.iz[i], p.tMin[i], p.tMax[i], interval);
+        double t0 = interval[0], t1 = interval[1];
         curMin[i] = t0;
         curMax[i] = t1;
         lo[i] = t0 - Math.abs(t0) * SLACK;
         hi[i] = t1 + Math.abs(t1) * SLACK;
-        return t0 <= t1;
+        return enters;
     }
 
     /** Ray {@code i}'s shear of the watertight test, as {@link MeshTraversal} computes it once per ray. */

@@ -52,25 +52,8 @@ class PacketRenderTest {
             AccelerationStructure bvh = new BvhBuilder().build(s.mesh());
             EffectPlan plan = new EffectPlan(s);
             Tracer single = new Tracer(s, plan, alone(bvh.query()));
-            double[] want = new double[3], got = new double[3];
-            for (int budget : new int[] {1, 66 * 16, 72 * 16}) {
-                Tracer packets = new Tracer(s, plan, bvh.query(), bvh.packetQuery(), budget);
-                assertThat(packets.tracesPackets()).isTrue();
-                for (int by = 0; by < 16; by += 8)
-                    for (int bx = 0; bx < 24; bx += 8) {
-                        packets.block(bx, by, bx + 8, by + 8);
-                        for (int i = 0; i < 64; i++) {
-                            long before = single.counts().total();
-                            single.pixel(bx + i % 8, by + i / 8, want);
-                            packets.blockColour(i, got);
-                            String what = file + ", budget " + budget + ", pixel " + (bx + i % 8) + ", " + (by + i / 8);
-                            assertThat(got).as(what).containsExactly(want);
-                            int rays = 0;
-                            for (RayKind k : RayKind.values()) rays += packets.blockRays(k, i);
-                            assertThat((long) rays).as(what).isEqualTo(single.counts().total() - before);
-                        }
-                    }
-            }
+            for (int budget : new int[] {1, 66 * 16, 72 * 16})
+                sameBlocks(new Tracer(s, plan, bvh.query(), bvh.packetQuery(), budget), single, file + ", budget " + budget);
         }
     }
 
@@ -86,24 +69,28 @@ class PacketRenderTest {
             assertThat(kd.packetQuery().tracesTogether()).isTrue();
             EffectPlan plan = new EffectPlan(s);
             Tracer single = new Tracer(s, plan, alone(kd.query()));
-            Tracer packets = new Tracer(s, plan, kd.query(), repaid(kd.packetQuery()), Tracer.SHADOW_BUDGET);
-            assertThat(packets.tracesPackets()).isTrue();
-            double[] want = new double[3], got = new double[3];
-            for (int by = 0; by < 16; by += 8)
-                for (int bx = 0; bx < 24; bx += 8) {
-                    packets.block(bx, by, bx + 8, by + 8);
-                    for (int i = 0; i < 64; i++) {
-                        long before = single.counts().total();
-                        single.pixel(bx + i % 8, by + i / 8, want);
-                        packets.blockColour(i, got);
-                        String what = file + ", pixel " + (bx + i % 8) + ", " + (by + i / 8);
-                        assertThat(got).as(what).containsExactly(want);
-                        int rays = 0;
-                        for (RayKind k : RayKind.values()) rays += packets.blockRays(k, i);
-                        assertThat((long) rays).as(what).isEqualTo(single.counts().total() - before);
-                    }
-                }
+            sameBlocks(new Tracer(s, plan, kd.query(), repaid(kd.packetQuery()), Tracer.SHADOW_BUDGET), single, file);
         }
+    }
+
+    /** The 24 x 16 image's 8 x 8 blocks through {@code packets}: each pixel's colour and rays those {@code single} gives it. */
+    private static void sameBlocks(Tracer packets, Tracer single, String what) {
+        assertThat(packets.tracesPackets()).isTrue();
+        double[] want = new double[3], got = new double[3];
+        for (int by = 0; by < 16; by += 8)
+            for (int bx = 0; bx < 24; bx += 8) {
+                packets.block(bx, by, bx + 8, by + 8);
+                for (int i = 0; i < 64; i++) {
+                    long before = single.counts().total();
+                    single.pixel(bx + i % 8, by + i / 8, want);
+                    packets.blockColour(i, got);
+                    String pixel = what + ", pixel " + (bx + i % 8) + ", " + (by + i / 8);
+                    assertThat(got).as(pixel).containsExactly(want);
+                    int rays = 0;
+                    for (RayKind k : RayKind.values()) rays += packets.blockRays(k, i);
+                    assertThat((long) rays).as(pixel).isEqualTo(single.counts().total() - before);
+                }
+            }
     }
 
     /** The same packet query, said to repay the block tracer. */
