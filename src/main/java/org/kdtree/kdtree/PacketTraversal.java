@@ -52,7 +52,6 @@ final class PacketTraversal implements PacketQuery {
     private final double[] corners;
     /** The scene box, 3 minima then 3 maxima, and a ray's clip to it ({@link MeshTraversal#clip}). */
     private final double[] scene, interval = new double[2];
-    private final Hit hit = new Hit();
 
     /** Per axis, per ray: origin and inverse direction. */
     private final double[][] origin = new double[3][N], inverse = new double[3][N];
@@ -240,27 +239,39 @@ final class PacketTraversal implements PacketQuery {
      */
     private int leaf(RayPacket p, int start, int size, boolean any) {
         if (size == 0) return 0;
-        Hit h = hit;
         double[] c = corners;
         int newlyBlocked = 0;
         for (int i = first; i < last; i++) {
             if (!active[i]) continue;
-            h.primitive = bestPrim[i];
-            h.t = bestT[i];
-            h.u = bestU[i];
-            h.v = bestV[i];
+            int x = kx[i], y = ky[i], z = kz[i], prim = bestPrim[i];
+            double ox = okx[i], oy = oky[i], oz = okz[i], shx = sx[i], shy = sy[i], shz = sz[i];
+            double tMin = p.tMin[i], tMax = p.tMax[i], best = bestT[i], bu = bestU[i], bv = bestV[i];
             boolean found = false;
             for (int r = start, end = start + size; r < end; r++) {
-                if (!TriangleIntersector.test(c, 9 * r, refs[r], okx[i], oky[i], okz[i], kx[i], ky[i], kz[i], sx[i], sy[i], sz[i],
-                        p.tMin[i], p.tMax[i], h)) continue;
+                // TriangleIntersector.test, written out as in MeshTraversal (the JIT will not inline it).
+                int q = 9 * r, pr = refs[r];
+                double az = c[q + z] - oz, bz = c[q + 3 + z] - oz, cz = c[q + 6 + z] - oz;
+                double ax = c[q + x] - ox - shx * az, ay = c[q + y] - oy - shy * az;
+                double bx = c[q + 3 + x] - ox - shx * bz, by = c[q + 3 + y] - oy - shy * bz;
+                double cx = c[q + 6 + x] - ox - shx * cz, cy = c[q + 6 + y] - oy - shy * cz;
+                double u = cx * by - cy * bx, v = ax * cy - ay * cx, e = bx * ay - by * ax;
+                if ((u < 0 || v < 0 || e < 0) && (u > 0 || v > 0 || e > 0)) continue;
+                double det = u + v + e;
+                if (det == 0) continue;
+                double t = (u * az + v * bz + e * cz) * shz / det;
+                if (!(t >= tMin && t <= tMax && (t < best || t == best && pr < prim))) continue;
                 found = true;
+                prim = pr;
+                best = t;
+                bu = v / det;
+                bv = e / det;
                 if (any) break;
             }
             if (!found) continue;
-            bestPrim[i] = h.primitive;
-            bestT[i] = h.t;
-            bestU[i] = h.u;
-            bestV[i] = h.v;
+            bestPrim[i] = prim;
+            bestT[i] = best;
+            bestU[i] = bu;
+            bestV[i] = bv;
             if (any) {
                 blocked[i] = true;
                 active[i] = false;
