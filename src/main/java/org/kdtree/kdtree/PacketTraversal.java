@@ -20,8 +20,8 @@ import org.kdtree.geom.Ray;
  * #decide}): a mask per ray.</li>
  * <li>If every active ray goes one way, the packet goes there. Otherwise the far child is saved
  * with the mask and intervals of the rays that go there, and the packet goes on into the near
- * child with the rays that go there, each ray's interval cut at its own {@code tSplit} ({@link
- * #split}). The loops over the rays run over the range from the first active ray to the last.</li>
+ * child with the rays that go there, each ray's interval cut at its own {@code tSplit}, all in one
+ * pass over the rays. The loops over the rays run over the range from the first active ray to the last.</li>
  * <li>At a leaf every active ray tests the leaf's triangles ({@link #leaf}), from the tree's
  * tracing layout ({@link LeafCorners}).</li>
  * <li>A saved child is taken up with those of its rays that still need it: not blocked (any hit),
@@ -62,9 +62,6 @@ final class PacketTraversal implements PacketQuery {
     /** Per ray: whether it takes part in the current node, its interval there and that interval widened by the slack. */
     private final boolean[] active = new boolean[N];
     private final double[] curMin = new double[N], curMax = new double[N], lo = new double[N], hi = new double[N];
-    /** Per ray, at the current interior node: where it goes ({@link #NEAR}, {@link #FAR}, {@link #BOTH}) and its tSplit. */
-    private final int[] go = new int[N];
-    private final double[] tSplit = new double[N];
     /** Per ray: its closest hit so far (primitive -1: none), or (any hit) whether it is blocked. */
     private final int[] bestPrim = new int[N];
     private final double[] bestT = new double[N], bestU = new double[N], bestV = new double[N];
@@ -141,8 +138,8 @@ final class PacketTraversal implements PacketQuery {
             while (!Nodes.isLeaf(w, BITS)) {
                 int axis = Nodes.axis(w, BITS), near = Nodes.leftChild(node), far = Nodes.rightChild(w, BITS);
                 if (inverse[axis][0] < 0) { far = near; near = Nodes.rightChild(w, BITS); }
-                int ways = decide(axis, Nodes.split(nodes, node));
-                if (ways == BOTH) split(sp++, far);
+                int ways = decide(sp, far, axis, Nodes.split(nodes, node));
+                if (ways == BOTH) sp++;
                 node = ways == FAR ? far : near;
                 w = Nodes.word(nodes, node);
             }
@@ -157,58 +154,64 @@ final class PacketTraversal implements PacketQuery {
 
     /**
      * The per-node kernel: sends each active ray to the near child, the far one or both, by its
-     * tSplit against its interval as the single-ray loop does. {@return the ways the rays go}:
-     * {@link #NEAR}, {@link #FAR} or {@link #BOTH} (some one way and some the other, or some both).
+     * tSplit against its interval as the single-ray loop does, in one pass over the rays. The far
+     * child is saved at {@code level} with the rays that go there, each from its tSplit (or its
+     * interval's start) to its end; a ray that goes both ways has its interval cut at its tSplit,
+     * one that goes only far leaves the near child. {@return the ways the rays go}: {@link #NEAR}
+     * (nothing saved needed), {@link #FAR} (every ray goes far, with the intervals it had: the
+     * save is taken back at once) or {@link #BOTH} (the save stands); the range of rays narrowed to
+     * the child taken.
      */
-    private int decide(int axis, double plane) {
+    private int decide(int level, int far, int axis, double plane) {
         double[] o = origin[axis], iv = inverse[axis];
-        int ways = 0;
+        int b = level * N, ways = 0, farFirst = N, farLast = 0, nearFirst = N, nearLast = 0;
         for (int i = first; i < last; i++) {
-            if (!active[i]) continue;
+            if (!active[i]) {
+                stackActive[b + i] = false;
+                continue;
+            }
             double t = (plane - o[i]) * iv[i];
             int g = t > hi[i] ? NEAR : t < lo[i] ? FAR : BOTH;
-            go[i] = g;
-            tSplit[i] = t;
             ways |= g;
-        }
-        return ways;
-    }
-
-    /**
-     * Saves the far child at {@code level} with the rays that go there, each from its tSplit (or
-     * its interval's start) to its end, and goes on into the near child with the rays that go
-     * there, those that go both ways cut at their tSplit; the range of rays narrowed to each's.
-     */
-    private void split(int level, int far) {
-        stackNode[level] = far;
-        int b = level * N, farFirst = N, farLast = 0, nearFirst = N, nearLast = 0;
-        for (int i = first; i < last; i++) {
-            int g = active[i] ? go[i] : 0;
-            boolean toFar = (g & FAR) != 0;
-            stackActive[b + i] = toFar;
-            if (toFar) {
-                double t = tSplit[i];
-                boolean cut = g == BOTH && t == t;                  // NaN: the ray lies in the split plane
-                stackMin[b + i] = cut ? t : curMin[i];
-                stackMax[b + i] = curMax[i];
-                if (farFirst == N) farFirst = i;
-                farLast = i + 1;
-                if (cut) {
-                    curMax[i] = t;
-                    hi[i] = t + Math.abs(t) * SLACK;
-                }
-            }
-            if ((g & NEAR) != 0) {
+            if (g == NEAR) {
+                stackActive[b + i] = false;
                 if (nearFirst == N) nearFirst = i;
                 nearLast = i + 1;
-            } else {
+                continue;
+            }
+            stackActive[b + i] = true;
+            stackMax[b + i] = curMax[i];
+            if (farFirst == N) farFirst = i;
+            farLast = i + 1;
+            if (g == FAR) {
+                stackMin[b + i] = curMin[i];
                 active[i] = false;
+                continue;
+            }
+            if (nearFirst == N) nearFirst = i;
+            nearLast = i + 1;
+            if (t == t) {                                   // NaN: the ray lies in the split plane
+                stackMin[b + i] = t;
+                curMax[i] = t;
+                hi[i] = t + Math.abs(t) * SLACK;
+            } else {
+                stackMin[b + i] = curMin[i];
             }
         }
-        stackFirst[level] = farFirst;
-        stackLast[level] = farLast;
-        first = nearFirst;
-        last = nearLast;
+        if (ways == FAR) {
+            for (int i = farFirst; i < farLast; i++) active[i] = stackActive[b + i];
+            first = farFirst;
+            last = farLast;
+        } else {
+            if (ways == BOTH) {
+                stackNode[level] = far;
+                stackFirst[level] = farFirst;
+                stackLast[level] = farLast;
+            }
+            first = nearFirst;
+            last = nearLast;
+        }
+        return ways;
     }
 
     /** Takes up the child saved at {@code level} with its rays not blocked that start no farther than their closest hit; {@return whether any does} */
