@@ -106,9 +106,9 @@ final class PacketTraversal implements PacketQuery {
     /**
      * {@return false: renders stay one pixel at a time}. On Java 17 this scalar loop is slower per
      * ray than {@link MeshTraversal}: the Cornell box through the block tracer and this loop took
-     * 1.5 to 1.7 times as long as through the recursive tracer and single rays (alternating runs of
-     * {@code render scenes:cornell-box}, loaded machine). A kernel that tests several rays at a
-     * compare may repay it.
+     * 1.17 times the processor time of the recursive tracer and single rays (median of 5 alternating
+     * pairs of whole {@code render scenes:cornell-box} processes, 1.07 to 1.45; loaded machine). A
+     * kernel that tests several rays at a compare may repay it.
      */
     @Override public boolean repaysBlocks() { return false; }
 
