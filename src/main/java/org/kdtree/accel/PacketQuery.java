@@ -6,18 +6,28 @@ import org.kdtree.geom.Ray;
  * A ray query that also answers packets of rays ({@link AccelerationStructure#packetQuery}: every
  * structure gives one). A packet loop traces coherent rays together: a packet's rays share the
  * structure's node reads, and a box or cell that no ray of the packet can enter is skipped for
- * all of them at once; a structure without one answers each ray of the packet alone ({@link
- * SingleRayPackets}), and {@link #tracesTogether} says which it is. Either way each ray's answer
- * is exactly its {@link RayQuery#closestHit} answer (primitive, t, barycentrics). Not thread
- * safe: one per thread, like the query.
+ * all of them at once (the BVH's and the kd-tree's loops); a query without one would answer each
+ * ray of the packet alone ({@link #oneByOne}), and {@link #tracesTogether} says which it is.
+ * Either way each ray's answer is exactly its {@link RayQuery#closestHit} answer (primitive, t,
+ * barycentrics). Not thread safe: one per thread, like the query.
  */
 public interface PacketQuery extends RayQuery {
     /**
      * {@return whether a packet's rays are traced together}, sharing the structure's node reads (a
-     * packet loop), rather than each alone through the single-ray loop ({@link SingleRayPackets}):
-     * a renderer gathers its rays into packets only where that is repaid
+     * packet loop), rather than each alone through the single-ray loop ({@link #oneByOne}); the
+     * figures of a packet query name the loop by it
      */
     boolean tracesTogether();
+
+    /**
+     * {@return whether a renderer's block tracer, which gathers a block's rays into packets for
+     * this query, is repaid}: by default where {@link #tracesTogether}; a packet loop measured
+     * slower in renders than its structure's single rays says false, and renders stay one pixel at
+     * a time (the same image either way)
+     */
+    default boolean repaysBlocks() {
+        return tracesTogether();
+    }
 
     /**
      * The closest hit of every ray of the packet, written to the packet's results.

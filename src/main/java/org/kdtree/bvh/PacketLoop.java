@@ -1,6 +1,7 @@
 package org.kdtree.bvh;
 
 import org.kdtree.accel.Hit;
+import org.kdtree.accel.OctantSplit;
 import org.kdtree.accel.PacketQuery;
 import org.kdtree.accel.RayPacket;
 import org.kdtree.accel.RayQuery;

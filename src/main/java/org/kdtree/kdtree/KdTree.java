@@ -5,7 +5,6 @@ import org.kdtree.accel.CostModel;
 import org.kdtree.accel.Hit;
 import org.kdtree.accel.Intersector;
 import org.kdtree.accel.PacketQuery;
-import org.kdtree.accel.SingleRayPackets;
 import org.kdtree.accel.RayQuery;
 import org.kdtree.accel.TraversalListener;
 import org.kdtree.accel.TreeStats;
@@ -47,8 +46,10 @@ public final class KdTree implements AccelerationStructure {
     /** What it was built over; its ray tests are made from them once, on the first query. */
     private final Primitives primitives;
     private Intersector intersector;
-    /** A mesh's corners ({@link TriangleIntersector#corners}), read in place by the intersector and {@link MeshTraversal}. */
-    private double[] corners;
+    /** A mesh's corners ({@link TriangleIntersector#corners}), read in place by the intersector; null for other primitives. */
+    private final double[] corners;
+    /** The tracing layout of a mesh's tree ({@link LeafCorners}): the corners per reference, in leaf order; else null. */
+    final double[] leafCorners;
     private TreeStats stats;
 
     KdTree(Primitives primitives, Box bounds, CostModel cost, String builderName, int[] nodes, int[] refs, int budgetLeaves) {
@@ -60,6 +61,8 @@ public final class KdTree implements AccelerationStructure {
         this.nodes = nodes;
         this.refs = refs;
         this.axisBits = Nodes.axisBits(bounds.dimension());
+        corners = TriangleIntersector.cornersOf(primitives);
+        leafCorners = corners == null ? null : LeafCorners.of(corners, refs);
     }
 
     /**
@@ -93,21 +96,12 @@ public final class KdTree implements AccelerationStructure {
     }
 
     /**
-     * The ray tests of the primitives it was built over, made once (a mesh's corners are copied
-     * then, not during the build).
+     * The ray tests of the primitives it was built over, made once, on the first query (points
+     * have none: they throw then); a mesh's over the corners copied with the tree.
      */
     synchronized Intersector intersector() {
-        if (intersector == null) {
-            corners = TriangleIntersector.cornersOf(primitives);
-            intersector = Intersector.of(primitives, corners);
-        }
+        if (intersector == null) intersector = Intersector.of(primitives, corners);
         return intersector;
-    }
-
-    /** {@return the corners {@link MeshTraversal} inlines the triangle test over}, null unless built over a mesh */
-    synchronized double[] corners() {
-        intersector();
-        return corners;
     }
 
     /** {@return the width of the axis field of this tree's node words}: what {@link Nodes} decodes a word with */
@@ -242,9 +236,12 @@ public final class KdTree implements AccelerationStructure {
         return stats;
     }
 
-    /** {@return bytes held by the arrays (12 per node, 4 per reference, plus the arrays' headers)} */
+    /**
+     * {@return bytes held by the arrays (12 per node, 4 per reference, plus the arrays' headers),
+     * and over a mesh its tracing layout's ({@link LeafCorners}: 72 per reference)}
+     */
     public long memoryBytes() {
-        return 2 * 16L + 4L * nodes.length + 4L * refs.length;
+        return 2 * 16L + 4L * nodes.length + 4L * refs.length + (leafCorners == null ? 0 : LeafCorners.bytes(refs.length));
     }
 
     /** {@return a line when the reference budget made leaves early ({@link #budgetLeaves()}), else none} */
@@ -261,15 +258,15 @@ public final class KdTree implements AccelerationStructure {
     @Override public RayQuery query() { return new Traverser(this); }
 
     /**
-     * {@return packets answered one ray at a time ({@link SingleRayPackets}), each ray through the
-     * fast single-ray loop}: the kd-tree has no packet loop yet
+     * {@return a packet loop over this tree ({@link PacketTraversal}: Wald's coherent ray tracing,
+     * one node read for all the packet's rays), its single rays through {@link #query()}'s fast loop}
      *
      * @throws IllegalArgumentException if it was not built over a 3-D triangle mesh
      */
     @Override public PacketQuery packetQuery() {
-        if (!(intersector() instanceof TriangleIntersector))
+        if (leafCorners == null || dimension() != 3)
             throw new IllegalArgumentException("packets are traced against a triangle mesh; this " + dimension() + "-D tree holds other primitives");
-        return new SingleRayPackets(query());
+        return new PacketTraversal(this, query());
     }
 
     /** {@return a {@link Traverser} over this tree and its primitives that reports every step to {@code listener}} */

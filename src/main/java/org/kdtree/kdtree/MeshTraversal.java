@@ -8,8 +8,9 @@ import org.kdtree.geom.Ray;
 /**
  * The specialised 3-D path of {@link Traverser} for triangle meshes: the same algorithm and the
  * same robustness rules as the generic loop, on the flat arrays, with the ray in locals, the
- * per-ray shear of the watertight test computed once, and the triangle test inlined. Not thread
- * safe: owned by one traverser.
+ * per-ray shear of the watertight test computed once, and the triangle test written out over the
+ * tree's tracing layout ({@link LeafCorners}: a leaf's triangles one after the other, no index
+ * from a reference to its triangle). Not thread safe: owned by one traverser.
  */
 final class MeshTraversal {
     /** A 3-D tree's {@link KdTree#axisBits()}, a constant the JIT folds into the node decoding. */
@@ -19,26 +20,56 @@ final class MeshTraversal {
     /** The tree's nodes, read with {@link Nodes}. */
     private final int[] nodes;
     private final int[] refs;
+    /** The corners per reference, in leaf order ({@link KdTree#leafCorners}). */
     private final double[] corners;
-    private final double lx, ly, lz, hx, hy, hz;
+    /** The scene box: 3 minima, then 3 maxima ({@link #clip}'s form). */
+    private final double[] scene;
     private final Mailbox mailbox;
     private final int[] stackNode;
     private final double[] stackMin, stackMax;
-    private final double[] org = new double[3], inv = new double[3];
+    private final double[] org = new double[3], inv = new double[3], interval = new double[2];
     private final Hit scratch = new Hit();
 
     MeshTraversal(KdTree tree, Mailbox mailbox, int stackSize) {
         if (tree.axisBits() != BITS) throw new IllegalArgumentException("a 3-D tree's axis field is " + BITS + " bits");
         nodes = tree.nodes;
         refs = tree.refs;
-        corners = tree.corners();
+        corners = tree.leafCorners;
+        if (corners == null) throw new IllegalArgumentException("a tree over a triangle mesh has a tracing layout; this one holds other primitives");
         Box b = tree.bounds();
-        lx = b.min(0); ly = b.min(1); lz = b.min(2);
-        hx = b.max(0); hy = b.max(1); hz = b.max(2);
+        scene = new double[] {b.min(0), b.min(1), b.min(2), b.max(0), b.max(1), b.max(2)};
         this.mailbox = mailbox;
         stackNode = new int[stackSize];
         stackMin = new double[stackSize];
         stackMax = new double[stackSize];
+    }
+
+    /**
+     * Clips the ray {@code o + t d} (given by its origin and inverse direction) to the box {@code
+     * box} (3 minima, then 3 maxima): {@code [tMin, tMax]} cut to the box and widened by the slack,
+     * into {@code out}; {@return whether anything is left}. A NaN from 0 times infinity constrains
+     * nothing. The silent loop's and the packet loop's clip to the scene box.
+     */
+    static boolean clip(double[] box, double ox, double oy, double oz, double ix, double iy, double iz, double tMin, double tMax,
+                        double[] out) {
+        double t0 = tMin, t1 = tMax, a, b;
+        a = (box[0] - ox) * ix; b = (box[3] - ox) * ix;
+        if (ix < 0) { double s = a; a = b; b = s; }
+        if (a > t0) t0 = a;
+        if (b < t1) t1 = b;
+        a = (box[1] - oy) * iy; b = (box[4] - oy) * iy;
+        if (iy < 0) { double s = a; a = b; b = s; }
+        if (a > t0) t0 = a;
+        if (b < t1) t1 = b;
+        a = (box[2] - oz) * iz; b = (box[5] - oz) * iz;
+        if (iz < 0) { double s = a; a = b; b = s; }
+        if (a > t0) t0 = a;
+        if (b < t1) t1 = b;
+        t0 = Math.max(tMin, t0 - Math.abs(t0) * SLACK);
+        t1 = Math.min(tMax, t1 + Math.abs(t1) * SLACK);
+        out[0] = t0;
+        out[1] = t1;
+        return t0 <= t1;
     }
 
     boolean closestHit(Ray ray, double tMin, double tMax, Hit hit) {
@@ -58,23 +89,8 @@ final class MeshTraversal {
         if (!(ox - ox == 0 && oy - oy == 0 && oz - oz == 0 && dx - dx == 0 && dy - dy == 0 && dz - dz == 0)
                 || (dx == 0 && dy == 0 && dz == 0))
             throw new IllegalArgumentException("ray has a non-finite or zero origin or direction: " + ray);
-        // Clip to the scene box (NaN from 0 * infinity constrains nothing).
-        double t0 = tMin, t1 = tMax, a, b;
-        a = (lx - ox) * ix; b = (hx - ox) * ix;
-        if (ix < 0) { double s = a; a = b; b = s; }
-        if (a > t0) t0 = a;
-        if (b < t1) t1 = b;
-        a = (ly - oy) * iy; b = (hy - oy) * iy;
-        if (iy < 0) { double s = a; a = b; b = s; }
-        if (a > t0) t0 = a;
-        if (b < t1) t1 = b;
-        a = (lz - oz) * iz; b = (hz - oz) * iz;
-        if (iz < 0) { double s = a; a = b; b = s; }
-        if (a > t0) t0 = a;
-        if (b < t1) t1 = b;
-        t0 = Math.max(tMin, t0 - Math.abs(t0) * SLACK);
-        t1 = Math.min(tMax, t1 + Math.abs(t1) * SLACK);
-        if (!(t0 <= t1)) return false;
+        if (!clip(scene, ox, oy, oz, ix, iy, iz, tMin, tMax, interval)) return false;
+        double t0 = interval[0], t1 = interval[1];
 
         // The watertight test's shear, once per ray.
         int kz = TriangleIntersector.maxAxis(dx, dy, dz);
@@ -129,7 +145,7 @@ final class MeshTraversal {
                 if (box[p] == stamp) continue;
                 box[p] = stamp;
                 // TriangleIntersector.test, written out: the JIT will not inline it (342 bytes of bytecode, above FreqInlineSize).
-                int q = 9 * p;
+                int q = 9 * r;
                 double az = c[q + kz] - okz, bz = c[q + 3 + kz] - okz, cz = c[q + 6 + kz] - okz;
                 double ax = c[q + kx] - okx - sx * az, ay = c[q + ky] - oky - sy * az;
                 double bx = c[q + 3 + kx] - okx - sx * bz, by = c[q + 3 + ky] - oky - sy * bz;

@@ -17,14 +17,16 @@ final class RestoredLinks {
     /** What the check counts on its way, all of a tree's statistics but the expected cost, which needs the voxels. */
     record Counts(int nodes, int leaves, int empty, int maxDepth, long depthSum, long refs) {
         /**
-         * {@return {@code stated}, checked to be these counts' statistics}, with its expected cost as stated
-         * @throws IllegalArgumentException if a count differs
+         * {@return the counts' statistics}, with the expected cost as stated and the memory of the
+         * tree's arrays (what the arrays hold, not a statement to check: a file saved before the
+         * tracing layout was counted states less)
+         * @throws IllegalArgumentException if a count differs from {@code stated}
          */
         TreeStats confirm(TreeStats stated, long memoryBytes) {
-            TreeStats counted = KdTreeStats.of(nodes, leaves, empty, maxDepth, depthSum, refs, memoryBytes, stated.expectedCost());
+            TreeStats counted = KdTreeStats.of(nodes, leaves, empty, maxDepth, depthSum, refs, stated.memoryBytes(), stated.expectedCost());
             if (!counted.equals(stated))
                 throw new IllegalArgumentException("the statistics it states (" + stated + ") are not its tree's (" + counted + ")");
-            return stated;
+            return KdTreeStats.of(nodes, leaves, empty, maxDepth, depthSum, refs, memoryBytes, stated.expectedCost());
         }
     }
 

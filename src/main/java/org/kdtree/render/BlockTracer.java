@@ -169,7 +169,7 @@ final class BlockTracer {
         System.arraycopy(shading.base, 0, tree.base, 3 * node, 3);
         if (shading.lit) {
             tree.lit[node] = true;
-            shadows.keep(node, shading.lights);
+            shadows.keep(node, shading.lights, shader);
             count(RayKind.SHADOW, i, shading.lights.shadowRays());
         }
         addChild(node, shading.reflection, x, y, si);

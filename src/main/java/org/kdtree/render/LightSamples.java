@@ -6,13 +6,16 @@ import org.kdtree.geom.Ray;
 /**
  * The light samples of one hit point (one of a {@link Shading}'s records), in the lights' order:
  * per sample, its slot (a light's sample: an area light has one per sample, other lights one),
- * the light it brings, and, unless its light casts no shadows, the shadow ray that may block it.
+ * the light arriving (its unit direction, its power and its falloff), and, unless its light casts
+ * no shadows, the shadow ray that may block it. What the surface makes of that light (the BRDF,
+ * {@link Shader#reflected}) is left to the tracer, which asks only for the samples whose shadow
+ * rays reach the light: a blocked sample costs its shadow ray and nothing more.
  * A sample's numbers lie together in one array; it grows with the most samples a point has needed
  * and is kept: nothing is allocated per point.
  */
 final class LightSamples {
-    /** Per sample: light r, g, b; shadow ray origin x, y, z, direction x, y, z; its end. */
-    private static final int STRIDE = 10, ORIGIN = 3, END = 9;
+    /** Per sample: unit direction toward the light x, y, z; power r, g, b; falloff; shadow ray origin x, y, z, direction x, y, z; its end. */
+    private static final int STRIDE = 14, POWER = 3, FALLOFF = 6, ORIGIN = 7, END = 13;
     private int size;
     private int[] slot = new int[0];
     private boolean[] shadowed = new boolean[0];
@@ -24,15 +27,22 @@ final class LightSamples {
     /** Empties it. */
     void clear() { size = 0; }
 
-    /** Adds the light (r, g, b) of sample {@code slot}, with no shadow ray yet; returns its index. */
-    int add(int slot, double r, double g, double b) {
+    /**
+     * Adds sample {@code slot}: the light of {@code power} arriving from unit direction {@code
+     * toward}, weakened by {@code falloff}, with no shadow ray yet; returns its index.
+     */
+    int add(int slot, double[] toward, double[] power, double falloff) {
         if (size == this.slot.length) grow(Math.max(2 * size, 4));
         int i = size++, at = STRIDE * i;
         this.slot[i] = slot;
         shadowed[i] = false;
-        data[at] = r;
-        data[at + 1] = g;
-        data[at + 2] = b;
+        data[at] = toward[0];
+        data[at + 1] = toward[1];
+        data[at + 2] = toward[2];
+        data[at + POWER] = power[0];
+        data[at + POWER + 1] = power[1];
+        data[at + POWER + 2] = power[2];
+        data[at + FALLOFF] = falloff;
         return i;
     }
 
@@ -55,8 +65,14 @@ final class LightSamples {
     /** {@return whether a shadow ray may block sample {@code i}} */
     boolean shadowed(int i) { return shadowed[i]; }
 
-    /** {@return channel {@code c} (0 red, 1 green, 2 blue) of the light sample {@code i} brings} */
-    double light(int i, int c) { return data[STRIDE * i + c]; }
+    /** {@return coordinate {@code a} of the unit direction toward sample {@code i}'s light} */
+    double toward(int i, int a) { return data[STRIDE * i + a]; }
+
+    /** {@return channel {@code c} (0 red, 1 green, 2 blue) of sample {@code i}'s power} */
+    double power(int i, int c) { return data[STRIDE * i + POWER + c]; }
+
+    /** {@return sample {@code i}'s falloff: 1 over the squared distance to a point, 1 for a direction} */
+    double falloff(int i) { return data[STRIDE * i + FALLOFF]; }
 
     /** {@return sample {@code i}'s shadow ray's end: it is {@code o + t d}, {@code 0 <= t <= end}} */
     double end(int i) { return data[STRIDE * i + END]; }

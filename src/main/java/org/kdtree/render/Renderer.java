@@ -86,7 +86,7 @@ public final class Renderer {
     /**
      * {@return the rendered image and its statistics}, with the structure's queries and packet
      * queries: in blocks of 8 x 8 pixels with their rays in packets where its packet loop traces
-     * a packet's rays together ({@link PacketQuery#tracesTogether}), else one pixel at a time;
+     * a packet's rays together and repays it ({@link PacketQuery#repaysBlocks}), else one pixel at a time;
      * the same image either way ({@link RenderResult#tracer} says which)
      *
      * @param scene     the scene

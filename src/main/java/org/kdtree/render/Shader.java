@@ -45,8 +45,8 @@ final class Shader {
     private final List<Material> materials;
     private final List<Light> lights;
     private final double[] background;
-    /** Per light: the unit direction toward a directional light; an area light's edges and power per sample. */
-    private final double[][] towardLight, edgeU, edgeV, perSample;
+    /** Per light: the unit direction toward a directional light and its colour; an area light's edges and power per sample. */
+    private final double[][] towardLight, colour, edgeU, edgeV, perSample;
     /** Per material: its diffuse colour, its specular colour (null: no highlight) and shininess, as arrays for the light's inner loop. */
     private final double[][] diffuse, specular;
     private final double[] shininess;
@@ -88,6 +88,7 @@ final class Shader {
         }
         int n = lights.size();
         towardLight = new double[n][];
+        colour = new double[n][];
         edgeU = new double[n][];
         edgeV = new double[n][];
         perSample = new double[n][];
@@ -95,6 +96,7 @@ final class Shader {
         for (int li = 0; li < n; li++) {
             if (lights.get(li) instanceof Light.Directional d) {
                 towardLight[li] = set(d.direction().negate().normalized(), new double[3]);
+                colour[li] = set(d.color(), new double[3]);
             } else if (lights.get(li) instanceof Light.Area a) {
                 edgeU[li] = set(a.edgeU(), new double[3]);
                 edgeV[li] = set(a.edgeV(), new double[3]);
@@ -173,8 +175,8 @@ final class Shader {
         for (int li = 0; li < lights.size(); li++) {
             Light light = lights.get(li);
             boolean shadows = plan.shadowRays(li);
-            if (light instanceof Light.Directional d) {
-                fromDirection(towardLight[li], d.color(), shadows, slotOf[li], out);
+            if (light instanceof Light.Directional) {
+                fromDirection(towardLight[li], colour[li], shadows, slotOf[li], out);
             } else if (light instanceof Light.Point pt) {
                 fromPoint(set(pt.position(), q), set(pt.color(), power), shadows, slotOf[li], out);
             } else if (light instanceof Light.Area a) {
@@ -184,10 +186,9 @@ final class Shader {
     }
 
     /** The light of colour {@code c} arriving from unit direction {@code toward}, when the surface faces it. */
-    private void fromDirection(double[] toward, Vec3 c, boolean shadows, int slot, LightSamples out) {
+    private void fromDirection(double[] toward, double[] c, boolean shadows, int slot, LightSamples out) {
         if (!(dot(toward, ng) > 0)) return;
-        brdf(ns, toward, term);
-        int i = out.add(slot, term[0] * c.x(), term[1] * c.y(), term[2] * c.z());
+        int i = out.add(slot, toward, c, 1);
         if (shadows) {
             leave(p, ng, toward, scale, o);
             out.shadowRay(i, o, toward, Double.POSITIVE_INFINITY);
@@ -222,14 +223,31 @@ final class Shader {
         double inv = 1 / Math.sqrt(d2);
         for (int k = 0; k < 3; k++) l[k] = l[k] * inv;
         if (dot(l, ng) <= 0 || d2 == 0) return;
-        brdf(ns, l, term);
-        double falloff = 1 / d2;
-        int i = out.add(slot, term[0] * power[0] * falloff, term[1] * power[1] * falloff, term[2] * power[2] * falloff);
+        int i = out.add(slot, l, power, 1 / d2);
         if (shadows) {
             leave(p, ng, l, scale, o);
             for (int k = 0; k < 3; k++) toEnd[k] = to[k] - o[k];
             out.shadowRay(i, o, toEnd, SHADOW_END);
         }
+    }
+
+    /**
+     * Writes to {@code out} the light that sample {@code i} of the last hit {@link #shade}d brings
+     * to the eye: Lambert plus Phong for its direction, times its power and its falloff. Valid
+     * until the next {@link #shade}; a tracer asks for it only once it knows the sample's shadow
+     * ray reaches the light (or, keeping samples aside, for every sample).
+     *
+     * @param samples the last hit's light samples ({@link Shading#lights})
+     * @param i       one of them
+     * @param out     receives the red, green and blue light
+     */
+    void reflected(LightSamples samples, int i, double[] out) {
+        for (int k = 0; k < 3; k++) l[k] = samples.toward(i, k);
+        brdf(ns, l, term);
+        double falloff = samples.falloff(i);
+        out[0] = term[0] * samples.power(i, 0) * falloff;
+        out[1] = term[1] * samples.power(i, 1) * falloff;
+        out[2] = term[2] * samples.power(i, 2) * falloff;
     }
 
     /**

@@ -20,6 +20,7 @@ final class Shadows {
     private double[] light = new double[0], tMax = light;
     private final RayColumns ray = new RayColumns();
     private boolean[] blocked = new boolean[0];
+    private final double[] rgb = new double[3];
     private final OctantPackets packets;
 
     Shadows(PacketQuery query, int slots) {
@@ -46,13 +47,14 @@ final class Shadows {
         Arrays.fill(state, i * slots, (i + 1) * slots, NONE);
     }
 
-    /** Keeps point {@code i}'s light samples, each in its slot, with their shadow rays. */
-    void keep(int i, LightSamples samples) {
+    /** Keeps point {@code i}'s light samples, each in its slot with the light {@code shader} says it brings, with their shadow rays. */
+    void keep(int i, LightSamples samples, Shader shader) {
         for (int j = 0, n = samples.size(); j < n; j++) {
             int e = i * slots + samples.slot(j);
             boolean shadowed = samples.shadowed(j);
             state[e] = shadowed ? SHADOWED : LIGHT;
-            for (int c = 0; c < 3; c++) light[3 * e + c] = samples.light(j, c);
+            shader.reflected(samples, j, rgb);
+            System.arraycopy(rgb, 0, light, 3 * e, 3);
             if (shadowed) {
                 samples.copyShadowRay(j, ray, e);
                 tMax[e] = samples.end(j);

@@ -6,8 +6,8 @@ import org.kdtree.scene.Scene;
 
 /**
  * One thread's ray tracer: the recursive tracer ({@link WhittedTracer}) one pixel at a time, and,
- * when given a packet query that traces a packet's rays together ({@link
- * PacketQuery#tracesTogether}: the BVH's), the block tracer ({@link BlockTracer}) 8 x 8 pixels at
+ * when given a packet query that traces a packet's rays together and repays it in renders ({@link
+ * PacketQuery#repaysBlocks}: the BVH's), the block tracer ({@link BlockTracer}) 8 x 8 pixels at
  * a time, their rays in packets. Both follow the records of one {@link Shader}, so a pixel's
  * colour and rays are the same, bit for bit, whichever traces it. Tracing allocates nothing.
  */
@@ -57,10 +57,12 @@ final class Tracer {
         Shader shader = new Shader(scene, plan);
         pixels = new WhittedTracer(scene, shader, plan.maxDepth(), query, counts);
         boolean together = packets != null && packets.tracesTogether(), fits = shader.slots() <= MAX_SLOTS;
-        blocks = together && fits ? new BlockTracer(scene, shader, packets, pixels, counts, shadowBudget) : null;
+        boolean repaid = together && packets.repaysBlocks();
+        blocks = repaid && fits ? new BlockTracer(scene, shader, packets, pixels, counts, shadowBudget) : null;
         describe = blocks != null ? "blocks of 8 x 8 pixels, breadth first, their rays in packets through the packet loop"
                 : "the recursive tracer, one pixel at a time, each ray through the single-ray loop" + (packets == null ? ""
                 : !together ? " (the structure's packets would trace each ray alone)"
+                : !repaid ? " (the structure's packet loop is slower in renders than its single rays)"
                 : " (more than " + MAX_SLOTS + " light samples per point for the block tracer)");
     }
 

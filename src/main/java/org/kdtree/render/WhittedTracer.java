@@ -25,7 +25,7 @@ final class WhittedTracer {
     private final PixelSampler sampler;
     private final Ray ray = new Ray(3);
     private final Hit hit = new Hit();
-    private final double[] eye, cameraDir = new double[3], light = new double[3];
+    private final double[] eye, cameraDir = new double[3], light = new double[3], sample = new double[3];
     /** Per depth of the ray tree: the records of its hit and its colour, kept while the rays below it are traced. */
     private final Shading[] shading;
     private final double[][] colour;
@@ -104,14 +104,18 @@ final class WhittedTracer {
         return c;
     }
 
-    /** Sums into {@link #light}, from 0 in the samples' order, the light of the samples whose shadow rays reach the light. */
+    /**
+     * Sums into {@link #light}, from 0 in the samples' order, the light of the samples whose shadow
+     * rays reach the light: the shader's BRDF is evaluated for those only.
+     */
     private void directLight(LightSamples samples) {
         double l0 = 0, l1 = 0, l2 = 0;
         for (int i = 0, n = samples.size(); i < n; i++) {
             if (samples.shadowed(i) && blocked(samples, i)) continue;
-            l0 = l0 + samples.light(i, 0);
-            l1 = l1 + samples.light(i, 1);
-            l2 = l2 + samples.light(i, 2);
+            shader.reflected(samples, i, sample);
+            l0 = l0 + sample[0];
+            l1 = l1 + sample[1];
+            l2 = l2 + sample[2];
         }
         light[0] = l0;
         light[1] = l1;

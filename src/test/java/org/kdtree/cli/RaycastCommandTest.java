@@ -140,7 +140,7 @@ class RaycastCommandTest {
         assertThat(kd.code()).as(kd.err()).isZero();
         assertThat(kd.err()).contains("# structure: kd-tree (sah)")
                 .contains("# loops: rays not of an image (set R) alone, through the single-ray loop; an image's rays (set P) in 8 x 8 packets, "
-                        + "each ray alone through the single-ray loop (no packet loop)")
+                        + "through the packet loop")
                 .contains("# path: ");
         Run bvh = run("raycast", obj.toString(), "--runs", "1", "--warmup", "0", "-b", "bvh");
         assertThat(bvh.code()).as(bvh.err()).isZero();

@@ -36,7 +36,7 @@ class RenderCommandTest {
         assertThat(kd.code()).as(kd.err()).isZero();
         assertThat(kd.err()).contains("# structure: kd-tree (sah)")
                 .contains("# tracer: the recursive tracer, one pixel at a time, each ray through the single-ray loop "
-                        + "(the structure's packets would trace each ray alone)")
+                        + "(the structure's packet loop is slower in renders than its single rays)")
                 .contains("# path: ");
         CliRun bvh = run("render", "scenes/cornell-box.json", "-o", dir.resolve("b.png").toString(), "--spp", "1", "--width", "16", "--height", "16",
                 "-b", "bvh");

@@ -16,8 +16,7 @@ import org.kdtree.spec.Builders;
 
 /**
  * Both structures are traced by the same kind of loop: given the structure, an image's rays (set
- * P) go in packets through its packet query (the kd-tree's each ray alone, and named so), other
- * sets one ray at a time; the checksums are brute force's either way, and those of single rays.
+ * P) go in packets through its packet loop, other sets one ray at a time; the checksums are brute force's either way, and those of single rays.
  */
 class RayBatchTest {
     @Test void everyStructureTracesAnImageInPacketsWithBruteForcesChecksum() {
@@ -29,8 +28,7 @@ class RayBatchTest {
                 assertThat(packets.trace(p)).as(s.kind() + " P in packets").isEqualTo(wantP);
                 assertThat(single.trace(p)).as(s.kind() + " P one ray at a time").isEqualTo(wantP);
                 assertThat(packets.trace(r)).as(s.kind() + " R").isEqualTo(wantR);
-                assertThat(packets.describeLoops()).contains("(set P) in 8 x 8 packets")
-                        .endsWith(s.kind().equals("bvh") ? "through the packet loop" : "each ray alone through the single-ray loop (no packet loop)");
+                assertThat(packets.describeLoops()).contains("(set P) in 8 x 8 packets").endsWith("through the packet loop");
                 assertThat(single.describeLoops()).isEqualTo("every ray alone, through the single-ray loop");
             }
         }

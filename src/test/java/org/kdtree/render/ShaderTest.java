@@ -34,8 +34,11 @@ class ShaderTest {
                 """.formatted(floor, LIGHTS));
     }
 
+    /** The shader of the last {@link #shadeDown}. */
+    private Shader shader;
+
     /** Shades the hit of the ray from (0.5, 2, 0.25) straight down, at {@code point} of its ray tree. */
-    private static Shading shadeDown(Scene s, long point) {
+    private Shading shadeDown(Scene s, long point) {
         Ray ray = new Ray(3).set(0.5, 2, 0.25, 0, -1, 0);
         Hit hit = new Hit();
         boolean found = new BruteForce(new TriangleIntersector(s.mesh())).closestHit(ray, 0, Double.POSITIVE_INFINITY, hit);
@@ -43,8 +46,16 @@ class ShaderTest {
         PixelSampler sampler = new PixelSampler(s.seed());
         sampler.startSample(0, 0, 0);
         Shading out = new Shading(new LightSamples());
-        new Shader(s, new EffectPlan(s)).shade(true, hit, new double[] {0, -1, 0}, point, 1, sampler, out);
+        shader = new Shader(s, new EffectPlan(s));
+        shader.shade(true, hit, new double[] {0, -1, 0}, point, 1, sampler, out);
         return out;
+    }
+
+    /** {@return channel {@code c} of the light sample {@code i} of the last {@link #shadeDown} brings to the eye} */
+    private double light(LightSamples l, int i, int c) {
+        double[] rgb = new double[3];
+        shader.reflected(l, i, rgb);
+        return rgb[c];
     }
 
     @Test void aDiffusePointGetsItsLightSamplesWithTheirShadowRaysAndSendsNothingOn() throws Exception {
@@ -58,7 +69,7 @@ class ShaderTest {
 
         // The point light: Lambert's cosine over the squared distance, times its power; the ray stops just short of it.
         double dx = -0.5, dy = 3, dz = -0.25, d2 = dx * dx + dy * dy + dz * dz, cos = dy / Math.sqrt(d2);
-        for (int c = 0; c < 3; c++) assertThat(l.light(0, c)).isCloseTo(0.5 * cos * 5 / d2, within(1e-15));
+        for (int c = 0; c < 3; c++) assertThat(light(l, 0, c)).isCloseTo(0.5 * cos * 5 / d2, within(1e-15));
         Ray shadow = l.shadowRay(0, new Ray(3));
         assertThat(shadow.origin(1)).as("just above the floor").isPositive().isLessThan(1e-6);
         assertThat(shadow.origin(0) + shadow.direction(0)).isCloseTo(0, within(1e-12));
@@ -66,7 +77,9 @@ class ShaderTest {
         assertThat(l.end(0)).isEqualTo(Shader.SHADOW_END).isLessThan(1);
 
         // The directional light from above: no falloff, its ray without end straight up.
-        for (int c = 0; c < 3; c++) assertThat(l.light(1, c)).isEqualTo(0.5 * 0.5);
+        assertThat(l.toward(1, 0) == 0 && l.toward(1, 1) == 1 && l.toward(1, 2) == 0).as("its direction, straight up").isTrue();
+        assertThat(l.falloff(1)).isEqualTo(1);
+        for (int c = 0; c < 3; c++) assertThat(light(l, 1, c)).isEqualTo(0.5 * 0.5);
         shadow = l.shadowRay(1, shadow);
         assertThat(shadow.direction(0) == 0 && shadow.direction(1) == 1 && shadow.direction(2) == 0).as("straight up").isTrue();
         assertThat(l.end(1)).isEqualTo(Double.POSITIVE_INFINITY);
@@ -78,7 +91,7 @@ class ShaderTest {
             assertThat(qy).isCloseTo(3, within(1e-12));
             assertThat(Math.abs(qx)).isLessThanOrEqualTo(0.5 + 1e-12);
             assertThat(Math.abs(qz)).isLessThanOrEqualTo(0.5 + 1e-12);
-            assertThat(l.light(i, 0)).isPositive().isLessThan(0.25 * 0.5 / (3 * 3 - 1e-9));
+            assertThat(light(l, i, 0)).isPositive().isLessThan(0.25 * 0.5 / (3 * 3 - 1e-9));
         }
         assertThat(out.reflection.followed).isFalse();
         assertThat(out.refraction.followed).isFalse();
@@ -115,7 +128,7 @@ class ShaderTest {
     @Test void aMissGivesTheBackgroundAndNothingElse() throws Exception {
         Scene s = scene("{\"type\": \"diffuse\"}");
         Shading out = new Shading(new LightSamples());
-        out.lights.add(0, 1, 1, 1);                                                     // what the last hit left
+        out.lights.add(0, new double[] {0, 1, 0}, new double[] {1, 1, 1}, 1);                                                     // what the last hit left
         out.reflection.followed = true;
         PixelSampler sampler = new PixelSampler(s.seed());
         sampler.startSample(0, 0, 0);

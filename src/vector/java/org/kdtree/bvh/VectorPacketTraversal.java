@@ -5,6 +5,7 @@ import jdk.incubator.vector.VectorMask;
 import jdk.incubator.vector.VectorOperators;
 import jdk.incubator.vector.VectorSpecies;
 import org.kdtree.accel.Hit;
+import org.kdtree.accel.OctantSplit;
 import org.kdtree.accel.RayPacket;
 import org.kdtree.accel.RayQuery;
 import org.kdtree.accel.TriangleIntersector;

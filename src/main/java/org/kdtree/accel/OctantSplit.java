@@ -1,20 +1,24 @@
-package org.kdtree.bvh;
+package org.kdtree.accel;
 
-import org.kdtree.accel.Hit;
-import org.kdtree.accel.RayPacket;
-import org.kdtree.accel.RayQuery;
 import org.kdtree.geom.Ray;
 
 /**
  * A packet whose rays' directions fall in several octants (a camera tile across an axis) traced
  * as one packet per octant: the packet loops need one sign per axis. Rays with a zero or
  * non-finite direction component go one at a time. Each ray's answer is its single-ray answer
- * either way; the split only lets more rays share node reads (measured: set P on the bunny 1.05 x
- * on the vector path). Allocation-free; not thread safe: one per packet traversal.
+ * either way; the split only lets more rays share node reads (measured for the BVH: set P on the
+ * bunny 1.05 x on the vector path). Shared by both structures' packet loops. Allocation-free; not
+ * thread safe: one per packet traversal.
  */
-final class OctantSplit {
+public final class OctantSplit {
     /** Traces a packet of one octant, as a packet or one ray at a time. */
-    interface Packets {
+    public interface Packets {
+        /**
+         * Traces a packet whose rays share one octant of directions.
+         *
+         * @param p   the rays; receives their answers
+         * @param any whether to answer any hit
+         */
         void trace(RayPacket p, boolean any);
     }
 
@@ -25,7 +29,11 @@ final class OctantSplit {
     private final Ray ray = new Ray(3);
     private final Hit hit = new Hit();
 
-    OctantSplit(Packets packets, RayQuery single) {
+    /**
+     * @param packets traces each octant's packet
+     * @param single  traces the rays no octant holds
+     */
+    public OctantSplit(Packets packets, RayQuery single) {
         this.packets = packets;
         this.single = single;
     }
@@ -36,7 +44,7 @@ final class OctantSplit {
      * @param p   the rays, of any directions
      * @param any whether to answer any hit
      */
-    void trace(RayPacket p, boolean any) {
+    public void trace(RayPacket p, boolean any) {
         int n = p.size();
         long done = 0;
         for (int octant = 0; octant < 8; octant++) {
