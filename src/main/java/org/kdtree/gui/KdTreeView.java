@@ -43,7 +43,7 @@ record KdTreeView(KdTree tree, BitSet pastMinimum) implements Built {
     @Override public boolean testsBoxes() { return false; }
     @Override public boolean isLeaf(int node) { return tree.isLeaf(node); }
     @Override public Box[] regions() { return StepperVoxels.of(tree); }
-    @Override public TreeNodeView.Nodes treeNodes() { return new KdTreeModel(tree); }
+    @Override public TreeNodeView.Nodes treeNodes() { return new KdTreeModel(tree, pastMinimum); }
 
     @Override public String nodeText(int node) {
         if (tree.isLeaf(node)) return Built.leafText(node, tree.leafSize(node));

@@ -70,10 +70,14 @@ class LookaheadDrawingTest {
         assertThat(coloured).as("points of the marked split in its colour, of %d (dashes and gaps)", along).isBetween(along / 3, along - 5);
         assertThat(count(img, 0, H - 30, 40, H)).as("the legend's sample line").isPositive();
         assertThat(view.nodeText(node)).contains(KdTreeView.PAST_MINIMUM);
+        assertThat(view.treeNodes().pathTo(node).getLastPathComponent().toString()).as("the tree view's line").contains(KdTreeView.PAST_MINIMUM);
 
         KdTreeView none = KdTreeView.of(SAH.create().build(scene), SAH);
         assertThat(count(paint(none, scene, v), 0, 0, W, H)).as("pixels of the colour without a lookahead").isZero();
-        for (int n = 0; n < none.tree().nodeCount(); n++) assertThat(none.nodeText(n)).doesNotContain(KdTreeView.PAST_MINIMUM);
+        for (int n = 0; n < none.tree().nodeCount(); n++) {
+            assertThat(none.nodeText(n)).doesNotContain(KdTreeView.PAST_MINIMUM);
+            assertThat(none.treeNodes().pathTo(n).getLastPathComponent().toString()).doesNotContain(KdTreeView.PAST_MINIMUM);
+        }
     }
 
     private static BufferedImage paint(KdTreeView view, Scene2D scene, ViewTransform v) {

@@ -25,6 +25,10 @@ public final class Screenshots {
             screen(out, args[2], args.length > 3 && args[3].equals("bvh"));
             return;
         }
+        if (args.length > 1 && args[1].equals("lookahead")) {
+            lookahead(out);
+            return;
+        }
         Workbench[] w = new Workbench[1];
         SwingUtilities.invokeAndWait(() -> {
             w[0] = new Workbench();
@@ -165,6 +169,30 @@ public final class Screenshots {
         java.awt.Rectangle all = new java.awt.Rectangle(java.awt.Toolkit.getDefaultToolkit().getScreenSize());
         java.awt.image.BufferedImage img = new java.awt.Robot().createScreenCapture(all);
         javax.imageio.ImageIO.write(img, "png", out.resolve("workbench-" + name + (bvh ? "-bvh" : "") + ".png").toFile());
+        on(w[0]::dispose);
+        System.exit(0);
+    }
+
+    /**
+     * The split a lookahead kept past a local minimum, dashed: the long thin object across a field
+     * of small ones under the SAH with a lookahead of 1, nothing selected (a selection's outline
+     * would cover the dashes) ({@code lookahead-long-thin.png}).
+     */
+    private static void lookahead(Path out) throws Exception {
+        Workbench[] w = new Workbench[1];
+        SwingUtilities.invokeAndWait(() -> {
+            w[0] = new Workbench();
+            w[0].setSize(1280, 880);
+            w[0].setLocation(0, 0);
+            w[0].setVisible(true);
+        });
+        WorkbenchModel m = w[0].model();
+        on(() -> {
+            w[0].scenes().selectBuiltin(3);
+            m.setSettings(m.settings().forBuilder("sah").with(org.kdtree.kdtree.SahSettings.LOOKAHEAD, 1));
+            m.selectNode(-1);
+        });
+        shot(out, "lookahead-long-thin.png");
         on(w[0]::dispose);
         System.exit(0);
     }
