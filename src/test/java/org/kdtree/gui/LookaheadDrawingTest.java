@@ -44,6 +44,19 @@ class LookaheadDrawingTest {
         assertThat(marked(m)).as("the talk's figures, where a lookahead changes nothing").isZero();
     }
 
+    @Test void aSavedTreeOpenedAgainShowsItsMarks(@org.junit.jupiter.api.io.TempDir java.nio.file.Path dir) throws Exception {
+        WorkbenchModel m = new WorkbenchModel();
+        m.setScene("long thin", longThin());
+        m.setSettings(SAH.with(SahSettings.LOOKAHEAD, 1));
+        java.nio.file.Path file = dir.resolve("long-thin.kdtree");
+        m.saveTree(file);
+        m.setSettings(SAH);
+        assertThat(marked(m)).isZero();
+        m.loadTree(file);
+        assertThat(m.loadedFrom()).isEqualTo(file);
+        assertThat(marked(m)).as("the saved tree's lookahead split").isEqualTo(1);
+    }
+
     private static int marked(WorkbenchModel m) {
         return ((KdTreeView) m.built()).pastMinimum().cardinality();
     }
