@@ -29,14 +29,7 @@ public final class Screenshots {
             lookahead(out);
             return;
         }
-        Workbench[] w = new Workbench[1];
-        SwingUtilities.invokeAndWait(() -> {
-            w[0] = new Workbench();
-            w[0].setSize(1280, 880);
-            w[0].setLocation(0, 0);
-            w[0].setVisible(true);
-        });
-        Workbench b = w[0];
+        Workbench b = window();
         WorkbenchModel m = b.model();
         on(() -> m.selectNode(TreePainter.leafAt(m.tree(), 3.2, 6.5)));
         shot(out, "build-2d.png");
@@ -179,6 +172,20 @@ public final class Screenshots {
      * would cover the dashes) ({@code lookahead-long-thin.png}).
      */
     private static void lookahead(Path out) throws Exception {
+        Workbench b = window();
+        WorkbenchModel m = b.model();
+        on(() -> {
+            b.scenes().selectBuiltin(3);
+            m.setSettings(m.settings().forBuilder("sah").with(org.kdtree.kdtree.SahSettings.LOOKAHEAD, 1));
+            m.selectNode(-1);
+        });
+        shot(out, "lookahead-long-thin.png");
+        on(b::dispose);
+        System.exit(0);
+    }
+
+    /** {@return the workbench's window at 1280 x 880 in the screen's upper left corner, shown} */
+    private static Workbench window() throws Exception {
         Workbench[] w = new Workbench[1];
         SwingUtilities.invokeAndWait(() -> {
             w[0] = new Workbench();
@@ -186,15 +193,7 @@ public final class Screenshots {
             w[0].setLocation(0, 0);
             w[0].setVisible(true);
         });
-        WorkbenchModel m = w[0].model();
-        on(() -> {
-            w[0].scenes().selectBuiltin(3);
-            m.setSettings(m.settings().forBuilder("sah").with(org.kdtree.kdtree.SahSettings.LOOKAHEAD, 1));
-            m.selectNode(-1);
-        });
-        shot(out, "lookahead-long-thin.png");
-        on(w[0]::dispose);
-        System.exit(0);
+        return w[0];
     }
 
     private static void on(Runnable r) throws Exception {
