@@ -7,6 +7,7 @@ import java.awt.image.BufferedImage;
 import java.util.BitSet;
 import java.util.List;
 import org.junit.jupiter.api.Test;
+import org.kdtree.accel.SharedSettings;
 import org.kdtree.geom.Box;
 import org.kdtree.io.BundledScenes;
 import org.kdtree.kdtree.KdTree;
@@ -19,7 +20,8 @@ import org.kdtree.spec.BuilderSpec;
  * The splits a lookahead kept past a local minimum, as the workbench shows them: marked in the
  * model's view of the tree, dashed in their own colour on the canvas with a legend, named so in
  * the tree view; on the long thin object across a field of small ones, where a lookahead of 1
- * keeps one such split (on the talk's figures it changes nothing).
+ * keeps one such split (on the talk's figures it keeps one under Kt 30 and Ki 80, none under the
+ * default 15 and 20).
  */
 class LookaheadDrawingTest {
     private static final int W = 700, H = 700;
@@ -41,7 +43,9 @@ class LookaheadDrawingTest {
         assertThat(marked(m)).as("a median tree, whose splits do not ask the SAH: none marked").isZero();
         m.setScene("talk", BuiltinScenes.talkFigures());
         m.setSettings(SAH.with(SahSettings.LOOKAHEAD, 2));
-        assertThat(marked(m)).as("the talk's figures, where a lookahead changes nothing").isZero();
+        assertThat(marked(m)).as("the talk's figures under Kt 15 and Ki 20, where a lookahead changes nothing").isZero();
+        m.setSettings(m.settings().with(SharedSettings.KT, 30.0).with(SharedSettings.KI, 80.0));
+        assertThat(marked(m)).as("the talk's figures under Kt 30 and Ki 80").isEqualTo(1);
     }
 
     @Test void aSavedTreeOpenedAgainShowsItsMarks(@org.junit.jupiter.api.io.TempDir java.nio.file.Path dir) throws Exception {

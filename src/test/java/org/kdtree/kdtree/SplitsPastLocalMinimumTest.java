@@ -51,19 +51,24 @@ class SplitsPastLocalMinimumTest {
     }
 
     /**
-     * The workbench's bundled 2-D scenes: on the talk's figures a lookahead changes nothing (every
-     * leaf is already a local minimum that stays one), so none is marked; on the long thin object
-     * across a field of small ones a lookahead of 1 keeps one split past a local minimum, and its
-     * voxel is a leaf of the tree built without one.
+     * The workbench's bundled 2-D scenes: on the talk's figures under Kt 15 and Ki 20 a lookahead
+     * changes nothing (every trial is taken back), so none is marked; under Kt 30 and Ki 80, and on
+     * the long thin object across a field of small ones, a lookahead of 1 keeps one split past a
+     * local minimum, and its voxel is a leaf of the tree built without one.
      */
     @Test void onTheWorkbenchScenesTheMarkedSplitIsALeafWithoutLookahead() {
         Primitives talk = BundledScenes.read2D("talk-figures.scene2d");
         for (int n = 0; n <= 3; n++)
             assertThat(SplitsPastLocalMinimum.of(new SahBuilder().lookahead(n).build(talk), LAMBDA).cardinality()).as("talk, lookahead %d", n).isZero();
-        Primitives longThin = BundledScenes.read2D("long-thin.scene2d");
-        KdTree none = new SahBuilder().build(longThin), one = new SahBuilder().lookahead(1).build(longThin);
+        assertOneMarkedSplitThatWasALeaf(talk, () -> new SahBuilder().costs(30, 80));
+        assertOneMarkedSplitThatWasALeaf(BundledScenes.read2D("long-thin.scene2d"), SahBuilder::new);
+    }
+
+    private static void assertOneMarkedSplitThatWasALeaf(Primitives scene, java.util.function.Supplier<SahBuilder> builder) {
+        KdTree none = builder.get().build(scene), one = builder.get().lookahead(1).build(scene);
         BitSet past = SplitsPastLocalMinimum.of(one, LAMBDA);
-        assertThat(past.cardinality()).as("long thin, lookahead 1").isEqualTo(1);
+        assertThat(past.cardinality()).as("lookahead 1").isEqualTo(1);
+        assertThat(SplitsPastLocalMinimum.of(none, LAMBDA).cardinality()).as("lookahead 0").isZero();
         assertThat(one.stats().expectedCost()).isLessThan(none.stats().expectedCost());
         List<Box> leavesWithout = voxels(none, false);
         for (Box v : voxels(one, true)) if (past.get(index(one, v))) assertThat(leavesWithout).as("the marked split's voxel").contains(v);

@@ -167,9 +167,10 @@ public final class Screenshots {
     }
 
     /**
-     * The split a lookahead kept past a local minimum, dashed: the long thin object across a field
-     * of small ones under the SAH with a lookahead of 1, nothing selected (a selection's outline
-     * would cover the dashes) ({@code lookahead-long-thin.png}).
+     * The split a lookahead kept past a local minimum, dashed, under the SAH with a lookahead of 1,
+     * nothing selected (a selection's outline would cover the dashes): the long thin object across
+     * a field of small ones ({@code lookahead-long-thin.png}), and the talk's figures with Kt 30
+     * and Ki 80, under which it keeps one (under 15 and 20 it keeps none) ({@code lookahead-talk.png}).
      */
     private static void lookahead(Path out) throws Exception {
         Workbench b = window();
@@ -180,6 +181,11 @@ public final class Screenshots {
             m.selectNode(-1);
         });
         shot(out, "lookahead-long-thin.png");
+        on(() -> {
+            b.scenes().selectBuiltin(0);
+            m.setSettings(m.settings().with(org.kdtree.accel.SharedSettings.KT, 30.0).with(org.kdtree.accel.SharedSettings.KI, 80.0));
+        });
+        shot(out, "lookahead-talk.png");
         on(b::dispose);
         System.exit(0);
     }
