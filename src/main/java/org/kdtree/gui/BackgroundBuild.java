@@ -99,7 +99,7 @@ final class BackgroundBuild {
     private Outcome build(BuilderSpec spec, Primitives primitives) {
         long t0 = System.nanoTime();
         try {
-            return new Outcome(Built.of(spec.build(primitives, supervisor)), null, (System.nanoTime() - t0) / 1e6);
+            return new Outcome(Built.of(spec.build(primitives, supervisor), spec), null, (System.nanoTime() - t0) / 1e6);
         } catch (BuilderFault f) {
             return new Outcome(null, f, (System.nanoTime() - t0) / 1e6);
         } catch (CancellationException replaced) {

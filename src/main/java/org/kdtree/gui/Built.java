@@ -7,6 +7,7 @@ import org.kdtree.bvh.Bvh;
 import org.kdtree.geom.Box;
 import org.kdtree.kdtree.KdTree;
 import org.kdtree.shape.Scene2D;
+import org.kdtree.spec.BuilderSpec;
 
 /**
  * What one build of the workbench made, as the workbench shows it: one view per structure
@@ -17,13 +18,15 @@ import org.kdtree.shape.Scene2D;
  */
 interface Built {
     /**
-     * {@return the view of {@code structure}}: the one place where the workbench picks a view by structure
+     * {@return the view of {@code structure}, built by {@code spec}}: the one place where the
+     * workbench picks a view by structure (a kd-tree's view marks the splits its lookahead kept)
      *
      * @param structure a kd-tree or a bounding volume hierarchy
+     * @param spec the builder and settings it was built with
      * @throws IllegalArgumentException for a structure the workbench has no view of
      */
-    static Built of(AccelerationStructure structure) {
-        if (structure instanceof KdTree t) return new KdTreeView(t);
+    static Built of(AccelerationStructure structure, BuilderSpec spec) {
+        if (structure instanceof KdTree t) return KdTreeView.of(t, spec);
         if (structure instanceof Bvh b) return new BvhView(b);
         throw new IllegalArgumentException("the workbench cannot show a " + structure.kind());
     }

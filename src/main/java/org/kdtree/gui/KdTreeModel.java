@@ -1,6 +1,7 @@
 package org.kdtree.gui;
 
 import java.util.ArrayList;
+import java.util.BitSet;
 import java.util.List;
 import java.util.Locale;
 import javax.swing.event.TreeModelListener;
@@ -9,11 +10,12 @@ import org.kdtree.kdtree.KdTree;
 
 /** A Swing {@link TreeModel} read straight from a {@link KdTree}'s arrays: no copy, so big trees open at once. */
 final class KdTreeModel implements TreeNodeView.Nodes {
-    /** One node, shown as its split plane or its leaf contents. */
-    public record NodeRef(KdTree tree, int node) {
+    /** One node, shown as its split plane (and whether a lookahead kept it past a local minimum) or its leaf contents. */
+    public record NodeRef(KdTree tree, BitSet pastMinimum, int node) {
         @Override public String toString() {
             if (!tree.isLeaf(node))
-                return String.format(Locale.ROOT, "#%d  %s = %.3f", node, tree.axis(node) == 0 ? "x" : "y", tree.split(node));
+                return String.format(Locale.ROOT, "#%d  %s = %.3f%s", node, tree.axis(node) == 0 ? "x" : "y", tree.split(node),
+                        pastMinimum.get(node) ? "  " + KdTreeView.PAST_MINIMUM : "");
             int n = tree.leafSize(node);
             if (n == 0) return "#" + node + "  empty leaf";
             StringBuilder b = new StringBuilder("#" + node + "  leaf: ");
@@ -23,23 +25,26 @@ final class KdTreeModel implements TreeNodeView.Nodes {
     }
 
     private final KdTree tree;
+    private final BitSet pastMinimum;
 
     /**
      * A Swing tree model over the nodes of {@code tree}.
      *
      * @param tree the kd-tree
+     * @param pastMinimum the interior nodes whose splits a lookahead kept past a local minimum ({@link KdTreeView#pastMinimum})
      */
-    public KdTreeModel(KdTree tree) {
+    public KdTreeModel(KdTree tree, BitSet pastMinimum) {
         this.tree = tree;
+        this.pastMinimum = pastMinimum;
     }
 
-    @Override public Object getRoot() { return new NodeRef(tree, 0); }
+    @Override public Object getRoot() { return new NodeRef(tree, pastMinimum, 0); }
 
     @Override public int node(Object value) { return ((NodeRef) value).node(); }
 
     @Override public Object getChild(Object parent, int index) {
         int n = ((NodeRef) parent).node();
-        return new NodeRef(tree, index == 0 ? tree.leftChild(n) : tree.rightChild(n));
+        return new NodeRef(tree, pastMinimum, index == 0 ? tree.leftChild(n) : tree.rightChild(n));
     }
 
     @Override public int getChildCount(Object parent) { return tree.isLeaf(((NodeRef) parent).node()) ? 0 : 2; }
@@ -56,10 +61,10 @@ final class KdTreeModel implements TreeNodeView.Nodes {
     @Override public TreePath pathTo(int node) {
         List<Object> path = new ArrayList<>();
         int n = 0;
-        path.add(new NodeRef(tree, 0));
+        path.add(new NodeRef(tree, pastMinimum, 0));
         while (n != node && !tree.isLeaf(n)) {
             n = node < tree.rightChild(n) ? tree.leftChild(n) : tree.rightChild(n);
-            path.add(new NodeRef(tree, n));
+            path.add(new NodeRef(tree, pastMinimum, n));
         }
         return new TreePath(path.toArray());
     }

@@ -13,6 +13,11 @@ final class Palette {
     public static final Color EMPTY_VOXEL = new Color(0xD8, 0xE4, 0xD0);
     /** Split lines, clipped to the voxel they cut. */
     public static final Color SPLIT_LINE = new Color(0x20, 0x20, 0x20);
+    /**
+     * Split lines a lookahead kept past a local minimum (dashed): their own split does not beat
+     * the leaf, the subtree below them does ({@link org.kdtree.kdtree.SplitsPastLocalMinimum}).
+     */
+    public static final Color LOOKAHEAD_SPLIT = new Color(0xD8, 0x18, 0x68);
     /** The outline of the root voxel. */
     public static final Color ROOT_BOX = new Color(0x60, 0x60, 0x60);
     /** Object outlines. */

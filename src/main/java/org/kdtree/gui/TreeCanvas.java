@@ -44,7 +44,8 @@ final class TreeCanvas extends JComponent {
         this.model = model;
         setPreferredSize(new Dimension(720, 640));
         setFocusable(true);
-        setToolTipText("Scene and kd-tree (or bounding volume hierarchy): wheel zooms, right-drag pans, F fits; the leaf under the mouse is highlighted");
+        setToolTipText("Scene and kd-tree (or bounding volume hierarchy): wheel zooms, right-drag pans, F fits; the leaf under the mouse is highlighted; "
+                + "dashed pink split lines: " + KdTreeView.PAST_MINIMUM + ", their own split does not beat the leaf, the subtree below does");
         model.addListener(c -> repaint());
         Mouse m = new Mouse();
         addMouseListener(m);

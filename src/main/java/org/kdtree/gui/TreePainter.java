@@ -56,15 +56,35 @@ final class TreePainter {
      */
     public static void paint(Graphics2D g, int width, int height, Scene2D scene, KdTree tree, ViewTransform v,
                              Options o) {
+        paint(g, width, height, scene, tree, new BitSet(), v, o);
+    }
+
+    /**
+     * Paints as {@link #paint(Graphics2D, int, int, Scene2D, KdTree, ViewTransform, Options)} does, with the
+     * split lines of {@code pastMinimum} dashed in {@link Palette#LOOKAHEAD_SPLIT} and, if there are any, a
+     * legend saying what they are.
+     *
+     * @param g the graphics to paint into
+     * @param width the width in pixels
+     * @param height the height in pixels
+     * @param scene the 2-D scene
+     * @param tree the kd-tree over {@code scene}
+     * @param pastMinimum the interior nodes whose splits a lookahead kept past a local minimum
+     * @param v maps scene coordinates to pixels
+     * @param o what to draw besides scene and tree
+     */
+    public static void paint(Graphics2D g, int width, int height, Scene2D scene, KdTree tree, BitSet pastMinimum,
+                             ViewTransform v, Options o) {
         boolean aa = o.antialias() && scene.size() <= ANTIALIAS_LIMIT && tree.nodeCount() <= 4 * ANTIALIAS_LIMIT;
         g.setRenderingHint(RenderingHints.KEY_ANTIALIASING, aa ? RenderingHints.VALUE_ANTIALIAS_ON : RenderingHints.VALUE_ANTIALIAS_OFF);
         g.setColor(Palette.BACKGROUND);
         g.fillRect(0, 0, width, height);
         BitSet highlighted = new BitSet();
-        Path2D.Double[] splits = new Path2D.Double[(int) lineWidth(0) + 1];
-        Box selectedVoxel = paintVoxels(g, tree, v, o.selectedNode(), highlighted, splits);
+        Path2D.Double[] splits = new Path2D.Double[(int) lineWidth(0) + 1], past = new Path2D.Double[splits.length];
+        Box selectedVoxel = paintVoxels(g, tree, v, o.selectedNode(), highlighted, pastMinimum, splits, past);
         paintObjects(g, scene, v, highlighted, o.selectedShape());
-        paintSplits(g, splits);
+        paintSplits(g, splits, null);
+        paintSplits(g, past, Palette.LOOKAHEAD_SPLIT);
         Box root = tree.bounds();
         if (!root.isEmpty()) {
             g.setColor(Palette.ROOT_BOX);
@@ -76,6 +96,25 @@ final class TreePainter {
             g.setStroke(new BasicStroke(2f, BasicStroke.CAP_BUTT, BasicStroke.JOIN_MITER, 10, new float[] {6, 4}, 0));
             g.draw(rect(v, selectedVoxel));
         }
+        if (!pastMinimum.isEmpty()) paintLegend(g, height);
+    }
+
+    /** A dashed stroke of width {@code w}: a split kept past a local minimum. */
+    private static BasicStroke dashed(float w) {
+        return new BasicStroke(w, BasicStroke.CAP_BUTT, BasicStroke.JOIN_MITER, 10, new float[] {8, 5}, 0);
+    }
+
+    /** The legend of the dashed splits, at the canvas's lower left: a sample line and its words. */
+    private static void paintLegend(Graphics2D g, int height) {
+        int x = 8, y = height - 10, line = 28;
+        int textWidth = g.getFontMetrics().stringWidth(KdTreeView.PAST_MINIMUM);
+        g.setColor(new Color(255, 255, 255, 220));
+        g.fillRect(x - 4, y - 14, line + textWidth + 16, 20);
+        g.setColor(Palette.LOOKAHEAD_SPLIT);
+        g.setStroke(dashed(3f));
+        g.drawLine(x, y - 4, x + line, y - 4);
+        g.setColor(Palette.SPLIT_LINE);
+        g.drawString(KdTreeView.PAST_MINIMUM, x + line + 6, y);
     }
 
     /**
@@ -111,18 +150,21 @@ final class TreePainter {
 
     /**
      * One walk of the tree: shades empty leaves (integer rectangles, the fast path), finds the
-     * selected node, and collects the split lines, one path per line width, into {@code splits}.
-     * Returns the selected node's voxel (or null).
+     * selected node, and collects the split lines, one path per line width, into {@code splits}
+     * (those of {@code pastMinimum} into {@code past}). Returns the selected node's voxel (or null).
      */
     private static Box paintVoxels(Graphics2D g, KdTree tree, ViewTransform v, int selected, BitSet highlighted,
-                                   Path2D.Double[] splits) {
+                                   BitSet pastMinimum, Path2D.Double[] splits, Path2D.Double[] past) {
         Box[] found = new Box[1];
-        for (int i = 0; i < splits.length; i++) splits[i] = new Path2D.Double();
+        for (int i = 0; i < splits.length; i++) {
+            splits[i] = new Path2D.Double();
+            past[i] = new Path2D.Double();
+        }
         g.setColor(Palette.EMPTY_VOXEL);
         tree.walk(new TreeVisitor() {
             @Override public void interior(int node, int depth, Box voxel, int axis, double split) {
                 if (node == selected) found[0] = voxel.copy();
-                Path2D.Double p = splits[(int) lineWidth(depth)];
+                Path2D.Double p = (pastMinimum.get(node) ? past : splits)[(int) lineWidth(depth)];
                 if (axis == 0) {
                     p.moveTo(v.screenX(split), v.screenY(voxel.min(1)));
                     p.lineTo(v.screenX(split), v.screenY(voxel.max(1)));
@@ -235,11 +277,14 @@ final class TreePainter {
         return p;
     }
 
-    /** Draws the split lines collected by {@link #paintVoxels}, thickest (nearest the root) last. */
-    private static void paintSplits(Graphics2D g, Path2D.Double[] byWidth) {
-        g.setColor(Palette.SPLIT_LINE);
+    /**
+     * Draws the split lines collected by {@link #paintVoxels}, thickest (nearest the root) last:
+     * solid, or dashed in {@code dashedIn} if it is not null (2 px at the least, so that the dashes show).
+     */
+    private static void paintSplits(Graphics2D g, Path2D.Double[] byWidth, Color dashedIn) {
+        g.setColor(dashedIn == null ? Palette.SPLIT_LINE : dashedIn);
         for (int w = 1; w < byWidth.length; w++) {
-            g.setStroke(new BasicStroke(w, BasicStroke.CAP_BUTT, BasicStroke.JOIN_MITER));
+            g.setStroke(dashedIn == null ? new BasicStroke(w, BasicStroke.CAP_BUTT, BasicStroke.JOIN_MITER) : dashed(Math.max(w, 2)));
             g.draw(byWidth[w]);
         }
     }

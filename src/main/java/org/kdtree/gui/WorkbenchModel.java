@@ -224,7 +224,7 @@ final class WorkbenchModel {
         org.kdtree.treefile.SavedTree saved = org.kdtree.treefile.TreeFile.load(file, scene);
         double ms = (System.nanoTime() - t0) / 1e6;
         settings = saved.spec();
-        install(scene, saved.spec(), Built.of(saved.structure()), ms);
+        install(scene, saved.spec(), Built.of(saved.structure(), saved.spec()), ms);
         loadedFrom = file;
         fire(Change.TREE);
     }

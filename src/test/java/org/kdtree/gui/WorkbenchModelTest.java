@@ -134,7 +134,7 @@ class WorkbenchModelTest {
         WorkbenchModel m = new WorkbenchModel();
         m.setScene("t", Shapes.uniform(100, 1).shapes());
         var tree = m.tree();
-        KdTreeModel tm = new KdTreeModel(tree);
+        KdTreeModel tm = new KdTreeModel(tree, new java.util.BitSet());
         for (int n = 0; n < tree.nodeCount(); n++) {
             TreePath p = tm.pathTo(n);
             assertThat(((KdTreeModel.NodeRef) p.getLastPathComponent()).node()).isEqualTo(n);

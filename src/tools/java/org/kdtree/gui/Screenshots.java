@@ -25,14 +25,11 @@ public final class Screenshots {
             screen(out, args[2], args.length > 3 && args[3].equals("bvh"));
             return;
         }
-        Workbench[] w = new Workbench[1];
-        SwingUtilities.invokeAndWait(() -> {
-            w[0] = new Workbench();
-            w[0].setSize(1280, 880);
-            w[0].setLocation(0, 0);
-            w[0].setVisible(true);
-        });
-        Workbench b = w[0];
+        if (args.length > 1 && args[1].equals("lookahead")) {
+            lookahead(out);
+            return;
+        }
+        Workbench b = window();
         WorkbenchModel m = b.model();
         on(() -> m.selectNode(TreePainter.leafAt(m.tree(), 3.2, 6.5)));
         shot(out, "build-2d.png");
@@ -167,6 +164,42 @@ public final class Screenshots {
         javax.imageio.ImageIO.write(img, "png", out.resolve("workbench-" + name + (bvh ? "-bvh" : "") + ".png").toFile());
         on(w[0]::dispose);
         System.exit(0);
+    }
+
+    /**
+     * The split a lookahead kept past a local minimum, dashed, under the SAH with a lookahead of 1,
+     * nothing selected (a selection's outline would cover the dashes): the long thin object across
+     * a field of small ones ({@code lookahead-long-thin.png}), and the talk's figures with Kt 30
+     * and Ki 80, under which it keeps one (under 15 and 20 it keeps none) ({@code lookahead-talk.png}).
+     */
+    private static void lookahead(Path out) throws Exception {
+        Workbench b = window();
+        WorkbenchModel m = b.model();
+        on(() -> {
+            b.scenes().selectBuiltin(3);
+            m.setSettings(m.settings().forBuilder("sah").with(org.kdtree.kdtree.SahSettings.LOOKAHEAD, 1));
+            m.selectNode(-1);
+        });
+        shot(out, "lookahead-long-thin.png");
+        on(() -> {
+            b.scenes().selectBuiltin(0);
+            m.setSettings(m.settings().with(org.kdtree.accel.SharedSettings.KT, 30.0).with(org.kdtree.accel.SharedSettings.KI, 80.0));
+        });
+        shot(out, "lookahead-talk.png");
+        on(b::dispose);
+        System.exit(0);
+    }
+
+    /** {@return the workbench's window at 1280 x 880 in the screen's upper left corner, shown} */
+    private static Workbench window() throws Exception {
+        Workbench[] w = new Workbench[1];
+        SwingUtilities.invokeAndWait(() -> {
+            w[0] = new Workbench();
+            w[0].setSize(1280, 880);
+            w[0].setLocation(0, 0);
+            w[0].setVisible(true);
+        });
+        return w[0];
     }
 
     private static void on(Runnable r) throws Exception {
