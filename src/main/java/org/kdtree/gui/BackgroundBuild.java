@@ -67,7 +67,7 @@ final class BackgroundBuild {
     boolean start(BuilderSpec spec, Primitives primitives, boolean small, Consumer<Outcome> done) {
         boolean librarys = spec.librarys();
         long waitMillis = !small ? 0 : librarys ? LIBRARY_WAIT_MILLIS : PLUGIN_WAIT_MILLIS;
-        int mine = ++started;
+        int mine = next();
         if (pending != null) pending.cancel(true);
         Future<Outcome> job = thread.submit(() -> {
             Outcome o = build(spec, primitives);
@@ -107,10 +107,20 @@ final class BackgroundBuild {
         }
     }
 
-    /** Hands build {@code mine}'s outcome to {@code done}, once, unless a newer build was started. */
+    private synchronized int next() {
+        return ++started;
+    }
+
+    /**
+     * Hands build {@code mine}'s outcome to {@code done}, once, unless a newer build was started.
+     * Synchronized: the waiting thread and the event thread may both try (a caller off the event
+     * thread, as in tests), and only one of them may find it undelivered.
+     */
     private void deliver(int mine, Outcome o, Consumer<Outcome> done) {
-        if (mine != started || mine == delivered) return;
-        delivered = mine;
+        synchronized (this) {
+            if (mine != started || mine == delivered) return;
+            delivered = mine;
+        }
         done.accept(o);
     }
 }
