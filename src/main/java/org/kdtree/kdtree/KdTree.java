@@ -46,10 +46,13 @@ public final class KdTree implements AccelerationStructure {
     /** What it was built over; its ray tests are made from them once, on the first query. */
     private final Primitives primitives;
     private Intersector intersector;
-    /** A mesh's corners ({@link TriangleIntersector#corners}), read in place by the intersector; null for other primitives. */
-    private final double[] corners;
-    /** The tracing layout of a mesh's tree ({@link LeafCorners}): the corners per reference, in leaf order; else null. */
-    final double[] leafCorners;
+    /**
+     * A mesh's corners ({@link TriangleIntersector#corners}), made with the tree: its tracing layout,
+     * read in place by the intersector, {@link MeshTraversal} and {@link PacketTraversal}; null for
+     * other primitives. (A copy per reference in leaf order was measured: set R 0.92-0.95 x the
+     * speed, four times the memory: docs/traversal.md.)
+     */
+    final double[] corners;
     private TreeStats stats;
 
     KdTree(Primitives primitives, Box bounds, CostModel cost, String builderName, int[] nodes, int[] refs, int budgetLeaves) {
@@ -62,7 +65,6 @@ public final class KdTree implements AccelerationStructure {
         this.refs = refs;
         this.axisBits = Nodes.axisBits(bounds.dimension());
         corners = TriangleIntersector.cornersOf(primitives);
-        leafCorners = corners == null ? null : LeafCorners.of(corners, refs);
     }
 
     /**
@@ -238,10 +240,10 @@ public final class KdTree implements AccelerationStructure {
 
     /**
      * {@return bytes held by the arrays (12 per node, 4 per reference, plus the arrays' headers),
-     * and over a mesh its tracing layout's ({@link LeafCorners}: 72 per reference)}
+     * and over a mesh its tracing layout's (the triangles' corners: 72 per triangle)}
      */
     public long memoryBytes() {
-        return 2 * 16L + 4L * nodes.length + 4L * refs.length + (leafCorners == null ? 0 : LeafCorners.bytes(refs.length));
+        return 2 * 16L + 4L * nodes.length + 4L * refs.length + (corners == null ? 0 : 16 + 8L * corners.length);
     }
 
     /** {@return a line when the reference budget made leaves early ({@link #budgetLeaves()}), else none} */
@@ -264,7 +266,7 @@ public final class KdTree implements AccelerationStructure {
      * @throws IllegalArgumentException if it was not built over a 3-D triangle mesh
      */
     @Override public PacketQuery packetQuery() {
-        if (leafCorners == null || dimension() != 3)
+        if (corners == null || dimension() != 3)
             throw new IllegalArgumentException("packets are traced against a triangle mesh; this " + dimension() + "-D tree holds other primitives");
         return new PacketTraversal(this, query());
     }

@@ -9,8 +9,7 @@ import org.kdtree.geom.Ray;
  * The specialised 3-D path of {@link Traverser} for triangle meshes: the same algorithm and the
  * same robustness rules as the generic loop, on the flat arrays, with the ray in locals, the
  * per-ray shear of the watertight test computed once, and the triangle test written out over the
- * tree's tracing layout ({@link LeafCorners}: a leaf's triangles one after the other, no index
- * from a reference to its triangle). Not thread safe: owned by one traverser.
+ * tree's tracing layout (the mesh's corners, {@link KdTree#corners}, from a reference's primitive). Not thread safe: owned by one traverser.
  */
 final class MeshTraversal {
     /** A 3-D tree's {@link KdTree#axisBits()}, a constant the JIT folds into the node decoding. */
@@ -20,7 +19,7 @@ final class MeshTraversal {
     /** The tree's nodes, read with {@link Nodes}. */
     private final int[] nodes;
     private final int[] refs;
-    /** The corners per reference, in leaf order ({@link KdTree#leafCorners}). */
+    /** The mesh's corners, 9 per triangle ({@link KdTree#corners}). */
     private final double[] corners;
     /** The scene box: 3 minima, then 3 maxima ({@link #clip}'s form). */
     private final double[] scene;
@@ -34,7 +33,7 @@ final class MeshTraversal {
         if (tree.axisBits() != BITS) throw new IllegalArgumentException("a 3-D tree's axis field is " + BITS + " bits");
         nodes = tree.nodes;
         refs = tree.refs;
-        corners = tree.leafCorners;
+        corners = tree.corners;
         if (corners == null) throw new IllegalArgumentException("a tree over a triangle mesh has a tracing layout; this one holds other primitives");
         Box b = tree.bounds();
         scene = new double[] {b.min(0), b.min(1), b.min(2), b.max(0), b.max(1), b.max(2)};
@@ -145,7 +144,7 @@ final class MeshTraversal {
                 if (box[p] == stamp) continue;
                 box[p] = stamp;
                 // TriangleIntersector.test, written out: the JIT will not inline it (342 bytes of bytecode, above FreqInlineSize).
-                int q = 9 * r;
+                int q = 9 * p;
                 double az = c[q + kz] - okz, bz = c[q + 3 + kz] - okz, cz = c[q + 6 + kz] - okz;
                 double ax = c[q + kx] - okx - sx * az, ay = c[q + ky] - oky - sy * az;
                 double bx = c[q + 3 + kx] - okx - sx * bz, by = c[q + 3 + ky] - oky - sy * bz;

@@ -23,7 +23,7 @@ import org.kdtree.geom.Ray;
  * child with the rays that go there, each ray's interval cut at its own {@code tSplit}, all in one
  * pass over the rays. The loops over the rays run over the range from the first active ray to the last.</li>
  * <li>At a leaf every active ray tests the leaf's triangles ({@link #leaf}), from the tree's
- * tracing layout ({@link LeafCorners}).</li>
+ * tracing layout ({@link KdTree#corners}).</li>
  * <li>A saved child is taken up with those of its rays that still need it: not blocked (any hit),
  * and starting no farther than their closest hit so far, the single ray's test. The packet stops
  * when no saved child is left, or (any hit) when every ray is blocked.</li>
@@ -74,17 +74,17 @@ final class PacketTraversal implements PacketQuery {
     private final double[] stackMin, stackMax;
 
     /**
-     * @param tree   a tree over a triangle mesh (with its {@link KdTree#leafCorners})
+     * @param tree   a tree over a triangle mesh (with its {@link KdTree#corners})
      * @param single its single-ray query, for single rays and the rays no octant holds
      */
     PacketTraversal(KdTree tree, RayQuery single) {
-        if (tree.axisBits() != BITS || tree.leafCorners == null)
+        if (tree.axisBits() != BITS || tree.corners == null)
             throw new IllegalArgumentException("packets are traced against a triangle mesh; this " + tree.dimension() + "-D tree holds other primitives");
         this.single = single;
         this.split = new OctantSplit(this::trace, single);
         nodes = tree.nodes;
         refs = tree.refs;
-        corners = tree.leafCorners;
+        corners = tree.corners;
         Box b = tree.bounds();
         scene = new double[] {b.min(0), b.min(1), b.min(2), b.max(0), b.max(1), b.max(2)};
         int depth = tree.stats().maxDepth() + 2;
@@ -252,7 +252,7 @@ final class PacketTraversal implements PacketQuery {
             boolean found = false;
             for (int r = start, end = start + size; r < end; r++) {
                 // TriangleIntersector.test, written out as in MeshTraversal (the JIT will not inline it).
-                int q = 9 * r, pr = refs[r];
+                int pr = refs[r], q = 9 * pr;
                 double az = c[q + z] - oz, bz = c[q + 3 + z] - oz, cz = c[q + 6 + z] - oz;
                 double ax = c[q + x] - ox - shx * az, ay = c[q + y] - oy - shy * az;
                 double bx = c[q + 3 + x] - ox - shx * bz, by = c[q + 3 + y] - oy - shy * bz;
