@@ -1,16 +1,16 @@
 import java.nio.file.Files;
 import java.nio.file.Path;
-import java.util.ArrayList;
 import java.util.HashMap;
 import java.util.List;
 import java.util.Map;
+import org.kdtree.files.CsvFields;
 
 /**
  * Compares two grade-class tables (CSV) row by row, by jar file: every column from the student to
  * the cost ratios must agree (times, which vary from run to run, are left out). Prints each
  * difference; exits 1 if there is one.
  *
- * <p>{@code java src/bench/grade-class/SameGrades.java CLASS.csv ALONE.csv}: every row of ALONE
+ * <p>{@code java -cp target/kdtree.jar src/bench/grade-class/SameGrades.java CLASS.csv ALONE.csv}: every row of ALONE
  * (the jars graded one at a time) is looked up in CLASS (the whole class graded at once).
  */
 public class SameGrades {
@@ -39,30 +39,14 @@ public class SameGrades {
 
     static Map<String, Map<String, String>> rows(Path csv) throws Exception {
         List<String> lines = Files.readAllLines(csv);
-        List<String> header = fields(lines.get(0));
+        List<String> header = CsvFields.of(lines.get(0));
         Map<String, Map<String, String>> rows = new HashMap<>();
         for (String line : lines.subList(1, lines.size())) {
-            List<String> f = fields(line);
+            List<String> f = CsvFields.of(line);
             Map<String, String> row = new HashMap<>();
             for (int i = 0; i < header.size(); i++) row.put(header.get(i), i < f.size() ? f.get(i) : "");
             rows.put(row.get("file"), row);
         }
         return rows;
-    }
-
-    /** One CSV line's fields: quoted ones may hold commas and doubled quotes. */
-    static List<String> fields(String line) {
-        List<String> out = new ArrayList<>();
-        StringBuilder f = new StringBuilder();
-        boolean quoted = false;
-        for (int i = 0; i < line.length(); i++) {
-            char c = line.charAt(i);
-            if (quoted && c == '"' && i + 1 < line.length() && line.charAt(i + 1) == '"') { f.append('"'); i++; }
-            else if (c == '"') quoted = !quoted;
-            else if (c == ',' && !quoted) { out.add(f.toString()); f.setLength(0); }
-            else f.append(c);
-        }
-        out.add(f.toString());
-        return out;
     }
 }

@@ -27,4 +27,4 @@ for j in $(ls "$work/class" | head -n 10); do
     if [ ! -f "$work/alone.csv" ]; then cp "$work/one.csv" "$work/alone.csv"; else tail -n +2 "$work/one.csv" >> "$work/alone.csv"; fi
     rm -rf "$work/one" "$work/one.csv" "$work/one.md"
 done
-"$java" src/bench/grade-class/SameGrades.java "$work/class.csv" "$work/alone.csv"
+"$java" -cp "$jar" src/bench/grade-class/SameGrades.java "$work/class.csv" "$work/alone.csv"

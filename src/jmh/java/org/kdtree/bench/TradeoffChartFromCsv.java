@@ -35,7 +35,7 @@ public final class TradeoffChartFromCsv {
         // Columns by name: files written before boxes_per_ray (a kd-tree's 0) or engine was added have none.
         List<String> header = List.of(lines.get(0).split(","));
         for (String line : lines.subList(1, lines.size())) {
-            List<String> f = fields(line);
+            List<String> f = org.kdtree.files.CsvFields.of(line);
             ToDoubleFunction<String> col = name -> header.contains(name) ? Double.parseDouble(f.get(header.indexOf(name))) : 0;
             java.util.function.Function<String, String> text = name -> header.contains(name) ? f.get(header.indexOf(name)) : "";
             results.add(new Tradeoff.Result(f.get(0), text.apply("settings"), col.applyAsDouble("build_ms"), col.applyAsDouble("expected_cost"),
@@ -44,21 +44,5 @@ public final class TradeoffChartFromCsv {
                     col.applyAsDouble("mrays_per_s") * 1e6, triangles, text.apply("engine")));
         }
         Tradeoff.writeChart(results, args[2], 10, args[3] + " · data: " + Path.of(args[0]).getFileName(), Path.of(args[4]));
-    }
-
-    /** One CSV line's fields: the quoted ones (settings, engine) may hold commas. */
-    static List<String> fields(String line) {
-        List<String> out = new ArrayList<>();
-        StringBuilder f = new StringBuilder();
-        boolean quoted = false;
-        for (char c : line.toCharArray()) {
-            if (c == '"') quoted = !quoted;
-            else if (c == ',' && !quoted) {
-                out.add(f.toString());
-                f.setLength(0);
-            } else f.append(c);
-        }
-        out.add(f.toString());
-        return out;
     }
 }

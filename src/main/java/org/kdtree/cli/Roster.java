@@ -11,6 +11,7 @@ import java.util.List;
 import java.util.Locale;
 import java.util.Map;
 import java.util.Set;
+import org.kdtree.files.CsvFields;
 
 /**
  * A class's roster, {@code grade-class --roster roster.csv}: a CSV file with the header
@@ -54,7 +55,7 @@ final class Roster {
         Map<String, Integer> lineOf = new LinkedHashMap<>();
         for (int i = 1; i < lines.size(); i++) {
             if (lines.get(i).isBlank()) continue;
-            List<String> f = StudentRow.fields(lines.get(i));
+            List<String> f = CsvFields.of(lines.get(i));
             String at = where + ":" + (i + 1) + ": ";
             if (f.size() != 3) throw new IllegalArgumentException(at + "a line has 3 fields (" + HEADER + "), this one has " + f.size());
             String jar = f.get(0).strip();
@@ -69,7 +70,7 @@ final class Roster {
     }
 
     private static boolean header(String line) {
-        List<String> f = StudentRow.fields(line.replace("\uFEFF", ""));   // a spreadsheet's byte-order mark
+        List<String> f = CsvFields.of(line.replace("\uFEFF", ""));   // a spreadsheet's byte-order mark
         return f.stream().map(s -> s.strip().toLowerCase(Locale.ROOT)).toList().equals(List.of("file", "name", "id"));
     }
 

@@ -4,6 +4,7 @@ import java.util.ArrayList;
 import java.util.LinkedHashMap;
 import java.util.List;
 import java.util.Map;
+import org.kdtree.files.CsvFields;
 
 /**
  * One student's line of {@code grade-class}'s table: read from the CSV report made of the student's
@@ -53,7 +54,7 @@ record StudentRow(String file, String student, String id, String builder, String
         List<String> quality = new ArrayList<>();
         List<List<String>> scenes = new ArrayList<>();
         for (String line : csv.split("\\R")) {
-            List<String> f = fields(line);
+            List<String> f = CsvFields.of(line);
             if (f.size() < 8 || f.get(0).equals("section")) continue;
             String result = f.get(3);
             switch (f.get(0)) {
@@ -109,21 +110,5 @@ record StudentRow(String file, String student, String id, String builder, String
     /** At most {@value #LONGEST} characters, for a table read on a screen. */
     static String shortened(String line) {
         return line.length() <= LONGEST ? line : line.substring(0, LONGEST - 3) + "...";
-    }
-
-    /** The fields of one line of {@link Report#csv}: quoted or bare, {@code ""} an escaped quote, no line breaks. */
-    static List<String> fields(String line) {
-        List<String> out = new ArrayList<>();
-        StringBuilder f = new StringBuilder();
-        boolean quoted = false;
-        for (int i = 0; i < line.length(); i++) {
-            char c = line.charAt(i);
-            if (quoted && c == '"' && i + 1 < line.length() && line.charAt(i + 1) == '"') { f.append('"'); i++; }
-            else if (c == '"') quoted = !quoted;
-            else if (c == ',' && !quoted) { out.add(f.toString()); f.setLength(0); }
-            else f.append(c);
-        }
-        out.add(f.toString());
-        return out;
     }
 }

@@ -144,10 +144,10 @@ class ClassGradeCommandTest {
     /** The CSV's rows by file name, each a map from column to value. */
     static Map<String, Map<String, String>> rows(String csv) {
         String[] lines = csv.split("\n");
-        List<String> head = StudentRow.fields(lines[0]);
+        List<String> head = org.kdtree.files.CsvFields.of(lines[0]);
         Map<String, Map<String, String>> rows = new HashMap<>();
         for (int i = 1; i < lines.length; i++) {
-            List<String> f = StudentRow.fields(lines[i]);
+            List<String> f = org.kdtree.files.CsvFields.of(lines[i]);
             Map<String, String> row = new HashMap<>();
             for (int c = 0; c < head.size(); c++) row.put(head.get(c), f.get(c));
             rows.put(row.get("file"), row);
