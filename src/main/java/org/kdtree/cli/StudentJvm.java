@@ -55,12 +55,7 @@ record StudentJvm(Deadlines deadlines, double seconds, int heapMb, StudentBox bo
     record Graded(StudentRow row, Report report) {
     }
 
-    /** Grades {@code jar}; never throws for a bad jar or a bad builder: the row says what happened. */
-    StudentRow grade(Path jar) {
-        return run(jar).row();
-    }
-
-    /** Grades {@code jar}, with the report made here. */
+    /** Grades {@code jar}, with the report made here; never throws for a bad jar or a bad builder: the row says what happened. */
     Graded run(Path jar) {
         return run(jar, null);
     }
