@@ -90,12 +90,12 @@ public class MakeClass {
             System.err.println("usage: java -cp target/kdtree.jar src/bench/grade-class/MakeClass.java FOLDER [STUDENTS (default 100)]");
             System.exit(2);
         }
-        Path out = Files.createDirectories(Path.of(args[0]));
         int students = args.length > 1 && args[1].matches("[1-9][0-9]{0,4}") ? Integer.parseInt(args[1]) : args.length > 1 ? -1 : 100;
         if (students < 0) {
             System.err.println("error: STUDENTS " + args[1] + ": give a whole number from 1 to 99999");
             System.exit(2);
         }
+        Path out = Files.createDirectories(Path.of(args[0]));
         Path work = Files.createTempDirectory("make-class-");
         java.util.Map<String, Path> compiled = new java.util.HashMap<>();
         for (int i = 0; i < students; i++) {
