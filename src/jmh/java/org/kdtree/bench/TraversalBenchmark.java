@@ -31,7 +31,7 @@ import org.openjdk.jmh.annotations.Warmup;
 @OutputTimeUnit(TimeUnit.MILLISECONDS)
 @Warmup(iterations = 2)
 @Measurement(iterations = 5)
-// The module lets a JDK 25 fork take the vector path (org.kdtree.bvh.Vectorization); JDK 17 stays scalar.
+// The module lets a JDK 21+ fork take the vector path (org.kdtree.accel.Vectorization); Java 17 stays scalar.
 @Fork(value = 1, jvmArgsAppend = {"-Xmx6g", "--add-modules=jdk.incubator.vector"})
 public class TraversalBenchmark {
     @Param({"surface"})

@@ -9,6 +9,7 @@ import org.kdtree.accel.RayQuery;
 import org.kdtree.accel.TraversalListener;
 import org.kdtree.accel.TreeStats;
 import org.kdtree.accel.TriangleIntersector;
+import org.kdtree.accel.Vectorization;
 import org.kdtree.geom.Box;
 import org.kdtree.shape.Primitives;
 
@@ -274,7 +275,7 @@ public final class Bvh implements AccelerationStructure {
 
     /**
      * The fastest query: over a triangle mesh, the vector traversal when this JVM has the Vector
-     * API ({@link org.kdtree.bvh.Vectorization}; as many children per node as its lanes; packets
+     * API ({@link org.kdtree.accel.Vectorization}; as many children per node as its lanes; packets
      * with their rays in the lanes), else
      * the wide layout's traversal (the compact binary one at width 2) with the triangle test inlined, which also traces packets of coherent rays
      * ({@link org.kdtree.accel.PacketQuery}); otherwise the binary layout's, with any {@link Intersector}.

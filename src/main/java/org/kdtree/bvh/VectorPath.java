@@ -4,12 +4,13 @@ import java.lang.invoke.MethodHandle;
 import java.lang.invoke.MethodHandles;
 import java.lang.invoke.MethodType;
 import org.kdtree.accel.PacketQuery;
+import org.kdtree.accel.Vectorization;
 import org.kdtree.accel.RayQuery;
 
 /**
  * The BVH's vector traversals, found at run time: {@code VectorTraversal} (single rays) and
  * {@code VectorPacketTraversal} (packets, rays in the lanes) live in their own source folder
- * ({@code src/vector/java}), compiled for JDK 25 with {@code jdk.incubator.vector}, and are
+ * ({@code src/vector/java}), compiled for JDK 21 with {@code jdk.incubator.vector}, and are
  * loaded reflectively only when {@link Vectorization#enabled}, so that this package's code stays
  * Java 17 bytecode and runs without it.
  */

@@ -37,8 +37,9 @@ import picocli.CommandLine.Parameters;
                 "With --rays FILE --hits FILE: traces the rays of FILE, one per line as",
                 "'ox oy oz dx dy dz [tmin tmax]', and writes one 't triangle' or 'miss' line",
                 "per ray.",
-                "The vector path (the BVH's Vector API loops): run on JDK 25 with",
-                "--add-modules jdk.incubator.vector (a jar built on JDK 25, or with -Djdk25.home);",
+                "The vector path (Vector API kernels): run on JDK 21 or newer with",
+                "--add-modules jdk.incubator.vector (a jar built by Maven on JDK 21+, or with",
+                "-Dvector.jdk=DIR naming one);",
                 "stderr says which path traced ('# path: vector' or '# path: scalar')."})
 final class RaycastCommand implements Callable<Integer> {
     /** The SPEC line's columns, as a comment line (docs/benchmark-spec.md, "Output"). */

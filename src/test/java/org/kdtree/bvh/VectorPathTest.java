@@ -10,6 +10,7 @@ import org.kdtree.accel.Hit;
 import org.kdtree.accel.PacketQuery;
 import org.kdtree.accel.RayPacket;
 import org.kdtree.accel.RayQuery;
+import org.kdtree.accel.Vectorization;
 import org.kdtree.accel.TriangleIntersector;
 import org.kdtree.generate.HardMeshes;
 import org.kdtree.generate.Meshes;
@@ -17,21 +18,21 @@ import org.kdtree.geom.Ray;
 import org.kdtree.shape.TriangleMesh;
 
 /**
- * The two paths agree bit for bit: the vector traversal (JDK 25 with {@code jdk.incubator.vector},
+ * The two paths agree bit for bit: the vector traversal (JDK 21 or newer with {@code jdk.incubator.vector},
  * as CI's second test run has it) against the scalar wide traversal at the same width and the
  * compact binary one, on random rays, rays from far away, rays grazing box faces and aimed at
  * shared vertices and edges. On the Java 17 path it checks that the JVM says so.
  */
 class VectorPathTest {
     @Test void theJvmSaysWhichPath() {
-        boolean jdk25 = Runtime.version().feature() >= Vectorization.JDK
+        boolean vectorJdk = Runtime.version().feature() >= Vectorization.JDK
                 && ModuleLayer.boot().findModule(Vectorization.MODULE).isPresent() && !"false".equals(System.getProperty("kdtree.vector"));
-        assertThat(VectorPath.enabled()).isEqualTo(jdk25);
-        assertThat(Vectorization.describe()).startsWith(jdk25 ? "vector" : "scalar");
+        assertThat(VectorPath.enabled()).isEqualTo(vectorJdk);
+        assertThat(Vectorization.describe()).startsWith(vectorJdk ? "vector" : "scalar");
     }
 
     @Test void vectorAndScalarGiveTheSameHits() {
-        assumeTrue(VectorPath.enabled(), "the vector path: JDK 25 with --add-modules jdk.incubator.vector");
+        assumeTrue(VectorPath.enabled(), "the vector path: JDK 21 or newer with --add-modules jdk.incubator.vector");
         for (TriangleMesh mesh : List.of(Meshes.clustered(3000, 1), Meshes.surface(2000, 2), HardMeshes.cubeGrid(6),
                 Meshes.planarAndDegenerate(3), HardMeshes.scaled(HardMeshes.cubeGrid(3), 1e30), HardMeshes.scaled(Meshes.clustered(500, 4), 1e-30))) {
             Bvh bvh = new BvhBuilder().build(mesh);
@@ -76,7 +77,7 @@ class VectorPathTest {
      * 64 rays (the scalar set-up), and of rays whose sheared frames differ (one ray at a time in a leaf).
      */
     @Test void vectorPacketsGiveEachRayItsSingleAnswer() {
-        assumeTrue(VectorPath.enabled(), "the vector path: JDK 25 with --add-modules jdk.incubator.vector");
+        assumeTrue(VectorPath.enabled(), "the vector path: JDK 21 or newer with --add-modules jdk.incubator.vector");
         for (TriangleMesh mesh : List.of(Meshes.clustered(3000, 1), Meshes.surface(2000, 2), HardMeshes.cubeGrid(6),
                 HardMeshes.scaled(Meshes.clustered(500, 4), 1e-30))) {
             Bvh bvh = new BvhBuilder().build(mesh);

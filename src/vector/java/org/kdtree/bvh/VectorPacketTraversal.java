@@ -34,7 +34,7 @@ import org.kdtree.geom.Tolerance;
  * left; leaves whose triangles no ray's segment reaches are skipped ({@link
  * PacketRays#sidedTriangles}).
  *
- * <p>Compiled for JDK 25 with {@code jdk.incubator.vector} (src/vector/java) and loaded only
+ * <p>Compiled for JDK 21 with {@code jdk.incubator.vector} (src/vector/java) and loaded only
  * through {@link VectorPath}. Packets that mix direction signs go as one packet per octant
  * ({@link OctantSplit}); small ones ({@link #SMALL}), and rays with a zero direction component or
  * a negative tMin, one ray at a time. Allocation-free per packet (the vectors are scalar-replaced

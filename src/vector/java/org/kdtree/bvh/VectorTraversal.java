@@ -24,7 +24,7 @@ import org.kdtree.geom.Tolerance;
  * {@link LeafBlocks#WIDTH} at a time from its blocks ({@link #testBlock}), each lane the one
  * watertight test.
  *
- * <p>Compiled for JDK 25 with {@code jdk.incubator.vector} (src/vector/java) and loaded only
+ * <p>Compiled for JDK 21 with {@code jdk.incubator.vector} (src/vector/java) and loaded only
  * through {@link VectorPath}. Allocation-free per ray (the vectors are scalar-replaced by C2);
  * not thread safe: one per thread.
  */
