@@ -14,20 +14,19 @@ import org.kdtree.geom.Box;
 import org.kdtree.shape.Primitives;
 
 /**
- * A bounding volume hierarchy in flat arrays. Two layouts are made when it is built:
+ * A bounding volume hierarchy in flat arrays, with its layouts made when it is built:
  * <ul>
  * <li>the binary tree the builder found, for reading (the workbench draws it, the listening
  * traversal steps through it): node 0 is the root, an interior node's children are
  * {@link #left} and {@link #right}, a leaf holds a stretch of {@link #primitive}s; each node has
  * its box, which bounds its primitives whole (a primitive is in exactly one leaf);</li>
- * <li>the same tree collapsed to {@link #width()} children per node, which the fast 3-D
- * traversal reads: fewer, wider nodes whose child boxes are tested together.</li>
+ * <li>for single rays, the same tree collapsed to {@link #width()} children per node
+ * ({@link WideNodes}), whose child boxes are tested together, and over a mesh the leaves'
+ * triangles in blocks as the leaf kernel reads them ({@link LeafBlocks});</li>
+ * <li>for packets, over a mesh, the binary tree with both children's boxes in one record
+ * ({@link PairNodes}) and the triangles' corners in leaf order ({@link #leafCorners}).</li>
  * </ul>
- * The tree never changes once built, but the layouts the other loops read are made on their first
- * query, under the object's lock: the ray tests of its primitives and, over a mesh, the corners in
- * leaf order ({@link #leafCorners}); the compact binary layout that packets trace ({@link
- * #pairs}); the wide layout at the vector lanes' width ({@link #lanes}) and the vector path's leaf
- * blocks ({@link #leafBlocks}).
+ * None changes once built; all are counted in {@link #memoryBytes}.
  * Unlike a kd-tree's voxels, sibling boxes may overlap and need not cover the scene, so a
  * traversal visits children by their entry distance and stops at none before its closest hit.
  */
@@ -43,20 +42,16 @@ public final class Bvh implements AccelerationStructure {
     private final int[] primitives;
     private final int maxDepth;
     private final CostModel costModel;
-    private final WideNodes wide;
     private TreeStats stats;
-    /** What it was built over; its ray tests are made from them once, on the first query. */
-    private final Primitives built;
-    private Intersector intersector;
-    /** A mesh's corners in leaf order ({@link #leafCorners}), made with {@link #intersector}. */
-    private double[] leafCorners;
-    private PairNodes pairs;
-    private WideNodes laneNodes;
-    /** The triangles in blocks for the vector path's leaf test ({@link #leafBlocks}), made on its first query. */
-    private LeafBlocks leafBlocks;
+    /** The ray tests of the primitives it was built over. */
+    private final Intersector intersector;
+    /** The tracing layouts, made with the tree: for single rays the wide nodes and leaf blocks, for packets the pairs and the corners in leaf order (the last three only over a mesh). */
+    private final WideNodes wide;
+    private final LeafBlocks leafBlocks;
+    private final PairNodes pairs;
+    private final double[] leafCorners;
 
     private Bvh(Primitives built, int k, int nodes, int[] primitives, CostModel costModel, BuildNode root, int width) {
-        this.built = built;
         this.k = k;
         this.box = new double[2 * k * nodes];
         this.link = new int[nodes];
@@ -64,11 +59,15 @@ public final class Bvh implements AccelerationStructure {
         this.primitives = primitives;
         this.costModel = costModel;
         this.maxDepth = layOut(root, 0, 1, 0);
+        double[] corners = TriangleIntersector.cornersOf(built);
+        this.intersector = Intersector.of(built, corners);
+        this.leafCorners = corners == null ? null : inLeafOrder(corners);
         this.wide = new WideNodes(this, width);
+        this.leafBlocks = corners == null ? null : new LeafBlocks(this, leafCorners, WideTraversal.KERNEL.blockWidth());
+        this.pairs = corners == null ? null : new PairNodes(this);
     }
 
     private Bvh(Primitives built, double[] box, int[] link, int[] size, int[] primitives, CostModel costModel, int width, int maxDepth) {
-        this.built = built;
         this.k = built.dimension();
         this.box = box;
         this.link = link;
@@ -76,7 +75,19 @@ public final class Bvh implements AccelerationStructure {
         this.primitives = primitives;
         this.costModel = costModel;
         this.maxDepth = maxDepth;
+        double[] corners = TriangleIntersector.cornersOf(built);
+        this.intersector = Intersector.of(built, corners);
+        this.leafCorners = corners == null ? null : inLeafOrder(corners);
         this.wide = new WideNodes(this, width);
+        this.leafBlocks = corners == null ? null : new LeafBlocks(this, leafCorners, WideTraversal.KERNEL.blockWidth());
+        this.pairs = corners == null ? null : new PairNodes(this);
+    }
+
+    /** The triangles' corners ({@link TriangleIntersector#corners}) copied into leaf order. */
+    private double[] inLeafOrder(double[] corners) {
+        double[] c = new double[9 * primitives.length];
+        for (int r = 0; r < primitives.length; r++) System.arraycopy(corners, 9 * primitives[r], c, 9 * r, 9);
+        return c;
     }
 
     /**
@@ -217,55 +228,28 @@ public final class Bvh implements AccelerationStructure {
     int[] primitiveArray() { return primitives; }
     WideNodes wide() { return wide; }
 
-    /** The wide layout at {@code lanes} children per node, as the vector traversal reads it: made once, on its first query. */
-    synchronized WideNodes lanes(int lanes) {
-        if (laneNodes == null || laneNodes.width != lanes) laneNodes = lanes == width() ? wide : new WideNodes(this, lanes);
-        return laneNodes;
-    }
+    /** The leaf blocks the single-ray loop reads, at its leaf kernel's width; null unless built over a mesh. */
+    LeafBlocks leafBlocks() { return leafBlocks; }
 
-    /** The leaf-ordered corners in blocks of {@link LeafBlocks#WIDTH} per leaf, for the vector path's single rays; null unless built over a mesh. */
-    synchronized LeafBlocks leafBlocks() {
-        if (leafBlocks == null && leafCorners() != null) leafBlocks = new LeafBlocks(this, leafCorners);
-        return leafBlocks;
-    }
+    /** The compact binary layout ({@link PairNodes}) packets trace; null unless built over a mesh. */
+    PairNodes pairs() { return pairs; }
 
-    /** The compact binary layout ({@link PairNodes}), made on the first triangle query. */
-    synchronized PairNodes pairs() {
-        if (pairs == null) pairs = new PairNodes(this);
-        return pairs;
-    }
-
-    /**
-     * The ray tests of the primitives it was built over, made once; over a mesh, also its corners
-     * ({@link TriangleIntersector#corners}) copied into leaf order ({@link #leafCorners}).
-     */
-    synchronized Intersector intersector() {
-        if (intersector == null) {
-            double[] corners = TriangleIntersector.cornersOf(built);
-            intersector = Intersector.of(built, corners);
-            if (corners != null) {
-                leafCorners = new double[9 * primitives.length];
-                for (int r = 0; r < primitives.length; r++) System.arraycopy(corners, 9 * primitives[r], leafCorners, 9 * r, 9);
-            }
-        }
-        return intersector;
-    }
+    /** The ray tests of the primitives it was built over. */
+    Intersector intersector() { return intersector; }
 
     /**
      * {@return the triangles' corners, 9 per triangle, in leaf order}, so that the fast traversals
      * read a leaf's triangles from one stretch of memory; null unless built over a mesh
      */
-    synchronized double[] leafCorners() {
-        intersector();
-        return leafCorners;
-    }
+    double[] leafCorners() { return leafCorners; }
 
     /**
-     * {@return the bytes its arrays hold, the binary and the wide layout} (not those made on a first
-     * query: the leaf-ordered corners, the compact binary layout, the vector path's lanes and blocks)
+     * {@return the bytes its arrays hold}: the binary tree and the tracing layouts (wide nodes, leaf
+     * blocks, pairs, corners in leaf order), not the primitives' own ray tests
      */
     public long memoryBytes() {
-        return 8L * box.length + 4L * (link.length + size.length + primitives.length) + wide.memoryBytes();
+        long mesh = leafCorners == null ? 0 : 8L * leafCorners.length + leafBlocks.memoryBytes() + 4L * pairs.words.length;
+        return 8L * box.length + 4L * (link.length + size.length + primitives.length) + wide.memoryBytes() + mesh;
     }
 
     @Override public synchronized TreeStats stats() {
@@ -281,7 +265,7 @@ public final class Bvh implements AccelerationStructure {
      * ({@link org.kdtree.accel.PacketQuery}); otherwise the binary layout's, with any {@link Intersector}.
      */
     @Override public RayQuery query() {
-        if (intersector() instanceof TriangleIntersector) return packetQuery();
+        if (intersector instanceof TriangleIntersector) return packetQuery();
         return new BvhTraverser(this, TraversalListener.NONE);
     }
 
@@ -293,10 +277,10 @@ public final class Bvh implements AccelerationStructure {
      * @throws IllegalArgumentException if it was not built over a 3-D triangle mesh
      */
     @Override public PacketQuery packetQuery() {
-        if (!(intersector() instanceof TriangleIntersector))
+        if (!(intersector instanceof TriangleIntersector))
             throw new IllegalArgumentException("packets are traced against a triangle mesh; this " + k + "-D hierarchy holds other primitives");
-        if (VectorPath.enabled()) return VectorPath.packets(this, VectorPath.query(this));
-        return new PacketTraversal(this, width() == 2 ? new PairTraversal(this) : new WideTraversal(this));
+        if (VectorPath.enabled()) return VectorPath.packets(this, new WideTraversal(this));
+        return new PacketTraversal(this, new WideTraversal(this));
     }
 
     @Override public RayQuery query(TraversalListener listener) {

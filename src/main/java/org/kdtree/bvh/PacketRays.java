@@ -118,7 +118,7 @@ final class PacketRays {
     }
 
     /**
-     * Makes each ray's shear for the watertight test, as {@link PairTraversal} computes it, at the
+     * Makes each ray's shear for the watertight test, as {@link WideTraversal} computes it, at the
      * packet's first leaf (a packet that misses every box never needs it); then again does nothing.
      */
     void frame() {
@@ -156,7 +156,7 @@ final class PacketRays {
         return axis == 0 ? x : axis == 1 ? y : z;
     }
 
-    /** Ray {@code i}'s shear for the watertight test, as {@link PairTraversal} computes it, into the own arrays. */
+    /** Ray {@code i}'s shear for the watertight test, as {@link WideTraversal} computes it, into the own arrays. */
     private void shear(RayPacket p, int i) {
         double dx = p.dx[i], dy = p.dy[i], dz = p.dz[i];
         int z = TriangleIntersector.maxAxis(dx, dy, dz);

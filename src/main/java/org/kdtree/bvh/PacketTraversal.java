@@ -39,7 +39,7 @@ final class PacketTraversal extends PacketLoop {
     private static final int STRIDE = PairNodes.STRIDE, RIGHT = PairNodes.RIGHT, LINKS = PairNodes.LINKS;
     private static final int N = RayPacket.CAPACITY;
 
-    /** Saved children (as {@link PairTraversal}'s entries) with the range of rays that enter them. */
+    /** Saved children (as {@link WideTraversal}'s entries) with the range of rays that enter them. */
     private final int[] stackEntry, stackFirst, stackLast;
     /** Per ray: the closest hit so far (t, leaf position, barycentrics), and its slack-widened t. */
     private final double[] best = new double[N], limit = new double[N], bu = new double[N], bv = new double[N];
@@ -140,7 +140,7 @@ final class PacketTraversal extends PacketLoop {
         return m;
     }
 
-    /** Whether ray {@code i} enters the box at {@code b}: {@link PairTraversal}'s test, the same operations. */
+    /** Whether ray {@code i} enters the box at {@code b}: {@link WideTraversal}'s test, the same operations. */
     private boolean enters(RayPacket p, int[] nd, int b, int nx, int ny, int nz, int fx, int fy, int fz, int i) {
         double ox = p.ox[i], oy = p.oy[i], oz = p.oz[i], ix = p.ix[i], iy = p.iy[i], iz = p.iz[i];
         double t0 = (Float.intBitsToFloat(nd[b + nx]) - ox) * ix, t1 = (Float.intBitsToFloat(nd[b + fx]) - ox) * ix;
@@ -167,7 +167,7 @@ final class PacketTraversal extends PacketLoop {
 
     /**
      * Every ray of {@code [first, last)} not yet blocked that enters the leaf's box (at {@code box}) tests its triangles (the leaf whose
-     * reference is at {@code word}) as {@link PairTraversal}'s any-hit ray does, stopping at its
+     * reference is at {@code word}) as {@link WideTraversal}'s any-hit ray does, stopping at its
      * first hit, which takes it out of the packet. Returns how many rays it took out.
      */
     private int anyLeaf(RayPacket p, int[] nd, int word, int box, int nx, int ny, int nz, int fx, int fy, int fz, int first, int last) {

@@ -209,7 +209,7 @@ final class VectorPacketTraversal extends PacketLoop {
 
     /**
      * The lanes of the group at {@code at} whose ray enters the box of {@link #enter}: per
-     * lane, {@link PairTraversal}'s operations on its ray, {@code (plane - o) * inv}, their
+     * lane, {@link WideTraversal}'s operations on its ray, {@code (plane - o) * inv}, their
      * maximum and minimum with the interval, and {@code t0 (1 - slack) <= t1 (1 + slack)}.
      */
     private long groupSlabs(RayPacket p, int at) {
