@@ -279,7 +279,6 @@ public final class Bvh implements AccelerationStructure {
     @Override public PacketQuery packetQuery() {
         if (!(intersector instanceof TriangleIntersector))
             throw new IllegalArgumentException("packets are traced against a triangle mesh; this " + k + "-D hierarchy holds other primitives");
-        if (VectorPath.enabled()) return VectorPath.packets(this, new WideTraversal(this));
         return new PacketTraversal(this, new WideTraversal(this));
     }
 

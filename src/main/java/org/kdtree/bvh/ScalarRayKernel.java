@@ -6,6 +6,8 @@ import org.kdtree.geom.Tolerance;
 
 /** The single-ray loop's kernels in Java 17: one child, one triangle at a time ({@link RayKernel}). */
 final class ScalarRayKernel implements RayKernel {
+    /** An unused slot's minimum on x ({@link WideNodes}: its box is inverted, +infinity to -infinity). */
+    private static final int UNUSED = Float.floatToRawIntBits(Float.POSITIVE_INFINITY);
     private static final double SHRINK = 1 - Tolerance.TRAVERSAL_SLACK, GROW = 1 + Tolerance.TRAVERSAL_SLACK;
 
     @Override public int enter(int[] nd, int base, int w, int nx, int ny, int nz, double ox, double oy, double oz,
@@ -14,9 +16,8 @@ final class ScalarRayKernel implements RayKernel {
         nx += base;
         ny += base;
         nz += base;
-        for (int i = 0; i < w; i++) {
-            // Branch-free slabs: with no zero direction component no bound is NaN. An unused slot's
-            // box is inverted (+infinity to -infinity): no ray enters it.
+        for (int i = 0; i < w && nd[base + i] != UNUSED; i++) {   // unused slots come last
+            // Branch-free slabs: with no zero direction component no bound is NaN.
             double t0 = Math.max(start, (Float.intBitsToFloat(nd[nx + i]) - ox) * ix);
             double t1 = Math.min(limit, (Float.intBitsToFloat(nd[fx + i]) - ox) * ix);
             t0 = Math.max(t0, (Float.intBitsToFloat(nd[ny + i]) - oy) * iy);

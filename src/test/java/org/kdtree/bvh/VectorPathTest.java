@@ -1,7 +1,6 @@
 package org.kdtree.bvh;
 
 import static org.assertj.core.api.Assertions.assertThat;
-import static org.junit.jupiter.api.Assumptions.assumeTrue;
 
 import java.util.List;
 import java.util.Random;
@@ -18,17 +17,20 @@ import org.kdtree.geom.Ray;
 import org.kdtree.shape.TriangleMesh;
 
 /**
- * The two paths agree bit for bit: the vector traversal (JDK 21 or newer with {@code jdk.incubator.vector},
- * as CI's second test run has it) against the scalar wide traversal at the same width and the
- * compact binary one, on random rays, rays from far away, rays grazing box faces and aimed at
- * shared vertices and edges. On the Java 17 path it checks that the JVM says so.
+ * The BVH's loops on whichever path this JVM takes (the Vector API kernels on JDK 21 or newer with
+ * {@code jdk.incubator.vector}, as CI's second test run has it; else the Java 17 ones), bit for
+ * bit: the single-ray loop against the listening loop, the packet loop against the single-ray
+ * loop, on random rays, rays from far away, rays grazing box faces and aimed at shared vertices
+ * and edges. The kernels themselves, each against its specification: {@link RayKernelTest} and
+ * {@link PacketKernelTest}. It checks that the JVM says which path it takes.
  */
 class VectorPathTest {
     @Test void theJvmSaysWhichPath() {
         boolean vectorJdk = Runtime.version().feature() >= Vectorization.JDK
                 && ModuleLayer.boot().findModule(Vectorization.MODULE).isPresent() && !"false".equals(System.getProperty("kdtree.vector"));
-        assertThat(VectorPath.enabled()).isEqualTo(vectorJdk);
+        assertThat(Vectorization.enabled()).isEqualTo(vectorJdk);
         assertThat(WideTraversal.KERNEL instanceof ScalarRayKernel).isEqualTo(!vectorJdk);
+        assertThat(PacketTraversal.KERNEL instanceof ScalarPacketKernel).isEqualTo(!vectorJdk);
         assertThat(Vectorization.describe()).startsWith(vectorJdk ? "vector" : "scalar");
     }
 
@@ -80,17 +82,16 @@ class VectorPathTest {
     }
 
     /**
-     * The vector packets (rays in the lanes) against single rays, bit for bit: packets of a shared
+     * The packet loop against single rays, bit for bit: packets of a shared
      * origin (a camera's), of spread origins (shadow rays, any hit), of a size below the vectors'
-     * 64 rays (the scalar set-up), and of rays whose sheared frames differ (one ray at a time in a leaf).
+     * 64 rays (the vector path sends those one by one), and of rays whose sheared frames differ (one ray at a time).
      */
-    @Test void vectorPacketsGiveEachRayItsSingleAnswer() {
-        assumeTrue(VectorPath.enabled(), "the vector path: JDK 21 or newer with --add-modules jdk.incubator.vector");
+    @Test void packetsGiveEachRayItsSingleAnswer() {
         for (TriangleMesh mesh : List.of(Meshes.clustered(3000, 1), Meshes.surface(2000, 2), HardMeshes.cubeGrid(6),
                 HardMeshes.scaled(Meshes.clustered(500, 4), 1e-30))) {
             Bvh bvh = new BvhBuilder().build(mesh);
             RayQuery single = new WideTraversal(bvh);
-            PacketQuery packets = VectorPath.packets(bvh, single);
+            PacketQuery packets = new PacketTraversal(bvh, single);
             var box = bvh.bounds();
             Random rnd = new Random(23);
             RayPacket p = new RayPacket();
