@@ -144,10 +144,12 @@ public final class Bvh implements AccelerationStructure {
     /** {@return the depth of the deepest leaf of the binary tree (the root's is 0)} */
     public int maxDepth() { return maxDepth; }
 
-    /** {@return Kt and Ki, with which it was built and its expected cost is counted} */
-    /** {@return the Vector API path where this JVM takes it (else the scalar wide loop), and set P in 8 x 8 packets} */
-    @Override public String describePath() { return Vectorization.describe() + "; set P in 8 x 8 packets"; }
+    /** {@return which kernels the fast loops run (Vector API or Java 17), the single rays' node width, and set P in 8 x 8 packets} */
+    @Override public String describePath() {
+        return Vectorization.describe() + "; single rays over " + width() + "-wide nodes; set P in 8 x 8 packets over the binary tree";
+    }
 
+    /** {@return Kt and Ki, with which it was built and its expected cost is counted} */
     @Override public CostModel costModel() { return costModel; }
 
     /**
@@ -258,11 +260,10 @@ public final class Bvh implements AccelerationStructure {
     }
 
     /**
-     * The fastest query: over a triangle mesh, the vector traversal when this JVM has the Vector
-     * API ({@link org.kdtree.accel.Vectorization}; as many children per node as its lanes; packets
-     * with their rays in the lanes), else
-     * the wide layout's traversal (the compact binary one at width 2) with the triangle test inlined, which also traces packets of coherent rays
-     * ({@link org.kdtree.accel.PacketQuery}); otherwise the binary layout's, with any {@link Intersector}.
+     * The fastest query: over a triangle mesh, the packet loop ({@link PacketTraversal}), which
+     * traces single rays with the single-ray loop ({@link WideTraversal}), both over the kernels
+     * this JVM chose ({@link org.kdtree.accel.Vectorization#kernel}); otherwise the listening loop
+     * over the binary tree, with any {@link Intersector}.
      */
     @Override public RayQuery query() {
         if (intersector instanceof TriangleIntersector) return packetQuery();
@@ -270,9 +271,8 @@ public final class Bvh implements AccelerationStructure {
     }
 
     /**
-     * {@return its packet loop}: the vector one when this JVM has the Vector API, else the Java 17
-     * one ({@link PacketTraversal}), each over the compact binary layout with the fast single-ray
-     * query for the rays it leaves out
+     * {@return its packet loop} ({@link PacketTraversal}, over the compact binary layout and the
+     * kernels this JVM chose), with the single-ray loop for the rays it leaves out
      *
      * @throws IllegalArgumentException if it was not built over a 3-D triangle mesh
      */
