@@ -23,8 +23,9 @@ import org.kdtree.shape.Primitives;
  * <li>for single rays, the same tree collapsed to {@link #width()} children per node
  * ({@link WideNodes}), whose child boxes are tested together, and over a mesh the leaves'
  * triangles in blocks as the leaf kernel reads them ({@link LeafBlocks});</li>
- * <li>for packets, over a mesh, the binary tree with both children's boxes in one record
- * ({@link PairNodes}) and the triangles' corners in leaf order ({@link #leafCorners}).</li>
+ * <li>for packets, over a mesh, the binary tree with both children's boxes in one 64-byte node
+ * ({@link #pairs}: the wide layout at width 2) and the triangles' corners in leaf order
+ * ({@link #leafCorners}).</li>
  * </ul>
  * None changes once built; all are counted in {@link #memoryBytes}.
  * Unlike a kd-tree's voxels, sibling boxes may overlap and need not cover the scene, so a
@@ -48,7 +49,7 @@ public final class Bvh implements AccelerationStructure {
     /** The tracing layouts, made with the tree: for single rays the wide nodes and leaf blocks, for packets the pairs and the corners in leaf order (the last three only over a mesh). */
     private final WideNodes wide;
     private final LeafBlocks leafBlocks;
-    private final PairNodes pairs;
+    private final WideNodes pairs;
     private final double[] leafCorners;
 
     private Bvh(Primitives built, int k, int nodes, int[] primitives, CostModel costModel, BuildNode root, int width) {
@@ -64,7 +65,7 @@ public final class Bvh implements AccelerationStructure {
         this.leafCorners = corners == null ? null : inLeafOrder(corners);
         this.wide = new WideNodes(this, width);
         this.leafBlocks = corners == null ? null : new LeafBlocks(this, leafCorners, WideTraversal.KERNEL.blockWidth());
-        this.pairs = corners == null ? null : new PairNodes(this);
+        this.pairs = corners == null ? null : width == 2 ? wide : new WideNodes(this, 2);
     }
 
     private Bvh(Primitives built, double[] box, int[] link, int[] size, int[] primitives, CostModel costModel, int width, int maxDepth) {
@@ -80,7 +81,7 @@ public final class Bvh implements AccelerationStructure {
         this.leafCorners = corners == null ? null : inLeafOrder(corners);
         this.wide = new WideNodes(this, width);
         this.leafBlocks = corners == null ? null : new LeafBlocks(this, leafCorners, WideTraversal.KERNEL.blockWidth());
-        this.pairs = corners == null ? null : new PairNodes(this);
+        this.pairs = corners == null ? null : width == 2 ? wide : new WideNodes(this, 2);
     }
 
     /** The triangles' corners ({@link TriangleIntersector#corners}) copied into leaf order. */
@@ -233,8 +234,8 @@ public final class Bvh implements AccelerationStructure {
     /** The leaf blocks the single-ray loop reads, at its leaf kernel's width; null unless built over a mesh. */
     LeafBlocks leafBlocks() { return leafBlocks; }
 
-    /** The compact binary layout ({@link PairNodes}) packets trace; null unless built over a mesh. */
-    PairNodes pairs() { return pairs; }
+    /** The binary tree as the wide layout at width 2, which packets trace; null unless built over a mesh. */
+    WideNodes pairs() { return pairs; }
 
     /** The ray tests of the primitives it was built over. */
     Intersector intersector() { return intersector; }
@@ -247,10 +248,10 @@ public final class Bvh implements AccelerationStructure {
 
     /**
      * {@return the bytes its arrays hold}: the binary tree and the tracing layouts (wide nodes, leaf
-     * blocks, pairs, corners in leaf order), not the primitives' own ray tests
+     * blocks, the packets' nodes, corners in leaf order), not the primitives' own ray tests
      */
     public long memoryBytes() {
-        long mesh = leafCorners == null ? 0 : 8L * leafCorners.length + leafBlocks.memoryBytes() + 4L * pairs.words.length;
+        long mesh = leafCorners == null ? 0 : 8L * leafCorners.length + leafBlocks.memoryBytes() + (pairs == wide ? 0 : pairs.memoryBytes());
         return 8L * box.length + 4L * (link.length + size.length + primitives.length) + wide.memoryBytes() + mesh;
     }
 
@@ -271,7 +272,7 @@ public final class Bvh implements AccelerationStructure {
     }
 
     /**
-     * {@return its packet loop} ({@link PacketTraversal}, over the compact binary layout and the
+     * {@return its packet loop} ({@link PacketTraversal}, over the binary tree at width 2 and the
      * kernels this JVM chose), with the single-ray loop for the rays it leaves out
      *
      * @throws IllegalArgumentException if it was not built over a 3-D triangle mesh

@@ -50,7 +50,7 @@ final class PacketRays {
     /** The packet loaded, and whether its frame is made (only packets that reach a leaf need it). */
     private RayPacket packet;
     private boolean framed;
-    /** Within a child's six words of {@link PairNodes}: the near and far plane of each axis. */
+    /** From a child's first word in a node of {@link Bvh#pairs} ({@link WideNodes} at width 2): the near and far plane of each axis. */
     int nx, ny, nz, fx, fy, fz;
     /** The packet's ranges of origins and inverse directions, and the least start of an interval. */
     private double oxLo, oxHi, oyLo, oyHi, ozLo, ozHi, ixLo, ixHi, iyLo, iyHi, izLo, izHi, startLo;
@@ -107,12 +107,13 @@ final class PacketRays {
         kx = z == 2 ? 0 : z + 1;
         ky = kx == 2 ? 0 : kx + 1;
         if (axis(p.dx, p.dy, p.dz, z)[0] < 0) { int t = kx; kx = ky; ky = t; }
-        nx = xs ? 3 : 0;
-        ny = ys ? 4 : 1;
-        nz = zs ? 5 : 2;
-        fx = 3 - nx;
-        fy = 5 - ny;
-        fz = 7 - nz;
+        // Per axis a the two minima at 4 a, the two maxima at 4 a + 2.
+        nx = xs ? 2 : 0;
+        ny = ys ? 6 : 4;
+        nz = zs ? 10 : 8;
+        fx = 2 - nx;
+        fy = 10 - ny;
+        fz = 18 - nz;
         planeCull = any && segmentBoxes(p, n);
         return true;
     }
@@ -153,7 +154,7 @@ final class PacketRays {
      * directions (the four corners of each product), compared as one ray's would be. Rounding is
      * monotonic, so a bound is never inside any ray's own value: false means no ray enters.
      *
-     * @param nd      the records of {@link PairNodes}
+     * @param nd      the nodes of {@link Bvh#pairs}
      * @param b       where the child's box starts
      * @param limitHi the largest end of a ray's interval, slack included
      * @return whether the box may hold a hit of some ray
@@ -172,7 +173,7 @@ final class PacketRays {
      * {@return ray {@code i}'s entry distance into the box at {@code b} of {@code nd}}, for ordering
      * a node's children
      * @param p  the packet
-     * @param nd the records of {@link PairNodes}
+     * @param nd the nodes of {@link Bvh#pairs}
      * @param b  where the child's box starts
      * @param i  a ray's index
      */

@@ -10,7 +10,7 @@ import org.kdtree.geom.Ray;
 import org.kdtree.geom.Tolerance;
 
 /**
- * Packets of coherent rays through a 3-D {@link Bvh}'s compact binary layout ({@link PairNodes}),
+ * Packets of coherent rays through a 3-D {@link Bvh}'s binary tree in its wide layout at width 2 ({@link Bvh#pairs}: one 64-byte node with both children's boxes),
  * the one packet loop on both paths, after Overbeck, Ramamoorthi and Mark's ranged traversal
  * (2008) with an interval test for the whole packet (Wald, Boulos and Shirley 2007). The rays
  * still in play are a mask, one bit per ray; the packet kernel ({@link #KERNEL}) takes them a
@@ -40,17 +40,18 @@ final class PacketTraversal implements PacketQuery {
     /** The kernels, chosen once for the JVM: a final static, so that the JIT inlines the one class it holds. */
     static final PacketKernel KERNEL = Vectorization.kernel(PacketKernel.class, "org.kdtree.bvh.VectorPacketKernel", new ScalarPacketKernel());
     private static final int N = RayPacket.CAPACITY;
-    private static final int STRIDE = PairNodes.STRIDE, RIGHT = PairNodes.RIGHT, LINKS = PairNodes.LINKS;
+    /** Words per node of the layout at width 2, and the offset of its children's references (their counts follow, 2 words on). */
+    private static final int STRIDE = 16, REFS = 12;
 
     /** Single rays, and the packets the loop leaves out. */
     private final RayQuery single;
-    /** The records ({@link PairNodes}), the primitive of each leaf position, the corners in leaf order. */
+    /** The nodes ({@link Bvh#pairs}), the primitive of each leaf position, the corners in leaf order. */
     private final int[] words, prim;
     private final double[] corners;
     private final boolean empty;
     /** The packet's shear, planes, bounds and each ray's state. */
     private final PacketRays rays = new PacketRays();
-    /** Saved children (as {@link PairNodes#code}) with the mask of rays that enter them. */
+    /** Saved children (as {@link #code}) with the mask of rays that enter them. */
     private final int[] stackEntry;
     private final long[] stackMask;
     private final Hit hit = new Hit();
@@ -123,25 +124,25 @@ final class PacketTraversal implements PacketQuery {
         long mask = all;
         while (true) {
             if (e >= 0) {
-                int l = STRIDE * e, r = l + RIGHT, link = l + LINKS;
+                int l = STRIDE * e, r = l + 1, link = l + REFS;   // child i's box starts at word i of its node
                 long lm = q.packetEnters(nd, l, limitHi) ? enter(p, nd, l, mask, false) : 0;
                 long rm = q.packetEnters(nd, r, limitHi) ? enter(p, nd, r, mask, false) : 0;
                 if (lm != 0 && rm != 0) {
                     boolean rightFirst = q.entry(p, nd, r, Long.numberOfTrailingZeros(rm)) < q.entry(p, nd, l, Long.numberOfTrailingZeros(lm));
-                    stackEntry[sp] = PairNodes.code(nd, rightFirst ? link : link + 2);
+                    stackEntry[sp] = code(nd, rightFirst ? link : link + 1);
                     stackMask[sp++] = rightFirst ? lm : rm;
-                    e = PairNodes.code(nd, rightFirst ? link + 2 : link);
+                    e = code(nd, rightFirst ? link + 1 : link);
                     mask = rightFirst ? rm : lm;
                     continue;
                 }
                 if ((lm | rm) != 0) {
-                    e = PairNodes.code(nd, lm != 0 ? link : link + 2);
+                    e = code(nd, lm != 0 ? link : link + 1);
                     mask = lm | rm;
                     continue;
                 }
             } else {
                 int word = -1 - e;
-                long in = enter(p, nd, PairNodes.boxOf(word), mask, true);
+                long in = enter(p, nd, word - REFS, mask, true);   // the leaf's box: its reference's slot
                 if (in != 0) {
                     long changed = leaf(p, nd, word, in, any);
                     if (any) {
@@ -170,6 +171,14 @@ final class PacketTraversal implements PacketQuery {
                 p.v[i] = q.bv[i];
             }
         }
+    }
+
+    /**
+     * {@return a child's code, from the word of its reference}: its node's index, or {@code -1 - word}
+     * for a leaf (an unused slot is never entered: its box is inverted)
+     */
+    private static int code(int[] words, int ref) {
+        return words[ref + 2] > 0 ? -1 - ref : words[ref];
     }
 
     /**
@@ -227,7 +236,7 @@ final class PacketTraversal implements PacketQuery {
     private long leaf(RayPacket p, int[] nd, int word, long mask, boolean any) {
         PacketRays q = rays;
         PacketKernel k = KERNEL;
-        int from = nd[word], end = from + nd[word + 1], lanes = k.lanes();
+        int from = nd[word], end = from + nd[word + 2], lanes = k.lanes();
         long group = lanes == 64 ? -1L : (1L << lanes) - 1;
         long skip = any && q.planeCull ? q.sidedTriangles(corners, from, end) : 0;
         if (PacketRays.skipsAll(skip, end - from)) return 0;   // no ray can cross any of them

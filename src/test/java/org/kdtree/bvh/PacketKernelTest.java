@@ -56,10 +56,10 @@ class PacketKernelTest {
             for (int k = 0; k < 3; k++) { lo[k] = bvh.min(0, k); hi[k] = bvh.max(0, k); }
             PacketRays q = new PacketRays();
             for (int n = 0; n < 3000; n++) {
-                int b = PairNodes.STRIDE * rnd.nextInt(nd.length / PairNodes.STRIDE) + (rnd.nextBoolean() ? PairNodes.RIGHT : PairNodes.LEFT);
+                int b = bvh.pairs().stride * rnd.nextInt(bvh.pairs().nodeCount()) + rnd.nextInt(2);   // child 0 or 1's first word
                 double[] aim = new double[3];
                 for (int k = 0, free = rnd.nextInt(4); k < 3; k++) {   // a point on an edge or corner of the box, or (n odd) anywhere
-                    double min = Float.intBitsToFloat(nd[b + k]), max = Float.intBitsToFloat(nd[b + 3 + k]);
+                    double min = Float.intBitsToFloat(nd[b + 4 * k]), max = Float.intBitsToFloat(nd[b + 4 * k + 2]);
                     if (!(min <= max)) { min = lo[k]; max = hi[k]; }
                     aim[k] = k == free || n % 2 == 1 ? min + rnd.nextDouble() * (max - min) : rnd.nextBoolean() ? min : max;
                 }
