@@ -21,7 +21,8 @@ import org.kdtree.shape.Primitives;
  * {@link #left} and {@link #right}, a leaf holds a stretch of {@link #primitive}s; each node has
  * its box, which bounds its primitives whole (a primitive is in exactly one leaf);</li>
  * <li>for single rays, the same tree collapsed to {@link #width()} children per node
- * ({@link WideNodes}), whose child boxes are tested together, and over a mesh the leaves'
+ * ({@link WideNodes}; on the vector path, as many as the node kernel's lanes: {@link
+ * RayKernel#width}), whose child boxes are tested together, and over a mesh the leaves'
  * triangles in blocks as the leaf kernel reads them ({@link LeafBlocks});</li>
  * <li>for packets, over a mesh, the binary tree with both children's boxes in one 64-byte node
  * ({@link #pairs}: the wide layout at width 2) and the triangles' corners in leaf order
@@ -48,6 +49,8 @@ public final class Bvh implements AccelerationStructure {
     private final Intersector intersector;
     /** The tracing layouts, made with the tree: for single rays the wide nodes and leaf blocks, for packets the pairs and the corners in leaf order (the last three only over a mesh). */
     private final WideNodes wide;
+    /** The width it was built with ({@code --bvh-width}). */
+    private final int width;
     private final LeafBlocks leafBlocks;
     private final WideNodes pairs;
     private final double[] leafCorners;
@@ -63,9 +66,10 @@ public final class Bvh implements AccelerationStructure {
         double[] corners = TriangleIntersector.cornersOf(built);
         this.intersector = Intersector.of(built, corners);
         this.leafCorners = corners == null ? null : inLeafOrder(corners);
-        this.wide = new WideNodes(this, width);
+        this.width = width;
+        this.wide = new WideNodes(this, WideTraversal.KERNEL.width(width));
         this.leafBlocks = corners == null ? null : new LeafBlocks(this, leafCorners, WideTraversal.KERNEL.blockWidth());
-        this.pairs = corners == null ? null : width == 2 ? wide : new WideNodes(this, 2);
+        this.pairs = corners == null ? null : wide.width == 2 ? wide : new WideNodes(this, 2);
     }
 
     private Bvh(Primitives built, double[] box, int[] link, int[] size, int[] primitives, CostModel costModel, int width, int maxDepth) {
@@ -79,9 +83,10 @@ public final class Bvh implements AccelerationStructure {
         double[] corners = TriangleIntersector.cornersOf(built);
         this.intersector = Intersector.of(built, corners);
         this.leafCorners = corners == null ? null : inLeafOrder(corners);
-        this.wide = new WideNodes(this, width);
+        this.width = width;
+        this.wide = new WideNodes(this, WideTraversal.KERNEL.width(width));
         this.leafBlocks = corners == null ? null : new LeafBlocks(this, leafCorners, WideTraversal.KERNEL.blockWidth());
-        this.pairs = corners == null ? null : width == 2 ? wide : new WideNodes(this, 2);
+        this.pairs = corners == null ? null : wide.width == 2 ? wide : new WideNodes(this, 2);
     }
 
     /** The triangles' corners ({@link TriangleIntersector#corners}) copied into leaf order. */
@@ -139,15 +144,20 @@ public final class Bvh implements AccelerationStructure {
     /** {@return the number of nodes of the binary tree} */
     public int nodeCount() { return link.length; }
 
-    /** {@return children per node of the wide layout} */
-    public int width() { return wide.width; }
+    /**
+     * {@return the children per node it was built with ({@code --bvh-width})}: the width of the
+     * single rays' layout on the Java 17 path; on the vector path that layout has the node
+     * kernel's lanes ({@link #describePath} says which)
+     */
+    public int width() { return width; }
 
     /** {@return the depth of the deepest leaf of the binary tree (the root's is 0)} */
     public int maxDepth() { return maxDepth; }
 
     /** {@return which kernels the fast loops run (Vector API or Java 17), the single rays' node width, and set P in 8 x 8 packets} */
     @Override public String describePath() {
-        return Vectorization.describe() + "; single rays over " + width() + "-wide nodes; set P in 8 x 8 packets over the binary tree";
+        String lanes = wide.width == width ? "" : " (the vector lanes; --bvh-width " + width + " holds on the Java 17 path)";
+        return Vectorization.describe() + "; single rays over " + wide.width + "-wide nodes" + lanes + "; set P in 8 x 8 packets over the binary tree";
     }
 
     /** {@return Kt and Ki, with which it was built and its expected cost is counted} */

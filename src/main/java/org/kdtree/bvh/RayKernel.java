@@ -30,6 +30,13 @@ interface RayKernel {
     int enter(int[] words, int base, int width, int nx, int ny, int nz, double ox, double oy, double oz,
               double ix, double iy, double iz, double start, double limit, double[] t);
 
+    /**
+     * {@return the children per node of the layout {@link #enter} reads, for a hierarchy built with
+     * {@code asked}}: the Java 17 kernel takes {@code asked}; the Vector API kernel its lanes (8
+     * with AVX-512, 4 with AVX2), whatever was asked, the width that measured fastest on that path
+     */
+    int width(int asked);
+
     /** {@return triangles per block of the leaf layout {@link #hit} reads ({@link LeafBlocks})} */
     int blockWidth();
 

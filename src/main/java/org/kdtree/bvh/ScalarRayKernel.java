@@ -30,6 +30,9 @@ final class ScalarRayKernel implements RayKernel {
         return bits;
     }
 
+    /** {@return {@code asked}: {@code --bvh-width} as given} */
+    @Override public int width(int asked) { return asked; }
+
     /** {@return 1: the corners in leaf order, 9 doubles a triangle} */
     @Override public int blockWidth() { return 1; }
 
