@@ -55,23 +55,7 @@ public final class Bvh implements AccelerationStructure {
     private final WideNodes pairs;
     private final double[] leafCorners;
 
-    private Bvh(Primitives built, int k, int nodes, int[] primitives, CostModel costModel, BuildNode root, int width) {
-        this.k = k;
-        this.box = new double[2 * k * nodes];
-        this.link = new int[nodes];
-        this.size = new int[nodes];
-        this.primitives = primitives;
-        this.costModel = costModel;
-        this.maxDepth = layOut(root, 0, 1, 0);
-        double[] corners = TriangleIntersector.cornersOf(built);
-        this.intersector = Intersector.of(built, corners);
-        this.leafCorners = corners == null ? null : inLeafOrder(corners);
-        this.width = width;
-        this.wide = new WideNodes(this, WideTraversal.KERNEL.width(width));
-        this.leafBlocks = corners == null ? null : new LeafBlocks(this, leafCorners, WideTraversal.KERNEL.blockWidth());
-        this.pairs = corners == null ? null : wide.width == 2 ? wide : new WideNodes(this, 2);
-    }
-
+    /** A hierarchy over {@code built} from its binary layout; its tracing layouts are made here. */
     private Bvh(Primitives built, double[] box, int[] link, int[] size, int[] primitives, CostModel costModel, int width, int maxDepth) {
         this.k = built.dimension();
         this.box = box;
@@ -118,11 +102,15 @@ public final class Bvh implements AccelerationStructure {
     }
 
     static Bvh of(Primitives built, BuildNode root, int[] primitives, BvhBuilder settings) {
-        return new Bvh(built, built.dimension(), root.size(), primitives, settings.costModel(), root, settings.width());
+        int k = built.dimension(), nodes = root.size();
+        double[] box = new double[2 * k * nodes];
+        int[] link = new int[nodes], size = new int[nodes];
+        int depth = layOut(root, 0, 1, 0, k, box, link, size);
+        return new Bvh(built, box, link, size, primitives, settings.costModel(), settings.width(), depth);
     }
 
-    /** Writes {@code n} at {@code index}, its children at {@code next}; returns the subtree's depth. */
-    private int layOut(BuildNode n, int index, int next, int depth) {
+    /** Writes {@code n} at {@code index} of the arrays, its children at {@code next}; returns the subtree's depth. */
+    private static int layOut(BuildNode n, int index, int next, int depth, int k, double[] box, int[] link, int[] size) {
         System.arraycopy(n.box, 0, box, 2 * k * index, 2 * k);
         if (n.isLeaf()) {
             link[index] = ~n.first;
@@ -131,8 +119,8 @@ public final class Bvh implements AccelerationStructure {
         }
         link[index] = next;
         // The left child's descendants come first, after the pair; the right child's follow them.
-        int dl = layOut(n.left, next, next + 2, depth + 1);
-        int dr = layOut(n.right, next + 1, next + 1 + n.left.size(), depth + 1);
+        int dl = layOut(n.left, next, next + 2, depth + 1, k, box, link, size);
+        int dr = layOut(n.right, next + 1, next + 1 + n.left.size(), depth + 1, k, box, link, size);
         return Math.max(dl, dr);
     }
 

@@ -13,13 +13,12 @@ interface RayKernel {
     int SPARE = 16;
 
     /**
-     * The node kernel: which children of the wide node at {@code base} of {@code words} ({@link
-     * WideNodes}) the ray enters within {@code [start, limit]}, with the traversal's slack
+     * The node kernel: which children of a wide node of {@code words} ({@link WideNodes}, {@code
+     * width} children) the ray enters within {@code [start, limit]}, with the traversal's slack
      * ({@code t0 (1 - slack) <= t1 (1 + slack)}).
      *
-     * @param nx    within the node, the offset of the ray's near planes on x (0 if it runs up x, else width)
-     * @param ny    on y (2 width, or 3 width)
-     * @param nz    on z (4 width, or 5 width)
+     * @param nx    where the node's near planes on x start in {@code words} (its minima if the ray runs up x, else its maxima)
+     * @param fx    where its far planes on x start
      * @param ox    the ray's origin, x
      * @param ix    its inverse direction, x (finite: no zero component)
      * @param start where intervals start (at least 0)
@@ -27,7 +26,7 @@ interface RayKernel {
      * @param t     receives, for each child entered, its entry distance at its slot
      * @return bit {@code i} set for each child slot {@code i} entered
      */
-    int enter(int[] words, int base, int width, int nx, int ny, int nz, double ox, double oy, double oz,
+    int enter(int[] words, int width, int nx, int fx, int ny, int fy, int nz, int fz, double ox, double oy, double oz,
               double ix, double iy, double iz, double start, double limit, double[] t);
 
     /**

@@ -10,13 +10,10 @@ final class ScalarRayKernel implements RayKernel {
     private static final int UNUSED = Float.floatToRawIntBits(Float.POSITIVE_INFINITY);
     private static final double SHRINK = 1 - Tolerance.TRAVERSAL_SLACK, GROW = 1 + Tolerance.TRAVERSAL_SLACK;
 
-    @Override public int enter(int[] nd, int base, int w, int nx, int ny, int nz, double ox, double oy, double oz,
+    @Override public int enter(int[] nd, int w, int nx, int fx, int ny, int fy, int nz, int fz, double ox, double oy, double oz,
                                double ix, double iy, double iz, double start, double limit, double[] t) {
-        int fx = base + w - nx, fy = base + 5 * w - ny, fz = base + 9 * w - nz, bits = 0;
-        nx += base;
-        ny += base;
-        nz += base;
-        for (int i = 0; i < w && nd[base + i] != UNUSED; i++) {   // unused slots come last
+        int bits = 0;
+        for (int i = 0, minX = Math.min(nx, fx); i < w && nd[minX + i] != UNUSED; i++) {   // unused slots come last
             // Branch-free slabs: with no zero direction component no bound is NaN.
             double t0 = Math.max(start, (Float.intBitsToFloat(nd[nx + i]) - ox) * ix);
             double t1 = Math.min(limit, (Float.intBitsToFloat(nd[fx + i]) - ox) * ix);

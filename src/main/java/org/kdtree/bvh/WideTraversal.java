@@ -102,6 +102,7 @@ final class WideTraversal implements RayQuery {
         int w = width;
         // Offsets of the near and far planes within a node: per axis, minima first, then maxima.
         int nx = ix < 0 ? w : 0, ny = (iy < 0 ? w : 0) + 2 * w, nz = (iz < 0 ? w : 0) + 4 * w;
+        int fx = w - nx, fy = 5 * w - ny, fz = 9 * w - nz;
 
         // The watertight test's shear, once per ray.
         int kz = TriangleIntersector.maxAxis(ray.direction(0), ray.direction(1), ray.direction(2));
@@ -119,7 +120,7 @@ final class WideTraversal implements RayQuery {
             if (e >= 0) {
                 // An interior node: the children entered; go on with the nearest, save the others.
                 int base = stride * e, m = 0;
-                int bits = kernel.enter(nd, base, w, nx, ny, nz, ox, oy, oz, ix, iy, iz, start, best + Math.abs(best) * SLACK, slotT);
+                int bits = kernel.enter(nd, w, base + nx, base + fx, base + ny, base + fy, base + nz, base + fz, ox, oy, oz, ix, iy, iz, start, best + Math.abs(best) * SLACK, slotT);
                 for (; bits != 0; bits &= bits - 1) {
                     int i = Integer.numberOfTrailingZeros(bits);
                     he[m] = nd[base + refs + w + i] > 0 ? -1 - (base + refs + i) : nd[base + refs + i];

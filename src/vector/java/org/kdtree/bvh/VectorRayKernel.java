@@ -42,12 +42,9 @@ public final class VectorRayKernel implements RayKernel {
         return (DoubleVector) IntVector.fromArray(I, words, at).reinterpretAsFloats().convertShape(VectorOperators.F2D, S, 0);
     }
 
-    @Override public int enter(int[] nd, int base, int w, int nx, int ny, int nz, double ox, double oy, double oz,
+    @Override public int enter(int[] nd, int w, int nx, int fx, int ny, int fy, int nz, int fz, double ox, double oy, double oz,
                                double ix, double iy, double iz, double start, double limit, double[] t) {
-        int fx = base + w - nx, fy = base + 5 * w - ny, fz = base + 9 * w - nz, bits = 0;
-        nx += base;
-        ny += base;
-        nz += base;
+        int bits = 0;
         for (int i = 0; i < w; i += L) {
             DoubleVector t0 = planes(nd, nx + i).sub(ox).mul(ix).max(start);
             DoubleVector t1 = planes(nd, fx + i).sub(ox).mul(ix).min(limit);
