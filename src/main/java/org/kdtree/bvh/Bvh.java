@@ -14,20 +14,21 @@ import org.kdtree.geom.Box;
 import org.kdtree.shape.Primitives;
 
 /**
- * A bounding volume hierarchy in flat arrays. Two layouts are made when it is built:
+ * A bounding volume hierarchy in flat arrays, with its layouts made when it is built:
  * <ul>
  * <li>the binary tree the builder found, for reading (the workbench draws it, the listening
  * traversal steps through it): node 0 is the root, an interior node's children are
  * {@link #left} and {@link #right}, a leaf holds a stretch of {@link #primitive}s; each node has
  * its box, which bounds its primitives whole (a primitive is in exactly one leaf);</li>
- * <li>the same tree collapsed to {@link #width()} children per node, which the fast 3-D
- * traversal reads: fewer, wider nodes whose child boxes are tested together.</li>
+ * <li>for single rays, the same tree collapsed to {@link #width()} children per node
+ * ({@link WideNodes}; on the vector path, as many as the node kernel's lanes: {@link
+ * RayKernel#width}), whose child boxes are tested together, and over a mesh the leaves'
+ * triangles in blocks as the leaf kernel reads them ({@link LeafBlocks});</li>
+ * <li>for packets, over a mesh, the binary tree with both children's boxes in one 64-byte node
+ * ({@link #pairs}: the wide layout at width 2) and the triangles' corners in leaf order
+ * ({@link #leafCorners}).</li>
  * </ul>
- * The tree never changes once built, but the layouts the other loops read are made on their first
- * query, under the object's lock: the ray tests of its primitives and, over a mesh, the corners in
- * leaf order ({@link #leafCorners}); the compact binary layout that packets trace ({@link
- * #pairs}); the wide layout at the vector lanes' width ({@link #lanes}) and the vector path's leaf
- * blocks ({@link #leafBlocks}).
+ * None changes once built; all are counted in {@link #memoryBytes}.
  * Unlike a kd-tree's voxels, sibling boxes may overlap and need not cover the scene, so a
  * traversal visits children by their entry distance and stops at none before its closest hit.
  */
@@ -43,32 +44,19 @@ public final class Bvh implements AccelerationStructure {
     private final int[] primitives;
     private final int maxDepth;
     private final CostModel costModel;
-    private final WideNodes wide;
     private TreeStats stats;
-    /** What it was built over; its ray tests are made from them once, on the first query. */
-    private final Primitives built;
-    private Intersector intersector;
-    /** A mesh's corners in leaf order ({@link #leafCorners}), made with {@link #intersector}. */
-    private double[] leafCorners;
-    private PairNodes pairs;
-    private WideNodes laneNodes;
-    /** The triangles in blocks for the vector path's leaf test ({@link #leafBlocks}), made on its first query. */
-    private LeafBlocks leafBlocks;
+    /** The ray tests of the primitives it was built over. */
+    private final Intersector intersector;
+    /** The tracing layouts, made with the tree: for single rays the wide nodes and leaf blocks, for packets the pairs and the corners in leaf order (the last three only over a mesh). */
+    private final WideNodes wide;
+    /** The width it was built with ({@code --bvh-width}). */
+    private final int width;
+    private final LeafBlocks leafBlocks;
+    private final WideNodes pairs;
+    private final double[] leafCorners;
 
-    private Bvh(Primitives built, int k, int nodes, int[] primitives, CostModel costModel, BuildNode root, int width) {
-        this.built = built;
-        this.k = k;
-        this.box = new double[2 * k * nodes];
-        this.link = new int[nodes];
-        this.size = new int[nodes];
-        this.primitives = primitives;
-        this.costModel = costModel;
-        this.maxDepth = layOut(root, 0, 1, 0);
-        this.wide = new WideNodes(this, width);
-    }
-
+    /** A hierarchy over {@code built} from its binary layout; its tracing layouts are made here. */
     private Bvh(Primitives built, double[] box, int[] link, int[] size, int[] primitives, CostModel costModel, int width, int maxDepth) {
-        this.built = built;
         this.k = built.dimension();
         this.box = box;
         this.link = link;
@@ -76,7 +64,20 @@ public final class Bvh implements AccelerationStructure {
         this.primitives = primitives;
         this.costModel = costModel;
         this.maxDepth = maxDepth;
-        this.wide = new WideNodes(this, width);
+        double[] corners = TriangleIntersector.cornersOf(built);
+        this.intersector = Intersector.of(built, corners);
+        this.leafCorners = corners == null ? null : inLeafOrder(corners);
+        this.width = width;
+        this.wide = new WideNodes(this, WideTraversal.KERNEL.width(width));
+        this.leafBlocks = corners == null ? null : new LeafBlocks(this, leafCorners, WideTraversal.KERNEL.blockWidth());
+        this.pairs = corners == null ? null : wide.width == 2 ? wide : new WideNodes(this, 2);
+    }
+
+    /** The triangles' corners ({@link TriangleIntersector#corners}) copied into leaf order. */
+    private double[] inLeafOrder(double[] corners) {
+        double[] c = new double[9 * primitives.length];
+        for (int r = 0; r < primitives.length; r++) System.arraycopy(corners, 9 * primitives[r], c, 9 * r, 9);
+        return c;
     }
 
     /**
@@ -101,11 +102,15 @@ public final class Bvh implements AccelerationStructure {
     }
 
     static Bvh of(Primitives built, BuildNode root, int[] primitives, BvhBuilder settings) {
-        return new Bvh(built, built.dimension(), root.size(), primitives, settings.costModel(), root, settings.width());
+        int k = built.dimension(), nodes = root.size();
+        double[] box = new double[2 * k * nodes];
+        int[] link = new int[nodes], size = new int[nodes];
+        int depth = layOut(root, 0, 1, 0, k, box, link, size);
+        return new Bvh(built, box, link, size, primitives, settings.costModel(), settings.width(), depth);
     }
 
-    /** Writes {@code n} at {@code index}, its children at {@code next}; returns the subtree's depth. */
-    private int layOut(BuildNode n, int index, int next, int depth) {
+    /** Writes {@code n} at {@code index} of the arrays, its children at {@code next}; returns the subtree's depth. */
+    private static int layOut(BuildNode n, int index, int next, int depth, int k, double[] box, int[] link, int[] size) {
         System.arraycopy(n.box, 0, box, 2 * k * index, 2 * k);
         if (n.isLeaf()) {
             link[index] = ~n.first;
@@ -114,8 +119,8 @@ public final class Bvh implements AccelerationStructure {
         }
         link[index] = next;
         // The left child's descendants come first, after the pair; the right child's follow them.
-        int dl = layOut(n.left, next, next + 2, depth + 1);
-        int dr = layOut(n.right, next + 1, next + 1 + n.left.size(), depth + 1);
+        int dl = layOut(n.left, next, next + 2, depth + 1, k, box, link, size);
+        int dr = layOut(n.right, next + 1, next + 1 + n.left.size(), depth + 1, k, box, link, size);
         return Math.max(dl, dr);
     }
 
@@ -127,16 +132,23 @@ public final class Bvh implements AccelerationStructure {
     /** {@return the number of nodes of the binary tree} */
     public int nodeCount() { return link.length; }
 
-    /** {@return children per node of the wide layout} */
-    public int width() { return wide.width; }
+    /**
+     * {@return the children per node it was built with ({@code --bvh-width})}: the width of the
+     * single rays' layout on the Java 17 path; on the vector path that layout has the node
+     * kernel's lanes ({@link #describePath} says which)
+     */
+    public int width() { return width; }
 
     /** {@return the depth of the deepest leaf of the binary tree (the root's is 0)} */
     public int maxDepth() { return maxDepth; }
 
-    /** {@return Kt and Ki, with which it was built and its expected cost is counted} */
-    /** {@return the Vector API path where this JVM takes it (else the scalar wide loop), and set P in 8 x 8 packets} */
-    @Override public String describePath() { return Vectorization.describe() + "; set P in 8 x 8 packets"; }
+    /** {@return which kernels the fast loops run (Vector API or Java 17), the single rays' node width, and set P in 8 x 8 packets} */
+    @Override public String describePath() {
+        String lanes = wide.width == width ? "" : " (the vector lanes; --bvh-width " + width + " holds on the Java 17 path)";
+        return Vectorization.describe() + "; single rays over " + wide.width + "-wide nodes" + lanes + "; set P in 8 x 8 packets over the binary tree";
+    }
 
+    /** {@return Kt and Ki, with which it was built and its expected cost is counted} */
     @Override public CostModel costModel() { return costModel; }
 
     /**
@@ -217,55 +229,28 @@ public final class Bvh implements AccelerationStructure {
     int[] primitiveArray() { return primitives; }
     WideNodes wide() { return wide; }
 
-    /** The wide layout at {@code lanes} children per node, as the vector traversal reads it: made once, on its first query. */
-    synchronized WideNodes lanes(int lanes) {
-        if (laneNodes == null || laneNodes.width != lanes) laneNodes = lanes == width() ? wide : new WideNodes(this, lanes);
-        return laneNodes;
-    }
+    /** The leaf blocks the single-ray loop reads, at its leaf kernel's width; null unless built over a mesh. */
+    LeafBlocks leafBlocks() { return leafBlocks; }
 
-    /** The leaf-ordered corners in blocks of {@link LeafBlocks#WIDTH} per leaf, for the vector path's single rays; null unless built over a mesh. */
-    synchronized LeafBlocks leafBlocks() {
-        if (leafBlocks == null && leafCorners() != null) leafBlocks = new LeafBlocks(this, leafCorners);
-        return leafBlocks;
-    }
+    /** The binary tree as the wide layout at width 2, which packets trace; null unless built over a mesh. */
+    WideNodes pairs() { return pairs; }
 
-    /** The compact binary layout ({@link PairNodes}), made on the first triangle query. */
-    synchronized PairNodes pairs() {
-        if (pairs == null) pairs = new PairNodes(this);
-        return pairs;
-    }
-
-    /**
-     * The ray tests of the primitives it was built over, made once; over a mesh, also its corners
-     * ({@link TriangleIntersector#corners}) copied into leaf order ({@link #leafCorners}).
-     */
-    synchronized Intersector intersector() {
-        if (intersector == null) {
-            double[] corners = TriangleIntersector.cornersOf(built);
-            intersector = Intersector.of(built, corners);
-            if (corners != null) {
-                leafCorners = new double[9 * primitives.length];
-                for (int r = 0; r < primitives.length; r++) System.arraycopy(corners, 9 * primitives[r], leafCorners, 9 * r, 9);
-            }
-        }
-        return intersector;
-    }
+    /** The ray tests of the primitives it was built over. */
+    Intersector intersector() { return intersector; }
 
     /**
      * {@return the triangles' corners, 9 per triangle, in leaf order}, so that the fast traversals
      * read a leaf's triangles from one stretch of memory; null unless built over a mesh
      */
-    synchronized double[] leafCorners() {
-        intersector();
-        return leafCorners;
-    }
+    double[] leafCorners() { return leafCorners; }
 
     /**
-     * {@return the bytes its arrays hold, the binary and the wide layout} (not those made on a first
-     * query: the leaf-ordered corners, the compact binary layout, the vector path's lanes and blocks)
+     * {@return the bytes its arrays hold}: the binary tree and the tracing layouts (wide nodes, leaf
+     * blocks, the packets' nodes, corners in leaf order), not the primitives' own ray tests
      */
     public long memoryBytes() {
-        return 8L * box.length + 4L * (link.length + size.length + primitives.length) + wide.memoryBytes();
+        long mesh = leafCorners == null ? 0 : 8L * leafCorners.length + leafBlocks.memoryBytes() + (pairs == wide ? 0 : pairs.memoryBytes());
+        return 8L * box.length + 4L * (link.length + size.length + primitives.length) + wide.memoryBytes() + mesh;
     }
 
     @Override public synchronized TreeStats stats() {
@@ -274,29 +259,26 @@ public final class Bvh implements AccelerationStructure {
     }
 
     /**
-     * The fastest query: over a triangle mesh, the vector traversal when this JVM has the Vector
-     * API ({@link org.kdtree.accel.Vectorization}; as many children per node as its lanes; packets
-     * with their rays in the lanes), else
-     * the wide layout's traversal (the compact binary one at width 2) with the triangle test inlined, which also traces packets of coherent rays
-     * ({@link org.kdtree.accel.PacketQuery}); otherwise the binary layout's, with any {@link Intersector}.
+     * The fastest query: over a triangle mesh, the packet loop ({@link PacketTraversal}), which
+     * traces single rays with the single-ray loop ({@link WideTraversal}), both over the kernels
+     * this JVM chose ({@link org.kdtree.accel.Vectorization#kernel}); otherwise the listening loop
+     * over the binary tree, with any {@link Intersector}.
      */
     @Override public RayQuery query() {
-        if (intersector() instanceof TriangleIntersector) return packetQuery();
+        if (intersector instanceof TriangleIntersector) return packetQuery();
         return new BvhTraverser(this, TraversalListener.NONE);
     }
 
     /**
-     * {@return its packet loop}: the vector one when this JVM has the Vector API, else the Java 17
-     * one ({@link PacketTraversal}), each over the compact binary layout with the fast single-ray
-     * query for the rays it leaves out
+     * {@return its packet loop} ({@link PacketTraversal}, over the binary tree at width 2 and the
+     * kernels this JVM chose), with the single-ray loop for the rays it leaves out
      *
      * @throws IllegalArgumentException if it was not built over a 3-D triangle mesh
      */
     @Override public PacketQuery packetQuery() {
-        if (!(intersector() instanceof TriangleIntersector))
+        if (!(intersector instanceof TriangleIntersector))
             throw new IllegalArgumentException("packets are traced against a triangle mesh; this " + k + "-D hierarchy holds other primitives");
-        if (VectorPath.enabled()) return VectorPath.packets(this, VectorPath.query(this));
-        return new PacketTraversal(this, width() == 2 ? new PairTraversal(this) : new WideTraversal(this));
+        return new PacketTraversal(this, new WideTraversal(this));
     }
 
     @Override public RayQuery query(TraversalListener listener) {

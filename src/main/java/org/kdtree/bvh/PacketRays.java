@@ -1,22 +1,24 @@
 package org.kdtree.bvh;
 
+import org.kdtree.accel.Hit;
 import org.kdtree.accel.RayPacket;
 import org.kdtree.accel.TriangleIntersector;
 import org.kdtree.geom.Tolerance;
 
 /**
- * What a packet traversal of {@link PairNodes} derives from a coherent {@link RayPacket} before
- * its first node, shared by the Java 17 loop ({@link PacketTraversal}) and the vector one
- * ({@code VectorPacketTraversal}):
+ * What the packet loop ({@link PacketTraversal}) derives from a coherent {@link RayPacket} before
+ * its first node, and each ray's state while it runs; its kernels ({@link PacketKernel}) read and
+ * update it:
  * <ul>
- * <li>at the packet's first leaf ({@link #frame}), each ray's shear for the watertight test, as
- * the single-ray traversals compute it, and whether all rays share the sheared frame's axes (a
- * camera tile almost always does);</li>
+ * <li>the watertight test's sheared frame, one for the whole packet (a packet whose rays'
+ * largest direction components lie on different axes is not coherent), and at the packet's first
+ * leaf ({@link #frame}) each ray's shear, as the single-ray loop computes it;</li>
  * <li>the near and far plane of each axis within a child's box, the same for every ray;</li>
  * <li>the packet's ranges of origins and inverse directions, for a test of a box against the
  * whole packet at once ({@link #packetEnters}: Wald, Boulos and Shirley's interval test);</li>
  * <li>for an any-hit packet whose rays all end, the boxes of their origins and of their ends, for
- * skipping a leaf's triangles that no ray's segment can reach ({@link #sidedTriangles}).</li>
+ * skipping a leaf's triangles that no ray's segment can reach ({@link #sidedTriangles});</li>
+ * <li>per ray, where its box intervals start, its closest hit so far and its limit.</li>
  * </ul>
  * Not thread safe: one per traversal.
  */
@@ -25,25 +27,30 @@ final class PacketRays {
     private static final double SHRINK = 1 - SLACK, GROW = 1 + SLACK;
     private static final int N = RayPacket.CAPACITY;
 
+    /** The packet's sheared frame: its axes, one for every ray. */
+    int kx, ky, kz;
     /**
-     * Per ray, once {@link #frame} is called: the watertight test's shear (axes, factors) and the
-     * origin in its frame. When all rays share the frame's axes, {@link #sz} and the origin's arrays
-     * are the packet's own (its inverse directions and origins on those axes), not copies.
+     * Per ray, once {@link #frame} is called: the shear's factors and the origin in its frame;
+     * {@link #sz} and the origin's arrays are the packet's own (its inverse directions and origins on the frame's axes).
      */
-    final int[] kx = new int[N], ky = new int[N], kz = new int[N];
     final double[] sx = new double[N], sy = new double[N];
     double[] sz, okx, oky, okz;
-    private final double[] ownSz = new double[N], ownOkx = new double[N], ownOky = new double[N], ownOkz = new double[N];
     /** Per ray: where box intervals start. */
     final double[] start = new double[N];
-    /** Whether every ray has the same sheared frame (kx, ky, kz); set by {@link #frame}. */
-    boolean uniformFrame;
+    /**
+     * Per ray: the end of its interval so far (tMax, then its closest hit's t), its slack-widened
+     * value (-infinity for rays past the packet's size and once an any-hit ray is blocked), the
+     * hit's leaf position (-1 for none; a double, to sit in a vector lane) and barycentrics.
+     */
+    final double[] best = new double[N], limit = new double[N], position = new double[N], bu = new double[N], bv = new double[N];
+    /** Scratch for one ray's triangle test. */
+    final Hit hit = new Hit();
     /** Whether every ray has the same origin (a camera's): then {@code plane - origin} is one number for all. */
     boolean sharedOrigin;
     /** The packet loaded, and whether its frame is made (only packets that reach a leaf need it). */
     private RayPacket packet;
     private boolean framed;
-    /** Within a child's six words of {@link PairNodes}: the near and far plane of each axis. */
+    /** From a child's first word in a node of {@link Bvh#pairs} ({@link WideNodes} at width 2): the near and far plane of each axis. */
     int nx, ny, nz, fx, fy, fz;
     /** The packet's ranges of origins and inverse directions, and the least start of an interval. */
     private double oxLo, oxHi, oyLo, oyHi, ozLo, ozHi, ixLo, ixHi, iyLo, iyHi, izLo, izHi, startLo;
@@ -53,9 +60,10 @@ final class PacketRays {
     boolean planeCull;
 
     /**
-     * Derives the packet's bounds, planes and plane-culling boxes from its rays, if they suit the
-     * packet loops: one sign per axis, no zero or non-finite component, finite origins,
-     * {@code 0 <= tMin <= tMax}. Others are traced one ray at a time.
+     * Derives the packet's bounds, frame, planes and plane-culling boxes from its rays, and sets
+     * each ray's state, if they suit the packet loop: one sign per axis, no zero or non-finite
+     * component, finite origins, {@code 0 <= tMin <= tMax}, one sheared frame. Others are traced
+     * one ray at a time.
      *
      * @param p   the rays, at least one
      * @param any whether the packet asks for any hit (plane culling is tried only then)
@@ -66,11 +74,13 @@ final class PacketRays {
         boolean xs = p.ix[0] < 0, ys = p.iy[0] < 0, zs = p.iz[0] < 0, ok = true;
         double oxl = Double.POSITIVE_INFINITY, oxh = Double.NEGATIVE_INFINITY, oyl = oxl, oyh = oxh, ozl = oxl, ozh = oxh;
         double ixl = oxl, ixh = oxh, iyl = oxl, iyh = oxh, izl = oxl, izh = oxh, sl = oxl;
+        int z = TriangleIntersector.maxAxis(p.dx[0], p.dy[0], p.dz[0]);
         for (int i = 0; i < n; i++) {
             double ox = p.ox[i], oy = p.oy[i], oz = p.oz[i], ix = p.ix[i], iy = p.iy[i], iz = p.iz[i], t0 = p.tMin[i];
             // x - x == 0 exactly when x is finite.
             ok &= ix - ix == 0 & iy - iy == 0 & iz - iz == 0 & ix < 0 == xs & iy < 0 == ys & iz < 0 == zs
-                    & t0 >= 0 & t0 <= p.tMax[i] & ox - ox == 0 & oy - oy == 0 & oz - oz == 0;
+                    & t0 >= 0 & t0 <= p.tMax[i] & ox - ox == 0 & oy - oy == 0 & oz - oz == 0
+                    & TriangleIntersector.maxAxis(p.dx[i], p.dy[i], p.dz[i]) == z;
             // Compares, not Math.min/max (whose NaN and -0 cases cost): a NaN makes the packet incoherent anyway.
             oxl = ox < oxl ? ox : oxl; oxh = ox > oxh ? ox : oxh;
             oyl = oy < oyl ? oy : oyl; oyh = oy > oyh ? oy : oyh;
@@ -81,99 +91,61 @@ final class PacketRays {
             double s0 = WideTraversal.boxStart(t0);
             start[i] = s0;
             sl = s0 < sl ? s0 : sl;
+            best[i] = p.tMax[i];
+            limit[i] = best[i] + Math.abs(best[i]) * SLACK;
+            position[i] = -1;
         }
         if (!ok) return false;
-        bound(oxl, oxh, oyl, oyh, ozl, ozh, ixl, ixh, iyl, iyh, izl, izh, sl);
-        finish(p, any);
+        java.util.Arrays.fill(limit, n, N, Double.NEGATIVE_INFINITY);
+        oxLo = oxl; oxHi = oxh; oyLo = oyl; oyHi = oyh; ozLo = ozl; ozHi = ozh;
+        ixLo = ixl; ixHi = ixh; iyLo = iyl; iyHi = iyh; izLo = izl; izHi = izh; startLo = sl;
+        sharedOrigin = oxl == oxh & oyl == oyh & ozl == ozh;
+        packet = p;
+        framed = false;
+        // The frame's axes as the single ray's (the direction's sign on z is the same for every ray of a coherent packet).
+        kz = z;
+        kx = z == 2 ? 0 : z + 1;
+        ky = kx == 2 ? 0 : kx + 1;
+        if (axis(p.dx, p.dy, p.dz, z)[0] < 0) { int t = kx; kx = ky; ky = t; }
+        // Per axis a the two minima at 4 a, the two maxima at 4 a + 2.
+        nx = xs ? 2 : 0;
+        ny = ys ? 6 : 4;
+        nz = zs ? 10 : 8;
+        fx = 2 - nx;
+        fy = 10 - ny;
+        fz = 18 - nz;
+        planeCull = any && segmentBoxes(p, n);
         return true;
     }
 
     /**
-     * Records a coherent packet's ranges of origins and inverse directions, and the least start of
-     * an interval ({@link #start} filled), as {@link #load} finds them, or the vector path does.
-     */
-    void bound(double oxl, double oxh, double oyl, double oyh, double ozl, double ozh,
-               double ixl, double ixh, double iyl, double iyh, double izl, double izh, double sl) {
-        oxLo = oxl; oxHi = oxh; oyLo = oyl; oyHi = oyh; ozLo = ozl; ozHi = ozh;
-        ixLo = ixl; ixHi = ixh; iyLo = iyl; iyHi = iyh; izLo = izl; izHi = izh; startLo = sl;
-        sharedOrigin = oxl == oxh & oyl == oyh & ozl == ozh;
-    }
-
-    /**
-     * After {@link #bound}: the planes, plane culling's boxes, and the frame left for the first leaf.
-     *
-     * @param p   the packet, coherent
-     * @param any whether it asks for any hit
-     */
-    void finish(RayPacket p, boolean any) {
-        packet = p;
-        framed = false;
-        nx = p.ix[0] < 0 ? 3 : 0;
-        ny = p.iy[0] < 0 ? 4 : 1;
-        nz = p.iz[0] < 0 ? 5 : 2;
-        fx = 3 - nx;
-        fy = 5 - ny;
-        fz = 7 - nz;
-        planeCull = any && segmentBoxes(p, p.size());
-    }
-
-    /**
-     * Makes each ray's shear for the watertight test, as {@link PairTraversal} computes it, at the
+     * Makes each ray's shear for the watertight test, as the single-ray loop computes it, at the
      * packet's first leaf (a packet that misses every box never needs it); then again does nothing.
      */
     void frame() {
         if (framed) return;
         framed = true;
         RayPacket p = packet;
-        int n = p.size();
-        int z = TriangleIntersector.maxAxis(p.dx[0], p.dy[0], p.dz[0]);
-        boolean same = true;
-        for (int i = 1; i < n; i++) same &= TriangleIntersector.maxAxis(p.dx[i], p.dy[i], p.dz[i]) == z;
-        uniformFrame = same;
-        if (!same) {
-            sz = ownSz; okx = ownOkx; oky = ownOky; okz = ownOkz;
-            for (int i = 0; i < n; i++) shear(p, i);
-            return;
-        }
-        // One frame: the packet's arrays on its axes (the direction's sign on z is the same for every ray of a coherent packet).
-        int x = z == 2 ? 0 : z + 1, y = x == 2 ? 0 : x + 1;
-        if (axis(p.dx, p.dy, p.dz, z)[0] < 0) { int t = x; x = y; y = t; }
-        sz = axis(p.ix, p.iy, p.iz, z);
-        okx = axis(p.ox, p.oy, p.oz, x);
-        oky = axis(p.ox, p.oy, p.oz, y);
-        okz = axis(p.ox, p.oy, p.oz, z);
-        double[] dkx = axis(p.dx, p.dy, p.dz, x), dky = axis(p.dx, p.dy, p.dz, y), s = sz;
-        for (int i = 0; i < n; i++) {
+        sz = axis(p.ix, p.iy, p.iz, kz);
+        okx = axis(p.ox, p.oy, p.oz, kx);
+        oky = axis(p.ox, p.oy, p.oz, ky);
+        okz = axis(p.ox, p.oy, p.oz, kz);
+        double[] dkx = axis(p.dx, p.dy, p.dz, kx), dky = axis(p.dx, p.dy, p.dz, ky), s = sz;
+        for (int i = 0, n = p.size(); i < n; i++) {
             sx[i] = dkx[i] * s[i];
             sy[i] = dky[i] * s[i];
         }
-        java.util.Arrays.fill(kx, 0, n, x);
-        java.util.Arrays.fill(ky, 0, n, y);
-        java.util.Arrays.fill(kz, 0, n, z);
     }
 
     private static double[] axis(double[] x, double[] y, double[] z, int axis) {
         return axis == 0 ? x : axis == 1 ? y : z;
     }
 
-    /** Ray {@code i}'s shear for the watertight test, as {@link PairTraversal} computes it, into the own arrays. */
-    private void shear(RayPacket p, int i) {
-        double dx = p.dx[i], dy = p.dy[i], dz = p.dz[i];
-        int z = TriangleIntersector.maxAxis(dx, dy, dz);
-        int x = z == 2 ? 0 : z + 1, y = x == 2 ? 0 : x + 1;
-        if (component(dx, dy, dz, z) < 0) { int s = x; x = y; y = s; }
-        double s = component(p.ix[i], p.iy[i], p.iz[i], z);
-        kx[i] = x; ky[i] = y; kz[i] = z;
-        ownSz[i] = s;
-        sx[i] = component(dx, dy, dz, x) * s;
-        sy[i] = component(dx, dy, dz, y) * s;
-        ownOkx[i] = component(p.ox[i], p.oy[i], p.oz[i], x);
-        ownOky[i] = component(p.ox[i], p.oy[i], p.oz[i], y);
-        ownOkz[i] = component(p.ox[i], p.oy[i], p.oz[i], z);
-    }
-
-    private static double component(double x, double y, double z, int axis) {
-        return axis == 0 ? x : axis == 1 ? y : z;
+    /** {@return the largest limit of a ray of the packet} (none NaN; those past its size are -infinity), by compares */
+    double maxLimit() {
+        double m = Double.NEGATIVE_INFINITY;
+        for (int i = 0; i < N; i++) m = limit[i] > m ? limit[i] : m;
+        return m;
     }
 
     /**
@@ -182,7 +154,7 @@ final class PacketRays {
      * directions (the four corners of each product), compared as one ray's would be. Rounding is
      * monotonic, so a bound is never inside any ray's own value: false means no ray enters.
      *
-     * @param nd      the records of {@link PairNodes}
+     * @param nd      the nodes of {@link Bvh#pairs}
      * @param b       where the child's box starts
      * @param limitHi the largest end of a ray's interval, slack included
      * @return whether the box may hold a hit of some ray
@@ -201,7 +173,7 @@ final class PacketRays {
      * {@return ray {@code i}'s entry distance into the box at {@code b} of {@code nd}}, for ordering
      * a node's children
      * @param p  the packet
-     * @param nd the records of {@link PairNodes}
+     * @param nd the nodes of {@link Bvh#pairs}
      * @param b  where the child's box starts
      * @param i  a ray's index
      */

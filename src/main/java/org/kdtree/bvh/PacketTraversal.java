@@ -2,228 +2,254 @@ package org.kdtree.bvh;
 
 import org.kdtree.accel.Hit;
 import org.kdtree.accel.OctantSplit;
+import org.kdtree.accel.PacketQuery;
 import org.kdtree.accel.RayPacket;
 import org.kdtree.accel.RayQuery;
-import org.kdtree.accel.TriangleIntersector;
+import org.kdtree.accel.Vectorization;
+import org.kdtree.geom.Ray;
 import org.kdtree.geom.Tolerance;
 
 /**
- * Packets of coherent rays through a 3-D {@link Bvh}'s compact binary layout ({@link PairNodes}),
- * after Overbeck, Ramamoorthi and Mark's ranged traversal (2008) with an interval test for the
- * whole packet (Wald, Boulos and Shirley 2007):
+ * Packets of coherent rays through a 3-D {@link Bvh}'s binary tree in its wide layout at width 2 ({@link Bvh#pairs}: one 64-byte node with both children's boxes),
+ * the one packet loop on both paths, after Overbeck, Ramamoorthi and Mark's ranged traversal
+ * (2008) with an interval test for the whole packet (Wald, Boulos and Shirley 2007). The rays
+ * still in play are a mask, one bit per ray; the packet kernel ({@link #KERNEL}) takes them a
+ * group at a time (one ray in Java 17, a vector's lanes with the Vector API):
  * <ol>
- * <li>At each node, a child box is first tested for the whole packet at once: the slab distances
- * of the box's near and far planes bounded over the packet's ranges of origins and inverse
- * directions. If even those bounds say no ray enters, the child is skipped for all of them.</li>
- * <li>Otherwise the rays that enter it are found from each end of the range of rays still
- * active: the child is entered with the range from the first ray that enters it to the last.</li>
+ * <li>At each node, a child box is first tested for the whole packet at once
+ * ({@link PacketRays#packetEnters}); if some ray may enter it, the groups are tested from each end
+ * of the mask ({@link PacketKernel#enter}): the child gets the rays from the first group with a
+ * ray that enters it to the last, the groups between kept whole, untested (a superset of the rays
+ * that enter, never fewer).</li>
  * <li>The nearer child (by its first ray's entry distance) is taken next, the other saved with
- * its range.</li>
- * <li>At a leaf, every ray of the range tests the leaf's triangles with the watertight test
- * ({@link TriangleIntersector#test}).</li>
+ * its mask.</li>
+ * <li>At a leaf, every group's rays test its box, then its triangles ({@link PacketKernel#hit}).</li>
  * </ol>
- * Every per-ray test is the single-ray traversal's, in the same arithmetic, and the whole-packet
- * bounds are taken with the same operations on the extreme values (rounding is monotonic, so a
- * bound is never inside any ray's own value): a child skipped for the packet is a child no ray
- * would have entered alone. A ray may test more triangles than alone, never fewer of those that
- * hold its closest hit, and of two hits equally close the lower leaf position wins either way
- * ({@link TriangleIntersector#test}): each ray's hit is its single-ray hit, bit for bit.
+ * A ray enters every box it enters alone (bar those its closest hit so far rules out) and tests
+ * their triangles with the same arithmetic, and of two hits equally close the lower leaf position
+ * wins either way: each ray's hit is its single-ray hit, bit for bit. An any-hit ray leaves the
+ * packet at its first hit, and the packet stops when none is left; leaves whose triangles no ray's
+ * segment reaches are skipped ({@link PacketRays#sidedTriangles}).
  *
- * <p>Packets take one sign per axis for all their rays and no zero direction component, with
- * {@code tMin >= 0}: a packet whose rays mix signs (a tile across an axis of the camera) goes as one
- * packet per octant ({@link OctantSplit}); rays that fit no octant, one at a time by the single-ray query. Allocation-free per packet; not thread safe: one per thread.
+ * <p>A packet goes as one if coherent ({@link PacketRays#load}); one whose rays mix direction
+ * signs (a tile across an axis of the camera) as one packet per octant ({@link OctantSplit}); a
+ * small one ({@link PacketKernel#oneByOneUpTo}), or one with rays no octant holds, one ray at a
+ * time through the single-ray loop. Allocation-free per packet; not thread safe: one per thread.
  */
-final class PacketTraversal extends PacketLoop {
-    private static final double SLACK = Tolerance.TRAVERSAL_SLACK;
-    private static final double SHRINK = 1 - SLACK, GROW = 1 + SLACK;
-    private static final int STRIDE = PairNodes.STRIDE, RIGHT = PairNodes.RIGHT, LINKS = PairNodes.LINKS;
+final class PacketTraversal implements PacketQuery {
+    /** The kernels, chosen once for the JVM: a final static, so that the JIT inlines the one class it holds. */
+    static final PacketKernel KERNEL = Vectorization.kernel(PacketKernel.class, "org.kdtree.bvh.VectorPacketKernel", new ScalarPacketKernel());
     private static final int N = RayPacket.CAPACITY;
+    /** Words per node of the layout at width 2, and the offset of its children's references (their counts follow, 2 words on). */
+    private static final int STRIDE = 16, REFS = 12;
 
-    /** Saved children (as {@link PairTraversal}'s entries) with the range of rays that enter them. */
-    private final int[] stackEntry, stackFirst, stackLast;
-    /** Per ray: the closest hit so far (t, leaf position, barycentrics), and its slack-widened t. */
-    private final double[] best = new double[N], limit = new double[N], bu = new double[N], bv = new double[N];
-    private final int[] position = new int[N];
-
-    PacketTraversal(Bvh bvh, RayQuery single) {
-        super(bvh, single, 0);
-        int depth = bvh.maxDepth() + 2;
-        stackEntry = new int[depth];
-        stackFirst = new int[depth];
-        stackLast = new int[depth];
-    }
+    /** Single rays, and the packets the loop leaves out. */
+    private final RayQuery single;
+    /** The nodes ({@link Bvh#pairs}), the primitive of each leaf position, the corners in leaf order. */
+    private final int[] words, prim;
+    private final double[] corners;
+    private final boolean empty;
+    /** The packet's shear, planes, bounds and each ray's state. */
+    private final PacketRays rays = new PacketRays();
+    /** Saved children (as {@link #code}) with the mask of rays that enter them. */
+    private final int[] stackEntry;
+    private final long[] stackMask;
+    private final Hit hit = new Hit();
+    private final Ray ray = new Ray(3);
+    private final OctantSplit split;
 
     /**
-     * Traces a coherent packet: each ray's closest hit, or (for {@code any}) whether it hits
-     * anything. An any-hit ray leaves the packet at its first hit (its limit set below every box's
-     * entry), as a single ray stops, and the packet stops when no ray is left.
+     * @param bvh    a hierarchy over a triangle mesh
+     * @param single its single-ray query
      */
-    @Override void trace(RayPacket p, boolean any) {
-        int n = p.size(), active = n;
-        PacketRays q = rays;
-        for (int i = 0; i < n; i++) {
-            best[i] = p.tMax[i];
-            limit[i] = best[i] + Math.abs(best[i]) * SLACK;
-            position[i] = -1;
-        }
-        int nx = q.nx, ny = q.ny, nz = q.nz, fx = q.fx, fy = q.fy, fz = q.fz;
-        double limitHi = maxLimit(n);
+    PacketTraversal(Bvh bvh, RayQuery single) {
+        if (N % KERNEL.lanes() != 0 || KERNEL.lanes() > 32) throw new IllegalStateException(KERNEL.lanes() + " lanes do not divide a packet of " + N);
+        this.single = single;
+        words = bvh.pairs().words;
+        prim = bvh.primitiveArray();
+        corners = bvh.leafCorners();
+        empty = bvh.primitiveCount() == 0;
+        int depth = bvh.maxDepth() + 2;
+        stackEntry = new int[depth];
+        stackMask = new long[depth];
+        split = new OctantSplit(this::traceOctant, single);
+    }
 
+    @Override public boolean closestHit(Ray ray, double tMin, double tMax, Hit hit) {
+        return single.closestHit(ray, tMin, tMax, hit);
+    }
+
+    @Override public boolean anyHit(Ray ray, double tMin, double tMax) {
+        return single.anyHit(ray, tMin, tMax);
+    }
+
+    /** {@return true: a coherent packet's rays share the node reads} */
+    @Override public boolean tracesTogether() { return true; }
+
+    @Override public void closestHits(RayPacket p) {
+        traceAll(p, false);
+    }
+
+    @Override public void anyHits(RayPacket p) {
+        traceAll(p, true);
+    }
+
+    /** A packet as one, or (its rays' directions of several octants: a tile across an axis) as one packet per octant. */
+    private void traceAll(RayPacket p, boolean any) {
+        if (p.size() == 0) return;
+        if (empty || p.size() <= KERNEL.oneByOneUpTo()) oneByOne(p, any);
+        else if (rays.load(p, any)) trace(p, any);
+        else split.trace(p, any);
+    }
+
+    /** One octant's rays ({@link OctantSplit}): a packet if enough and coherent, else one at a time. */
+    private void traceOctant(RayPacket p, boolean any) {
+        if (p.size() <= KERNEL.oneByOneUpTo() || !rays.load(p, any)) oneByOne(p, any);
+        else trace(p, any);
+    }
+
+    private void oneByOne(RayPacket p, boolean any) {
+        if (any) PacketQuery.anyOneByOne(single, p, ray);
+        else PacketQuery.oneByOne(single, p, ray, hit);
+    }
+
+    /** Traces a coherent packet, {@link #rays} loaded from it: each ray's closest hit, or (for {@code any}) whether it hits anything. */
+    private void trace(RayPacket p, boolean any) {
+        int n = p.size();
+        PacketRays q = rays;
+        long all = n == N ? -1L : (1L << n) - 1, done = 0, unhit = all;
+        double limitHi = q.maxLimit();
         int[] nd = words;
-        int sp = 0, e = 0, first = 0, last = n;
+        int sp = 0, e = 0;
+        long mask = all;
         while (true) {
             if (e >= 0) {
-                int l = STRIDE * e, r = l + RIGHT, link = l + LINKS;
-                // The whole packet's test of each child, then its range of rays.
-                int lFirst = -1, lLast = -1, rFirst = -1, rLast = -1;
-                if (q.packetEnters(nd, l, limitHi)) {
-                    lFirst = firstEntering(p, nd, l, nx, ny, nz, fx, fy, fz, first, last);
-                    if (lFirst >= 0) lLast = lastEntering(p, nd, l, nx, ny, nz, fx, fy, fz, lFirst, last);
-                }
-                if (q.packetEnters(nd, r, limitHi)) {
-                    rFirst = firstEntering(p, nd, r, nx, ny, nz, fx, fy, fz, first, last);
-                    if (rFirst >= 0) rLast = lastEntering(p, nd, r, nx, ny, nz, fx, fy, fz, rFirst, last);
-                }
-                if (lFirst >= 0 && rFirst >= 0) {
-                    // Both: the near one (for its first ray) next, the other saved with its range.
-                    boolean rightFirst = rays.entry(p, nd, r, rFirst) < rays.entry(p, nd, l, lFirst);
-                    int near = rightFirst ? link + 2 : link, far = rightFirst ? link : link + 2;
-                    stackEntry[sp] = PairNodes.code(nd, far);
-                    stackFirst[sp] = rightFirst ? lFirst : rFirst;
-                    stackLast[sp++] = rightFirst ? lLast : rLast;
-                    e = PairNodes.code(nd, near);
-                    first = rightFirst ? rFirst : lFirst;
-                    last = rightFirst ? rLast : lLast;
+                int l = STRIDE * e, r = l + 1, link = l + REFS;   // child i's box starts at word i of its node
+                long lm = q.packetEnters(nd, l, limitHi) ? enter(p, nd, l, mask, false) : 0;
+                long rm = q.packetEnters(nd, r, limitHi) ? enter(p, nd, r, mask, false) : 0;
+                if (lm != 0 && rm != 0) {
+                    boolean rightFirst = q.entry(p, nd, r, Long.numberOfTrailingZeros(rm)) < q.entry(p, nd, l, Long.numberOfTrailingZeros(lm));
+                    stackEntry[sp] = code(nd, rightFirst ? link : link + 1);
+                    stackMask[sp++] = rightFirst ? lm : rm;
+                    e = code(nd, rightFirst ? link + 1 : link);
+                    mask = rightFirst ? rm : lm;
                     continue;
                 }
-                if (lFirst >= 0 || rFirst >= 0) {
-                    boolean left = lFirst >= 0;
-                    e = PairNodes.code(nd, left ? link : link + 2);
-                    first = left ? lFirst : rFirst;
-                    last = left ? lLast : rLast;
+                if ((lm | rm) != 0) {
+                    e = code(nd, lm != 0 ? link : link + 1);
+                    mask = lm | rm;
                     continue;
                 }
             } else {
-                int word = -1 - e, box = PairNodes.boxOf(word);
-                if (any) {
-                    // A blocked ray's limit falls below every box; the packet's bound may stay above it (it is only an upper bound).
-                    active -= anyLeaf(p, nd, word, box, nx, ny, nz, fx, fy, fz, first, last);
-                    if (active == 0) break;
-                } else {
-                    leaf(p, nd, word, box, nx, ny, nz, fx, fy, fz, first, last);
-                    limitHi = maxLimit(n);
+                int word = -1 - e;
+                long in = enter(p, nd, word - REFS, mask, true);   // the leaf's box: its reference's slot
+                if (in != 0) {
+                    long changed = leaf(p, nd, word, in, any);
+                    if (any) {
+                        done |= changed;
+                        if (done == all) break;
+                    } else if ((unhit &= ~changed) == 0 && changed != 0) {
+                        limitHi = q.maxLimit();   // the packet's largest limit falls only once every ray has a hit
+                    }
                 }
             }
-            if (sp == 0) break;
-            sp--;
+            mask = 0;
+            while (mask == 0 && sp > 0) mask = stackMask[--sp] & ~done;
+            if (mask == 0) break;
             e = stackEntry[sp];
-            first = stackFirst[sp];
-            last = stackLast[sp];
         }
         for (int i = 0; i < n; i++) {
-            if (position[i] < 0) {
+            int at = (int) q.position[i];
+            if (at < 0) {
                 p.primitive[i] = -1;
                 p.t[i] = Double.POSITIVE_INFINITY;
                 p.u[i] = p.v[i] = 0;
             } else {
-                p.primitive[i] = prim[position[i]];
-                p.t[i] = best[i];
-                p.u[i] = bu[i];
-                p.v[i] = bv[i];
+                p.primitive[i] = prim[at];
+                p.t[i] = q.best[i];
+                p.u[i] = q.bu[i];
+                p.v[i] = q.bv[i];
             }
         }
     }
 
-    private double maxLimit(int n) {
-        double m = Double.NEGATIVE_INFINITY;
-        for (int i = 0; i < n; i++) m = Math.max(m, limit[i]);
-        return m;
-    }
-
-    /** Whether ray {@code i} enters the box at {@code b}: {@link PairTraversal}'s test, the same operations. */
-    private boolean enters(RayPacket p, int[] nd, int b, int nx, int ny, int nz, int fx, int fy, int fz, int i) {
-        double ox = p.ox[i], oy = p.oy[i], oz = p.oz[i], ix = p.ix[i], iy = p.iy[i], iz = p.iz[i];
-        double t0 = (Float.intBitsToFloat(nd[b + nx]) - ox) * ix, t1 = (Float.intBitsToFloat(nd[b + fx]) - ox) * ix;
-        t0 = Math.max(t0, (Float.intBitsToFloat(nd[b + ny]) - oy) * iy);
-        t1 = Math.min(t1, (Float.intBitsToFloat(nd[b + fy]) - oy) * iy);
-        t0 = Math.max(t0, (Float.intBitsToFloat(nd[b + nz]) - oz) * iz);
-        t1 = Math.min(t1, (Float.intBitsToFloat(nd[b + fz]) - oz) * iz);
-        t0 = Math.max(t0, rays.start[i]);
-        t1 = Math.min(t1, limit[i]);
-        return t0 * SHRINK <= t1 * GROW;
-    }
-
-    /** The first ray of {@code [first, last)} that enters the box at {@code b}, or -1. */
-    private int firstEntering(RayPacket p, int[] nd, int b, int nx, int ny, int nz, int fx, int fy, int fz, int first, int last) {
-        for (int i = first; i < last; i++) if (enters(p, nd, b, nx, ny, nz, fx, fy, fz, i)) return i;
-        return -1;
-    }
-
-    /** One past the last ray of {@code [from, last)} that enters the box at {@code b} (ray {@code from} does). */
-    private int lastEntering(RayPacket p, int[] nd, int b, int nx, int ny, int nz, int fx, int fy, int fz, int from, int last) {
-        for (int i = last - 1; i > from; i--) if (enters(p, nd, b, nx, ny, nz, fx, fy, fz, i)) return i + 1;
-        return from + 1;
+    /**
+     * {@return a child's code, from the word of its reference}: its node's index, or {@code -1 - word}
+     * for a leaf (an unused slot is never entered: its box is inverted)
+     */
+    private static int code(int[] words, int ref) {
+        return words[ref + 2] > 0 ? -1 - ref : words[ref];
     }
 
     /**
-     * Every ray of {@code [first, last)} not yet blocked that enters the leaf's box (at {@code box}) tests its triangles (the leaf whose
-     * reference is at {@code word}) as {@link PairTraversal}'s any-hit ray does, stopping at its
-     * first hit, which takes it out of the packet. Returns how many rays it took out.
+     * The rays of {@code mask} that may enter the box at {@code b}. For a node's child ({@code
+     * everyGroup} false): from the first group with a ray that enters it to the last, those two
+     * groups' rays tested, the groups between kept whole, untested. For a leaf's box ({@code
+     * everyGroup}), before its triangles: every group's rays tested.
      */
-    private int anyLeaf(RayPacket p, int[] nd, int word, int box, int nx, int ny, int nz, int fx, int fy, int fz, int first, int last) {
-        double[] c = corners;
+    private long enter(RayPacket p, int[] nd, int b, long mask, boolean everyGroup) {
         PacketRays q = rays;
-        q.frame();
-        Hit h = hit;
-        int from = nd[word], end = from + nd[word + 1], blocked = 0;
-        long skip = rays.planeCull ? rays.sidedTriangles(c, from, end) : 0;
+        PacketKernel k = KERNEL;
+        int lanes = k.lanes();
+        long group = lanes == 64 ? -1L : (1L << lanes) - 1;
+        double pnx = Float.intBitsToFloat(nd[b + q.nx]), pfx = Float.intBitsToFloat(nd[b + q.fx]);
+        double pny = Float.intBitsToFloat(nd[b + q.ny]), pfy = Float.intBitsToFloat(nd[b + q.fy]);
+        double pnz = Float.intBitsToFloat(nd[b + q.nz]), pfz = Float.intBitsToFloat(nd[b + q.fz]);
+        long out = 0;
+        if (everyGroup) {
+            for (int at = 0; at < N; at += lanes) {
+                long bits = (mask >>> at) & group;
+                if (bits != 0) out |= (bits & k.enter(p, q, at, pnx, pfx, pny, pfy, pnz, pfz)) << at;
+            }
+            return out;
+        }
+        int first = -1;
+        for (int at = 0; at < N; at += lanes) {
+            long bits = (mask >>> at) & group;
+            if (bits == 0) continue;
+            long in = bits & k.enter(p, q, at, pnx, pfx, pny, pfy, pnz, pfz);
+            if (in != 0) {
+                first = at;
+                out = in << at;
+                break;
+            }
+        }
+        if (first < 0) return 0;
+        for (int at = N - lanes; at > first; at -= lanes) {
+            long bits = (mask >>> at) & group;
+            if (bits == 0) continue;
+            long in = bits & k.enter(p, q, at, pnx, pfx, pny, pfy, pnz, pfz);
+            if (in != 0) {
+                long between = at - first > lanes ? mask & (-1L << (first + lanes)) & ((1L << at) - 1) : 0;
+                return out | between | in << at;
+            }
+        }
+        return out;
+    }
+
+    /**
+     * The rays of {@code mask} (which enter the leaf's box) test the triangles of the leaf whose
+     * reference is at {@code word}: each its closest hit, or for {@code any} its first, which takes
+     * it out of the packet (its limit set to -infinity, below every box). Returns the rays whose
+     * answer changed.
+     */
+    private long leaf(RayPacket p, int[] nd, int word, long mask, boolean any) {
+        PacketRays q = rays;
+        PacketKernel k = KERNEL;
+        int from = nd[word], end = from + nd[word + 2], lanes = k.lanes();
+        long group = lanes == 64 ? -1L : (1L << lanes) - 1;
+        long skip = any && q.planeCull ? q.sidedTriangles(corners, from, end) : 0;
         if (PacketRays.skipsAll(skip, end - from)) return 0;   // no ray can cross any of them
-        for (int i = first; i < last; i++) {
-            if (position[i] >= 0 || !enters(p, nd, box, nx, ny, nz, fx, fy, fz, i)) continue;
-            h.primitive = -1;
-            h.t = Double.POSITIVE_INFINITY;
-            for (int r = from; r < end; r++)
-                if ((r - from >= 64 || (skip & 1L << (r - from)) == 0) && TriangleIntersector.test(c, 9 * r, r, q.okx[i], q.oky[i], q.okz[i], q.kx[i], q.ky[i], q.kz[i], q.sx[i], q.sy[i], q.sz[i],
-                        p.tMin[i], best[i], h)) {
-                    position[i] = r;
-                    best[i] = h.t;
-                    bu[i] = h.u;
-                    bv[i] = h.v;
-                    limit[i] = Double.NEGATIVE_INFINITY;
-                    blocked++;
-                    break;
-                }
-        }
-        return blocked;
-    }
-
-    /**
-     * Every ray of {@code [first, last)} that enters the leaf's box (at {@code box}: the range's
-     * middle rays were not tested at its parent) tests the leaf's triangles (the leaf whose
-     * reference is at {@code word}).
-     */
-    private void leaf(RayPacket p, int[] nd, int word, int box, int nx, int ny, int nz, int fx, int fy, int fz, int first, int last) {
-        double[] c = corners;
-        PacketRays q = rays;
         q.frame();
-        Hit h = hit;
-        int from = nd[word], end = from + nd[word + 1];
-        for (int i = first; i < last; i++) {
-            if (!enters(p, nd, box, nx, ny, nz, fx, fy, fz, i)) continue;   // a ray of the range that misses the leaf's box
-            // As the single ray: the hit so far (none: +infinity), and t up to the closest so far (at first tMax).
-            h.primitive = position[i];
-            h.t = position[i] < 0 ? Double.POSITIVE_INFINITY : best[i];
-            boolean found = false;
-            for (int r = from; r < end; r++)
-                found |= TriangleIntersector.test(c, 9 * r, r, q.okx[i], q.oky[i], q.okz[i], q.kx[i], q.ky[i], q.kz[i], q.sx[i], q.sy[i], q.sz[i],
-                        p.tMin[i], found ? h.t : best[i], h);
-            if (found) {
-                best[i] = h.t;
-                position[i] = h.primitive;
-                bu[i] = h.u;
-                bv[i] = h.v;
-                limit[i] = best[i] + Math.abs(best[i]) * SLACK;
-            }
+        long changed = 0;
+        for (int at = 0; at < N; at += lanes) {
+            long bits = (mask >>> at) & group;
+            if (bits != 0) changed |= k.hit(p, q, corners, from, end, skip, at, bits, any) << at;
         }
+        for (long m = changed; m != 0; m &= m - 1) {
+            int i = Long.numberOfTrailingZeros(m);
+            q.limit[i] = any ? Double.NEGATIVE_INFINITY : q.best[i] + Math.abs(q.best[i]) * Tolerance.TRAVERSAL_SLACK;
+        }
+        return changed;
     }
 }

@@ -13,7 +13,8 @@ import java.util.Arrays;
  * fewer, and halves the bytes a ray reads); then per child slot its reference, then its count.
  * A count is a leaf's primitive count (its primitives start at the reference in the leaf order),
  * 0 for an interior child (the reference is its wide node), or -1 for an unused slot (always
- * after the used ones).
+ * after the used ones). {@link RayKernel#SPARE} words follow the last node, so that a vector
+ * kernel may load whole vectors from any node's rows.
  */
 final class WideNodes {
     final int width, k;
@@ -37,7 +38,7 @@ final class WideNodes {
         // A wide node takes the place of up to width - 1 binary interior nodes: start from that, grow if needed.
         words = new int[stride * (bvh.nodeCount() / 2 / (width - 1) + 16)];
         add(0);
-        words = Arrays.copyOf(words, stride * nodes);
+        words = Arrays.copyOf(words, stride * nodes + RayKernel.SPARE);
     }
 
     /** Lays out the wide node whose children are those of binary node {@code n}'s collapsed subtree; returns its index. */

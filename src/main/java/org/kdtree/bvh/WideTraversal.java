@@ -3,57 +3,58 @@ package org.kdtree.bvh;
 import org.kdtree.accel.Hit;
 import org.kdtree.accel.RayQuery;
 import org.kdtree.accel.TriangleIntersector;
+import org.kdtree.accel.Vectorization;
 import org.kdtree.geom.Ray;
 import org.kdtree.geom.Tolerance;
 
 /**
- * The fast traversal of a {@link Bvh} over a triangle mesh: its wide layout ({@link WideNodes}),
- * one node's child boxes tested in one loop with the ray's near and far planes chosen once per
- * ray, the children entered pushed farthest first so that the nearest is taken next, a saved
- * entry dropped when it starts beyond the closest hit, and the watertight triangle test
- * ({@link TriangleIntersector#test}) on the corners in leaf order. Box intervals are widened by
+ * The fast traversal of a {@link Bvh} over a triangle mesh, the one loop for single rays on both
+ * paths, over its wide layout ({@link WideNodes}, {@link Bvh#width()} children a node) and its
+ * leaf blocks ({@link LeafBlocks}): per node the node kernel ({@link RayKernel#enter}) tests the
+ * children's boxes with the ray's near and far planes chosen once per ray; the children entered
+ * are pushed farthest first so that the nearest is taken next; a saved entry is dropped when it
+ * starts beyond the closest hit; per leaf the leaf kernel ({@link RayKernel#hit}) runs the
+ * watertight triangle test. The kernels are the Java 17 ones or the Vector API ones, chosen once
+ * ({@link #KERNEL}); they give the same hits, bit for bit. Box intervals are widened by
  * {@link Tolerance#TRAVERSAL_SLACK}, as in every traversal of the project, here as factors on a
- * non-negative interval. Allocation-free per
- * ray; not thread safe: one per thread.
+ * non-negative interval. Allocation-free per ray; not thread safe: one per thread.
  */
 final class WideTraversal implements RayQuery {
     private static final double SLACK = Tolerance.TRAVERSAL_SLACK;
+    /** The kernels, chosen once for the JVM: a final static, so that the JIT inlines the one class it holds. */
+    static final RayKernel KERNEL = Vectorization.kernel(RayKernel.class, "org.kdtree.bvh.VectorRayKernel", new ScalarRayKernel());
 
     private final int width, stride, refs;
-    private final int[] words, prim;
-    /** The triangles' corners in leaf order ({@link Bvh#leafCorners}). */
-    private final double[] corners;
+    private final int[] words, prim, firstBlock;
+    private final double[] blocks;
     private final boolean empty;
     /** Saved entries: a wide node's index, or {@code -1 - word} for a leaf child (the word of its reference); where the ray enters it. */
     private final int[] stackEntry;
     private final double[] stackT;
-    /** One node's children entered, sorted by entry distance before they are pushed. */
+    /** One node's children entered, sorted by entry distance before they are pushed; the kernel's entry distances per slot. */
     private final int[] hitEntry;
-    private final double[] hitT;
+    private final double[] hitT, slotT;
     private final Hit scratch = new Hit();
     /** Traces the rays this loop leaves out: those with a zero direction component, or a negative tMin. */
     private final BvhTraverser general;
-    /** The slack as factors on a non-negative interval: {@code t0 (1 - slack) <= t1 (1 + slack)}. */
-    private static final double SHRINK = 1 - SLACK, GROW = 1 + SLACK;
 
     WideTraversal(Bvh bvh) {
-        this(bvh, bvh.wide());
-    }
-
-    /** The traversal of {@code w}, a wide layout of {@code bvh} (the vector path's width, for comparing the two). */
-    WideTraversal(Bvh bvh, WideNodes w) {
+        WideNodes w = bvh.wide();
         width = w.width;
         stride = w.stride;
         refs = w.refs;
         words = w.words;
         prim = bvh.primitiveArray();
-        corners = bvh.leafCorners();
+        LeafBlocks lb = bvh.leafBlocks();
+        blocks = lb.coordinates;
+        firstBlock = lb.firstBlock;
         empty = bvh.primitiveCount() == 0;
         int stack = (bvh.maxDepth() + 1) * (width - 1) + 2;
         stackEntry = new int[stack];
         stackT = new double[stack];
         hitEntry = new int[width];
         hitT = new double[width];
+        slotT = new double[width + RayKernel.SPARE];
         general = new BvhTraverser(bvh, org.kdtree.accel.TraversalListener.NONE);
     }
 
@@ -110,30 +111,20 @@ final class WideTraversal implements RayQuery {
         double sz = ray.inverseDirection(kz), sx = ray.direction(kx) * sz, sy = ray.direction(ky) * sz;
         double okx = ray.origin(kx), oky = ray.origin(ky), okz = ray.origin(kz);
 
+        RayKernel kernel = KERNEL;
         int[] nd = words, se = stackEntry, he = hitEntry;
-        double[] c = corners, st = stackT, ht = hitT;
+        double[] st = stackT, ht = hitT;
         int found = -1, sp = 0, e = 0;
         double best = tMax, start = boxStart(tMin);
         while (true) {
             if (e >= 0) {
-                // An interior node: test its children's boxes; go on with the nearest entered, save the others.
+                // An interior node: the children entered; go on with the nearest, save the others.
                 int base = stride * e, m = 0;
-                double limit = best + Math.abs(best) * SLACK;
-                for (int i = 0; i < w; i++) {
-                    int count = nd[base + refs + w + i];
-                    if (count < 0) break;
-                    // Branch-free slabs: Math.max and min compile to single instructions, and with no
-                    // zero direction component no bound is NaN.
-                    double t0 = Math.max(start, (Float.intBitsToFloat(nd[base + nx + i]) - ox) * ix);
-                    double t1 = Math.min(limit, (Float.intBitsToFloat(nd[base + fx + i]) - ox) * ix);
-                    t0 = Math.max(t0, (Float.intBitsToFloat(nd[base + ny + i]) - oy) * iy);
-                    t1 = Math.min(t1, (Float.intBitsToFloat(nd[base + fy + i]) - oy) * iy);
-                    t0 = Math.max(t0, (Float.intBitsToFloat(nd[base + nz + i]) - oz) * iz);
-                    t1 = Math.min(t1, (Float.intBitsToFloat(nd[base + fz + i]) - oz) * iz);
-                    // Appended always, kept only if entered: no branch to mispredict. (t0 >= 0 here.)
-                    he[m] = count > 0 ? -1 - (base + refs + i) : nd[base + refs + i];
-                    ht[m] = t0;
-                    m += t0 * SHRINK <= t1 * GROW ? 1 : 0;
+                int bits = kernel.enter(nd, w, base + nx, base + fx, base + ny, base + fy, base + nz, base + fz, ox, oy, oz, ix, iy, iz, start, best + Math.abs(best) * SLACK, slotT);
+                for (; bits != 0; bits &= bits - 1) {
+                    int i = Integer.numberOfTrailingZeros(bits);
+                    he[m] = nd[base + refs + w + i] > 0 ? -1 - (base + refs + i) : nd[base + refs + i];
+                    ht[m++] = slotT[i];
                 }
                 if (m > 0) {
                     sp = saveAllButNearest(he, ht, m, se, st, sp);
@@ -141,13 +132,12 @@ final class WideTraversal implements RayQuery {
                     continue;
                 }
             } else {
-                int word = -1 - e;
-                for (int r = nd[word], end = r + nd[word + w]; r < end; r++) {
-                    if (TriangleIntersector.test(c, 9 * r, r, okx, oky, okz, kx, ky, kz, sx, sy, sz, tMin, best, hit)) {
-                        if (any) return r;
-                        found = r;
-                        best = hit.t;
-                    }
+                int word = -1 - e, from = nd[word];
+                int r = kernel.hit(blocks, firstBlock[from], from, nd[word + w], okx, oky, okz, kx, ky, kz, sx, sy, sz, tMin, best, hit, any);
+                if (r >= 0) {
+                    if (any) return r;
+                    found = r;
+                    best = hit.t;
                 }
             }
             // The next saved entry that can still hold something closer.
@@ -162,8 +152,7 @@ final class WideTraversal implements RayQuery {
     /**
      * Sorts the {@code m} entered children {@code he} (entry distances {@code ht}) farthest first,
      * and pushes all but the nearest (left at {@code he[m - 1]}, taken next) on the stack
-     * {@code se}/{@code st} from {@code sp}; returns the new stack size. Shared with the vector
-     * path's loop ({@code VectorTraversal}), which enters children in the same order.
+     * {@code se}/{@code st} from {@code sp}; returns the new stack size.
      */
     static int saveAllButNearest(int[] he, double[] ht, int m, int[] se, double[] st, int sp) {
         for (int i = 1; i < m; i++) {

@@ -74,7 +74,7 @@ class BvhTest {
         for (TriangleMesh m : new TriangleMesh[] {Meshes.surface(20_000, 3), Meshes.uniform(2000, 4)})
         for (int width = 2; width <= 8; width++) {
             Bvh h = new BvhBuilder().width(width).build(m);
-            WideNodes w = h.wide();
+            WideNodes w = new WideNodes(h, width);   // every width, whichever the JVM traces
             int[] seenNode = new int[w.nodeCount()], seenRef = new int[h.primitiveCount()];
             java.util.ArrayDeque<Integer> todo = new java.util.ArrayDeque<>(java.util.List.of(0));
             int visits = 0;

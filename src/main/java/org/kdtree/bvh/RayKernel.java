@@ -1,0 +1,53 @@
+package org.kdtree.bvh;
+
+import org.kdtree.accel.Hit;
+
+/**
+ * What the single-ray loop ({@link WideTraversal}) asks of one node and of one leaf, written
+ * twice: for Java 17 ({@link ScalarRayKernel}) and with the Vector API ({@code VectorRayKernel},
+ * src/vector/java), chosen once at start-up ({@link WideTraversal#KERNEL}). Both give the same
+ * answers, bit for bit: each lane does the scalar code's operations in its order.
+ */
+interface RayKernel {
+    /** Entries past a node's width that {@link #enter} may write in its {@code t} (a vector's whole lanes). */
+    int SPARE = 16;
+
+    /**
+     * The node kernel: which children of a wide node of {@code words} ({@link WideNodes}, {@code
+     * width} children) the ray enters within {@code [start, limit]}, with the traversal's slack
+     * ({@code t0 (1 - slack) <= t1 (1 + slack)}).
+     *
+     * @param nx    where the node's near planes on x start in {@code words} (its minima if the ray runs up x, else its maxima)
+     * @param fx    where its far planes on x start
+     * @param ox    the ray's origin, x
+     * @param ix    its inverse direction, x (finite: no zero component)
+     * @param start where intervals start (at least 0)
+     * @param limit where they end, slack included
+     * @param t     receives, for each child entered, its entry distance at its slot
+     * @return bit {@code i} set for each child slot {@code i} entered
+     */
+    int enter(int[] words, int width, int nx, int fx, int ny, int fy, int nz, int fz, double ox, double oy, double oz,
+              double ix, double iy, double iz, double start, double limit, double[] t);
+
+    /**
+     * {@return the children per node of the layout {@link #enter} reads, for a hierarchy built with
+     * {@code asked}}: the Java 17 kernel takes {@code asked}; the Vector API kernel its lanes (8
+     * with AVX-512, 4 with AVX2), whatever was asked, the width that measured fastest on that path
+     */
+    int width(int asked);
+
+    /** {@return triangles per block of the leaf layout {@link #hit} reads ({@link LeafBlocks})} */
+    int blockWidth();
+
+    /**
+     * The leaf kernel: the watertight test ({@link org.kdtree.accel.TriangleIntersector#test}) of
+     * a leaf's {@code count} triangles, leaf positions from {@code first}, blocks from {@code block}
+     * of {@code blocks}: the closest hit within {@code [tMin, tMax]} and closer than {@code hit}
+     * (of two equally close, the lower position) is recorded in {@code hit}, with its position as
+     * the primitive; for {@code any}, the first block with a hit ends the test.
+     *
+     * @return the leaf position recorded, or -1
+     */
+    int hit(double[] blocks, int block, int first, int count, double okx, double oky, double okz, int kx, int ky, int kz,
+            double sx, double sy, double sz, double tMin, double tMax, Hit hit, boolean any);
+}
