@@ -1,0 +1,51 @@
+package org.kdtree.kdtree;
+
+import org.kdtree.accel.RayPacket;
+
+/**
+ * A packet's rays as lanes, what {@link PacketTraversal}'s loop and its kernels ({@link
+ * PacketKernel}) share: per lane (a ray of the packet, index 0 to {@link #N} - 1) its origin and
+ * inverse direction, its interval at the current node, the watertight test's shear and its closest
+ * hit so far, in arrays made once. A set of lanes is a {@code long} with bit i for lane i.
+ */
+final class PacketLanes {
+    /** Lanes: a packet's rays, one bit each of a {@code long} mask. */
+    static final int N = RayPacket.CAPACITY;
+
+    static {
+        if (N > Long.SIZE) throw new AssertionError("a lane mask is a long: at most 64 rays a packet");
+    }
+
+    /** Per axis, per lane: origin and inverse direction. */
+    final double[][] origin = new double[3][N], inverse = new double[3][N];
+    /** Per lane: its interval {@code [tMin, tMax]} as the caller gave it. */
+    final double[] tMin = new double[N], tMax = new double[N];
+    /** Per lane: its interval at the current node and that interval widened by the slack (the single-ray loop's lo and hi). */
+    final double[] curMin = new double[N], curMax = new double[N], lo = new double[N], hi = new double[N];
+    /** Per lane: the watertight test's axes (z the direction's largest component) and shear ({@link MeshTraversal}'s). */
+    final int[] kx = new int[N], ky = new int[N], kz = new int[N];
+    /** Per lane: origin on the shear's axes, and the shear itself. */
+    final double[] okx = new double[N], oky = new double[N], okz = new double[N], sx = new double[N], sy = new double[N], sz = new double[N];
+    /** The lanes whose shear axis x (y, z) is axis 1, and those where it is axis 2: {@link #kx} as masks, for lanes that select. */
+    long xIs1, xIs2, yIs1, yIs2, zIs1, zIs2;
+    /** Per lane: its closest hit so far (primitive -1: none). */
+    final int[] bestPrim = new int[N];
+    /** Per lane: t and barycentrics of its closest hit so far (t +infinity: none). */
+    final double[] bestT = new double[N], bestU = new double[N], bestV = new double[N];
+    /** What the node kernel found: the lanes that go to the near child, and those that go to the far one (both: in each). */
+    long toNear, toFar;
+
+    /** Sets lane {@code i}'s shear axes and their masks ({@link #xIs1} and the others). */
+    void shearAxes(int i, int x, int y, int z) {
+        kx[i] = x;
+        ky[i] = y;
+        kz[i] = z;
+        long bit = 1L << i, not = ~bit;
+        xIs1 = x == 1 ? xIs1 | bit : xIs1 & not;
+        xIs2 = x == 2 ? xIs2 | bit : xIs2 & not;
+        yIs1 = y == 1 ? yIs1 | bit : yIs1 & not;
+        yIs2 = y == 2 ? yIs2 | bit : yIs2 & not;
+        zIs1 = z == 1 ? zIs1 | bit : zIs1 & not;
+        zIs2 = z == 2 ? zIs2 | bit : zIs2 & not;
+    }
+}
