@@ -28,8 +28,8 @@ final class PacketLanes {
     final double[] okx = new double[N], oky = new double[N], okz = new double[N], sx = new double[N], sy = new double[N], sz = new double[N];
     /** The lanes whose shear axis x (y, z) is axis 1, and those where it is axis 2: {@link #kx} as masks, for lanes that select. */
     long xIs1, xIs2, yIs1, yIs2, zIs1, zIs2;
-    /** Per lane: its closest hit so far (primitive -1: none). */
-    final int[] bestPrim = new int[N];
+    /** Per lane: its closest hit's primitive so far (-1: none), as a double (exact for every int) so that vector lanes of doubles compare it. */
+    final double[] bestPrim = new double[N];
     /** Per lane: t and barycentrics of its closest hit so far (t +infinity: none). */
     final double[] bestT = new double[N], bestU = new double[N], bestV = new double[N];
     /** What the node kernel found: the lanes that go to the near child, and those that go to the far one (both: in each). */

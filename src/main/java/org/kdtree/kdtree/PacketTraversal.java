@@ -245,7 +245,7 @@ final class PacketTraversal implements PacketQuery {
                 p.t[i] = Double.POSITIVE_INFINITY;
                 p.u[i] = p.v[i] = 0;
             } else {
-                p.primitive[i] = l.bestPrim[i];
+                p.primitive[i] = (int) l.bestPrim[i];
                 p.t[i] = l.bestT[i];
                 p.u[i] = l.bestU[i];
                 p.v[i] = l.bestV[i];

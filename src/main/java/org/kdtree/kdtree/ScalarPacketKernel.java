@@ -53,7 +53,8 @@ final class ScalarPacketKernel implements PacketKernel {
 
     /** Lane {@code i} tests the leaf's triangles in order (stopping at its first hit if {@code any}); {@return whether it hit one} */
     private static boolean test(PacketLanes lanes, int i, int[] refs, int start, int end, double[] c, boolean any) {
-        int x = lanes.kx[i], y = lanes.ky[i], z = lanes.kz[i], prim = lanes.bestPrim[i];
+        int x = lanes.kx[i], y = lanes.ky[i], z = lanes.kz[i];
+        double prim = lanes.bestPrim[i];
         double ox = lanes.okx[i], oy = lanes.oky[i], oz = lanes.okz[i], shx = lanes.sx[i], shy = lanes.sy[i], shz = lanes.sz[i];
         double tMin = lanes.tMin[i], tMax = lanes.tMax[i], best = lanes.bestT[i], bu = lanes.bestU[i], bv = lanes.bestV[i];
         boolean found = false;
