@@ -1,6 +1,7 @@
 package org.kdtree.kdtree;
 
 import org.kdtree.accel.RayPacket;
+import org.kdtree.accel.TriangleIntersector;
 
 /**
  * A packet's rays as lanes, what {@link PacketTraversal}'s loop and its kernels ({@link
@@ -35,8 +36,36 @@ final class PacketLanes {
     /** What the node kernel found: the lanes that go to the near child, and those that go to the far one (both: in each). */
     long toNear, toFar;
 
+    /**
+     * Puts ray {@code i} of {@code p} in lane {@code i}: its origin, inverse direction and interval,
+     * no hit yet, and the watertight test's shear as {@link MeshTraversal} computes it once per ray.
+     * (Its interval at the nodes is the loop's to set.)
+     */
+    void load(RayPacket p, int i) {
+        double dx = p.dx[i], dy = p.dy[i], dz = p.dz[i];
+        origin[0][i] = p.ox[i]; origin[1][i] = p.oy[i]; origin[2][i] = p.oz[i];
+        inverse[0][i] = p.ix[i]; inverse[1][i] = p.iy[i]; inverse[2][i] = p.iz[i];
+        tMin[i] = p.tMin[i];
+        tMax[i] = p.tMax[i];
+        bestPrim[i] = -1;
+        bestT[i] = Double.POSITIVE_INFINITY;
+        bestU[i] = bestV[i] = 0;
+        int z = TriangleIntersector.maxAxis(dx, dy, dz);
+        int x = z == 2 ? 0 : z + 1, y = x == 2 ? 0 : x + 1;
+        double dz0 = z == 0 ? dx : z == 1 ? dy : dz;
+        if (dz0 < 0) { int s = x; x = y; y = s; }
+        double s = inverse[z][i];
+        shearAxes(i, x, y, z);
+        sz[i] = s;
+        sx[i] = (x == 0 ? dx : x == 1 ? dy : dz) * s;
+        sy[i] = (y == 0 ? dx : y == 1 ? dy : dz) * s;
+        okx[i] = origin[x][i];
+        oky[i] = origin[y][i];
+        okz[i] = origin[z][i];
+    }
+
     /** Sets lane {@code i}'s shear axes and their masks ({@link #xIs1} and the others). */
-    void shearAxes(int i, int x, int y, int z) {
+    private void shearAxes(int i, int x, int y, int z) {
         kx[i] = x;
         ky[i] = y;
         kz[i] = z;

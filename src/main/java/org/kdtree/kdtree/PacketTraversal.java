@@ -5,7 +5,6 @@ import org.kdtree.accel.OctantSplit;
 import org.kdtree.accel.PacketQuery;
 import org.kdtree.accel.RayPacket;
 import org.kdtree.accel.RayQuery;
-import org.kdtree.accel.TriangleIntersector;
 import org.kdtree.accel.Vectorization;
 import org.kdtree.geom.Box;
 import org.kdtree.geom.Ray;
@@ -47,7 +46,7 @@ final class PacketTraversal implements PacketQuery {
     private static final double SLACK = Traverser.SLACK;
     private static final int N = PacketLanes.N;
     /** The kernels every packet loop of this JVM calls, chosen once ({@link PacketKernel}). */
-    private static final PacketKernel KERNEL = Vectorization.kernel(PacketKernel.class, "org.kdtree.kdtree.VectorPacketKernel",
+    static final PacketKernel KERNEL = Vectorization.kernel(PacketKernel.class, "org.kdtree.kdtree.VectorPacketKernel",
             new ScalarPacketKernel());
 
     private final RayQuery single;
@@ -180,58 +179,26 @@ final class PacketTraversal implements PacketQuery {
     }
 
     /**
-     * Sets up each lane: its ray's origin and inverse direction per axis, its clip to the scene box
-     * (the single-ray loop's, with the same slack) and its shear. {@return the lanes whose rays enter the box}
+     * Sets up each lane ({@link PacketLanes#load}) and its clip to the scene box (the single-ray
+     * loop's, with the same slack). {@return the lanes whose rays enter the box}
      */
     private long load(RayPacket p) {
         PacketLanes l = lanes;
-        int n = p.size();
         long entered = 0;
-        for (int i = 0; i < n; i++) {
+        for (int i = 0, n = p.size(); i < n; i++) {
             double ox = p.ox[i], oy = p.oy[i], oz = p.oz[i];
             if (!(ox - ox == 0 && oy - oy == 0 && oz - oz == 0))
                 throw new IllegalArgumentException("ray " + i + " of the packet has a non-finite origin: " + p.ray(i, new Ray(3)));
-            l.origin[0][i] = ox; l.origin[1][i] = oy; l.origin[2][i] = oz;
-            l.inverse[0][i] = p.ix[i]; l.inverse[1][i] = p.iy[i]; l.inverse[2][i] = p.iz[i];
-            l.tMin[i] = p.tMin[i];
-            l.tMax[i] = p.tMax[i];
-            l.bestPrim[i] = -1;
-            l.bestT[i] = Double.POSITIVE_INFINITY;
-            l.bestU[i] = l.bestV[i] = 0;
-            shear(p, i);
-            if (clip(p, i)) entered |= 1L << i;
+            l.load(p, i);
+            boolean enters = MeshTraversal.clip(scene, ox, oy, oz, p.ix[i], p.iy[i], p.iz[i], p.tMin[i], p.tMax[i], interval);
+            double t0 = interval[0], t1 = interval[1];
+            l.curMin[i] = t0;
+            l.curMax[i] = t1;
+            l.lo[i] = t0 - Math.abs(t0) * SLACK;
+            l.hi[i] = t1 + Math.abs(t1) * SLACK;
+            if (enters) entered |= 1L << i;
         }
         return entered;
-    }
-
-    /** Clips ray {@code i} to the scene box, as {@link MeshTraversal} does: {@return whether it enters it} */
-    private boolean clip(RayPacket p, int i) {
-        boolean enters = MeshTraversal.clip(scene, p.ox[i], p.oy[i], p.oz[i], p.ix[i], p.iy[i], p.iz[i], p.tMin[i], p.tMax[i], interval);
-        double t0 = interval[0], t1 = interval[1];
-        PacketLanes l = lanes;
-        l.curMin[i] = t0;
-        l.curMax[i] = t1;
-        l.lo[i] = t0 - Math.abs(t0) * SLACK;
-        l.hi[i] = t1 + Math.abs(t1) * SLACK;
-        return enters;
-    }
-
-    /** Ray {@code i}'s shear of the watertight test, as {@link MeshTraversal} computes it once per ray. */
-    private void shear(RayPacket p, int i) {
-        PacketLanes l = lanes;
-        double dx = p.dx[i], dy = p.dy[i], dz = p.dz[i];
-        int z = TriangleIntersector.maxAxis(dx, dy, dz);
-        int x = z == 2 ? 0 : z + 1, y = x == 2 ? 0 : x + 1;
-        double dz0 = z == 0 ? dx : z == 1 ? dy : dz;
-        if (dz0 < 0) { int s = x; x = y; y = s; }
-        double s = l.inverse[z][i];
-        l.shearAxes(i, x, y, z);
-        l.sz[i] = s;
-        l.sx[i] = (x == 0 ? dx : x == 1 ? dy : dz) * s;
-        l.sy[i] = (y == 0 ? dx : y == 1 ? dy : dz) * s;
-        l.okx[i] = l.origin[x][i];
-        l.oky[i] = l.origin[y][i];
-        l.okz[i] = l.origin[z][i];
     }
 
     /** Writes each ray's answer to the packet, as the single-ray query gives it. */
