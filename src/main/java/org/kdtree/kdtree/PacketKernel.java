@@ -30,6 +30,21 @@ interface PacketKernel {
     void node(PacketLanes lanes, long active, int axis, double plane, double[] farMin, double[] farMax, int at);
 
     /**
+     * The node kernel's other half, where a saved far child is taken up: each lane of {@code saved}
+     * whose interval there starts ({@code farMin[at + lane]}) no farther than its closest hit so far
+     * (widened by the slack, the single-ray loop's test) takes that interval, {@code farMin} to
+     * {@code farMax}, as its own, with its widened ends {@code lo} and {@code hi}.
+     * {@return the lanes that take it up}
+     *
+     * @param lanes  the packet's lanes
+     * @param saved  the lanes saved with the child (none blocked)
+     * @param farMin their intervals' starts, from {@code at}
+     * @param farMax their ends
+     * @param at     where lane 0's entry is
+     */
+    long resume(PacketLanes lanes, long saved, double[] farMin, double[] farMax, int at);
+
+    /**
      * The leaf kernel, closest hit: each lane of {@code active} tests the triangles of references
      * {@code refs[start]} to {@code refs[end - 1]} (their corners {@code 9 refs[r]} on in {@code
      * corners}) in that order with the watertight test, keeping in its best hit the closer, or of

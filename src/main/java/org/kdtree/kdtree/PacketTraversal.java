@@ -161,21 +161,8 @@ final class PacketTraversal implements PacketQuery {
 
     /** Takes up the child saved at {@code level} with its lanes not blocked that start no farther than their closest hit; {@return those lanes} */
     private long pop(int level) {
-        PacketLanes l = lanes;
-        int b = level * N;
-        long taken = 0;
-        for (long m = stackLanes[level] & ~blocked; m != 0; m &= m - 1) {
-            int i = Long.numberOfTrailingZeros(m);
-            double start = stackMin[b + i], best = l.bestT[i];
-            if (!(start <= best + Math.abs(best) * SLACK)) continue;
-            double stop = stackMax[b + i];
-            l.curMin[i] = start;
-            l.curMax[i] = stop;
-            l.lo[i] = start - Math.abs(start) * SLACK;
-            l.hi[i] = stop + Math.abs(stop) * SLACK;
-            taken |= 1L << i;
-        }
-        return taken;
+        long saved = stackLanes[level] & ~blocked;
+        return saved == 0 ? 0 : KERNEL.resume(lanes, saved, stackMin, stackMax, level * N);
     }
 
     /**

@@ -37,6 +37,23 @@ final class ScalarPacketKernel implements PacketKernel {
     }
 
     @Override
+    public long resume(PacketLanes lanes, long saved, double[] farMin, double[] farMax, int at) {
+        long taken = 0;
+        for (long m = saved; m != 0; m &= m - 1) {
+            int i = Long.numberOfTrailingZeros(m);
+            double start = farMin[at + i], best = lanes.bestT[i];
+            if (!(start <= best + Math.abs(best) * SLACK)) continue;
+            double stop = farMax[at + i];
+            lanes.curMin[i] = start;
+            lanes.curMax[i] = stop;
+            lanes.lo[i] = start - Math.abs(start) * SLACK;
+            lanes.hi[i] = stop + Math.abs(stop) * SLACK;
+            taken |= 1L << i;
+        }
+        return taken;
+    }
+
+    @Override
     public void closest(PacketLanes lanes, long active, int[] refs, int start, int end, double[] corners) {
         for (long m = active; m != 0; m &= m - 1) test(lanes, Long.numberOfTrailingZeros(m), refs, start, end, corners, false);
     }

@@ -80,6 +80,70 @@ class PacketKernelTest {
         assertThat(java.util.Arrays.stream(seen).min().getAsLong()).as("fewest lanes of near only, far only, both ways, in the plane").isGreaterThan(1000);
     }
 
+    @Test void aSavedChildIsTakenUpByTheLanesThatStartNoFartherThanTheirHit() {
+        long taken = 0;
+        for (long seed = 0; seed < 3000; seed++) {
+            SplittableRandom rnd = new SplittableRandom(seed);
+            long saved = activeLanes(rnd);
+            double[] farMin = new double[2 * N], farMax = new double[2 * N];
+            for (int i = 0; i < N; i++) {
+                farMin[N + i] = rnd.nextDouble(-1, 3);
+                farMax[N + i] = farMin[N + i] + rnd.nextDouble() * 2;
+            }
+            PacketLanes want = resumeLanes(seed, farMin);
+            long wantTaken = 0;
+            for (int i = 0; i < N; i++) {                // MeshTraversal's pop, lane by lane
+                double start = farMin[N + i], best = want.bestT[i];
+                if ((saved >>> i & 1) == 0 || !(start <= best + Math.abs(best) * SLACK)) continue;
+                wantTaken |= 1L << i;
+                want.curMin[i] = start;
+                want.curMax[i] = farMax[N + i];
+                want.lo[i] = start - Math.abs(start) * SLACK;
+                want.hi[i] = farMax[N + i] + Math.abs(farMax[N + i]) * SLACK;
+            }
+            taken += Long.bitCount(wantTaken);
+            for (PacketKernel k : kernels()) {
+                PacketLanes got = resumeLanes(seed, farMin);
+                String what = k.getClass().getSimpleName() + " seed " + seed;
+                assertThat(k.resume(got, saved, farMin, farMax, N)).as(what + " lanes taken").isEqualTo(wantTaken);
+                for (int i = 0; i < N; i++) {
+                    String lane = what + " lane " + i;
+                    assertThat(bits(got.curMin[i])).as(lane + " curMin").isEqualTo(bits(want.curMin[i]));
+                    assertThat(bits(got.curMax[i])).as(lane + " curMax").isEqualTo(bits(want.curMax[i]));
+                    assertThat(bits(got.lo[i])).as(lane + " lo").isEqualTo(bits(want.lo[i]));
+                    assertThat(bits(got.hi[i])).as(lane + " hi").isEqualTo(bits(want.hi[i]));
+                }
+            }
+        }
+        assertThat(taken).as("lanes that took a child up").isGreaterThan(20_000);
+    }
+
+    /**
+     * Lanes with a closest hit so far that is none, random, at the saved child's start, just beyond
+     * the slack from it, or (a tie) exactly the slack from it: then the start is moved there.
+     */
+    private static PacketLanes resumeLanes(long seed, double[] farMin) {
+        SplittableRandom rnd = new SplittableRandom(seed * 17 + 3);
+        PacketLanes l = new PacketLanes();
+        for (int i = 0; i < N; i++) {
+            double start = farMin[N + i];
+            l.curMin[i] = l.lo[i] = -5;
+            l.curMax[i] = l.hi[i] = -4;
+            l.bestT[i] = switch (rnd.nextInt(6)) {
+                case 0 -> Double.POSITIVE_INFINITY;
+                case 1 -> start;                                          // a hit right at the child's start: taken up
+                case 2 -> Math.nextDown(start - Math.abs(start) * SLACK); // just beyond the slack: not
+                case 3 -> {                                               // the start exactly at the hit plus the slack: taken up
+                    double best = rnd.nextDouble(-1, 4);
+                    farMin[N + i] = best + Math.abs(best) * SLACK;
+                    yield best;
+                }
+                default -> rnd.nextDouble(-1, 4);
+            };
+        }
+        return l;
+    }
+
     /** MeshTraversal's decision at an interior node, lane by lane: {@return the near and the far lanes} */
     private static long[] reference(PacketLanes l, long active, int axis, double plane, double[] farMin, double[] farMax, int at) {
         long near = 0, far = 0;

@@ -53,6 +53,25 @@ public final class VectorPacketKernel implements PacketKernel {
     }
 
     @Override
+    public long resume(PacketLanes lanes, long saved, double[] farMin, double[] farMax, int at) {
+        long taken = 0;
+        for (int g = 0; g < PacketLanes.N; g += L) {
+            long bits = saved >>> g & GROUP;
+            if (bits == 0) continue;
+            DoubleVector start = DoubleVector.fromArray(D, farMin, at + g), stop = DoubleVector.fromArray(D, farMax, at + g);
+            DoubleVector best = DoubleVector.fromArray(D, lanes.bestT, g);
+            VectorMask<Double> on = VectorMask.fromLong(D, bits).and(start.compare(VectorOperators.LE, best.add(best.abs().mul(SLACK))));
+            if (!on.anyTrue()) continue;
+            taken |= on.toLong() << g;
+            DoubleVector.fromArray(D, lanes.curMin, g).blend(start, on).intoArray(lanes.curMin, g);
+            DoubleVector.fromArray(D, lanes.curMax, g).blend(stop, on).intoArray(lanes.curMax, g);
+            DoubleVector.fromArray(D, lanes.lo, g).blend(start.sub(start.abs().mul(SLACK)), on).intoArray(lanes.lo, g);
+            DoubleVector.fromArray(D, lanes.hi, g).blend(stop.add(stop.abs().mul(SLACK)), on).intoArray(lanes.hi, g);
+        }
+        return taken;
+    }
+
+    @Override
     public void closest(PacketLanes lanes, long active, int[] refs, int start, int end, double[] corners) {
         for (int g = 0; g < PacketLanes.N; g += L) {
             long bits = active >>> g & GROUP;
