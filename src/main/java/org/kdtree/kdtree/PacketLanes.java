@@ -39,7 +39,7 @@ final class PacketLanes {
     /**
      * Puts ray {@code i} of {@code p} in lane {@code i}: its origin, inverse direction and interval,
      * no hit yet, and the watertight test's shear as {@link MeshTraversal} computes it once per ray.
-     * (Its interval at the nodes is the loop's to set.)
+     * (Its interval at the nodes is the loop's to set; the masks of shear axes are cleared first, {@link #clearAxes}.)
      */
     void load(RayPacket p, int i) {
         double dx = p.dx[i], dy = p.dy[i], dz = p.dz[i];
@@ -64,17 +64,21 @@ final class PacketLanes {
         okz[i] = origin[z][i];
     }
 
-    /** Sets lane {@code i}'s shear axes and their masks ({@link #xIs1} and the others). */
+    /** Sets lane {@code i}'s shear axes and their bits in the masks ({@link #xIs1} and the others; {@link #clearAxes} first). */
     private void shearAxes(int i, int x, int y, int z) {
         kx[i] = x;
         ky[i] = y;
         kz[i] = z;
-        long bit = 1L << i, not = ~bit;
-        xIs1 = x == 1 ? xIs1 | bit : xIs1 & not;
-        xIs2 = x == 2 ? xIs2 | bit : xIs2 & not;
-        yIs1 = y == 1 ? yIs1 | bit : yIs1 & not;
-        yIs2 = y == 2 ? yIs2 | bit : yIs2 & not;
-        zIs1 = z == 1 ? zIs1 | bit : zIs1 & not;
-        zIs2 = z == 2 ? zIs2 | bit : zIs2 & not;
+        xIs1 |= (long) (x & 1) << i;                     // an axis is 0, 1 or 2: bit 0 says 1, bit 1 says 2
+        xIs2 |= (long) (x >> 1) << i;
+        yIs1 |= (long) (y & 1) << i;
+        yIs2 |= (long) (y >> 1) << i;
+        zIs1 |= (long) (z & 1) << i;
+        zIs2 |= (long) (z >> 1) << i;
+    }
+
+    /** Clears the shear axes' masks, before a packet's lanes are loaded. */
+    void clearAxes() {
+        xIs1 = xIs2 = yIs1 = yIs2 = zIs1 = zIs2 = 0;
     }
 }

@@ -97,11 +97,15 @@ final class PacketTraversal implements PacketQuery {
     @Override public boolean tracesTogether() { return true; }
 
     /**
-     * {@return false: renders stay one pixel at a time}. On Java 17 this scalar loop is slower per
-     * ray than {@link MeshTraversal}: the Cornell box through the block tracer and this loop took
-     * 1.17 times the processor time of the recursive tracer and single rays (median of 5 alternating
-     * pairs of whole {@code render scenes:cornell-box} processes, 1.07 to 1.45; loaded machine). A
-     * kernel that tests several rays at a compare may repay it.
+     * {@return false: renders stay one pixel at a time}, on both paths. On Java 17 this loop is
+     * slower per ray than {@link MeshTraversal}: the Cornell box through the block tracer took 1.17
+     * times the processor time of the recursive tracer and single rays (median of 5 alternating
+     * pairs of whole {@code render scenes:cornell-box} processes, 1.07 to 1.45; loaded machine).
+     * With the vector kernels (JDK 25, AVX-512), set P runs faster in packets than alone, but the
+     * render through the block tracer took 2.7 times as long (medians of 3 alternating rounds, 4.06
+     * s against 1.49 s; 1.4 to 2.1 times at 32 samples a pixel; loaded machine): the Vector API's
+     * code runs unintrinsified until C2 compiles it, and the block tracer's bookkeeping costs about
+     * as much as the kernels (docs/traversal.md).
      */
     @Override public boolean repaysBlocks() { return false; }
 
@@ -172,6 +176,7 @@ final class PacketTraversal implements PacketQuery {
     private long load(RayPacket p) {
         PacketLanes l = lanes;
         long entered = 0;
+        l.clearAxes();
         for (int i = 0, n = p.size(); i < n; i++) {
             double ox = p.ox[i], oy = p.oy[i], oz = p.oz[i];
             if (!(ox - ox == 0 && oy - oy == 0 && oz - oz == 0))

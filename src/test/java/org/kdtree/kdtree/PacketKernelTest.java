@@ -188,6 +188,7 @@ class PacketKernelTest {
             p.add(o[0], o[1], o[2], d[0], d[1], d[2], 0, Double.POSITIVE_INFINITY);
         }
         PacketLanes l = new PacketLanes();
+        l.clearAxes();
         for (int i = 0; i < N; i++) {
             l.load(p, i);
             double tSplit = (plane - l.origin[axis][i]) * l.inverse[axis][i];
@@ -336,6 +337,7 @@ class PacketKernelTest {
             p.add(o[0], o[1], o[2], to[0] - o[0], to[1] - o[1], to[2] - o[2], tMin, tMax);
         }
         PacketLanes l = new PacketLanes();
+        l.clearAxes();
         Hit h = new Hit();
         for (int i = 0; i < N; i++) {
             l.load(p, i);
