@@ -9,6 +9,7 @@ import org.kdtree.accel.RayQuery;
 import org.kdtree.accel.TraversalListener;
 import org.kdtree.accel.TreeStats;
 import org.kdtree.accel.TriangleIntersector;
+import org.kdtree.accel.Vectorization;
 import org.kdtree.geom.Box;
 import org.kdtree.geom.Ray;
 import org.kdtree.shape.Primitives;
@@ -269,6 +270,15 @@ public final class KdTree implements AccelerationStructure {
         if (corners == null || dimension() != 3)
             throw new IllegalArgumentException("packets are traced against a triangle mesh; this " + dimension() + "-D tree holds other primitives");
         return new PacketTraversal(this, query());
+    }
+
+    /**
+     * {@return which kernels the packet loop runs}: the Vector API's or the Java 17 ones ({@link
+     * PacketKernel}, chosen once per JVM), and that single rays take the scalar single-ray loop
+     */
+    @Override public String describePath() {
+        PacketTraversal.vectorKernels();     // loads the kernel first: one that does not load turns the path scalar, with its reason
+        return Vectorization.describe() + "; the packet loop's node and leaf kernels (set P in 8 x 8 packets), single rays scalar";
     }
 
     /** {@return a {@link Traverser} over this tree and its primitives that reports every step to {@code listener}} */
