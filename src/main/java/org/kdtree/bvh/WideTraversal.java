@@ -121,10 +121,10 @@ final class WideTraversal implements RayQuery {
                 // An interior node: the children entered; go on with the nearest, save the others.
                 int base = stride * e, m = 0;
                 int bits = kernel.enter(nd, w, base + nx, base + fx, base + ny, base + fy, base + nz, base + fz, ox, oy, oz, ix, iy, iz, start, best + Math.abs(best) * SLACK, slotT);
-                for (; bits != 0; bits &= bits - 1) {
-                    int i = Integer.numberOfTrailingZeros(bits);
+                for (int i = 0; i < w; i++) {   // appended always, kept only if entered: no branch to mispredict
                     he[m] = nd[base + refs + w + i] > 0 ? -1 - (base + refs + i) : nd[base + refs + i];
-                    ht[m++] = slotT[i];
+                    ht[m] = slotT[i];
+                    m += bits >>> i & 1;
                 }
                 if (m > 0) {
                     sp = saveAllButNearest(he, ht, m, se, st, sp);

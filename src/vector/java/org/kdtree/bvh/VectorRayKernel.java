@@ -68,65 +68,58 @@ public final class VectorRayKernel implements RayKernel {
     /** {@return 4: a leaf's triangles four to a block, a 256-bit vector per coordinate} */
     @Override public int blockWidth() { return W; }
 
+    /**
+     * The watertight test of the leaf's triangles a block of four at a time (leaf positions from
+     * {@code first}): each lane {@link org.kdtree.accel.TriangleIntersector#test}'s operations in
+     * its order. Of a block's lanes that hit within {@code [tMin, best]} and closer than {@code hit}
+     * (or as close, at a lower position), the closest, of equals the first, is recorded in {@code
+     * hit}: what testing them one after the other records. One method for the whole leaf, so that
+     * the loop makes one call a leaf (a block's test is too big for C2 to inline).
+     */
     @Override public int hit(double[] c, int block, int first, int count, double okx, double oky, double okz, int kx, int ky, int kz,
                              double sx, double sy, double sz, double tMin, double tMax, Hit hit, boolean any) {
         int found = -1;
         double best = tMax;
         for (int k = 0; k < count; k += W, block++) {
-            int r = testBlock(c, block, first + k, okx, oky, okz, kx, ky, kz, sx, sy, sz, tMin, best, hit);
-            if (r >= 0) {
-                if (any) return r;
-                found = r;
-                best = hit.t;
+            int o = 9 * W * block, at = first + k;
+            DoubleVector az = DoubleVector.fromArray(B, c, o + W * kz).sub(okz);
+            DoubleVector bz = DoubleVector.fromArray(B, c, o + W * (3 + kz)).sub(okz);
+            DoubleVector cz = DoubleVector.fromArray(B, c, o + W * (6 + kz)).sub(okz);
+            DoubleVector ax = DoubleVector.fromArray(B, c, o + W * kx).sub(okx).sub(az.mul(sx));
+            DoubleVector ay = DoubleVector.fromArray(B, c, o + W * ky).sub(oky).sub(az.mul(sy));
+            DoubleVector bx = DoubleVector.fromArray(B, c, o + W * (3 + kx)).sub(okx).sub(bz.mul(sx));
+            DoubleVector by = DoubleVector.fromArray(B, c, o + W * (3 + ky)).sub(oky).sub(bz.mul(sy));
+            DoubleVector cx = DoubleVector.fromArray(B, c, o + W * (6 + kx)).sub(okx).sub(cz.mul(sx));
+            DoubleVector cy = DoubleVector.fromArray(B, c, o + W * (6 + ky)).sub(oky).sub(cz.mul(sy));
+            DoubleVector u = cx.mul(by).sub(cy.mul(bx)), v = ax.mul(cy).sub(ay.mul(cx)), w = bx.mul(ay).sub(by.mul(ax));
+            VectorMask<Double> outside = u.lt(0).or(v.lt(0)).or(w.lt(0)).and(u.compare(VectorOperators.GT, 0)
+                    .or(v.compare(VectorOperators.GT, 0)).or(w.compare(VectorOperators.GT, 0)));
+            if (outside.allTrue()) continue;
+            DoubleVector det = u.add(v).add(w);
+            DoubleVector t = u.mul(az).add(v.mul(bz)).add(w.mul(cz)).mul(sz).div(det);
+            double hitT = hit.t;
+            VectorMask<Double> ok = outside.not().and(det.compare(VectorOperators.NE, 0)).and(t.compare(VectorOperators.GE, tMin))
+                    .and(t.compare(VectorOperators.LE, best))
+                    .and(t.lt(hitT).or(t.eq(hitT).and(LANE.add(at).lt(hit.primitive))));
+            long bits = ok.toLong();
+            if (bits == 0) continue;
+            // The closest of the lanes that hit, of equals the lowest: the one the one-by-one loop keeps.
+            int lane = Long.numberOfTrailingZeros(bits);
+            double bt = t.lane(lane);
+            for (bits &= bits - 1; bits != 0; bits &= bits - 1) {
+                int i = Long.numberOfTrailingZeros(bits);
+                double ti = t.lane(i);
+                if (ti < bt) { lane = i; bt = ti; }
             }
+            double d = det.lane(lane);
+            hit.primitive = at + lane;
+            hit.t = bt;
+            hit.u = v.lane(lane) / d;
+            hit.v = w.lane(lane) / d;
+            if (any) return at + lane;
+            found = at + lane;
+            best = bt;
         }
         return found;
-    }
-
-    /**
-     * The watertight test of a block's four triangles (leaf positions from {@code first}) at once:
-     * each lane {@link org.kdtree.accel.TriangleIntersector#test}'s operations in its order. Of the
-     * lanes that hit within {@code [tMin, tMax]} and closer than {@code hit} (or as close, at a
-     * lower position), the closest, of equals the first, is recorded in {@code hit}: what testing
-     * them one after the other records. Returns its leaf position, or -1.
-     */
-    private static int testBlock(double[] c, int block, int first, double okx, double oky, double okz, int kx, int ky, int kz,
-                                 double sx, double sy, double sz, double tMin, double tMax, Hit hit) {
-        int o = 9 * W * block;
-        DoubleVector az = DoubleVector.fromArray(B, c, o + W * kz).sub(okz);
-        DoubleVector bz = DoubleVector.fromArray(B, c, o + W * (3 + kz)).sub(okz);
-        DoubleVector cz = DoubleVector.fromArray(B, c, o + W * (6 + kz)).sub(okz);
-        DoubleVector ax = DoubleVector.fromArray(B, c, o + W * kx).sub(okx).sub(az.mul(sx));
-        DoubleVector ay = DoubleVector.fromArray(B, c, o + W * ky).sub(oky).sub(az.mul(sy));
-        DoubleVector bx = DoubleVector.fromArray(B, c, o + W * (3 + kx)).sub(okx).sub(bz.mul(sx));
-        DoubleVector by = DoubleVector.fromArray(B, c, o + W * (3 + ky)).sub(oky).sub(bz.mul(sy));
-        DoubleVector cx = DoubleVector.fromArray(B, c, o + W * (6 + kx)).sub(okx).sub(cz.mul(sx));
-        DoubleVector cy = DoubleVector.fromArray(B, c, o + W * (6 + ky)).sub(oky).sub(cz.mul(sy));
-        DoubleVector u = cx.mul(by).sub(cy.mul(bx)), v = ax.mul(cy).sub(ay.mul(cx)), w = bx.mul(ay).sub(by.mul(ax));
-        VectorMask<Double> outside = u.lt(0).or(v.lt(0)).or(w.lt(0)).and(u.compare(VectorOperators.GT, 0)
-                .or(v.compare(VectorOperators.GT, 0)).or(w.compare(VectorOperators.GT, 0)));
-        if (outside.allTrue()) return -1;
-        DoubleVector det = u.add(v).add(w);
-        DoubleVector t = u.mul(az).add(v.mul(bz)).add(w.mul(cz)).mul(sz).div(det);
-        double hitT = hit.t;
-        VectorMask<Double> ok = outside.not().and(det.compare(VectorOperators.NE, 0)).and(t.compare(VectorOperators.GE, tMin))
-                .and(t.compare(VectorOperators.LE, tMax))
-                .and(t.lt(hitT).or(t.eq(hitT).and(LANE.add(first).lt(hit.primitive))));
-        long bits = ok.toLong();
-        if (bits == 0) return -1;
-        // The closest of the lanes that hit, of equals the lowest: the one the one-by-one loop keeps.
-        int best = Long.numberOfTrailingZeros(bits);
-        double bt = t.lane(best);
-        for (bits &= bits - 1; bits != 0; bits &= bits - 1) {
-            int i = Long.numberOfTrailingZeros(bits);
-            double ti = t.lane(i);
-            if (ti < bt) { best = i; bt = ti; }
-        }
-        double d = det.lane(best);
-        hit.primitive = first + best;
-        hit.t = bt;
-        hit.u = v.lane(best) / d;
-        hit.v = w.lane(best) / d;
-        return first + best;
     }
 }
