@@ -3,8 +3,8 @@
 Usage: grid_obj.py MESH.obj G > out.obj   (vertices and triangles only; polygons fan-triangulated)"""
 import sys
 
-def main():
-    path, g = sys.argv[1], int(sys.argv[2])
+def read(path):
+    """The vertices and triangles of an OBJ file (polygons fan-triangulated, negative indices resolved)."""
     vs, fs = [], []
     with open(path) as f:
         for line in f:
@@ -20,6 +20,11 @@ def main():
                     idx.append(i - 1 if i > 0 else len(vs) + i)
                 for j in range(1, len(idx) - 1):
                     fs.append((idx[0], idx[j], idx[j + 1]))
+    return vs, fs
+
+def main():
+    path, g = sys.argv[1], int(sys.argv[2])
+    vs, fs = read(path)
     lo = [min(v[a] for v in vs) for a in range(3)]
     hi = [max(v[a] for v in vs) for a in range(3)]
     ex, ez = hi[0] - lo[0], hi[2] - lo[2]
@@ -34,4 +39,5 @@ def main():
         for t in fs:
             out.write(f"f {t[0] + 1 + c * n} {t[1] + 1 + c * n} {t[2] + 1 + c * n}\n")
 
-main()
+if __name__ == '__main__':
+    main()

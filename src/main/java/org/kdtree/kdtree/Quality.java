@@ -2,18 +2,19 @@ package org.kdtree.kdtree;
 
 /**
  * Named SAH settings along the measured trade-off between build time and tree quality
- * (docs/performance.md, "Quality presets"). What they give up, measured on the meshes: near the
+ * (docs/sah.md, "Quality presets"). What they give up, measured on the meshes: near the
  * leaves the greedy SAH goes on cutting a few triangles apart, each cut saving a little, and
  * those nodes are most of the tree and most of the build. Stopping at a few references
- * ({@link SahBuilder#leafBelow}) removes them for little loss; the binned search then cheapens
- * the plane search of the big nodes that remain.
+ * ({@link SahBuilder#leafBelow}) removes them for little loss.
  */
 public enum Quality {
     /**
-     * Binned SAH (32 bins, the exact sweep below 32 references), leaves below 11 references: on the
-     * meshes measured, 15 to 35 % of the exact tree's nodes, within 25 % of its expected cost.
+     * The exact event algorithm, leaves below 11 references: chosen by the study of docs/sah.md
+     * ("Quality presets": four meshes, 1, 10 and 100 rays per triangle, build plus trace time) over
+     * the binned searches, which built no faster once the small nodes they sweep exactly are
+     * counted; 13 to 18 % of the exact tree's nodes, within 25 % of its expected cost.
      */
-    FAST(SahBuilder.Algorithm.BINNED, 32, 11),
+    FAST(SahBuilder.Algorithm.EVENT, -1, 11),
     /**
      * The exact event algorithm, leaves below 6 references: on the meshes measured, 35 to 45 % of
      * the exact tree's nodes, within 4 % of its expected cost.

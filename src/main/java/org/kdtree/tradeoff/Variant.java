@@ -24,7 +24,7 @@ public record Variant(String name, BuilderSpec spec) {
      * Every variant the study compares: the two median builders, exact SAH with lambda 1.0, 0.8
      * and 0.5 (and the sorted algorithm, same tree, for its build time), binned SAH with B = 8,
      * 32, 256 (and pure binning without the exact sweep of small nodes), SAH without perfect
-     * splits, SAH under depth caps 12, 16 and 20, exact SAH with a lookahead of 1, 2 and 3, the quality presets fast (binned, leaves below 11
+     * splits, SAH under depth caps 12, 16 and 20, exact SAH with a lookahead of 1, 2 and 3, the quality presets fast (exact, leaves below 11
      * references) and balanced (exact, leaves below 6); then every
      * other registered builder (a student's too) with its default settings; then the bounding
      * volume hierarchy: by default (4 children per node, 32 bins, leaves up to 16), collapsed to 2

@@ -52,7 +52,7 @@ class StatsCommandTest {
         CliRun exact = run("stats", "scenes/clustered-spheres.obj", "--runs", "1", "--warmup", "0");
         CliRun fast = run("stats", "scenes/clustered-spheres.obj", "--quality", "fast", "--runs", "1", "--warmup", "0");
         assertThat(fast.code()).as(fast.err()).isZero();
-        assertThat(fast.out()).contains("algorithm=binned", "leafBelow=11");
+        assertThat(fast.out()).contains("algorithm=event", "leafBelow=11");
         assertThat(nodes(fast.out())).isLessThan(nodes(exact.out()));
         CliRun capped = run("stats", "scenes/clustered-spheres.obj", "--quality", "fast", "--max-depth", "5", "--runs", "1", "--warmup", "0");
         assertThat(capped.out()).contains("maxDepth=5", "max depth: 5");

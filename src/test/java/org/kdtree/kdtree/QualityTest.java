@@ -30,11 +30,11 @@ class QualityTest {
         SahBuilder b = new SahBuilder();
         b.maxDepth(12);
         b.quality(Quality.FAST);
-        assertThat(b.algorithm()).isEqualTo(SahBuilder.Algorithm.BINNED);
+        assertThat(b.algorithm()).isEqualTo(SahBuilder.Algorithm.EVENT);
         assertThat(b.leafBelow()).isEqualTo(11);
         assertThat(b.maxDepth()).isEqualTo(-1);
         assertThat(b.leafBelow(2).exactBelow(0).maxDepth(12).depthCap(1 << 16)).isEqualTo(12);
-        assertThat(b.describeSettings()).contains("maxDepth=12").contains("leafBelow=2").contains("algorithm=binned");
+        assertThat(b.describeSettings()).contains("maxDepth=12").contains("leafBelow=2").contains("algorithm=event");
         assertThat(new SahBuilder().quality(Quality.BALANCED).describeSettings()).contains("algorithm=event").contains("leafBelow=6");
         assertThat(new SahBuilder().quality(Quality.EXACT).describeSettings()).doesNotContain("leafBelow");
         assertThatThrownBy(() -> new SahBuilder().leafBelow(0)).isInstanceOf(IllegalArgumentException.class)
