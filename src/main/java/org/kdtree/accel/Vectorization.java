@@ -60,15 +60,6 @@ public final class Vectorization {
         }
     }
 
-    /**
-     * Turns the vector path off for this JVM: a structure's vector code did not load.
-     *
-     * @param why what failed, for {@link #describe}
-     */
-    public static void unavailable(String why) {
-        reason = why;
-    }
-
     /** {@return which path the traversals take, and why}: "vector (...)" or "scalar (...)" */
     public static String describe() {
         String r = reason;
