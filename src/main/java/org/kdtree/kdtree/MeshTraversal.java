@@ -1,6 +1,7 @@
 package org.kdtree.kdtree;
 
 import org.kdtree.accel.Hit;
+import org.kdtree.accel.SlabClip;
 import org.kdtree.accel.TriangleIntersector;
 import org.kdtree.geom.Box;
 import org.kdtree.geom.Ray;
@@ -21,7 +22,7 @@ final class MeshTraversal {
     private final int[] refs;
     /** The mesh's corners, 9 per triangle ({@link KdTree#corners}). */
     private final double[] corners;
-    /** The scene box: 3 minima, then 3 maxima ({@link #clip}'s form). */
+    /** The scene box: 3 minima, then 3 maxima ({@link SlabClip#clip3}'s form). */
     private final double[] scene;
     private final Mailbox mailbox;
     private final int[] stackNode;
@@ -43,34 +44,6 @@ final class MeshTraversal {
         stackMax = new double[stackSize];
     }
 
-    /**
-     * Clips the ray {@code o + t d} (given by its origin and inverse direction) to the box {@code
-     * box} (3 minima, then 3 maxima): {@code [tMin, tMax]} cut to the box and widened by the slack,
-     * into {@code out}; {@return whether anything is left}. A NaN from 0 times infinity constrains
-     * nothing. The silent loop's and the packet loop's clip to the scene box.
-     */
-    static boolean clip(double[] box, double ox, double oy, double oz, double ix, double iy, double iz, double tMin, double tMax,
-                        double[] out) {
-        double t0 = tMin, t1 = tMax, a, b;
-        a = (box[0] - ox) * ix; b = (box[3] - ox) * ix;
-        if (ix < 0) { double s = a; a = b; b = s; }
-        if (a > t0) t0 = a;
-        if (b < t1) t1 = b;
-        a = (box[1] - oy) * iy; b = (box[4] - oy) * iy;
-        if (iy < 0) { double s = a; a = b; b = s; }
-        if (a > t0) t0 = a;
-        if (b < t1) t1 = b;
-        a = (box[2] - oz) * iz; b = (box[5] - oz) * iz;
-        if (iz < 0) { double s = a; a = b; b = s; }
-        if (a > t0) t0 = a;
-        if (b < t1) t1 = b;
-        t0 = Math.max(tMin, t0 - Math.abs(t0) * SLACK);
-        t1 = Math.min(tMax, t1 + Math.abs(t1) * SLACK);
-        out[0] = t0;
-        out[1] = t1;
-        return t0 <= t1;
-    }
-
     boolean closestHit(Ray ray, double tMin, double tMax, Hit hit) {
         hit.reset();
         return trace(ray, tMin, tMax, hit, false);
@@ -88,7 +61,7 @@ final class MeshTraversal {
         if (!(ox - ox == 0 && oy - oy == 0 && oz - oz == 0 && dx - dx == 0 && dy - dy == 0 && dz - dz == 0)
                 || (dx == 0 && dy == 0 && dz == 0))
             throw new IllegalArgumentException("ray has a non-finite or zero origin or direction: " + ray);
-        if (!clip(scene, ox, oy, oz, ix, iy, iz, tMin, tMax, interval)) return false;
+        if (!SlabClip.clip3(scene, ox, oy, oz, ix, iy, iz, tMin, tMax, interval)) return false;
         double t0 = interval[0], t1 = interval[1];
 
         // The watertight test's shear, once per ray.

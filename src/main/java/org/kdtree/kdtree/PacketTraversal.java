@@ -5,6 +5,7 @@ import org.kdtree.accel.OctantSplit;
 import org.kdtree.accel.PacketQuery;
 import org.kdtree.accel.RayPacket;
 import org.kdtree.accel.RayQuery;
+import org.kdtree.accel.SlabClip;
 import org.kdtree.accel.Vectorization;
 import org.kdtree.geom.Box;
 import org.kdtree.geom.Ray;
@@ -53,7 +54,7 @@ final class PacketTraversal implements PacketQuery {
     private final OctantSplit split;
     private final int[] nodes, refs;
     private final double[] corners;
-    /** The scene box, 3 minima then 3 maxima, and a ray's clip to it ({@link MeshTraversal#clip}). */
+    /** The scene box, 3 minima then 3 maxima, and a ray's clip to it ({@link SlabClip#clip3}). */
     private final double[] scene, interval = new double[2];
     private final PacketLanes lanes = new PacketLanes();
     /** The lanes blocked so far (any hit). */
@@ -182,7 +183,7 @@ final class PacketTraversal implements PacketQuery {
             if (!(ox - ox == 0 && oy - oy == 0 && oz - oz == 0))
                 throw new IllegalArgumentException("ray " + i + " of the packet has a non-finite origin: " + p.ray(i, new Ray(3)));
             l.load(p, i);
-            boolean enters = MeshTraversal.clip(scene, ox, oy, oz, p.ix[i], p.iy[i], p.iz[i], p.tMin[i], p.tMax[i], interval);
+            boolean enters = SlabClip.clip3(scene, ox, oy, oz, p.ix[i], p.iy[i], p.iz[i], p.tMin[i], p.tMax[i], interval);
             double t0 = interval[0], t1 = interval[1];
             l.curMin[i] = t0;
             l.curMax[i] = t1;
@@ -200,14 +201,9 @@ final class PacketTraversal implements PacketQuery {
             if (any) {
                 p.recordAny(i, (blocked >>> i & 1) != 0);
             } else if (l.bestPrim[i] < 0) {
-                p.primitive[i] = -1;
-                p.t[i] = Double.POSITIVE_INFINITY;
-                p.u[i] = p.v[i] = 0;
+                p.recordMiss(i);
             } else {
-                p.primitive[i] = (int) l.bestPrim[i];
-                p.t[i] = l.bestT[i];
-                p.u[i] = l.bestU[i];
-                p.v[i] = l.bestV[i];
+                p.record(i, (int) l.bestPrim[i], l.bestT[i], l.bestU[i], l.bestV[i]);
             }
         }
     }
