@@ -143,23 +143,44 @@ public final class RayPacket {
      * @param hit its closest hit, or none
      */
     public void record(int i, Hit hit) {
-        primitive[i] = hit.primitive;
-        t[i] = hit.t;
-        u[i] = hit.u;
-        v[i] = hit.v;
+        record(i, hit.primitive, hit.t, hit.u, hit.v);
+    }
+
+    /**
+     * Records ray {@code i}'s hit: what a packet loop found for it.
+     *
+     * @param i         a ray's index
+     * @param primitive the primitive hit
+     * @param t         where along the ray
+     * @param u         the hit's first barycentric coordinate
+     * @param v         its second
+     */
+    public void record(int i, int primitive, double t, double u, double v) {
+        this.primitive[i] = primitive;
+        this.t[i] = t;
+        this.u[i] = u;
+        this.v[i] = v;
+    }
+
+    /**
+     * Records that ray {@code i} hits nothing: primitive -1, t infinite, barycentrics 0, as a
+     * single-ray query's {@link Hit#reset} leaves it.
+     *
+     * @param i a ray's index
+     */
+    public void recordMiss(int i) {
+        record(i, -1, Double.POSITIVE_INFINITY, 0, 0);
     }
 
     /**
      * Records whether ray {@code i} is blocked, from a single-ray any-hit query ({@link PacketQuery#anyHits}):
-     * no hit as {@link #record} writes it, or a hit on an unnamed primitive (index 0, t and barycentrics 0).
+     * no hit as {@link #recordMiss} writes it, or a hit on an unnamed primitive (index 0, t and barycentrics 0).
      *
      * @param i       a ray's index
      * @param blocked whether the ray hits anything in its interval
      */
     public void recordAny(int i, boolean blocked) {
-        primitive[i] = blocked ? 0 : -1;
-        t[i] = blocked ? 0 : Double.POSITIVE_INFINITY;
-        u[i] = 0;
-        v[i] = 0;
+        if (blocked) record(i, 0, 0, 0, 0);
+        else recordMiss(i);
     }
 }

@@ -160,16 +160,8 @@ final class PacketTraversal implements PacketQuery {
         }
         for (int i = 0; i < n; i++) {
             int at = (int) q.position[i];
-            if (at < 0) {
-                p.primitive[i] = -1;
-                p.t[i] = Double.POSITIVE_INFINITY;
-                p.u[i] = p.v[i] = 0;
-            } else {
-                p.primitive[i] = prim[at];
-                p.t[i] = q.best[i];
-                p.u[i] = q.bu[i];
-                p.v[i] = q.bv[i];
-            }
+            if (at < 0) p.recordMiss(i);
+            else p.record(i, prim[at], q.best[i], q.bu[i], q.bv[i]);
         }
     }
 
