@@ -3,12 +3,15 @@
 straddle most split planes, as OBJ: the preset study's "scene of big and small triangles"
 (docs/sah.md, "Quality presets"). Deterministic (seeded).
 Usage: big_and_small_obj.py MESH.obj [BLADES] > out.obj   (default 24 big slanted triangles)"""
+import os
 import random
 import sys
 
 from grid_obj import read
 
 def main():
+    if len(sys.argv) not in (2, 3) or not os.path.isfile(sys.argv[1]):
+        sys.exit('usage: big_and_small_obj.py MESH.obj [BLADES] > out.obj')
     vs, fs = read(sys.argv[1])
     blades = int(sys.argv[2]) if len(sys.argv) > 2 else 24
     lo = [min(v[a] for v in vs) for a in range(3)]

@@ -23,6 +23,8 @@ def read(path):
     return vs, fs
 
 def main():
+    if len(sys.argv) != 3 or not sys.argv[2].isdigit() or int(sys.argv[2]) < 1:
+        sys.exit('usage: grid_obj.py MESH.obj G > out.obj   (G: a whole number, 1 or more)')
     path, g = sys.argv[1], int(sys.argv[2])
     vs, fs = read(path)
     lo = [min(v[a] for v in vs) for a in range(3)]

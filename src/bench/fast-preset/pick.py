@@ -3,6 +3,8 @@ R rays per second and the total time for 1, 10 and 100 rays per triangle (best i
 geometric mean of total time over the best, among those within 1.30 x the exact tree's expected cost on every mesh.
 Usage: pick.py OUTDIR"""
 import csv, glob, os, sys, collections, math
+if len(sys.argv) != 2 or not glob.glob(os.path.join(sys.argv[1], '*--exact-l1.csv')):
+    sys.exit('usage: pick.py OUTDIR (the folder run.sh wrote, with its exact-l1 candidate)')
 rows = collections.defaultdict(dict)
 for f in glob.glob(os.path.join(sys.argv[1], '*.csv')):
     mesh, cand = os.path.basename(f)[:-4].split('--')

@@ -4,7 +4,8 @@
 # usage: src/bench/fast-preset/run.sh JAR OUTDIR RUNS RAYS MESH...   (then: python3 src/bench/fast-preset/pick.py OUTDIR)
 # The study of docs/sah.md ("Quality presets") ran it with RUNS 5, RAYS 1000000 on bunny.obj, its 2 x 2 grid
 # (src/bench/grid_obj.py bunny.obj 2), scenes:clustered-spheres and src/bench/big_and_small_obj.py bunny.obj.
-jar=$1; out=$2; runs=${3:-5}; rays=${4:-1000000}; shift 4
+[ $# -ge 5 ] && [ -f "$1" ] || { echo "usage: run.sh JAR OUTDIR RUNS RAYS MESH... (JAR: target/kdtree.jar; MESH: an OBJ or scenes:NAME)" >&2; exit 2; }
+jar=$1; out=$2; runs=$3; rays=$4; shift 4
 mkdir -p "$out"
 meshes=("$@")
 cands=(
