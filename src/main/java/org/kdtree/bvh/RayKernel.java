@@ -13,21 +13,25 @@ interface RayKernel {
     int SPARE = 16;
 
     /**
-     * The node kernel: which children of a wide node of {@code words} ({@link WideNodes}, {@code
-     * width} children) the ray enters within {@code [start, limit]}, with the traversal's slack
-     * ({@code t0 (1 - slack) <= t1 (1 + slack)}).
+     * The node kernel: the children of the wide node at {@code base} in {@code words} ({@link
+     * WideNodes}, {@code width} children, in three dimensions) that the ray enters within {@code
+     * [start, limit]}, with the traversal's slack ({@code t0 (1 - slack) <= t1 (1 + slack)}),
+     * appended in slot order: to {@code entries} what the loop goes on with (the child's wide node,
+     * or {@code -1 - word} for a leaf child: the word of its reference), to {@code t} where the ray
+     * enters it. The loop then reads only the children entered, with no second pass over the slots.
      *
-     * @param nx    where the node's near planes on x start in {@code words} (its minima if the ray runs up x, else its maxima)
-     * @param fx    where its far planes on x start
+     * @param nx    where a node's near planes on x lie within it: its minima (0) if the ray runs up x, else its maxima ({@code width}); its far planes are the others
+     * @param ny    likewise on y ({@code 2 width} or {@code 3 width})
+     * @param nz    and on z ({@code 4 width} or {@code 5 width})
      * @param ox    the ray's origin, x
      * @param ix    its inverse direction, x (finite: no zero component)
      * @param start where intervals start (at least 0)
      * @param limit where they end, slack included
-     * @param t     receives, for each child entered, its entry distance at its slot
-     * @return bit {@code i} set for each child slot {@code i} entered
+     * @param t     receives the entry distances; up to {@link #SPARE} entries past the last may be written too
+     * @return how many children the ray enters
      */
-    int enter(int[] words, int width, int nx, int fx, int ny, int fy, int nz, int fz, double ox, double oy, double oz,
-              double ix, double iy, double iz, double start, double limit, double[] t);
+    int enter(int[] words, int base, int width, int nx, int ny, int nz, double ox, double oy, double oz,
+              double ix, double iy, double iz, double start, double limit, int[] entries, double[] t);
 
     /**
      * {@return the children per node of the layout {@link #enter} reads, for a hierarchy built with
@@ -41,13 +45,15 @@ interface RayKernel {
 
     /**
      * The leaf kernel: the watertight test ({@link org.kdtree.accel.TriangleIntersector#test}) of
-     * a leaf's {@code count} triangles, leaf positions from {@code first}, blocks from {@code block}
-     * of {@code blocks}: the closest hit within {@code [tMin, tMax]} and closer than {@code hit}
-     * (of two equally close, the lower position) is recorded in {@code hit}, with its position as
-     * the primitive; for {@code any}, the first block with a hit ends the test.
+     * a leaf's {@code count} triangles, leaf positions from {@code first}, in the blocks of {@code
+     * blocks} from {@code firstBlock[first]} ({@link LeafBlocks}; one-triangle blocks are the
+     * positions themselves, and their kernel reads no index: a cache miss a leaf saved): the
+     * closest hit within {@code [tMin, tMax]} and closer than {@code hit} (of two equally close, the
+     * lower position) is recorded in {@code hit}, with its position as the primitive; for {@code
+     * any}, the first block with a hit ends the test.
      *
      * @return the leaf position recorded, or -1
      */
-    int hit(double[] blocks, int block, int first, int count, double okx, double oky, double okz, int kx, int ky, int kz,
+    int hit(double[] blocks, int[] firstBlock, int first, int count, double okx, double oky, double okz, int kx, int ky, int kz,
             double sx, double sy, double sz, double tMin, double tMax, Hit hit, boolean any);
 }

@@ -24,16 +24,16 @@ final class WideTraversal implements RayQuery {
     /** The kernels, chosen once for the JVM: a final static, so that the JIT inlines the one class it holds. */
     static final RayKernel KERNEL = Vectorization.kernel(RayKernel.class, "org.kdtree.bvh.VectorRayKernel", new ScalarRayKernel());
 
-    private final int width, stride, refs;
+    private final int width, stride;
     private final int[] words, prim, firstBlock;
     private final double[] blocks;
     private final boolean empty;
     /** Saved entries: a wide node's index, or {@code -1 - word} for a leaf child (the word of its reference); where the ray enters it. */
     private final int[] stackEntry;
     private final double[] stackT;
-    /** One node's children entered, sorted by entry distance before they are pushed; the kernel's entry distances per slot. */
+    /** One node's children entered, as the node kernel appends them, sorted by entry distance before they are pushed. */
     private final int[] hitEntry;
-    private final double[] hitT, slotT;
+    private final double[] hitT;
     private final Hit scratch = new Hit();
     /** Traces the rays this loop leaves out: those with a zero direction component, or a negative tMin. */
     private final BvhTraverser general;
@@ -42,7 +42,6 @@ final class WideTraversal implements RayQuery {
         WideNodes w = bvh.wide();
         width = w.width;
         stride = w.stride;
-        refs = w.refs;
         words = w.words;
         prim = bvh.primitiveArray();
         LeafBlocks lb = bvh.leafBlocks();
@@ -53,8 +52,7 @@ final class WideTraversal implements RayQuery {
         stackEntry = new int[stack];
         stackT = new double[stack];
         hitEntry = new int[width];
-        hitT = new double[width];
-        slotT = new double[width + RayKernel.SPARE];
+        hitT = new double[width + RayKernel.SPARE];
         general = new BvhTraverser(bvh, org.kdtree.accel.TraversalListener.NONE);
     }
 
@@ -100,9 +98,8 @@ final class WideTraversal implements RayQuery {
         double ox = ray.origin(0), oy = ray.origin(1), oz = ray.origin(2);
         double ix = ray.inverseDirection(0), iy = ray.inverseDirection(1), iz = ray.inverseDirection(2);
         int w = width;
-        // Offsets of the near and far planes within a node: per axis, minima first, then maxima.
+        // Offsets of the near planes within a node: per axis, minima first, then maxima.
         int nx = ix < 0 ? w : 0, ny = (iy < 0 ? w : 0) + 2 * w, nz = (iz < 0 ? w : 0) + 4 * w;
-        int fx = w - nx, fy = 5 * w - ny, fz = 9 * w - nz;
 
         // The watertight test's shear, once per ray.
         int kz = TriangleIntersector.maxAxis(ray.direction(0), ray.direction(1), ray.direction(2));
@@ -119,13 +116,7 @@ final class WideTraversal implements RayQuery {
         while (true) {
             if (e >= 0) {
                 // An interior node: the children entered; go on with the nearest, save the others.
-                int base = stride * e, m = 0;
-                int bits = kernel.enter(nd, w, base + nx, base + fx, base + ny, base + fy, base + nz, base + fz, ox, oy, oz, ix, iy, iz, start, best + Math.abs(best) * SLACK, slotT);
-                for (int i = 0; i < w; i++) {   // appended always, kept only if entered: no branch to mispredict
-                    he[m] = nd[base + refs + w + i] > 0 ? -1 - (base + refs + i) : nd[base + refs + i];
-                    ht[m] = slotT[i];
-                    m += bits >>> i & 1;
-                }
+                int m = kernel.enter(nd, stride * e, w, nx, ny, nz, ox, oy, oz, ix, iy, iz, start, best + Math.abs(best) * SLACK, he, ht);
                 if (m > 0) {
                     sp = saveAllButNearest(he, ht, m, se, st, sp);
                     e = he[m - 1];
@@ -133,7 +124,7 @@ final class WideTraversal implements RayQuery {
                 }
             } else {
                 int word = -1 - e, from = nd[word];
-                int r = kernel.hit(blocks, firstBlock[from], from, nd[word + w], okx, oky, okz, kx, ky, kz, sx, sy, sz, tMin, best, hit, any);
+                int r = kernel.hit(blocks, firstBlock, from, nd[word + w], okx, oky, okz, kx, ky, kz, sx, sy, sz, tMin, best, hit, any);
                 if (r >= 0) {
                     if (any) return r;
                     found = r;

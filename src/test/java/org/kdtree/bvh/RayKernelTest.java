@@ -66,6 +66,7 @@ class RayKernelTest {
                 double[] lo = new double[3], hi = new double[3];
                 for (int k = 0; k < 3; k++) { lo[k] = bvh.min(0, k); hi[k] = bvh.max(0, k); }
                 double[] t = new double[width + RayKernel.SPARE], want = new double[width];
+                int[] entries = new int[width];
                 for (int n = 0; n < 3000; n++) {
                     double[] r = ray(rnd, n, lo, hi, vertices);
                     int node = rnd.nextInt(w.nodeCount()), base = w.stride * node;
@@ -85,11 +86,15 @@ class RayKernelTest {
                     double start = n % 4 == 0 ? rnd.nextDouble() : 0, limit = n % 7 == 0 ? rnd.nextDouble() * 10 : Double.POSITIVE_INFINITY;
                     int bits = slabs(w, base, r, start, limit, want);
                     for (RayKernel kernel : KERNELS) {
-                        int got = kernel.enter(w.words, width, base + nx, base + width - nx, base + ny, base + 5 * width - ny, base + nz, base + 9 * width - nz, r[0], r[1], r[2], r[6], r[7], r[8], start, limit, t);
+                        int got = kernel.enter(w.words, base, width, nx, ny, nz, r[0], r[1], r[2], r[6], r[7], r[8], start, limit, entries, t);
                         String what = kernel.getClass().getSimpleName() + ", width " + width + ", node " + node + ", ray " + java.util.Arrays.toString(r);
-                        assertThat(got).as(what).isEqualTo(bits);
-                        for (int i = 0; i < width; i++)
-                            if ((bits >> i & 1) != 0) assertThat(Double.doubleToLongBits(t[i])).as(what + ", slot " + i).isEqualTo(Double.doubleToLongBits(want[i]));
+                        assertThat(got).as(what).isEqualTo(Integer.bitCount(bits));
+                        for (int i = 0, m = 0; i < width; i++) {   // the slots entered, in slot order
+                            if ((bits >> i & 1) == 0) continue;
+                            int ref = base + w.refs + i;
+                            assertThat(entries[m]).as(what + ", slot " + i).isEqualTo(w.words[ref + width] > 0 ? -1 - ref : w.words[ref]);
+                            assertThat(Double.doubleToLongBits(t[m++])).as(what + ", slot " + i).isEqualTo(Double.doubleToLongBits(want[i]));
+                        }
                     }
                 }
             }
@@ -151,7 +156,7 @@ class RayKernelTest {
                     for (boolean any : new boolean[] {false, true}) {
                         Hit got = new Hit().reset();
                         if (prior) { got.t = wantT; got.primitive = wantPrimitive; }
-                        int r0 = kernel.hit(blocks.coordinates, blocks.firstBlock[first], first, count, r[kx], r[ky], r[kz], kx, ky, kz,
+                        int r0 = kernel.hit(blocks.coordinates, blocks.firstBlock, first, count, r[kx], r[ky], r[kz], kx, ky, kz,
                                 sx, sy, sz, tMin, prior ? Math.min(tMax, wantT) : tMax, got, any);
                         String what = kernel.getClass().getSimpleName() + (any ? " any" : " closest") + ", leaf of " + count + ", ray " + java.util.Arrays.toString(r);
                         assertThat(r0 >= 0).as(what).isEqualTo(found >= 0);

@@ -42,9 +42,12 @@ public final class VectorRayKernel implements RayKernel {
         return (DoubleVector) IntVector.fromArray(I, words, at).reinterpretAsFloats().convertShape(VectorOperators.F2D, S, 0);
     }
 
-    @Override public int enter(int[] nd, int w, int nx, int fx, int ny, int fy, int nz, int fz, double ox, double oy, double oz,
-                               double ix, double iy, double iz, double start, double limit, double[] t) {
-        int bits = 0;
+    @Override public int enter(int[] nd, int base, int w, int nx, int ny, int nz, double ox, double oy, double oz,
+                               double ix, double iy, double iz, double start, double limit, int[] entries, double[] t) {
+        int fx = base + w - nx, fy = base + 5 * w - ny, fz = base + 9 * w - nz, ref = base + 6 * w, m = 0;
+        nx += base;
+        ny += base;
+        nz += base;
         for (int i = 0; i < w; i += L) {
             DoubleVector t0 = planes(nd, nx + i).sub(ox).mul(ix).max(start);
             DoubleVector t1 = planes(nd, fx + i).sub(ox).mul(ix).min(limit);
@@ -54,12 +57,26 @@ public final class VectorRayKernel implements RayKernel {
             t1 = t1.min(planes(nd, fz + i).sub(oz).mul(iz));
             // Lanes past the node's width read the next rows: ignored.
             int in = (int) t0.mul(SHRINK).compare(VectorOperators.LE, t1.mul(GROW)).toLong() & (1 << w - i) - 1;
-            if (in != 0) {
-                t0.intoArray(t, i);
-                bits |= in << i;
-            }
+            if (in == 0) continue;
+            t0.intoArray(t, m);
+            m = append(nd, ref + i, w, in, m, entries, t);
         }
-        return bits;
+        return m;
+    }
+
+    /**
+     * Appends the lanes {@code in} of the slots from {@code slot} whose entry distances stand in
+     * {@code t} from {@code m}: each moved down to the next place (never past its own lane), in slot
+     * order as the Java 17 kernel appends them; only the entered lanes are visited. A method of its
+     * own so that {@link #enter} stays small enough for C2 to inline.
+     */
+    private static int append(int[] nd, int slot, int w, int in, int m, int[] entries, double[] t) {
+        for (int from = m; in != 0; in &= in - 1) {
+            int j = Integer.numberOfTrailingZeros(in), s = slot + j;
+            entries[m] = nd[s + w] > 0 ? -1 - s : nd[s];
+            t[m++] = t[from + j];
+        }
+        return m;
     }
 
     /** {@return the lanes (within the widths allowed, 2 to 8)}: on the grid mesh of bvh.md, 8-wide nodes ran R at 1.3 x the 4-wide ones */
@@ -76,11 +93,11 @@ public final class VectorRayKernel implements RayKernel {
      * hit}: what testing them one after the other records. One method for the whole leaf, so that
      * the loop makes one call a leaf (a block's test is too big for C2 to inline).
      */
-    @Override public int hit(double[] c, int block, int first, int count, double okx, double oky, double okz, int kx, int ky, int kz,
+    @Override public int hit(double[] c, int[] firstBlock, int first, int count, double okx, double oky, double okz, int kx, int ky, int kz,
                              double sx, double sy, double sz, double tMin, double tMax, Hit hit, boolean any) {
         int found = -1;
         double best = tMax;
-        for (int k = 0; k < count; k += W, block++) {
+        for (int k = 0, block = firstBlock[first]; k < count; k += W, block++) {
             int o = 9 * W * block, at = first + k;
             DoubleVector az = DoubleVector.fromArray(B, c, o + W * kz).sub(okz);
             DoubleVector bz = DoubleVector.fromArray(B, c, o + W * (3 + kz)).sub(okz);
