@@ -41,9 +41,7 @@ public final class SlabClip {
             if (tNear > t0) t0 = tNear;
             if (tFar < t1) t1 = tFar;
         }
-        interval[0] = Math.max(tMin, t0 - Math.abs(t0) * Tolerance.TRAVERSAL_SLACK);
-        interval[1] = Math.min(tMax, t1 + Math.abs(t1) * Tolerance.TRAVERSAL_SLACK);
-        return interval[0] <= interval[1];
+        return widen(t0, t1, tMin, tMax, interval);
     }
 
     /**
@@ -77,6 +75,14 @@ public final class SlabClip {
         if (iz < 0) { double s = a; a = b; b = s; }
         if (a > t0) t0 = a;
         if (b < t1) t1 = b;
+        return widen(t0, t1, tMin, tMax, interval);
+    }
+
+    /**
+     * The one rounding of both clips: the box's {@code [t0, t1]} widened by the slack on each side,
+     * kept within the ray's {@code [tMin, tMax]}, into {@code interval}.
+     */
+    private static boolean widen(double t0, double t1, double tMin, double tMax, double[] interval) {
         interval[0] = Math.max(tMin, t0 - Math.abs(t0) * Tolerance.TRAVERSAL_SLACK);
         interval[1] = Math.min(tMax, t1 + Math.abs(t1) * Tolerance.TRAVERSAL_SLACK);
         return interval[0] <= interval[1];

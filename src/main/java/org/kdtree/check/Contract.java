@@ -152,13 +152,7 @@ public final class Contract {
      * @param body the checks to run
      */
     public static void withTape(TreeTape tape, Runnable body) {
-        TreeTape before = TAPE.get();
-        TAPE.set(tape);
-        try {
-            body.run();
-        } finally {
-            TAPE.set(before);
-        }
+        with(TAPE, tape, body);
     }
 
     private static final ThreadLocal<Deadlines> DEADLINES = ThreadLocal.withInitial(() -> Deadlines.GRADE);
@@ -175,12 +169,17 @@ public final class Contract {
      * @param body the checks to run
      */
     public static void withDeadlines(Deadlines deadlines, Runnable body) {
-        Deadlines before = DEADLINES.get();
-        DEADLINES.set(deadlines);
+        with(DEADLINES, deadlines, body);
+    }
+
+    /** Runs {@code body} with {@code local} set to {@code value} on this thread, then puts back what it held (the one way of both). */
+    private static <T> void with(ThreadLocal<T> local, T value, Runnable body) {
+        T before = local.get();
+        local.set(value);
         try {
             body.run();
         } finally {
-            DEADLINES.set(before);
+            local.set(before);
         }
     }
 

@@ -6,6 +6,7 @@ import java.util.LinkedHashMap;
 import java.util.List;
 import java.util.Map;
 import java.util.stream.Collectors;
+import java.util.stream.Stream;
 import org.kdtree.accel.Setting;
 import org.kdtree.accel.SharedSettings;
 import org.kdtree.bvh.BvhBuilder;
@@ -151,8 +152,8 @@ final class BuilderOptions {
     /** Adds {@code -b} and one option per setting to the command that mixes these options in. */
     public static final class AddOptions implements IModelTransformer {
         @Override public CommandSpec transform(CommandSpec command) {
-            BuilderOptions o = command.mixins().values().stream().map(CommandSpec::userObject)
-                    .filter(BuilderOptions.class::isInstance).map(BuilderOptions.class::cast).findFirst().orElseThrow();
+            BuilderOptions o = mixedIn(command).filter(BuilderOptions.class::isInstance).map(BuilderOptions.class::cast)
+                    .findFirst().orElseThrow();
             String which = o.kdTreesOnly ? "Builder: sah, median-plane, object-median, sliding-midpoint or a registered name "
                     + "(a kd-tree builder: this command does not take bvh) "
                     : "Builder: sah, median-plane, object-median, sliding-midpoint, a registered name, or bvh "
@@ -163,6 +164,11 @@ final class BuilderOptions {
             for (Setting<?> s : BuilderSpec.allSettingRows())
                 if (!o.kdTreesOnly || BuilderSpec.takenByKdTrees(s)) command.addOption(option(s, o));
             return command;
+        }
+
+        /** The mixins of {@code spec} and theirs: a command may take these options through a mixin of mixins. */
+        private static Stream<Object> mixedIn(CommandSpec spec) {
+            return spec.mixins().values().stream().flatMap(m -> Stream.concat(Stream.of(m.userObject()), mixedIn(m)));
         }
 
         /** The option of one setting: a switch for a boolean (it turns the default over), else an option with a value. */

@@ -9,9 +9,7 @@ import org.kdtree.compare.TreeSignature;
 import org.kdtree.files.AtomicFile;
 import org.kdtree.gui.TreeComparisonPicture;
 import org.kdtree.kdtree.KdTree;
-import org.kdtree.kdtree.Supervisor;
 import org.kdtree.shape.Primitives;
-import org.kdtree.spec.BuilderSpec;
 import picocli.CommandLine.Command;
 import picocli.CommandLine.Mixin;
 import picocli.CommandLine.Option;
@@ -35,14 +33,7 @@ final class CompareTreesCommand implements Callable<Integer> {
     Path fileB;
 
     @Mixin
-    BuilderOptions options = TreeData.builderOptions("both trees");
-
-    /** Taken as every command takes it (compare-trees draws no bar: it prints a few lines). */
-    @Mixin
-    ProgressOption progress;
-
-    @Mixin
-    DeadlineOptions deadlines;
+    CompareOptions compare = new CompareOptions("both trees");
 
     @Option(names = "--csv", paramLabel = "FILE", description = "Also write the terms as CSV: term,weight,value (and the total).")
     Path csv;
@@ -62,10 +53,9 @@ final class CompareTreesCommand implements Callable<Integer> {
             throw new IllegalArgumentException("--csv and --chart are the same file (" + csv + "); give two");
         Primitives a = TreeData.read("A", fileA), b = TreeData.read("B", fileB);
         TreeData.requireComparable("A", fileA, a, "B", fileB, b);
-        BuilderSpec spec = TreeData.builder(options, a);
-        String builder = spec.builder() + " (" + spec.describe() + ")";
-        Supervisor supervisor = deadlines.supervisor();
-        KdTree treeA = TreeData.build(spec, a, supervisor), treeB = TreeData.build(spec, b, supervisor);
+        CompareOptions.TreeMaker maker = compare.maker(a);
+        String builder = maker.describe();
+        KdTree treeA = maker.build(a), treeB = maker.build(b);
         TreeSignature sa = TreeSignature.of(treeA), sb = TreeSignature.of(treeB);
         TreeDistance d = TreeDistance.between(sa, sb);
         System.out.printf(Locale.ROOT, "compare-trees: %s, %s, builder %s%n", fileA, TreeData.describe(a), builder);
@@ -81,7 +71,7 @@ final class CompareTreesCommand implements Callable<Integer> {
         });
         if (chart != null)
             TreeComparisonPicture.write(chart, new TreeComparisonPicture.Side("A " + fileA.getFileName(), a, treeA, sa),
-                    new TreeComparisonPicture.Side("B " + fileB.getFileName(), b, treeB, sb), d, spec.builder());
+                    new TreeComparisonPicture.Side("B " + fileB.getFileName(), b, treeB, sb), d, maker.spec().builder());
         return 0;
     }
 }

@@ -7,13 +7,13 @@ import java.nio.file.Files;
 import java.nio.file.Path;
 import java.util.Locale;
 import java.util.concurrent.Callable;
+import java.util.function.Supplier;
 import org.kdtree.accel.AccelerationStructure;
 import org.kdtree.accel.RayQuery;
 import org.kdtree.accel.TreeStats;
 import org.kdtree.accel.TriangleIntersector;
 import org.kdtree.files.AtomicFile;
 import org.kdtree.generate.MeshGrid;
-import org.kdtree.kdtree.Supervisor;
 import org.kdtree.limits.Limits;
 import org.kdtree.measure.RayBatch;
 import org.kdtree.measure.RaySet;
@@ -72,13 +72,7 @@ final class RaycastCommand implements Callable<Integer> {
     int verifyStride;
 
     @Mixin
-    TreeOptions trees = new TreeOptions();
-
-    @Mixin
-    ProgressOption progress;
-
-    @Mixin
-    DeadlineOptions deadlines;
+    TreeJob treeJob = new TreeJob();
 
     @Override public Integer call() throws Exception {
         if ((raysFile == null) != (hitsFile == null))
@@ -93,8 +87,8 @@ final class RaycastCommand implements Callable<Integer> {
         }
         if (raysFile != null && !Files.isRegularFile(raysFile))
             throw new java.io.IOException("--rays " + raysFile + (Files.isDirectory(raysFile) ? ": is a folder, not a file" : ": no such file"));
-        trees.check("MESH", CommandFiles.meshFile(mesh), "--rays", raysFile, "--hits", hitsFile);
-        if (!trees.loads()) spec.describe();        // refuses settings the builder does not take, before the mesh is read
+        treeJob.trees.check("MESH", CommandFiles.meshFile(mesh), "--rays", raysFile, "--hits", hitsFile);
+        if (!treeJob.trees.loads()) spec.describe();        // refuses settings the builder does not take, before the mesh is read
         TriangleMesh scene = MeshGrid.grid(CommandFiles.readMesh(mesh, "raycast"), grid);
         threads = spec.value(org.kdtree.accel.SharedSettings.THREADS);
         if (raysFile != null) return traceFile(scene, spec);
@@ -103,11 +97,11 @@ final class RaycastCommand implements Callable<Integer> {
 
     private int traceFile(TriangleMesh scene, BuilderSpec spec) throws Exception {
         TreeOptions.Obtained tree;
-        try (ProgressBar bar = progress.bar(1, trees.loads() ? "loads" : "builds")) {
-            bar.step(0, trees.loads() ? "load" : "build");
-            tree = trees.obtain(options, scene, () -> spec.build(scene, deadlines.supervisor()));
+        try (ProgressBar bar = treeJob.progress.bar(1, treeJob.trees.loads() ? "loads" : "builds")) {
+            bar.step(0, treeJob.trees.loads() ? "load" : "build");
+            tree = TreeOptions.unwrap(treeJob.obtaining(options, spec, scene));
         }
-        trees.save(tree.structure(), tree.spec(), scene);
+        treeJob.trees.save(tree.structure(), tree.spec(), scene);
         RayQuery traverser = tree.structure().query();
         try (BufferedReader in = Files.newBufferedReader(raysFile, StandardCharsets.UTF_8)) {
             if (hitsFile.toString().equals("-")) RayFile.trace(in, raysFile.toString(), traverser, new PrintWriter(System.out));
@@ -122,10 +116,9 @@ final class RaycastCommand implements Callable<Integer> {
         Timing.Timed<RayBatch.Checksum> pr, rr;
         RaySet p, r;
         String loops;
-        Supervisor supervisor = deadlines.supervisor();
-        try (ProgressBar bar = progress.bar(3 * passes, "steps")) {
-            build = TreeOptions.unwrap(() -> Timing.median(timed.warmup, timed.runs, steps(bar, 0, trees.loads() ? "load" : "build"),
-                    trees.obtaining(options, scene, () -> spec.build(scene, supervisor))));
+        Supplier<TreeOptions.Obtained> obtain = treeJob.obtaining(options, spec, scene);
+        try (ProgressBar bar = treeJob.progress.bar(3 * passes, "steps")) {
+            build = TreeOptions.unwrap(() -> Timing.median(timed.warmup, timed.runs, steps(bar, 0, treeJob.trees.loads() ? "load" : "build"), obtain));
             p = RaySet.primary(scene, RaySet.SPEC_IMAGE);
             r = RaySet.random(scene, RaySet.SPEC_RANDOM_RAYS);
             AccelerationStructure built = build.value().structure();
@@ -137,7 +130,7 @@ final class RaycastCommand implements Callable<Integer> {
         }
         AccelerationStructure tree = build.value().structure();
         BuilderSpec builtWith = build.value().spec();
-        trees.save(tree, builtWith, scene);
+        treeJob.trees.save(tree, builtWith, scene);
         TreeStats st = tree.stats();
         String meshName = CommandFiles.meshFile(mesh).getFileName().toString().replaceFirst("\\.[oO][bB][jJ]$", "")
                 + (grid > 1 ? "-grid" + grid : "");
@@ -146,8 +139,8 @@ final class RaycastCommand implements Callable<Integer> {
                 builtWith.builder(), meshName, scene.size(), build.millis(), st.nodes(), st.leaves(), st.maxDepth(),
                 pr.value().hits(), pr.value().tSum(), p.size() / pr.seconds() / 1e6,
                 rr.value().hits(), rr.value().tSum(), r.size() / rr.seconds() / 1e6));
-        if (trees.loads())
-            System.err.println("# build_ms is the time to load the tree saved in " + trees.tree + " (fingerprint and checks included),"
+        if (treeJob.trees.loads())
+            System.err.println("# build_ms is the time to load the tree saved in " + treeJob.trees.tree + " (fingerprint and checks included),"
                     + " not to build it");
         System.err.println(String.format(Locale.ROOT, "# %s, %d thread(s); references per non-empty leaf %.2f",
                 builtWith.describe(), threads, st.averageRefsPerLeaf()));

@@ -46,20 +46,14 @@ final class RenderCommand implements Callable<Integer> {
     Integer height;
 
     @Mixin
-    TreeOptions trees = new TreeOptions();
-
-    @Mixin
-    ProgressOption progress;
-
-    @Mixin
-    DeadlineOptions deadlines;
+    TreeJob treeJob = new TreeJob();
 
     @Override public Integer call() throws Exception {
         checkOutput();
         Path sceneFile = BundledScenes.resolve(scene);
         requireRenderable(sceneFile);
         CommandFiles.requireNotInput("-o", output, "SCENE", sceneFile);
-        trees.check("SCENE", sceneFile, "-o", output);
+        treeJob.trees.check("SCENE", sceneFile, "-o", output);
         Scene s = PrimitivesReader.readScene(sceneFile);
         if (FileKind.of(sceneFile) == FileKind.OBJ) System.err.println("# " + scene + " is " + PrimitivesReader.BARE_MESH);
         if (spp != null) s = s.withSamplesPerPixel(Limits.SAMPLES_PER_PIXEL.check("--spp", spp));
@@ -73,20 +67,19 @@ final class RenderCommand implements Callable<Integer> {
         Renderer.Options o = Renderer.Options.defaults();
         if (spec.get(SharedSettings.THREADS) != null) o = o.withThreads(spec.get(SharedSettings.THREADS));
         RenderJob job;
-        if (!progress.quiet) System.out.printf(java.util.Locale.ROOT, "rendering %s: %d x %d, %d sample%s per pixel, into %s%n", scene,
+        if (!treeJob.progress.quiet) System.out.printf(java.util.Locale.ROOT, "rendering %s: %d x %d, %d sample%s per pixel, into %s%n", scene,
                 s.camera().width(), s.camera().height(), s.samplesPerPixel(), s.samplesPerPixel() == 1 ? "" : "s", output);
-        try (ProgressBar bar = progress.bar(1, "tiles")) {
+        try (ProgressBar bar = treeJob.progress.bar(1, "tiles")) {
             Scene sc = s;
             Renderer.Options withProgress = o.withProgress((done, total, image) -> bar.update(done, total));
-            java.util.function.Supplier<TreeOptions.Obtained> obtain = trees.obtaining(options, s.mesh(),
-                    () -> spec.build(sc.mesh(), deadlines.supervisor()));
+            java.util.function.Supplier<TreeOptions.Obtained> obtain = treeJob.obtaining(options, spec, s.mesh());
             TreeOptions.Obtained[] made = new TreeOptions.Obtained[1];
-            String who = trees.loads() ? "loaded from " + trees.tree + ", not built" : spec.builder();
+            String who = treeJob.trees.loads() ? "loaded from " + treeJob.trees.tree + ", not built" : spec.builder();
             job = TreeOptions.unwrap(() -> RenderJob.run(sc, who, () -> (made[0] = obtain.get()).structure(), withProgress));
-            trees.save(made[0].structure(), made[0].spec(), sc.mesh());
+            treeJob.trees.save(made[0].structure(), made[0].spec(), sc.mesh());
         }
         job.result().image().writePng(output);
-        if (!progress.quiet) {     // which structure, tracer and loop, and which path, as raycast says them
+        if (!treeJob.progress.quiet) {     // which structure, tracer and loop, and which path, as raycast says them
             System.err.println("# structure: " + job.structure().kind() + " (" + job.builderName() + ")");
             System.err.println("# tracer: " + job.result().tracer());
             System.err.println("# path: " + job.structure().describePath());

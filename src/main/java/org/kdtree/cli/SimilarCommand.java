@@ -14,10 +14,8 @@ import org.kdtree.compare.TreeDistance;
 import org.kdtree.compare.TreeSignature;
 import org.kdtree.files.AtomicFile;
 import org.kdtree.io.FileKind;
-import org.kdtree.kdtree.Supervisor;
 import org.kdtree.limits.Limits;
 import org.kdtree.shape.Primitives;
-import org.kdtree.spec.BuilderSpec;
 import picocli.CommandLine.Command;
 import picocli.CommandLine.Mixin;
 import picocli.CommandLine.Option;
@@ -45,14 +43,7 @@ final class SimilarCommand implements Callable<Integer> {
     int top;
 
     @Mixin
-    BuilderOptions options = TreeData.builderOptions("every tree");
-
-    /** Taken as every command takes it (similar draws no bar). */
-    @Mixin
-    ProgressOption progress;
-
-    @Mixin
-    DeadlineOptions deadlines;
+    CompareOptions compare = new CompareOptions("every tree");
 
     @Option(names = "--cache", paramLabel = "DIR",
             description = "Where the signatures are kept (default: $XDG_CACHE_HOME/kdtree/signatures, else ~/.cache/kdtree/signatures).")
@@ -73,18 +64,17 @@ final class SimilarCommand implements Callable<Integer> {
             CommandFiles.requireNotInput("--csv", csv, "QUERY", query);
         }
         Primitives q = TreeData.read("QUERY", query);
-        BuilderSpec spec = TreeData.builder(options, q);
-        String builder = spec.builder() + " (" + spec.describe() + ")";
+        CompareOptions.TreeMaker maker = compare.maker(q);
+        String builder = maker.describe();
         SignatureCache cache = new SignatureCache(cacheFolder != null ? cacheFolder : SignatureCache.defaultFolder(), builder);
-        Supervisor supervisor = deadlines.supervisor();
-        TreeSignature qs = cache.get(query, () -> TreeSignature.of(TreeData.build(spec, q, supervisor)));
+        TreeSignature qs = cache.get(query, () -> TreeSignature.of(maker.build(q)));
         List<Ranked> ranked = new ArrayList<>();
         int otherKind = 0, otherData = 0, unreadable = 0;
         for (Path f : candidates()) {
             if (!sameKind(f)) { otherKind++; continue; }
             if (SameFile.same(f, query) || csv != null && SameFile.same(f, csv)) continue;
             try {
-                TreeSignature s = cache.get(f, () -> TreeSignature.of(TreeData.build(spec, TreeData.read("file", f), supervisor)));
+                TreeSignature s = cache.get(f, () -> TreeSignature.of(maker.build(TreeData.read("file", f))));
                 if (s.dimension() != qs.dimension())   // kept in the cache all the same: the next query may be of its dimension
                     throw new IllegalArgumentException(f + ": " + s.dimension() + "-D data, the query's is " + qs.dimension() + "-D");
                 ranked.add(new Ranked(f, TreeDistance.between(qs, s)));

@@ -3,11 +3,11 @@ package org.kdtree.cli;
 import java.nio.file.Path;
 import java.util.Locale;
 import java.util.concurrent.Callable;
+import java.util.function.Supplier;
 import org.kdtree.accel.AccelerationStructure;
 import org.kdtree.generate.MeshGrid;
 import org.kdtree.io.BundledScenes;
 import org.kdtree.io.PrimitivesReader;
-import org.kdtree.kdtree.Supervisor;
 import org.kdtree.limits.Limits;
 import org.kdtree.measure.Timing;
 import org.kdtree.render.RenderJob;
@@ -39,45 +39,37 @@ final class StatsCommand implements Callable<Integer> {
     int grid;
 
     @Mixin
-    TreeOptions trees = new TreeOptions();
-
-    @Mixin
-    ProgressOption progress;
-
-    @Mixin
-    DeadlineOptions deadlines;
+    TreeJob treeJob = new TreeJob();
 
     @Override public Integer call() throws Exception {
         timed.check();
         Limits.GRID.check("--grid", grid);
         BuilderSpec spec = options.spec();
         Path sceneFile = CommandFiles.requireNotFolder("SCENE", BundledScenes.resolve(scene));
-        trees.check("SCENE", sceneFile);
+        treeJob.trees.check("SCENE", sceneFile);
         Primitives prims = PrimitivesReader.read(sceneFile);
         if (grid != 1) {
             if (!(prims instanceof TriangleMesh mesh)) throw new IllegalArgumentException("--grid applies to OBJ meshes only");
             prims = MeshGrid.grid(mesh, grid);
         }
-        if (!trees.loads()) spec.describe();       // refuses settings the builder does not take, before building
-        Primitives scenePrims = prims;
-        Supervisor supervisor = deadlines.supervisor();
+        if (!treeJob.trees.loads()) spec.describe();       // refuses settings the builder does not take, before building
+        Supplier<TreeOptions.Obtained> obtain = treeJob.obtaining(options, spec, prims);
         Timing.Timed<TreeOptions.Obtained> build;
-        String what = trees.loads() ? "load" : "build";
-        try (ProgressBar bar = progress.bar(timed.warmup + timed.runs, what + "s")) {
+        String what = treeJob.trees.loads() ? "load" : "build";
+        try (ProgressBar bar = treeJob.progress.bar(timed.warmup + timed.runs, what + "s")) {
             build = TreeOptions.unwrap(() -> Timing.median(timed.warmup, timed.runs,
-                    (i, warmUp) -> bar.step(i, warmUp ? "warm-up " + what : "timed " + what),
-                    trees.obtaining(options, scenePrims, () -> spec.build(scenePrims, supervisor))));
+                    (i, warmUp) -> bar.step(i, warmUp ? "warm-up " + what : "timed " + what), obtain));
         }
         AccelerationStructure built = build.value().structure();
         BuilderSpec builtWith = build.value().spec();
-        trees.save(built, builtWith, prims);
+        treeJob.trees.save(built, builtWith, prims);
         System.out.printf(Locale.ROOT, "scene: %s (%s, %d-D)%n", scene, RenderJob.count(prims.size(), "primitive"), prims.dimension());
         System.out.printf(Locale.ROOT, "builder: %s (%s)%s%n", builtWith.builder(), builtWith.describe(),
-                trees.loads() ? ", saved in " + trees.tree : "");
+                treeJob.trees.loads() ? ", saved in " + treeJob.trees.tree : "");
         System.out.printf(Locale.ROOT, "%s time: %.1f ms%s%n", what, build.millis(),
                 timed.runs > 1 ? " (median of " + timed.runs + ", after " + timed.warmup + " warm-up)" : "");
-        if (trees.saveTree != null) System.out.printf(Locale.ROOT, "saved the tree in %s (%,d bytes)%n", trees.saveTree,
-                java.nio.file.Files.size(trees.saveTree));
+        if (treeJob.trees.saveTree != null) System.out.printf(Locale.ROOT, "saved the tree in %s (%,d bytes)%n", treeJob.trees.saveTree,
+                java.nio.file.Files.size(treeJob.trees.saveTree));
         System.out.println(built.stats().describe());
         for (String note : built.notes()) System.out.println("note: " + note);
         return 0;

@@ -5,26 +5,18 @@ import java.nio.file.Files;
 import java.nio.file.Path;
 import org.kdtree.io.FileKind;
 import org.kdtree.io.PrimitivesReader;
-import org.kdtree.kdtree.KdTree;
-import org.kdtree.kdtree.Supervisor;
 import org.kdtree.limits.Limits;
 import org.kdtree.shape.PointsKd;
 import org.kdtree.shape.Primitives;
 import org.kdtree.shape.Scene2D;
-import org.kdtree.spec.BuilderSpec;
 
 /**
  * A data set as {@code compare-trees} and {@code similar} read it: a scene file by its kind
  * ({@code .obj}, {@code .scene2d}, {@code .json}), any other file as points in CSV (as {@code knn}
  * reads them); its kind of data (points, 2-D shapes or triangles), since only data of one kind
- * and dimension compare; and the builder its tree is made with.
+ * and dimension compare (the builder of their trees: {@link CompareOptions}).
  */
 final class TreeData {
-    /** The builder of point sets' trees when none is given: the one for points. */
-    static final String POINTS_BUILDER = "sliding-midpoint";
-    /** The builder of 2-D scenes' and meshes' trees when none is given. */
-    static final String SCENE_BUILDER = "sah";
-
     private TreeData() {
     }
 
@@ -61,31 +53,5 @@ final class TreeData {
         if (!kind(pa).equals(kind(pb)) || pa.dimension() != pb.dimension())
             throw new IllegalArgumentException(whatB + " " + b + " is " + describe(pb) + ", " + whatA + " " + a + " " + describe(pa)
                     + ": only data of one kind and dimension compare");
-    }
-
-    /**
-     * {@return the builder options of a command comparing trees}: a kd-tree builder, by default
-     * the one for the data's kind
-     *
-     * @param trees which trees the builder builds, for the help (e.g. "both trees")
-     */
-    static BuilderOptions builderOptions(String trees) {
-        return BuilderOptions.kdTrees(null, "the builder of " + trees + " (default: " + POINTS_BUILDER + " for points, "
-                + SCENE_BUILDER + " for scenes and meshes)");
-    }
-
-    /**
-     * {@return the builder of a data set's tree}: the one the options name, or else the default for its kind
-     *
-     * @param options the command's builder options
-     * @param data    the data
-     */
-    static BuilderSpec builder(BuilderOptions options, Primitives data) {
-        return options.builder() != null ? options.spec() : options.spec(data instanceof PointsKd ? POINTS_BUILDER : SCENE_BUILDER);
-    }
-
-    /** {@return the tree the builder makes over the data}, a plug-in's under the supervisor (the library's builders are trusted) */
-    static KdTree build(BuilderSpec spec, Primitives data, Supervisor supervisor) {
-        return supervisor.build(spec.create(), data);
     }
 }

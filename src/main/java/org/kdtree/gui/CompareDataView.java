@@ -2,7 +2,6 @@ package org.kdtree.gui;
 
 import java.awt.BorderLayout;
 import java.awt.Dimension;
-import java.awt.FlowLayout;
 import java.awt.Graphics;
 import java.awt.Graphics2D;
 import java.awt.RenderingHints;
@@ -53,12 +52,7 @@ final class CompareDataView extends JPanel {
         super(new BorderLayout(0, 6));
         this.model = model;
         sourceB.setSelectedItem("Clustered (200)");
-        JPanel top = new JPanel(new FlowLayout(FlowLayout.LEFT));
-        top.add(new JLabel("A:"));
-        top.add(sourceA);
-        top.add(new JLabel("B:"));
-        top.add(sourceB);
-        top.add(new JLabel("both built by the 2-D build tab's Builder panel"));
+        JPanel top = Widgets.row("A:", sourceA, "B:", sourceB, "both built by the 2-D build tab's Builder panel");
         terms.setName("compareData.terms");
         terms.setToolTipText("The distance of the two trees' signatures, in [0, 1], and its four terms (docs/compare.md)");
         picture.setToolTipText("Each tree in its root frame (shaded by leaf depth, red split lines), and where their leaf depths differ");

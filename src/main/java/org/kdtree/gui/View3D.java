@@ -2,7 +2,6 @@ package org.kdtree.gui;
 
 import java.awt.BorderLayout;
 import java.awt.Dimension;
-import java.awt.FlowLayout;
 import java.awt.Font;
 import java.awt.Graphics;
 import java.awt.image.BufferedImage;
@@ -122,17 +121,7 @@ final class View3D extends JPanel {
         output.setToolTipText("The render's statistics and the tree's");
         status.setName("view3d.status");
         picture.setToolTipText("The rendered image");
-        JPanel top = new JPanel(new FlowLayout(FlowLayout.LEFT));
-        top.add(new JLabel("Scene"));
-        top.add(scene);
-        top.add(new JLabel("Builder"));
-        top.add(builder);
-        top.add(new JLabel("Width"));
-        top.add(width);
-        top.add(fit);
-        top.add(build);
-        top.add(stop);
-        top.add(status);
+        JPanel top = Widgets.row("Scene", scene, "Builder", builder, "Width", width, fit, build, stop, status);
         add(top, BorderLayout.NORTH);
         JScrollPane text = new JScrollPane(output);
         text.setBorder(BorderFactory.createTitledBorder("Statistics"));

@@ -1,9 +1,12 @@
 package org.kdtree.gui;
 
+import java.awt.Component;
+import java.awt.FlowLayout;
 import javax.swing.JButton;
 import javax.swing.JLabel;
+import javax.swing.JPanel;
 
-/** The small components the workbench's panels make the same way: named, with a tooltip. */
+/** The small components the workbench's panels make the same way (named, with a tooltip), and their rows. */
 final class Widgets {
     private Widgets() {
     }
@@ -36,6 +39,17 @@ final class Widgets {
         l.setName(name);
         l.setToolTipText(tip);
         return l;
+    }
+
+    /**
+     * {@return a view's row of controls, left to right as given}: each text a label, each component itself
+     *
+     * @param parts texts (labels) and components, in order
+     */
+    static JPanel row(Object... parts) {
+        JPanel row = new JPanel(new FlowLayout(FlowLayout.LEFT));
+        for (Object p : parts) row.add(p instanceof String text ? new JLabel(text) : (Component) p);
+        return row;
     }
 
     /**
