@@ -1,6 +1,7 @@
 package org.kdtree.bvh;
 
 import static org.assertj.core.api.Assertions.assertThat;
+import static org.assertj.core.api.Assertions.assertThatThrownBy;
 
 import java.util.Arrays;
 import java.util.Random;
@@ -101,6 +102,16 @@ class BvhTest {
         assertThat(Arrays.equals(four.boxArray(), one.boxArray())).isTrue();
         assertThat(Arrays.equals(four.linkArray(), one.linkArray())).isTrue();
         assertThat(four.stats()).isEqualTo(one.stats());
+    }
+
+    @Test void anInterruptedBuildStopsWithCancellation() {
+        Thread.currentThread().interrupt();
+        try {
+            assertThatThrownBy(() -> new BvhBuilder().build(Meshes.clustered(5000, 3)))
+                    .isInstanceOf(java.util.concurrent.CancellationException.class).hasMessage("BVH build interrupted");
+        } finally {
+            Thread.interrupted();
+        }
     }
 
     @Test void theDepthCapHoldsOnAnyDistributionAndLeavesStayWithinTheirSize() {
