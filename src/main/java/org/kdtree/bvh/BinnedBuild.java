@@ -83,15 +83,16 @@ final class BinnedBuild {
         return Bvh.of(prims, root, run.order, settings);
     }
 
-    /** The scratch of one task: bin counts and boxes per axis, the sweep's suffix areas. */
+    /** The scratch of one task: bin counts and boxes per axis, the sweep's running areas. */
     private final class Scratch {
         final int[] count = new int[k * bins];
         /** Per axis and bin, the bin's box: k minima, k maxima. */
         final double[] box = new double[2 * k * k * bins];
         /** Per axis, bins per unit of (doubled) centroid; 0 where the centroids do not spread. */
         final double[] scale = new double[k];
-        final double[] suffixArea = new double[bins];
-        final int[] suffixCount = new int[bins];
+        /** Per bin, the references and area of the bins up to it (prefix) and from it on (suffix). */
+        final double[] prefixArea = new double[bins], suffixArea = new double[bins];
+        final int[] prefixCount = new int[bins], suffixCount = new int[bins];
         final double[] acc = new double[2 * k];
         /** The boundary {@link #sweep} chose last (bins below it go left). */
         int sweepBin;
@@ -253,65 +254,59 @@ final class BinnedBuild {
      * zero area (all its primitives at one point or on one line in 3-D) weighs each side by its count.
      */
     private double sweep(int axis, int nb, Scratch s, double area) {
-        if (k == 3 && area > 0) return sweep3(axis, nb, s, area);
-        int[] count = s.count;
-        double[] box = s.box, acc = s.acc;
-        int cb = axis * bins, kk = 2 * k;
-        clear(acc, 0);
-        int n = 0;
-        for (int b = nb - 1; b > 0; b--) {
-            grow(acc, box, kk * (cb + b));
-            n += count[cb + b];
-            s.suffixCount[b] = n;
-            s.suffixArea[b] = n == 0 ? 0 : BoxArea.of(acc, 0, k);
+        int cb = axis * bins;
+        if (k == 3 && area > 0) {
+            // Half areas on both sides: the ratio to the node's is the same.
+            accumulate3(s, cb, nb - 1, 1, -1, s.suffixArea, s.suffixCount);
+            accumulate3(s, cb, 0, nb - 2, 1, s.prefixArea, s.prefixCount);
+            return cheapest(nb, s, 1, cost.ki() * 2 / area);
         }
-        clear(acc, 0);
-        double best = Double.POSITIVE_INFINITY, norm = area > 0 ? 1 / area : 0;
-        n = 0;
-        for (int b = 1; b < nb; b++) {
-            grow(acc, box, kk * (cb + b - 1));
-            n += count[cb + b - 1];
-            int right = s.suffixCount[b];
-            if (n == 0 || right == 0) continue;
-            double c = area > 0 ? cost.kt() + cost.ki() * (BoxArea.of(acc, 0, k) * blocks(n) + s.suffixArea[b] * blocks(right)) * norm
-                    : cost.kt() + cost.ki() * blocks(Math.max(n, right));
-            if (c < best) {
-                best = c;
-                s.sweepBin = b;
-            }
-        }
-        return best;
+        accumulate(s, cb, nb - 1, 1, -1, s.suffixArea, s.suffixCount);
+        accumulate(s, cb, 0, nb - 2, 1, s.prefixArea, s.prefixCount);
+        return cheapest(nb, s, cost.ki(), area > 0 ? 1 / area : 0);
     }
 
-    /** {@link #sweep} in 3-D, with the running boxes in locals. */
-    private double sweep3(int axis, int nb, Scratch s, double area) {
-        int[] count = s.count, suffixCount = s.suffixCount;
-        double[] box = s.box, suffixArea = s.suffixArea;
-        int cb = axis * bins, n = 0;
+    /**
+     * Grows a box over the bins of one axis (those from {@code cb}) from bin {@code b} to bin
+     * {@code last} by {@code step}, noting at each bin the references and the area so far.
+     */
+    private void accumulate(Scratch s, int cb, int b, int last, int step, double[] area, int[] count) {
+        double[] acc = s.acc;
+        clear(acc, 0);
+        for (int n = 0; ; b += step) {
+            grow(acc, s.box, 2 * k * (cb + b));
+            count[b] = n += s.count[cb + b];
+            area[b] = BoxArea.of(acc, 0, k);
+            if (b == last) return;
+        }
+    }
+
+    /** {@link #accumulate} in 3-D, with the running box in locals, noting half areas. */
+    private void accumulate3(Scratch s, int cb, int b, int last, int step, double[] area, int[] count) {
+        double[] box = s.box;
         double x0 = Double.POSITIVE_INFINITY, y0 = x0, z0 = x0, x1 = Double.NEGATIVE_INFINITY, y1 = x1, z1 = x1;
-        for (int b = nb - 1; b > 0; b--) {
+        for (int n = 0; ; b += step) {
             int d = 6 * (cb + b);
             x0 = Math.min(x0, box[d]); y0 = Math.min(y0, box[d + 1]); z0 = Math.min(z0, box[d + 2]);
             x1 = Math.max(x1, box[d + 3]); y1 = Math.max(y1, box[d + 4]); z1 = Math.max(z1, box[d + 5]);
-            n += count[cb + b];
-            suffixCount[b] = n;
+            count[b] = n += s.count[cb + b];
             double dx = x1 - x0, dy = y1 - y0, dz = z1 - z0;
-            suffixArea[b] = n == 0 ? 0 : dx * dy + dy * dz + dz * dx;
+            area[b] = dx * dy + dy * dz + dz * dx;
+            if (b == last) return;
         }
-        // Half areas on both sides: the ratio to the node's is the same.
-        double best = Double.POSITIVE_INFINITY, kt = cost.kt(), norm = cost.ki() * 2 / area;
-        x0 = y0 = z0 = Double.POSITIVE_INFINITY;
-        x1 = y1 = z1 = Double.NEGATIVE_INFINITY;
-        n = 0;
+    }
+
+    /**
+     * The cheapest boundary b (bins below it left) for the areas {@link #sweep} accumulated:
+     * {@code Kt + ki (A_L N_L + A_R N_R) norm}, or by counts alone where {@code norm} is 0.
+     */
+    private double cheapest(int nb, Scratch s, double ki, double norm) {
+        double best = Double.POSITIVE_INFINITY, kt = cost.kt();
         for (int b = 1; b < nb; b++) {
-            int d = 6 * (cb + b - 1);
-            x0 = Math.min(x0, box[d]); y0 = Math.min(y0, box[d + 1]); z0 = Math.min(z0, box[d + 2]);
-            x1 = Math.max(x1, box[d + 3]); y1 = Math.max(y1, box[d + 4]); z1 = Math.max(z1, box[d + 5]);
-            n += count[cb + b - 1];
-            int right = suffixCount[b];
-            if (n == 0 || right == 0) continue;
-            double dx = x1 - x0, dy = y1 - y0, dz = z1 - z0;
-            double c = kt + ((dx * dy + dy * dz + dz * dx) * blocks(n) + suffixArea[b] * blocks(right)) * norm;
+            int left = s.prefixCount[b - 1], right = s.suffixCount[b];
+            if (left == 0 || right == 0) continue;
+            double c = norm > 0 ? kt + ki * (s.prefixArea[b - 1] * blocks(left) + s.suffixArea[b] * blocks(right)) * norm
+                    : kt + cost.ki() * blocks(Math.max(left, right));
             if (c < best) {
                 best = c;
                 s.sweepBin = b;
