@@ -129,15 +129,17 @@ final class BinnedBuild {
         double[] box = node.box, c = node.centroids = new double[2 * k];
         clear(box, 0);
         clear(c, 0);
-        float[] r = bounds;
-        for (int o = 2 * k * from, end = 2 * k * to; o < end; o += 2 * k) {
-            for (int a = 0; a < k; a++) {
-                double lo = r[o + a], hi = r[o + k + a], x = lo + hi;   // a float sum in double: exact
-                if (lo < box[a]) box[a] = lo;
-                if (hi > box[k + a]) box[k + a] = hi;
-                if (x < c[a]) c[a] = x;
-                if (x > c[k + a]) c[k + a] = x;
-            }
+        for (int i = from; i < to; i++) {
+            include(box, 0, i);
+            growCentroids(c, i);
+        }
+    }
+
+    /** Grows the box at {@code d} of {@code box} by reference {@code i}'s bounds. */
+    private void include(double[] box, int d, int i) {
+        for (int a = 0, o = 2 * k * i; a < k; a++) {
+            if (bounds[o + a] < box[d + a]) box[d + a] = bounds[o + a];
+            if (bounds[o + k + a] > box[d + k + a]) box[d + k + a] = bounds[o + k + a];
         }
     }
 
@@ -206,18 +208,12 @@ final class BinnedBuild {
             bin3(from, to, nb, c, s);
             return;
         }
-        float[] r = bounds;
-        int kk = 2 * k;
-        for (int o = kk * from, end = kk * to; o < end; o += kk) {
+        for (int i = from; i < to; i++) {
             for (int a = 0; a < k; a++) {
                 if (scale[a] == 0) continue;
-                int b = binOf((double) r[o + a] + r[o + k + a], c[a], scale[a], nb);
-                count[a * bins + b]++;
-                int d = kk * (a * bins + b);
-                for (int x = 0; x < kk; x += 1) {
-                    double v = r[o + x];
-                    if (x < k ? v < box[d + x] : v > box[d + x]) box[d + x] = v;
-                }
+                int b = a * bins + binOf(centre(i, a), c[a], scale[a], nb);
+                count[b]++;
+                include(box, 2 * k * b, i);
             }
         }
     }
