@@ -43,7 +43,7 @@ class BvhSignatureTest {
         got.add(signature("flat 500", Meshes.flat(500, 3), new BvhBuilder()));
         got.add(signature("planar and degenerate", Meshes.planarAndDegenerate(4), new BvhBuilder()));
         got.add(signature("surface 20000 bins 64", Meshes.surface(20_000, 3), new BvhBuilder().bins(64)));
-        for (int cap : new int[] {-1, 12, 3}) got.add(signature("chain depth " + cap, chain(2000), new BvhBuilder().maxDepth(cap)));
+        for (int cap : new int[] {-1, 12, 3}) got.add(signature("chain depth " + cap, BvhTest.chain(2000), new BvhBuilder().maxDepth(cap)));
         got.add(signature("2-D mixed", Shapes.mixed(400, 5), new BvhBuilder()));
         got.add(signature("2-D clustered leaf 2", Shapes.clustered(3000, 6), new BvhBuilder().leafSize(2)));
         got.add(signature("2-D overlapping threads 2", Shapes.overlapping(6000, 8), new BvhBuilder().threads(2)));
@@ -52,18 +52,6 @@ class BvhSignatureTest {
         got.add(signature("3-D slivers on a line", slivers(500, false), new BvhBuilder()));
         got.add(signature("3-D slivers at one point", slivers(100, true), new BvhBuilder().leafSize(1)));
         assertThat(got).containsExactlyElementsOf(Files.readAllLines(RECORDED, StandardCharsets.UTF_8));
-    }
-
-    /** Centroids at 2^-i: every binned plane cuts off only the farthest few (as in {@code BvhTest}). */
-    private static TriangleMesh chain(int n) {
-        double[] v = new double[9 * n];
-        int[] idx = new int[3 * n];
-        for (int i = 0; i < n; i++) {
-            double x = Math.pow(2, -i / 20.0);
-            System.arraycopy(new double[] {x, 0, 0, x * 1.001, 1, 0, x, 0, 1}, 0, v, 9 * i, 9);
-            for (int c = 0; c < 3; c++) idx[3 * i + c] = 3 * i + c;
-        }
-        return new TriangleMesh(v, idx);
     }
 
     /** Triangles of zero area along the x axis, or all at the origin: boxes of zero area, centroids that may coincide. */
