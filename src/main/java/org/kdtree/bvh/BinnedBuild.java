@@ -112,15 +112,10 @@ final class BinnedBuild {
         BuildNode left = new BuildNode(k), right = new BuildNode(k);
         int mid = split(from, to, depth, node.box, centroids, left, right, s);
         if (mid < 0) return node.leaf(from, n);
-        if (parallel && n >= FORK_ABOVE) {
-            ForkJoinTask<BuildNode> r = task(right, mid, to, depth + 1);
-            r.fork();
-            node(left, from, mid, depth + 1, s);
-            r.join();
-        } else {
-            node(left, from, mid, depth + 1, s);
-            node(right, mid, to, depth + 1, s);
-        }
+        ForkJoinTask<BuildNode> forked = parallel && n >= FORK_ABOVE ? task(right, mid, to, depth + 1).fork() : null;
+        node(left, from, mid, depth + 1, s);
+        if (forked != null) forked.join();
+        else node(right, mid, to, depth + 1, s);
         return node.interior(left, right);      // after the subtrees, which it counts
     }
 
