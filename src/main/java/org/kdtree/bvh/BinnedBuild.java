@@ -1,8 +1,9 @@
 package org.kdtree.bvh;
 
+import java.util.Arrays;
 import java.util.concurrent.CancellationException;
 import java.util.concurrent.ForkJoinPool;
-import java.util.concurrent.RecursiveTask;
+import java.util.concurrent.ForkJoinTask;
 import org.kdtree.accel.CostModel;
 import org.kdtree.geom.Box;
 import org.kdtree.shape.Primitives;
@@ -14,32 +15,25 @@ import org.kdtree.shape.Primitives;
  * node that cannot be cut by centroids, or that would go past the depth cap, is cut at its
  * median. Large subtrees are built in parallel; the hierarchy is the same at any thread count.
  *
- * <p>The primitives' bounds are kept in the order being partitioned (a reference per primitive:
- * its k minima, its k maxima, and its index beside), so that each node reads its stretch in
- * sequence, and one pass bins every axis. They are floats rounded outwards ({@link #lower},
- * {@link #upper}): a box only grows, so no primitive is lost, and each pass moves half the bytes
- * doubles would. The inner loops allocate nothing.
+ * <p>The primitives' bounds are kept in the order being partitioned, so that each node reads its
+ * stretch in sequence and one pass bins every axis; as floats rounded outwards, so that a box
+ * only grows (no primitive is lost) and a pass moves half the bytes doubles would. The inner
+ * loops allocate nothing.
  */
 final class BinnedBuild {
     /** Nodes of at least this many primitives are built as tasks of their own when threads build. */
     private static final int FORK_ABOVE = 4096;
-    /**
-     * Nodes of at most this many references are binned on their widest axis only: they are nine
-     * in ten of the nodes, and on the bunny this builds a fifth faster for a tree whose expected
-     * cost is 1 % higher (docs/bvh.md).
-     */
+    /** Nodes of at most this many references are binned on their widest axis only: nine nodes in ten; a fifth faster, 1 % costlier (docs/bvh.md). */
     private static final int SMALL_NODE = 32;
     /**
-     * Primitives a leaf tests together, priced as one test: the SAH counts a child's and a leaf's
-     * primitives in blocks of this many ({@code ceil(n / 4)} tests), as Embree's builders count
-     * them for its four-triangle leaves. Leaves of up to four cost one Ki, so nodes below five
-     * primitives stop being split for a saving of a fraction of a test, and the node count falls
-     * towards Embree's (docs/bvh.md).
+     * Primitives a leaf tests together, priced as one test ({@code ceil(n / 4)} tests), as Embree
+     * prices its four-triangle leaves: nodes below five are not split to save a fraction of a
+     * test, and the node count falls towards Embree's (docs/bvh.md).
      */
-    static final int LEAF_BLOCK = 4;
+    private static final int LEAF_BLOCK = 4;
 
     private final int k;
-    /** Per reference, in partition order: k minima then k maxima, as floats rounded outwards; twice a centroid is min + max. */
+    /** Per reference, in partition order: k minima then k maxima, rounded outwards ({@link WideNodes#down}); twice a centroid is min + max. */
     private final float[] bounds;
     /** The primitive of each reference, partitioned in place with it: each node owns one stretch. */
     private final int[] order;
@@ -73,7 +67,7 @@ final class BinnedBuild {
             }
             order[m++] = i;
         }
-        BinnedBuild run = new BinnedBuild(k, bounds, java.util.Arrays.copyOf(order, m), settings);
+        BinnedBuild run = new BinnedBuild(k, bounds, Arrays.copyOf(order, m), settings);
         BuildNode root = new BuildNode(k);
         run.enclose(0, m, root);
         if (run.parallel && m >= FORK_ABOVE) {
@@ -89,33 +83,27 @@ final class BinnedBuild {
         return Bvh.of(prims, root, run.order, settings);
     }
 
-    /** The scratch of one task: bin counts and boxes per axis, the sweep's suffix areas. */
+    /** The scratch of one task: bin counts and boxes per axis, the sweep's running areas. */
     private final class Scratch {
         final int[] count = new int[k * bins];
         /** Per axis and bin, the bin's box: k minima, k maxima. */
         final double[] box = new double[2 * k * k * bins];
         /** Per axis, bins per unit of (doubled) centroid; 0 where the centroids do not spread. */
         final double[] scale = new double[k];
-        final double[] suffixArea = new double[bins];
-        final int[] suffixCount = new int[bins];
+        /** Per bin, the references and area of the bins up to it (prefix) and from it on (suffix). */
+        final double[] prefixArea = new double[bins], suffixArea = new double[bins];
+        final int[] prefixCount = new int[bins], suffixCount = new int[bins];
         final double[] acc = new double[2 * k];
         /** The boundary {@link #sweep} chose last (bins below it go left). */
         int sweepBin;
     }
 
-    private RecursiveTask<BuildNode> task(BuildNode node, int from, int to, int depth) {
-        return new RecursiveTask<>() {
-            @Override protected BuildNode compute() {
-                return node(node, from, to, depth, new Scratch());
-            }
-        };
+    private ForkJoinTask<BuildNode> task(BuildNode node, int from, int to, int depth) {
+        return ForkJoinTask.adapt(() -> node(node, from, to, depth, new Scratch()));
     }
 
-    /**
-     * Makes {@code node}, over {@code order[from, to)}, a leaf or a split with its two subtrees.
-     * Its box and its centroids' bounds were found by its parent (by the partition that made it).
-     */
-    BuildNode node(BuildNode node, int from, int to, int depth, Scratch s) {
+    /** Makes {@code node}, over {@code order[from, to)}, whose box and centroid bounds its parent's cut set, a leaf or a split. */
+    private BuildNode node(BuildNode node, int from, int to, int depth, Scratch s) {
         if (Thread.currentThread().isInterrupted()) throw new CancellationException("BVH build interrupted");
         int n = to - from;
         double[] centroids = node.centroids;
@@ -124,32 +112,29 @@ final class BinnedBuild {
         BuildNode left = new BuildNode(k), right = new BuildNode(k);
         int mid = split(from, to, depth, node.box, centroids, left, right, s);
         if (mid < 0) return node.leaf(from, n);
-        if (parallel && n >= FORK_ABOVE) {
-            RecursiveTask<BuildNode> r = task(right, mid, to, depth + 1);
-            r.fork();
-            node(left, from, mid, depth + 1, s);
-            r.join();
-        } else {
-            node(left, from, mid, depth + 1, s);
-            node(right, mid, to, depth + 1, s);
-        }
+        ForkJoinTask<BuildNode> forked = parallel && n >= FORK_ABOVE ? task(right, mid, to, depth + 1).fork() : null;
+        node(left, from, mid, depth + 1, s);
+        if (forked != null) forked.join();
+        else node(right, mid, to, depth + 1, s);
         return node.interior(left, right);      // after the subtrees, which it counts
     }
 
     /** Sets {@code node}'s box to the bounds of the stretch's primitives, and its centroids' bounds (doubled). */
     private void enclose(int from, int to, BuildNode node) {
         double[] box = node.box, c = node.centroids = new double[2 * k];
-        clear(box);
-        clear(c);
-        float[] r = bounds;
-        for (int o = 2 * k * from, end = 2 * k * to; o < end; o += 2 * k) {
-            for (int a = 0; a < k; a++) {
-                double lo = r[o + a], hi = r[o + k + a], x = lo + hi;   // a float sum in double: exact
-                if (lo < box[a]) box[a] = lo;
-                if (hi > box[k + a]) box[k + a] = hi;
-                if (x < c[a]) c[a] = x;
-                if (x > c[k + a]) c[k + a] = x;
-            }
+        clear(box, 0);
+        clear(c, 0);
+        for (int i = from; i < to; i++) {
+            include(box, 0, i);
+            growCentroids(c, i);
+        }
+    }
+
+    /** Grows the box at {@code d} of {@code box} by reference {@code i}'s bounds. */
+    private void include(double[] box, int d, int i) {
+        for (int a = 0, o = 2 * k * i; a < k; a++) {
+            if (bounds[o + a] < box[d + a]) box[d + a] = bounds[o + a];
+            if (bounds[o + k + a] > box[d + k + a]) box[d + k + a] = bounds[o + k + a];
         }
     }
 
@@ -157,44 +142,38 @@ final class BinnedBuild {
      * Where the stretch is cut: the partition point of the cheapest binned plane, or of the
      * median, or -1 when a leaf is cheaper and allowed. Sets the two children's boxes and centroid bounds.
      */
-    private int split(int from, int to, int depth, double[] box, double[] centroids, BuildNode left, BuildNode right, Scratch s) {
+    private int split(int from, int to, int depth, double[] box, double[] c, BuildNode left, BuildNode right, Scratch s) {
         int n = to - from;
-        double[] c = centroids;                 // k minima, then k maxima
         // Past this depth only halving reaches leaves of leafSize before the cap: halve.
-        if (depthCap - depth <= ceilLog2((n + leafSize - 1) / leafSize)) return children(from, median(from, to, c), to, left, right);
-        int nb = Math.min(bins, Math.max(4, n / 2));   // fewer bins in small nodes: about two references a bin
-        bin(from, to, nb, c, s);
-        double area = BoxArea.of(box, 0, k);
-        double best = Double.POSITIVE_INFINITY;
-        int bestAxis = -1, bestBin = 0;
-        for (int a = 0; a < k; a++) {
-            if (s.scale[a] == 0) continue;
-            double cost = sweep(a, nb, s, area);
-            if (cost < best) {
-                best = cost;
-                bestAxis = a;
-                bestBin = s.sweepBin;
+        if (depthCap - depth > ceilLog2((n + leafSize - 1) / leafSize)) {
+            int nb = Math.min(bins, Math.max(4, n / 2));   // fewer bins in small nodes: about two references a bin
+            bin(from, to, nb, c, s);
+            double area = BoxArea.of(box, 0, k), best = Double.POSITIVE_INFINITY;
+            int axis = -1, boundary = 0;
+            for (int a = 0; a < k; a++) {
+                double cost = s.scale[a] == 0 ? Double.POSITIVE_INFINITY : sweep(a, nb, s, area);
+                if (cost < best) {
+                    best = cost;
+                    axis = a;
+                    boundary = s.sweepBin;
+                }
             }
+            if (axis >= 0) {
+                if (n <= leafSize && best >= this.cost.ki() * blocks(n)) return -1;
+                binBoxes(axis, 0, boundary, s, left.box);
+                binBoxes(axis, boundary, nb, s, right.box);
+                return partition(from, to, axis, nb, c[axis], s.scale[axis], boundary, left, right);
+            }
+            if (n <= leafSize) return -1;
         }
-        if (bestAxis < 0) return n > leafSize ? children(from, median(from, to, c), to, left, right) : -1;
-        if (n <= leafSize && best >= this.cost.ki() * blocks(n)) return -1;
-        if (k == 3) {
-            binBoxes(bestAxis, 0, bestBin, s, left.box);
-            binBoxes(bestAxis, bestBin, nb, s, right.box);
-            return partition3(from, to, bestAxis, nb, c[bestAxis], s.scale[bestAxis], bestBin, left, right);
-        }
-        return children(from, partition(from, to, bestAxis, nb, c[bestAxis], s.scale[bestAxis], bestBin), to, left, right);
-    }
-
-    /** Bounds the two children of a cut at {@code mid}; returns {@code mid}. */
-    private int children(int from, int mid, int to, BuildNode left, BuildNode right) {
+        int mid = median(from, to, c);
         enclose(from, mid, left);
         enclose(mid, to, right);
         return mid;
     }
 
     /** {@return the tests a leaf of {@code n} primitives costs: n in blocks of {@link #LEAF_BLOCK}} */
-    static int blocks(int n) {
+    private static int blocks(int n) {
         return (n + LEAF_BLOCK - 1) / LEAF_BLOCK;
     }
 
@@ -208,42 +187,28 @@ final class BinnedBuild {
         return b < 0 ? 0 : b >= nb ? nb - 1 : b;
     }
 
-    /**
-     * One pass over the stretch: counts each reference into its bin on every axis where the
-     * centroids spread, and grows that bin's box.
-     */
+    /** One pass over the stretch: counts each reference into its bin on every axis where the centroids spread, and grows that bin's box. */
     private void bin(int from, int to, int nb, double[] c, Scratch s) {
         int[] count = s.count;
         double[] box = s.box, scale = s.scale;
-        float[] r = bounds;
-        int kk = 2 * k;
-        int widest = 0;
-        for (int a = 1; a < k; a++) if (c[k + a] - c[a] > c[k + widest] - c[widest]) widest = a;
-        for (int a = 0; a < k; a++) scale[a] = c[k + a] > c[a] && (to - from > SMALL_NODE || a == widest) ? nb / (c[k + a] - c[a]) : 0;
+        int widest = widest(c);
+        for (int a = 0; a < k; a++) {
+            scale[a] = c[k + a] > c[a] && (to - from > SMALL_NODE || a == widest) ? nb / (c[k + a] - c[a]) : 0;
+            for (int b = a * bins, end = b + nb; b < end; b++) {
+                count[b] = 0;
+                clear(box, 2 * k * b);
+            }
+        }
         if (k == 3) {
             bin3(from, to, nb, c, s);
             return;
         }
-        for (int a = 0; a < k; a++) {
-            for (int b = 0; b < nb; b++) {
-                count[a * bins + b] = 0;
-                int d = kk * (a * bins + b);
-                for (int x = 0; x < k; x++) {
-                    box[d + x] = Double.POSITIVE_INFINITY;
-                    box[d + k + x] = Double.NEGATIVE_INFINITY;
-                }
-            }
-        }
-        for (int o = kk * from, end = kk * to; o < end; o += kk) {
+        for (int i = from; i < to; i++) {
             for (int a = 0; a < k; a++) {
                 if (scale[a] == 0) continue;
-                int b = binOf((double) r[o + a] + r[o + k + a], c[a], scale[a], nb);
-                count[a * bins + b]++;
-                int d = kk * (a * bins + b);
-                for (int x = 0; x < kk; x += 1) {
-                    double v = r[o + x];
-                    if (x < k ? v < box[d + x] : v > box[d + x]) box[d + x] = v;
-                }
+                int b = a * bins + binOf(centre(i, a), c[a], scale[a], nb);
+                count[b]++;
+                include(box, 2 * k * b, i);
             }
         }
     }
@@ -255,14 +220,6 @@ final class BinnedBuild {
         float[] r = bounds;
         double sx = s.scale[0], sy = s.scale[1], sz = s.scale[2], lx = c[0], ly = c[1], lz = c[2];
         int by = bins, bz = 2 * bins;
-        for (int a = 0; a < 3; a++) {
-            for (int b = a * bins, end = b + nb; b < end; b++) {
-                count[b] = 0;
-                int d = 6 * b;
-                box[d] = box[d + 1] = box[d + 2] = Double.POSITIVE_INFINITY;
-                box[d + 3] = box[d + 4] = box[d + 5] = Double.NEGATIVE_INFINITY;
-            }
-        }
         for (int o = 6 * from, end = 6 * to; o < end; o += 6) {
             double x0 = r[o], y0 = r[o + 1], z0 = r[o + 2], x1 = r[o + 3], y1 = r[o + 4], z1 = r[o + 5];
             if (sx != 0) grow3(box, count, binOf(x0 + x1, lx, sx, nb), x0, y0, z0, x1, y1, z1);
@@ -288,65 +245,59 @@ final class BinnedBuild {
      * zero area (all its primitives at one point or on one line in 3-D) weighs each side by its count.
      */
     private double sweep(int axis, int nb, Scratch s, double area) {
-        if (k == 3 && area > 0) return sweep3(axis, nb, s, area);
-        int[] count = s.count;
-        double[] box = s.box, acc = s.acc;
-        int cb = axis * bins, kk = 2 * k;
-        clear(acc);
-        int n = 0;
-        for (int b = nb - 1; b > 0; b--) {
-            grow(acc, box, kk * (cb + b));
-            n += count[cb + b];
-            s.suffixCount[b] = n;
-            s.suffixArea[b] = n == 0 ? 0 : BoxArea.of(acc, 0, k);
+        int cb = axis * bins;
+        if (k == 3 && area > 0) {
+            // Half areas on both sides: the ratio to the node's is the same.
+            accumulate3(s, cb, nb - 1, 1, -1, s.suffixArea, s.suffixCount);
+            accumulate3(s, cb, 0, nb - 2, 1, s.prefixArea, s.prefixCount);
+            return cheapest(nb, s, 1, cost.ki() * 2 / area);
         }
-        clear(acc);
-        double best = Double.POSITIVE_INFINITY, norm = area > 0 ? 1 / area : 0;
-        n = 0;
-        for (int b = 1; b < nb; b++) {
-            grow(acc, box, kk * (cb + b - 1));
-            n += count[cb + b - 1];
-            int right = s.suffixCount[b];
-            if (n == 0 || right == 0) continue;
-            double c = area > 0 ? cost.kt() + cost.ki() * (BoxArea.of(acc, 0, k) * blocks(n) + s.suffixArea[b] * blocks(right)) * norm
-                    : cost.kt() + cost.ki() * blocks(Math.max(n, right));
-            if (c < best) {
-                best = c;
-                s.sweepBin = b;
-            }
-        }
-        return best;
+        accumulate(s, cb, nb - 1, 1, -1, s.suffixArea, s.suffixCount);
+        accumulate(s, cb, 0, nb - 2, 1, s.prefixArea, s.prefixCount);
+        return cheapest(nb, s, cost.ki(), area > 0 ? 1 / area : 0);
     }
 
-    /** {@link #sweep} in 3-D, with the running boxes in locals. */
-    private double sweep3(int axis, int nb, Scratch s, double area) {
-        int[] count = s.count, suffixCount = s.suffixCount;
-        double[] box = s.box, suffixArea = s.suffixArea;
-        int cb = axis * bins, n = 0;
+    /**
+     * Grows a box over the bins of one axis (those from {@code cb}) from bin {@code b} to bin
+     * {@code last} by {@code step}, noting at each bin the references and the area so far.
+     */
+    private void accumulate(Scratch s, int cb, int b, int last, int step, double[] area, int[] count) {
+        double[] acc = s.acc;
+        clear(acc, 0);
+        for (int n = 0; ; b += step) {
+            grow(acc, s.box, 2 * k * (cb + b));
+            count[b] = n += s.count[cb + b];
+            area[b] = BoxArea.of(acc, 0, k);
+            if (b == last) return;
+        }
+    }
+
+    /** {@link #accumulate} in 3-D, with the running box in locals, noting half areas. */
+    private void accumulate3(Scratch s, int cb, int b, int last, int step, double[] area, int[] count) {
+        double[] box = s.box;
         double x0 = Double.POSITIVE_INFINITY, y0 = x0, z0 = x0, x1 = Double.NEGATIVE_INFINITY, y1 = x1, z1 = x1;
-        for (int b = nb - 1; b > 0; b--) {
+        for (int n = 0; ; b += step) {
             int d = 6 * (cb + b);
             x0 = Math.min(x0, box[d]); y0 = Math.min(y0, box[d + 1]); z0 = Math.min(z0, box[d + 2]);
             x1 = Math.max(x1, box[d + 3]); y1 = Math.max(y1, box[d + 4]); z1 = Math.max(z1, box[d + 5]);
-            n += count[cb + b];
-            suffixCount[b] = n;
+            count[b] = n += s.count[cb + b];
             double dx = x1 - x0, dy = y1 - y0, dz = z1 - z0;
-            suffixArea[b] = n == 0 ? 0 : dx * dy + dy * dz + dz * dx;
+            area[b] = dx * dy + dy * dz + dz * dx;
+            if (b == last) return;
         }
-        // Half areas on both sides: the ratio to the node's is the same.
-        double best = Double.POSITIVE_INFINITY, kt = cost.kt(), norm = cost.ki() * 2 / area;
-        x0 = y0 = z0 = Double.POSITIVE_INFINITY;
-        x1 = y1 = z1 = Double.NEGATIVE_INFINITY;
-        n = 0;
+    }
+
+    /**
+     * The cheapest boundary b (bins below it left) for the areas {@link #sweep} accumulated:
+     * {@code Kt + ki (A_L N_L + A_R N_R) norm}, or by counts alone where {@code norm} is 0.
+     */
+    private double cheapest(int nb, Scratch s, double ki, double norm) {
+        double best = Double.POSITIVE_INFINITY, kt = cost.kt();
         for (int b = 1; b < nb; b++) {
-            int d = 6 * (cb + b - 1);
-            x0 = Math.min(x0, box[d]); y0 = Math.min(y0, box[d + 1]); z0 = Math.min(z0, box[d + 2]);
-            x1 = Math.max(x1, box[d + 3]); y1 = Math.max(y1, box[d + 4]); z1 = Math.max(z1, box[d + 5]);
-            n += count[cb + b - 1];
-            int right = suffixCount[b];
-            if (n == 0 || right == 0) continue;
-            double dx = x1 - x0, dy = y1 - y0, dz = z1 - z0;
-            double c = kt + ((dx * dy + dy * dz + dz * dx) * blocks(n) + suffixArea[b] * blocks(right)) * norm;
+            int left = s.prefixCount[b - 1], right = s.suffixCount[b];
+            if (left == 0 || right == 0) continue;
+            double c = norm > 0 ? kt + ki * (s.prefixArea[b - 1] * blocks(left) + s.suffixArea[b] * blocks(right)) * norm
+                    : kt + cost.ki() * blocks(Math.max(left, right));
             if (c < best) {
                 best = c;
                 s.sweepBin = b;
@@ -355,10 +306,11 @@ final class BinnedBuild {
         return best;
     }
 
-    private void clear(double[] acc) {
+    /** Empties the box at {@code o} of {@code box} (k minima, k maxima): any point grows it. */
+    private void clear(double[] box, int o) {
         for (int a = 0; a < k; a++) {
-            acc[a] = Double.POSITIVE_INFINITY;
-            acc[k + a] = Double.NEGATIVE_INFINITY;
+            box[o + a] = Double.POSITIVE_INFINITY;
+            box[o + k + a] = Double.NEGATIVE_INFINITY;
         }
     }
 
@@ -374,32 +326,21 @@ final class BinnedBuild {
         return (double) bounds[2 * k * i + axis] + bounds[2 * k * i + k + axis];
     }
 
-    /** Moves the references whose centroid bin on {@code axis} is below {@code bin} first; returns where the rest start. */
-    private int partition(int from, int to, int axis, int nb, double lo, double scale, int bin) {
-        int i = from, j = to - 1;
-        while (true) {
-            while (i <= j && binOf(centre(i, axis), lo, scale, nb) < bin) i++;
-            while (i <= j && binOf(centre(j, axis), lo, scale, nb) >= bin) j--;
-            if (i >= j) return i;
-            swap(i, j);
-        }
-    }
-
-    /** The union of the boxes of bins {@code [from, to)} on {@code axis} (in 3-D): a child's exact box, since each bin's box is its references'. */
+    /** The union of the boxes of bins {@code [from, to)} on {@code axis}: a child's exact box, since each bin's box is its references'. */
     private void binBoxes(int axis, int from, int to, Scratch s, double[] box) {
-        clear(box);
-        for (int b = axis * bins + from, end = axis * bins + to; b < end; b++) grow(box, s.box, 6 * b);
+        clear(box, 0);
+        for (int b = axis * bins + from, end = axis * bins + to; b < end; b++) grow(box, s.box, 2 * k * b);
     }
 
     /**
-     * {@link #partition} in 3-D, bounding each child's centroids as its references are
-     * classified: each reference is read once, and growing a box twice by the same reference
-     * changes nothing. (The children's boxes come from the bins.)
+     * Moves the references whose centroid bin on {@code axis} is below {@code bin} first; returns
+     * where the rest start. It bounds each child's centroids as it classifies the references: each
+     * is read once, and growing a box twice by the same reference changes nothing.
      */
-    private int partition3(int from, int to, int axis, int nb, double lo, double scale, int bin, BuildNode left, BuildNode right) {
-        double[] lc = left.centroids = new double[6], rc = right.centroids = new double[6];
-        clear(lc);
-        clear(rc);
+    private int partition(int from, int to, int axis, int nb, double lo, double scale, int bin, BuildNode left, BuildNode right) {
+        double[] lc = left.centroids = new double[2 * k], rc = right.centroids = new double[2 * k];
+        clear(lc, 0);
+        clear(rc, 0);
         int i = from, j = to - 1;
         while (true) {
             while (i <= j && binOf(centre(i, axis), lo, scale, nb) < bin) growCentroids(lc, i++);
@@ -411,22 +352,33 @@ final class BinnedBuild {
 
     /** Grows a centroid box by reference {@code i}'s (doubled) centroid. */
     private void growCentroids(double[] c, int i) {
-        float[] r = bounds;
-        int o = 6 * i;
-        double cx = (double) r[o] + r[o + 3], cy = (double) r[o + 1] + r[o + 4], cz = (double) r[o + 2] + r[o + 5];
-        c[0] = Math.min(c[0], cx); c[1] = Math.min(c[1], cy); c[2] = Math.min(c[2], cz);
-        c[3] = Math.max(c[3], cx); c[4] = Math.max(c[4], cy); c[5] = Math.max(c[5], cz);
+        if (k == 3) {   // unrolled: the partition's per-reference work
+            float[] r = bounds;
+            int o = 6 * i;
+            double cx = (double) r[o] + r[o + 3], cy = (double) r[o + 1] + r[o + 4], cz = (double) r[o + 2] + r[o + 5];
+            c[0] = Math.min(c[0], cx); c[1] = Math.min(c[1], cy); c[2] = Math.min(c[2], cz);
+            c[3] = Math.max(c[3], cx); c[4] = Math.max(c[4], cy); c[5] = Math.max(c[5], cz);
+            return;
+        }
+        for (int a = 0; a < k; a++) {
+            double x = centre(i, a);
+            c[a] = Math.min(c[a], x);
+            c[k + a] = Math.max(c[k + a], x);
+        }
     }
 
-    /**
-     * Halves the stretch at the median centroid on the axis where centroids spread most (or
-     * anywhere when they coincide): the cut that keeps any build within the depth cap.
-     */
+    /** Halves the stretch at the median centroid on the widest axis (anywhere if they coincide): the cut that keeps the depth cap. */
     private int median(int from, int to, double[] c) {
-        int mid = (from + to) >>> 1, axis = 0;
-        for (int a = 1; a < k; a++) if (c[k + a] - c[a] > c[k + axis] - c[axis]) axis = a;
+        int mid = (from + to) >>> 1, axis = widest(c);
         if (c[k + axis] > c[axis]) select(from, to - 1, mid, axis);
         return mid;
+    }
+
+    /** {@return the axis on which the centroid bounds {@code c} spread most (the first of equals)} */
+    private int widest(double[] c) {
+        int axis = 0;
+        for (int a = 1; a < k; a++) if (c[k + a] - c[a] > c[k + axis] - c[axis]) axis = a;
+        return axis;
     }
 
     /** Quickselect: puts the reference of rank {@code nth} (by centroid on {@code axis}) at {@code nth}, smaller before, larger after. */

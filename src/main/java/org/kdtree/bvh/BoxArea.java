@@ -5,13 +5,7 @@ final class BoxArea {
     private BoxArea() {
     }
 
-    /**
-     * {@return the sum of the measures of the box's 2k faces}
-     *
-     * @param box the array
-     * @param o   where the box's k minima start (its maxima follow)
-     * @param k   the dimension
-     */
+    /** {@return the sum of the measures of the 2k faces of the k-D box whose minima start at {@code o} of {@code box}} */
     static double of(double[] box, int o, int k) {
         if (k == 3) {
             double x = box[o + 3] - box[o], y = box[o + 4] - box[o + 1], z = box[o + 5] - box[o + 2];

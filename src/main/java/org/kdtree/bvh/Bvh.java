@@ -16,21 +16,18 @@ import org.kdtree.shape.Primitives;
 /**
  * A bounding volume hierarchy in flat arrays, with its layouts made when it is built:
  * <ul>
- * <li>the binary tree the builder found, for reading (the workbench draws it, the listening
- * traversal steps through it): node 0 is the root, an interior node's children are
- * {@link #left} and {@link #right}, a leaf holds a stretch of {@link #primitive}s; each node has
- * its box, which bounds its primitives whole (a primitive is in exactly one leaf);</li>
- * <li>for single rays, the same tree collapsed to {@link #width()} children per node
- * ({@link WideNodes}; on the vector path, as many as the node kernel's lanes: {@link
- * RayKernel#width}), whose child boxes are tested together, and over a mesh the leaves'
- * triangles in blocks as the leaf kernel reads them ({@link LeafBlocks});</li>
- * <li>for packets, over a mesh, the binary tree with both children's boxes in one 64-byte node
- * ({@link #pairs}: the wide layout at width 2) and the triangles' corners in leaf order
- * ({@link #leafCorners}).</li>
+ * <li>the binary tree, for reading (the workbench, the listening traversal): node 0 is the root,
+ * an interior node has {@link #left} and {@link #right}, a leaf a stretch of {@link #primitive}s;
+ * each node's box bounds its primitives whole (a primitive is in exactly one leaf);</li>
+ * <li>for single rays, the tree collapsed to {@link #width()} children per node ({@link WideNodes};
+ * on the vector path, the node kernel's lanes), and over a mesh the leaves' triangles in blocks
+ * ({@link LeafBlocks});</li>
+ * <li>for packets, over a mesh, the wide layout at width 2 ({@link #pairs}) and the triangles'
+ * corners in leaf order ({@link #leafCorners}).</li>
  * </ul>
- * None changes once built; all are counted in {@link #memoryBytes}.
- * Unlike a kd-tree's voxels, sibling boxes may overlap and need not cover the scene, so a
- * traversal visits children by their entry distance and stops at none before its closest hit.
+ * None changes once built; all are counted in {@link #memoryBytes}. Sibling boxes may overlap
+ * and need not cover the scene, so a traversal visits children by their entry distance and stops
+ * at none before its closest hit.
  */
 public final class Bvh implements AccelerationStructure {
     private final int k;
@@ -45,17 +42,15 @@ public final class Bvh implements AccelerationStructure {
     private final int maxDepth;
     private final CostModel costModel;
     private TreeStats stats;
-    /** The ray tests of the primitives it was built over. */
     private final Intersector intersector;
-    /** The tracing layouts, made with the tree: for single rays the wide nodes and leaf blocks, for packets the pairs and the corners in leaf order (the last three only over a mesh). */
-    private final WideNodes wide;
     /** The width it was built with ({@code --bvh-width}). */
     private final int width;
+    /** The tracing layouts (the last three null unless over a mesh). */
+    private final WideNodes wide;
     private final LeafBlocks leafBlocks;
     private final WideNodes pairs;
     private final double[] leafCorners;
 
-    /** A hierarchy over {@code built} from its binary layout; its tracing layouts are made here. */
     private Bvh(Primitives built, double[] box, int[] link, int[] size, int[] primitives, CostModel costModel, int width, int maxDepth) {
         this.k = built.dimension();
         this.box = box;
@@ -81,9 +76,8 @@ public final class Bvh implements AccelerationStructure {
     }
 
     /**
-     * A hierarchy saved earlier, restored from its binary layout over the primitives it was built
-     * over (a saved tree's reader); the arrays are checked to make one tree before any query reads
-     * them, and the wide layout is made from them as a build makes it.
+     * A hierarchy saved earlier, restored from its binary layout (checked to make one tree before
+     * any query reads it); its tracing layouts are made as a build makes them.
      *
      * @param built      what it was built over (its fingerprint checked by the caller)
      * @param box        per node, k minima then k maxima, as {@link #min} and {@link #max} give them (kept, not copied)
@@ -109,7 +103,7 @@ public final class Bvh implements AccelerationStructure {
         return new Bvh(built, box, link, size, primitives, settings.costModel(), settings.width(), depth);
     }
 
-    /** Writes {@code n} at {@code index} of the arrays, its children at {@code next}; returns the subtree's depth. */
+    /** Writes {@code n} at {@code index}, its children at {@code next}; returns the subtree's depth. */
     private static int layOut(BuildNode n, int index, int next, int depth, int k, double[] box, int[] link, int[] size) {
         System.arraycopy(n.box, 0, box, 2 * k * index, 2 * k);
         if (n.isLeaf()) {
@@ -153,42 +147,36 @@ public final class Bvh implements AccelerationStructure {
 
     /**
      * {@return whether {@code node} is a leaf}
-     *
      * @param node a node of the binary tree
      */
     public boolean isLeaf(int node) { return link[node] < 0; }
 
     /**
      * {@return the left child of an interior node}
-     *
      * @param node an interior node
      */
     public int left(int node) { return link[node]; }
 
     /**
      * {@return the right child of an interior node}
-     *
      * @param node an interior node
      */
     public int right(int node) { return link[node] + 1; }
 
     /**
      * {@return where a leaf's primitives start in the leaf order ({@link #primitive})}
-     *
      * @param node a leaf
      */
     public int leafStart(int node) { return ~link[node]; }
 
     /**
      * {@return how many primitives a leaf holds}
-     *
      * @param node a leaf
      */
     public int leafSize(int node) { return size[node]; }
 
     /**
      * {@return the primitive at position {@code r} of the leaf order}
-     *
      * @param r a position from {@link #leafStart} on
      */
     public int primitive(int r) { return primitives[r]; }
@@ -198,7 +186,6 @@ public final class Bvh implements AccelerationStructure {
 
     /**
      * {@return a node's box: min on {@code axis}}
-     *
      * @param node a node
      * @param axis an axis
      */
@@ -206,7 +193,6 @@ public final class Bvh implements AccelerationStructure {
 
     /**
      * {@return a node's box: max on {@code axis}}
-     *
      * @param node a node
      * @param axis an axis
      */
@@ -223,25 +209,15 @@ public final class Bvh implements AccelerationStructure {
         return b;
     }
 
-    /** The binary layout's arrays, for the traversals of this package. */
+    /** The layouts and the ray tests, for the traversals of this package (the mesh's layouts null over other primitives). */
     double[] boxArray() { return box; }
     int[] linkArray() { return link; }
     int[] primitiveArray() { return primitives; }
     WideNodes wide() { return wide; }
-
-    /** The leaf blocks the single-ray loop reads, at its leaf kernel's width; null unless built over a mesh. */
     LeafBlocks leafBlocks() { return leafBlocks; }
-
-    /** The binary tree as the wide layout at width 2, which packets trace; null unless built over a mesh. */
     WideNodes pairs() { return pairs; }
-
-    /** The ray tests of the primitives it was built over. */
     Intersector intersector() { return intersector; }
-
-    /**
-     * {@return the triangles' corners, 9 per triangle, in leaf order}, so that the fast traversals
-     * read a leaf's triangles from one stretch of memory; null unless built over a mesh
-     */
+    /** The triangles' corners, 9 per triangle, in leaf order: a leaf's triangles in one stretch of memory. */
     double[] leafCorners() { return leafCorners; }
 
     /**

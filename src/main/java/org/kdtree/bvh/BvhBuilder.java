@@ -10,15 +10,13 @@ import org.kdtree.limits.Limits;
 import org.kdtree.shape.Primitives;
 
 /**
- * Builds a {@link Bvh}, a bounding volume hierarchy: a binary tree whose nodes bound groups of
- * whole primitives, found top-down by the binned SAH over primitive bounds with the same cost
- * model (Kt, Ki) as the kd-tree builders, so that the two structures are judged by one model.
- * A node becomes a leaf when splitting it costs more than testing its primitives and it holds
- * at most {@link #leafSize()}; the binary tree is then collapsed into a wide layout of
- * {@link #width()} children per node for tracing (docs/bvh.md).
+ * Builds a {@link Bvh}, a binary tree whose nodes bound groups of whole primitives, top-down by
+ * the binned SAH over primitive bounds with the kd-trees' cost model (Kt, Ki), so that both
+ * structures are judged by one model; a node of at most {@link #leafSize()} primitives becomes a
+ * leaf when splitting costs more. Rays trace it collapsed to {@link #width()} children per node (docs/bvh.md).
  *
- * <p>Its settings are one {@link Settings} value over its rows: the shared Kt, Ki, threads,
- * Kmaxdepth, bins and leaf size ({@link SharedSettings}), and its own width. A builder is not thread safe; a build may be.
+ * <p>Its settings are one {@link Settings} value over its rows: the shared ones ({@link SharedSettings})
+ * and its own width. A builder is not thread safe; a build may be.
  */
 public final class BvhBuilder implements StructureBuilder {
     /** The name the command line, the workbench and the study know it by. */
@@ -68,7 +66,6 @@ public final class BvhBuilder implements StructureBuilder {
 
     /**
      * Sets Kt and Ki.
-     *
      * @param model the cost model
      * @return this builder
      */
@@ -79,7 +76,6 @@ public final class BvhBuilder implements StructureBuilder {
 
     /**
      * Sets the threads building.
-     *
      * @param n threads ({@link Limits#THREADS})
      * @return this builder
      */
@@ -90,7 +86,6 @@ public final class BvhBuilder implements StructureBuilder {
 
     /**
      * Sets the depth cap: no node deeper is split, whatever its size.
-     *
      * @param depth the cap, or -1 ({@link Limits#MAX_DEPTH})
      * @return this builder
      */
@@ -104,7 +99,6 @@ public final class BvhBuilder implements StructureBuilder {
 
     /**
      * Sets the bins per axis.
-     *
      * @param n bins ({@link Limits#BINS})
      * @return this builder
      */
@@ -115,7 +109,6 @@ public final class BvhBuilder implements StructureBuilder {
 
     /**
      * Sets the largest leaf.
-     *
      * @param n primitives ({@link Limits#LEAF_SIZE})
      * @return this builder
      */
@@ -126,7 +119,6 @@ public final class BvhBuilder implements StructureBuilder {
 
     /**
      * Sets the children per node of the wide layout.
-     *
      * @param n 2 to 8 ({@link Limits#BVH_WIDTH})
      * @return this builder
      */

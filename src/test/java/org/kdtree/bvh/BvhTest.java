@@ -1,6 +1,7 @@
 package org.kdtree.bvh;
 
 import static org.assertj.core.api.Assertions.assertThat;
+import static org.assertj.core.api.Assertions.assertThatThrownBy;
 
 import java.util.Arrays;
 import java.util.Random;
@@ -103,18 +104,18 @@ class BvhTest {
         assertThat(four.stats()).isEqualTo(one.stats());
     }
 
-    @Test void theDepthCapHoldsOnAnyDistributionAndLeavesStayWithinTheirSize() {
-        // Centroids at 2^-i: every binned plane cuts off only the farthest few, a chain without the cap's guard.
-        int n = 2000;
-        double[] v = new double[9 * n];
-        int[] idx = new int[3 * n];
-        for (int i = 0; i < n; i++) {
-            double x = Math.pow(2, -i / 20.0);
-            double[] t = {x, 0, 0, x * 1.001, 1, 0, x, 0, 1};
-            System.arraycopy(t, 0, v, 9 * i, 9);
-            for (int c = 0; c < 3; c++) idx[3 * i + c] = 3 * i + c;
+    @Test void anInterruptedBuildStopsWithCancellation() {
+        Thread.currentThread().interrupt();
+        try {
+            assertThatThrownBy(() -> new BvhBuilder().build(Meshes.clustered(5000, 3)))
+                    .isInstanceOf(java.util.concurrent.CancellationException.class).hasMessage("BVH build interrupted");
+        } finally {
+            Thread.interrupted();
         }
-        TriangleMesh m = new TriangleMesh(v, idx);
+    }
+
+    @Test void theDepthCapHoldsOnAnyDistributionAndLeavesStayWithinTheirSize() {
+        TriangleMesh m = chain(2000);
         for (int cap : new int[] {-1, 12, 3}) {
             Bvh h = new BvhBuilder().maxDepth(cap).build(m);
             assertThat(h.maxDepth()).isLessThanOrEqualTo(cap < 0 ? BvhBuilder.DEPTH_LIMIT : cap);
@@ -122,6 +123,18 @@ class BvhTest {
                 if (h.isLeaf(node)) assertThat(h.leafSize(node)).as("cap " + cap).isLessThanOrEqualTo(16);
             agreesWithBruteForce(m, new TriangleIntersector(m), h, 300, 11);
         }
+    }
+
+    /** Centroids at 2^-i: every binned plane cuts off only the farthest few, a chain without the cap's guard. */
+    static TriangleMesh chain(int n) {
+        double[] v = new double[9 * n];
+        int[] idx = new int[3 * n];
+        for (int i = 0; i < n; i++) {
+            double x = Math.pow(2, -i / 20.0);
+            System.arraycopy(new double[] {x, 0, 0, x * 1.001, 1, 0, x, 0, 1}, 0, v, 9 * i, 9);
+            for (int c = 0; c < 3; c++) idx[3 * i + c] = 3 * i + c;
+        }
+        return new TriangleMesh(v, idx);
     }
 
     @Test void closestAndAnyHitAgreeWithBruteForceInBothLayoutsAndEveryWidth() {
