@@ -45,6 +45,11 @@ final class RenderCommand implements Callable<Integer> {
     @Option(paramLabel = "N", names = "--height", description = "Image height (default: the scene's).")
     Integer height;
 
+    @Option(names = "--blocks", description = "Trace 8 x 8 pixels at a time, their rays in packets through the structure's packet "
+            + "loop, even where that is slower than one pixel at a time (as it is today for both structures): to measure it; "
+            + "the same image.")
+    boolean blocks;
+
     @Mixin
     TreeJob treeJob = new TreeJob();
 
@@ -66,6 +71,7 @@ final class RenderCommand implements Callable<Integer> {
         BuilderSpec spec = options.spec();
         Renderer.Options o = Renderer.Options.defaults();
         if (spec.get(SharedSettings.THREADS) != null) o = o.withThreads(spec.get(SharedSettings.THREADS));
+        if (blocks) o = o.inBlocks();
         RenderJob job;
         if (!treeJob.progress.quiet) System.out.printf(java.util.Locale.ROOT, "rendering %s: %d x %d, %d sample%s per pixel, into %s%n", scene,
                 s.camera().width(), s.camera().height(), s.samplesPerPixel(), s.samplesPerPixel() == 1 ? "" : "s", output);

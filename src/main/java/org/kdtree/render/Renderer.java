@@ -26,11 +26,12 @@ public final class Renderer {
      * @param progress        told each time a tile is finished, or null
      * @param recordPixelRays whether to keep per-pixel ray counts by kind (tests)
      * @param stop            asked before each tile whether to stop (the workbench's Stop), or null
+     * @param blocks          whether the block tracer is asked for wherever the structure's packet loop traces packets together, repaid or not
      */
-    public record Options(int threads, int tileSize, TileListener progress, boolean recordPixelRays, BooleanSupplier stop) {
-        /** {@return all cores, 16-pixel tiles, no progress bar, no per-pixel counts, never stopped} */
+    public record Options(int threads, int tileSize, TileListener progress, boolean recordPixelRays, BooleanSupplier stop, boolean blocks) {
+        /** {@return all cores, 16-pixel tiles, no progress bar, no per-pixel counts, never stopped, blocks only where they repay} */
         public static Options defaults() {
-            return new Options(Runtime.getRuntime().availableProcessors(), 16, null, false, null);
+            return new Options(Runtime.getRuntime().availableProcessors(), 16, null, false, null, false);
         }
 
         /**
@@ -38,22 +39,29 @@ public final class Renderer {
          *
          * @param s asked before each tile; true stops the render, the tiles done so far kept
          */
-        public Options withStop(BooleanSupplier s) { return new Options(threads, tileSize, progress, recordPixelRays, s); }
+        public Options withStop(BooleanSupplier s) { return new Options(threads, tileSize, progress, recordPixelRays, s, blocks); }
 
         /**
          * {@return these options with {@code n} threads}
          *
          * @param n the number of threads
          */
-        public Options withThreads(int n) { return new Options(n, tileSize, progress, recordPixelRays, stop); }
+        public Options withThreads(int n) { return new Options(n, tileSize, progress, recordPixelRays, stop, blocks); }
         /**
          * {@return these options reporting progress to {@code p}}
          *
          * @param p told of each finished tile
          */
-        public Options withProgress(TileListener p) { return new Options(threads, tileSize, p, recordPixelRays, stop); }
+        public Options withProgress(TileListener p) { return new Options(threads, tileSize, p, recordPixelRays, stop, blocks); }
         /** {@return these options with per-pixel ray counts recorded} */
-        public Options recordingPixelRays() { return new Options(threads, tileSize, progress, true, stop); }
+        public Options recordingPixelRays() { return new Options(threads, tileSize, progress, true, stop, blocks); }
+
+        /**
+         * {@return these options with the block tracer asked for}: 8 x 8 pixels at a time, their rays
+         * in packets, wherever the structure's packet loop traces a packet's rays together, even where
+         * it does not repay it in renders ({@link PacketQuery#repaysBlocks}): to measure it; the same image
+         */
+        public Options inBlocks() { return new Options(threads, tileSize, progress, recordPixelRays, stop, true); }
     }
 
     /** Hears of finished tiles, from the worker threads (possibly out of order). */
@@ -86,7 +94,8 @@ public final class Renderer {
     /**
      * {@return the rendered image and its statistics}, with the structure's queries and packet
      * queries: in blocks of 8 x 8 pixels with their rays in packets where its packet loop traces
-     * a packet's rays together and repays it ({@link PacketQuery#repaysBlocks}), else one pixel at a time;
+     * a packet's rays together and repays it ({@link PacketQuery#repaysBlocks}) or the options ask for
+     * blocks ({@link Options#inBlocks}), else one pixel at a time;
      * the same image either way ({@link RenderResult#tracer} says which)
      *
      * @param scene     the scene
@@ -95,10 +104,10 @@ public final class Renderer {
      */
     public static RenderResult render(Scene scene, AccelerationStructure structure, Options options) {
         EffectPlan plan = new EffectPlan(scene);
-        return render(scene, plan, () -> new Tracer(scene, plan, structure.query(), structure.packetQuery(), Tracer.SHADOW_BUDGET), options);
+        return render(scene, plan, () -> new Tracer(scene, plan, structure.query(), structure.packetQuery(), Tracer.SHADOW_BUDGET, options.blocks()), options);
     }
 
-    private static RenderResult render(Scene scene, EffectPlan plan, Supplier<Tracer> tracers, Options options) {
+    static RenderResult render(Scene scene, EffectPlan plan, Supplier<Tracer> tracers, Options options) {
         int w = scene.camera().width(), h = scene.camera().height(), ts = options.tileSize();
         int tilesX = (w + ts - 1) / ts, tilesY = (h + ts - 1) / ts, tiles = tilesX * tilesY;
         Image image = new Image(w, h);

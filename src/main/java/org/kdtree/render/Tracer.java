@@ -7,8 +7,8 @@ import org.kdtree.scene.Scene;
 /**
  * One thread's ray tracer: the recursive tracer ({@link WhittedTracer}) one pixel at a time, and,
  * when given a packet query that traces a packet's rays together and repays it in renders ({@link
- * PacketQuery#repaysBlocks}: the BVH's), the block tracer ({@link BlockTracer}) 8 x 8 pixels at
- * a time, their rays in packets. Both follow the records of one {@link Shader}, so a pixel's
+ * PacketQuery#repaysBlocks}: neither structure's does today) or when asked for, the block tracer
+ * ({@link BlockTracer}) 8 x 8 pixels at a time, their rays in packets. Both follow the records of one {@link Shader}, so a pixel's
  * colour and rays are the same, bit for bit, whichever traces it. Tracing allocates nothing.
  */
 final class Tracer {
@@ -45,7 +45,7 @@ final class Tracer {
 
     /**
      * A tracer for one thread, in blocks of pixels when {@code packets} traces a packet's rays
-     * together (else one pixel at a time).
+     * together and repays it (else one pixel at a time).
      *
      * @param scene        the scene
      * @param plan         which rays to cast
@@ -54,15 +54,31 @@ final class Tracer {
      * @param shadowBudget the block's budget of light samples kept aside ({@link #SHADOW_BUDGET}; tests make it small)
      */
     Tracer(Scene scene, EffectPlan plan, RayQuery query, PacketQuery packets, int shadowBudget) {
+        this(scene, plan, query, packets, shadowBudget, false);
+    }
+
+    /**
+     * A tracer for one thread, in blocks of pixels when {@code packets} traces a packet's rays
+     * together and repays it or {@code asked} (else one pixel at a time).
+     *
+     * @param scene        the scene
+     * @param plan         which rays to cast
+     * @param query        this thread's ray queries against the structure
+     * @param packets      this thread's packet queries against it, or null
+     * @param shadowBudget the block's budget of light samples kept aside ({@link #SHADOW_BUDGET}; tests make it small)
+     * @param asked        whether blocks are asked for even where the packet loop does not repay them
+     */
+    Tracer(Scene scene, EffectPlan plan, RayQuery query, PacketQuery packets, int shadowBudget, boolean asked) {
         Shader shader = new Shader(scene, plan);
         pixels = new WhittedTracer(scene, shader, plan.maxDepth(), query, counts);
         boolean together = packets != null && packets.tracesTogether(), fits = shader.slots() <= MAX_SLOTS;
         boolean repaid = together && packets.repaysBlocks();
-        blocks = repaid && fits ? new BlockTracer(scene, shader, packets, pixels, counts, shadowBudget) : null;
+        blocks = (repaid || together && asked) && fits ? new BlockTracer(scene, shader, packets, pixels, counts, shadowBudget) : null;
         describe = blocks != null ? "blocks of 8 x 8 pixels, breadth first, their rays in packets through the packet loop"
+                + (repaid ? "" : " (asked for; slower in renders than single rays)")
                 : "the recursive tracer, one pixel at a time, each ray through the single-ray loop" + (packets == null ? ""
                 : !together ? " (the structure's packets would trace each ray alone)"
-                : !repaid ? " (the structure's packet loop is slower in renders than its single rays)"
+                : !(repaid || asked) ? " (the structure's packet loop is slower in renders than its single rays)"
                 : " (more than " + MAX_SLOTS + " light samples per point for the block tracer)");
     }
 

@@ -42,7 +42,29 @@ class RenderCommandTest {
                 "-b", "bvh");
         assertThat(bvh.code()).as(bvh.err()).isZero();
         assertThat(bvh.err()).contains("# structure: bvh (bvh)")
-                .contains("# tracer: blocks of 8 x 8 pixels, breadth first, their rays in packets through the packet loop").contains("# path: ");
+                .contains("# tracer: the recursive tracer, one pixel at a time, each ray through the single-ray loop "
+                        + "(the structure's packet loop is slower in renders than its single rays)").contains("# path: ");
+    }
+
+    /** {@code --blocks} traces through the block tracer and the packet loop, which neither structure repays, and writes the same image. */
+    @Test void blocksAreTracedWhenAskedForAndGiveTheSameImage() throws Exception {
+        for (String builder : new String[] {"sah", "bvh"}) {
+            Path alone = dir.resolve(builder + "-alone.png"), blocks = dir.resolve(builder + "-blocks.png");
+            String[] common = {"scenes/cornell-box.json", "--spp", "2", "--width", "20", "--height", "12", "-b", builder};
+            CliRun a = run(concat(new String[] {"render", "-o", alone.toString()}, common));
+            CliRun b = run(concat(new String[] {"render", "--blocks", "-o", blocks.toString()}, common));
+            assertThat(a.code()).as(a.err()).isZero();
+            assertThat(b.code()).as(b.err()).isZero();
+            assertThat(b.err()).contains("# tracer: blocks of 8 x 8 pixels, breadth first, their rays in packets through the packet loop "
+                    + "(asked for; slower in renders than single rays)");
+            assertThat(Files.readAllBytes(blocks)).as(builder).isEqualTo(Files.readAllBytes(alone));
+        }
+    }
+
+    private static String[] concat(String[] a, String[] b) {
+        String[] all = java.util.Arrays.copyOf(a, a.length + b.length);
+        System.arraycopy(b, 0, all, a.length, b.length);
+        return all;
     }
 
     @Test void rayDepthZeroTurnsReflectionAndRefractionOff() throws Exception {

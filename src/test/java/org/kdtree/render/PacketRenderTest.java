@@ -24,7 +24,9 @@ class PacketRenderTest {
                 Scene s = TestRenders.scene(file, 61, 45, spp);
                 AccelerationStructure bvh = new BvhBuilder().build(s.mesh());
                 assertThat(bvh.packetQuery().tracesTogether()).isTrue();
-                RenderResult packets = Renderer.render(s, bvh, Renderer.Options.defaults().withThreads(2).recordingPixelRays());
+                EffectPlan plan = new EffectPlan(s);
+                RenderResult packets = Renderer.render(s, plan, () -> new Tracer(s, plan, bvh.query(), TestRenders.repaid(bvh.packetQuery()),
+                        Tracer.SHADOW_BUDGET), Renderer.Options.defaults().withThreads(2).recordingPixelRays());
                 assertThat(packets.tracer()).startsWith("blocks of 8 x 8 pixels");
                 RenderResult single = Renderer.render(s, () -> alone(bvh.query()), Renderer.Options.defaults().withThreads(2).recordingPixelRays());
                 String what = file + ", " + spp + " spp, pixel ";
@@ -53,7 +55,7 @@ class PacketRenderTest {
             EffectPlan plan = new EffectPlan(s);
             Tracer single = new Tracer(s, plan, alone(bvh.query()));
             for (int budget : new int[] {1, 66 * 16, 72 * 16})
-                sameBlocks(new Tracer(s, plan, bvh.query(), bvh.packetQuery(), budget), single, file + ", budget " + budget);
+                sameBlocks(new Tracer(s, plan, bvh.query(), TestRenders.repaid(bvh.packetQuery()), budget), single, file + ", budget " + budget);
         }
     }
 
@@ -69,7 +71,7 @@ class PacketRenderTest {
             assertThat(kd.packetQuery().tracesTogether()).isTrue();
             EffectPlan plan = new EffectPlan(s);
             Tracer single = new Tracer(s, plan, alone(kd.query()));
-            sameBlocks(new Tracer(s, plan, kd.query(), repaid(kd.packetQuery()), Tracer.SHADOW_BUDGET), single, file);
+            sameBlocks(new Tracer(s, plan, kd.query(), TestRenders.repaid(kd.packetQuery()), Tracer.SHADOW_BUDGET), single, file);
         }
     }
 
@@ -91,23 +93,6 @@ class PacketRenderTest {
                     assertThat((long) rays).as(pixel).isEqualTo(single.counts().total() - before);
                 }
             }
-    }
-
-    /** The same packet query, said to repay the block tracer. */
-    private static org.kdtree.accel.PacketQuery repaid(org.kdtree.accel.PacketQuery q) {
-        return new org.kdtree.accel.PacketQuery() {
-            @Override public boolean closestHit(Ray ray, double tMin, double tMax, Hit hit) { return q.closestHit(ray, tMin, tMax, hit); }
-
-            @Override public boolean anyHit(Ray ray, double tMin, double tMax) { return q.anyHit(ray, tMin, tMax); }
-
-            @Override public boolean tracesTogether() { return true; }
-
-            @Override public boolean repaysBlocks() { return true; }
-
-            @Override public void closestHits(org.kdtree.accel.RayPacket packet) { q.closestHits(packet); }
-
-            @Override public void anyHits(org.kdtree.accel.RayPacket packet) { q.anyHits(packet); }
-        };
     }
 
     /** The same query, without its packets. */
