@@ -88,10 +88,11 @@ final class PacketTraversal implements PacketQuery {
 
     /**
      * {@return false: renders stay one pixel at a time}, on both paths, as the kd-tree's do: the
-     * Cornell box through the block tracer and this loop took 1.3-1.5 times the render time of the
-     * recursive tracer over the single-ray loop at 4 samples a pixel, and 1.05-1.2 times at 32, on
-     * Java 17 and on JDK 25's vector path alike (docs/performance.md). Set P, whose rays are all
-     * camera rays of whole tiles, is still traced in packets.
+     * Cornell box through the block tracer and this loop took 1.26 times (Java 17) and 1.25 times
+     * (JDK 25's vector path) the render time of the recursive tracer over the single-ray loop at 4
+     * samples a pixel, 1.04 and 1.29 times at 32 (medians of 3 alternating rounds, quiet machine;
+     * docs/rendering.md). Set P, whose rays are all camera rays of whole tiles, is still traced in
+     * packets.
      */
     @Override public boolean repaysBlocks() { return false; }
 
