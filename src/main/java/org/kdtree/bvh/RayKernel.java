@@ -20,7 +20,8 @@ interface RayKernel {
      * or {@code -1 - word} for a leaf child: the word of its reference), to {@code t} where the ray
      * enters it. The loop then reads only the children entered, with no second pass over the slots.
      *
-     * @param nx    where a node's near planes on x lie within it: its minima (0) if the ray runs up x, else its maxima ({@code width}); its far planes are the others
+     * @param nx    where a node's near planes on x lie within it: its minima (0) if the ray runs up x, else its maxima ({@code width})
+     * @param fx    where its far planes on x lie: the others
      * @param ny    likewise on y ({@code 2 width} or {@code 3 width})
      * @param nz    and on z ({@code 4 width} or {@code 5 width})
      * @param ox    the ray's origin, x
@@ -30,7 +31,7 @@ interface RayKernel {
      * @param t     receives the entry distances; up to {@link #SPARE} entries past the last may be written too
      * @return how many children the ray enters
      */
-    int enter(int[] words, int base, int width, int nx, int ny, int nz, double ox, double oy, double oz,
+    int enter(int[] words, int base, int width, int nx, int fx, int ny, int fy, int nz, int fz, double ox, double oy, double oz,
               double ix, double iy, double iz, double start, double limit, int[] entries, double[] t);
 
     /**

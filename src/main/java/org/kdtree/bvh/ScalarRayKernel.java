@@ -8,24 +8,21 @@ import org.kdtree.geom.Tolerance;
 final class ScalarRayKernel implements RayKernel {
     private static final double SHRINK = 1 - Tolerance.TRAVERSAL_SLACK, GROW = 1 + Tolerance.TRAVERSAL_SLACK;
 
-    @Override public int enter(int[] nd, int base, int w, int nx, int ny, int nz, double ox, double oy, double oz,
+    @Override public int enter(int[] nd, int base, int w, int nx, int fx, int ny, int fy, int nz, int fz, double ox, double oy, double oz,
                                double ix, double iy, double iz, double start, double limit, int[] entries, double[] t) {
-        int fx = base + w - nx, fy = base + 5 * w - ny, fz = base + 9 * w - nz, ref = base + 6 * w, m = 0;
-        nx += base;
-        ny += base;
-        nz += base;
-        for (int i = 0; i < w; i++) {
-            int count = nd[ref + w + i];
+        int m = 0;
+        for (int i = 0, at = base, ref = base + 6 * w; i < w; i++, at++, ref++) {
+            int count = nd[ref + w];
             if (count < 0) break;   // unused slots come last
             // Branch-free slabs: with no zero direction component no bound is NaN.
-            double t0 = Math.max(start, (Float.intBitsToFloat(nd[nx + i]) - ox) * ix);
-            double t1 = Math.min(limit, (Float.intBitsToFloat(nd[fx + i]) - ox) * ix);
-            t0 = Math.max(t0, (Float.intBitsToFloat(nd[ny + i]) - oy) * iy);
-            t1 = Math.min(t1, (Float.intBitsToFloat(nd[fy + i]) - oy) * iy);
-            t0 = Math.max(t0, (Float.intBitsToFloat(nd[nz + i]) - oz) * iz);
-            t1 = Math.min(t1, (Float.intBitsToFloat(nd[fz + i]) - oz) * iz);
+            double t0 = Math.max(start, (Float.intBitsToFloat(nd[at + nx]) - ox) * ix);
+            double t1 = Math.min(limit, (Float.intBitsToFloat(nd[at + fx]) - ox) * ix);
+            t0 = Math.max(t0, (Float.intBitsToFloat(nd[at + ny]) - oy) * iy);
+            t1 = Math.min(t1, (Float.intBitsToFloat(nd[at + fy]) - oy) * iy);
+            t0 = Math.max(t0, (Float.intBitsToFloat(nd[at + nz]) - oz) * iz);
+            t1 = Math.min(t1, (Float.intBitsToFloat(nd[at + fz]) - oz) * iz);
             // Appended always, kept only if entered: no branch to mispredict.
-            entries[m] = count > 0 ? -1 - (ref + i) : nd[ref + i];
+            entries[m] = count > 0 ? -1 - ref : nd[ref];
             t[m] = t0;
             m += t0 * SHRINK <= t1 * GROW ? 1 : 0;
         }

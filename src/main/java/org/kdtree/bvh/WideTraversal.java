@@ -98,8 +98,9 @@ final class WideTraversal implements RayQuery {
         double ox = ray.origin(0), oy = ray.origin(1), oz = ray.origin(2);
         double ix = ray.inverseDirection(0), iy = ray.inverseDirection(1), iz = ray.inverseDirection(2);
         int w = width;
-        // Offsets of the near planes within a node: per axis, minima first, then maxima.
+        // Offsets of the near and far planes within a node, once per ray: per axis, minima first, then maxima.
         int nx = ix < 0 ? w : 0, ny = (iy < 0 ? w : 0) + 2 * w, nz = (iz < 0 ? w : 0) + 4 * w;
+        int fx = w - nx, fy = 5 * w - ny, fz = 9 * w - nz;
 
         // The watertight test's shear, once per ray.
         int kz = TriangleIntersector.maxAxis(ray.direction(0), ray.direction(1), ray.direction(2));
@@ -116,7 +117,7 @@ final class WideTraversal implements RayQuery {
         while (true) {
             if (e >= 0) {
                 // An interior node: the children entered; go on with the nearest, save the others.
-                int m = kernel.enter(nd, stride * e, w, nx, ny, nz, ox, oy, oz, ix, iy, iz, start, best + Math.abs(best) * SLACK, he, ht);
+                int m = kernel.enter(nd, stride * e, w, nx, fx, ny, fy, nz, fz, ox, oy, oz, ix, iy, iz, start, best + Math.abs(best) * SLACK, he, ht);
                 if (m > 0) {
                     sp = saveAllButNearest(he, ht, m, se, st, sp);
                     e = he[m - 1];

@@ -86,7 +86,7 @@ class RayKernelTest {
                     double start = n % 4 == 0 ? rnd.nextDouble() : 0, limit = n % 7 == 0 ? rnd.nextDouble() * 10 : Double.POSITIVE_INFINITY;
                     int bits = slabs(w, base, r, start, limit, want);
                     for (RayKernel kernel : KERNELS) {
-                        int got = kernel.enter(w.words, base, width, nx, ny, nz, r[0], r[1], r[2], r[6], r[7], r[8], start, limit, entries, t);
+                        int got = kernel.enter(w.words, base, width, nx, width - nx, ny, 5 * width - ny, nz, 9 * width - nz, r[0], r[1], r[2], r[6], r[7], r[8], start, limit, entries, t);
                         String what = kernel.getClass().getSimpleName() + ", width " + width + ", node " + node + ", ray " + java.util.Arrays.toString(r);
                         assertThat(got).as(what).isEqualTo(Integer.bitCount(bits));
                         for (int i = 0, m = 0; i < width; i++) {   // the slots entered, in slot order

@@ -42,24 +42,22 @@ public final class VectorRayKernel implements RayKernel {
         return (DoubleVector) IntVector.fromArray(I, words, at).reinterpretAsFloats().convertShape(VectorOperators.F2D, S, 0);
     }
 
-    @Override public int enter(int[] nd, int base, int w, int nx, int ny, int nz, double ox, double oy, double oz,
+    @Override public int enter(int[] nd, int base, int w, int nx, int fx, int ny, int fy, int nz, int fz, double ox, double oy, double oz,
                                double ix, double iy, double iz, double start, double limit, int[] entries, double[] t) {
-        int fx = base + w - nx, fy = base + 5 * w - ny, fz = base + 9 * w - nz, ref = base + 6 * w, m = 0;
-        nx += base;
-        ny += base;
-        nz += base;
+        int m = 0;
         for (int i = 0; i < w; i += L) {
-            DoubleVector t0 = planes(nd, nx + i).sub(ox).mul(ix).max(start);
-            DoubleVector t1 = planes(nd, fx + i).sub(ox).mul(ix).min(limit);
-            t0 = t0.max(planes(nd, ny + i).sub(oy).mul(iy));
-            t1 = t1.min(planes(nd, fy + i).sub(oy).mul(iy));
-            t0 = t0.max(planes(nd, nz + i).sub(oz).mul(iz));
-            t1 = t1.min(planes(nd, fz + i).sub(oz).mul(iz));
+            int at = base + i;
+            DoubleVector t0 = planes(nd, at + nx).sub(ox).mul(ix).max(start);
+            DoubleVector t1 = planes(nd, at + fx).sub(ox).mul(ix).min(limit);
+            t0 = t0.max(planes(nd, at + ny).sub(oy).mul(iy));
+            t1 = t1.min(planes(nd, at + fy).sub(oy).mul(iy));
+            t0 = t0.max(planes(nd, at + nz).sub(oz).mul(iz));
+            t1 = t1.min(planes(nd, at + fz).sub(oz).mul(iz));
             // Lanes past the node's width read the next rows: ignored.
             int in = (int) t0.mul(SHRINK).compare(VectorOperators.LE, t1.mul(GROW)).toLong() & (1 << w - i) - 1;
             if (in == 0) continue;
             t0.intoArray(t, m);
-            m = append(nd, ref + i, w, in, m, entries, t);
+            m = append(nd, at + 6 * w, w, in, m, entries, t);
         }
         return m;
     }
