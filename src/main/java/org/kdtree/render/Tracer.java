@@ -8,8 +8,9 @@ import org.kdtree.scene.Scene;
  * One thread's ray tracer: the recursive tracer ({@link WhittedTracer}) one pixel at a time, and,
  * when given a packet query that traces a packet's rays together and repays it in renders ({@link
  * PacketQuery#repaysBlocks}: neither structure's does today) or when asked for, the block tracer
- * ({@link BlockTracer}) 8 x 8 pixels at a time, their rays in packets. Both follow the records of one {@link Shader}, so a pixel's
- * colour and rays are the same, bit for bit, whichever traces it. Tracing allocates nothing.
+ * ({@link BlockTracer}) 8 x 8 pixels at a time, their rays in packets. Both follow the records of
+ * one {@link Shader}, so a pixel's colour and rays are the same, bit for bit, whichever traces it.
+ * Tracing allocates nothing.
  */
 final class Tracer {
     /**
