@@ -33,6 +33,8 @@ final class PacketLanes {
     final double[] bestPrim = new double[N];
     /** Per lane: t and barycentrics of its closest hit so far (t +infinity: none). */
     final double[] bestT = new double[N], bestU = new double[N], bestV = new double[N];
+    /** One lane's closest hit while the Java 17 leaf kernel tests its triangles ({@link TriangleIntersector#test} records there). */
+    final org.kdtree.accel.Hit laneHit = new org.kdtree.accel.Hit();
     /** What the node kernel found: the lanes that go to the near child, and those that go to the far one (both: in each). */
     long toNear, toFar;
 

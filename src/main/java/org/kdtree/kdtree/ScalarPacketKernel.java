@@ -1,9 +1,13 @@
 package org.kdtree.kdtree;
 
+import org.kdtree.accel.Hit;
+import org.kdtree.accel.TriangleIntersector;
+
 /**
  * The packet loop's kernels on Java 17: a lane at a time, each lane's work written as {@link
- * MeshTraversal} does it for a single ray (the same operations in the same order), over the set
- * bits of the lane mask. Stateless: one for every thread.
+ * MeshTraversal} does it for a single ray (the same operations in the same order; a leaf's
+ * triangles through {@link TriangleIntersector#test}), over the set bits of the lane mask.
+ * Stateless: one for every thread.
  */
 final class ScalarPacketKernel implements PacketKernel {
     private static final double SLACK = Traverser.SLACK;
@@ -64,44 +68,32 @@ final class ScalarPacketKernel implements PacketKernel {
     }
 
     /**
-     * Each lane of {@code active} tests the leaf's triangles in order (stopping at its first hit if
-     * {@code any}), in one method: the JIT inlines none of the test (above its size limit), so that
-     * a leaf costs one call, not one a lane. {@return the lanes that hit}
+     * Each lane of {@code active} tests the leaf's triangles in order with {@link
+     * TriangleIntersector#test} (stopping at its first hit if {@code any}), its closest hit so far
+     * held in {@link PacketLanes#laneHit}. {@return the lanes that hit}
      */
     private static long leaf(PacketLanes lanes, long active, int[] refs, int start, int end, double[] c, boolean any) {
         long hit = 0;
+        Hit h = lanes.laneHit;
         for (long m = active; m != 0; m &= m - 1) {
             int i = Long.numberOfTrailingZeros(m);
             int x = lanes.kx[i], y = lanes.ky[i], z = lanes.kz[i];
-            double prim = lanes.bestPrim[i];
             double ox = lanes.okx[i], oy = lanes.oky[i], oz = lanes.okz[i], shx = lanes.sx[i], shy = lanes.sy[i], shz = lanes.sz[i];
-            double tMin = lanes.tMin[i], tMax = lanes.tMax[i], best = lanes.bestT[i], bu = lanes.bestU[i], bv = lanes.bestV[i];
+            double tMin = lanes.tMin[i], tMax = lanes.tMax[i];
+            h.primitive = (int) lanes.bestPrim[i];
+            h.t = lanes.bestT[i];
             boolean found = false;
             for (int r = start; r < end; r++) {
-                // TriangleIntersector.test, written out as in MeshTraversal (the JIT will not inline it).
-                int pr = refs[r], q = 9 * pr;
-                double az = c[q + z] - oz, bz = c[q + 3 + z] - oz, cz = c[q + 6 + z] - oz;
-                double ax = c[q + x] - ox - shx * az, ay = c[q + y] - oy - shy * az;
-                double bx = c[q + 3 + x] - ox - shx * bz, by = c[q + 3 + y] - oy - shy * bz;
-                double cx = c[q + 6 + x] - ox - shx * cz, cy = c[q + 6 + y] - oy - shy * cz;
-                double u = cx * by - cy * bx, v = ax * cy - ay * cx, e = bx * ay - by * ax;
-                if ((u < 0 || v < 0 || e < 0) && (u > 0 || v > 0 || e > 0)) continue;
-                double det = u + v + e;
-                if (det == 0) continue;
-                double t = (u * az + v * bz + e * cz) * shz / det;
-                if (!(t >= tMin && t <= tMax && (t < best || t == best && pr < prim))) continue;
+                int pr = refs[r];
+                if (!TriangleIntersector.test(c, 9 * pr, pr, ox, oy, oz, x, y, z, shx, shy, shz, tMin, tMax, h)) continue;
                 found = true;
-                prim = pr;
-                best = t;
-                bu = v / det;
-                bv = e / det;
                 if (any) break;
             }
             if (!found) continue;
-            lanes.bestPrim[i] = prim;
-            lanes.bestT[i] = best;
-            lanes.bestU[i] = bu;
-            lanes.bestV[i] = bv;
+            lanes.bestPrim[i] = h.primitive;
+            lanes.bestT[i] = h.t;
+            lanes.bestU[i] = h.u;
+            lanes.bestV[i] = h.v;
             hit |= 1L << i;
         }
         return hit;
