@@ -39,7 +39,7 @@ public final class TriangleIntersector implements Intersector {
 
     /**
      * An intersector over corners as {@link #corners(TriangleMesh)} makes them, read in place:
-     * a structure that also inlines the test over the same array (its hot loop) keeps one copy.
+     * a structure that also runs {@link #test} over the same array (its hot loop) keeps one copy.
      *
      * @param corners nine doubles per triangle, NaN for a degenerate one; the caller never changes them
      */

@@ -9,8 +9,9 @@ import org.kdtree.geom.Ray;
 /**
  * The specialised 3-D path of {@link Traverser} for triangle meshes: the same algorithm and the
  * same robustness rules as the generic loop, on the flat arrays, with the ray in locals, the
- * per-ray shear of the watertight test computed once, and the triangle test written out over the
- * tree's tracing layout (the mesh's corners, {@link KdTree#corners}, from a reference's primitive). Not thread safe: owned by one traverser.
+ * per-ray shear of the watertight test computed once, and {@link TriangleIntersector#test} over
+ * the tree's tracing layout (the mesh's corners, {@link KdTree#corners}, from a reference's
+ * primitive). Not thread safe: owned by one traverser.
  */
 final class MeshTraversal {
     /** A 3-D tree's {@link KdTree#axisBits()}, a constant the JIT folds into the node decoding. */
@@ -116,24 +117,9 @@ final class MeshTraversal {
                 int p = refs[r];
                 if (box[p] == stamp) continue;
                 box[p] = stamp;
-                // TriangleIntersector.test, written out: the JIT will not inline it (342 bytes of bytecode, above FreqInlineSize).
-                int q = 9 * p;
-                double az = c[q + kz] - okz, bz = c[q + 3 + kz] - okz, cz = c[q + 6 + kz] - okz;
-                double ax = c[q + kx] - okx - sx * az, ay = c[q + ky] - oky - sy * az;
-                double bx = c[q + 3 + kx] - okx - sx * bz, by = c[q + 3 + ky] - oky - sy * bz;
-                double cx = c[q + 6 + kx] - okx - sx * cz, cy = c[q + 6 + ky] - oky - sy * cz;
-                double u = cx * by - cy * bx, v = ax * cy - ay * cx, e = bx * ay - by * ax;
-                if ((u < 0 || v < 0 || e < 0) && (u > 0 || v > 0 || e > 0)) continue;
-                double det = u + v + e;
-                if (det == 0) continue;
-                double t = (u * az + v * bz + e * cz) * sz / det;
-                if (!(t >= tMin && t <= tMax && (t < hit.t || t == hit.t && p < hit.primitive))) continue;   // as TriangleIntersector.test
+                if (!TriangleIntersector.test(c, 9 * p, p, okx, oky, okz, kx, ky, kz, sx, sy, sz, tMin, tMax, hit)) continue;
                 if (any) return true;
                 found = true;
-                hit.primitive = p;
-                hit.t = t;
-                hit.u = v / det;
-                hit.v = e / det;
             }
             while (true) {
                 if (sp == 0) return found;
