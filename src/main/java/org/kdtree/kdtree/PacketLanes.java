@@ -1,5 +1,6 @@
 package org.kdtree.kdtree;
 
+import org.kdtree.accel.Hit;
 import org.kdtree.accel.RayPacket;
 import org.kdtree.accel.TriangleIntersector;
 
@@ -34,7 +35,7 @@ final class PacketLanes {
     /** Per lane: t and barycentrics of its closest hit so far (t +infinity: none). */
     final double[] bestT = new double[N], bestU = new double[N], bestV = new double[N];
     /** One lane's closest hit while the Java 17 leaf kernel tests its triangles ({@link TriangleIntersector#test} records there). */
-    final org.kdtree.accel.Hit laneHit = new org.kdtree.accel.Hit();
+    final Hit laneHit = new Hit();
     /** What the node kernel found: the lanes that go to the near child, and those that go to the far one (both: in each). */
     long toNear, toFar;
 
