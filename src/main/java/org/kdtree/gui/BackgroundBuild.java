@@ -113,14 +113,13 @@ final class BackgroundBuild {
 
     /**
      * Hands build {@code mine}'s outcome to {@code done}, once, unless a newer build was started.
-     * Synchronized: the waiting thread and the event thread may both try (a caller off the event
-     * thread, as in tests), and only one of them may find it undelivered.
+     * The check and the hand-over hold one lock, as {@link #next} does: the waiting thread and the
+     * event thread may both try (a caller off the event thread, as in tests), only one of them may
+     * find it undelivered, and an outcome in hand cannot be shown after a newer build's.
      */
-    private void deliver(int mine, Outcome o, Consumer<Outcome> done) {
-        synchronized (this) {
-            if (mine != started || mine == delivered) return;
-            delivered = mine;
-        }
+    private synchronized void deliver(int mine, Outcome o, Consumer<Outcome> done) {
+        if (mine != started || mine == delivered) return;
+        delivered = mine;
         done.accept(o);
     }
 }
