@@ -3,6 +3,7 @@ package org.kdtree.kdtree;
 import org.kdtree.accel.Hit;
 import org.kdtree.accel.SlabClip;
 import org.kdtree.accel.TriangleIntersector;
+import org.kdtree.accel.Vectorization;
 import org.kdtree.geom.Box;
 import org.kdtree.geom.Ray;
 
@@ -30,8 +31,13 @@ final class MeshTraversal {
     private final double[] stackMin, stackMax;
     private final double[] org = new double[3], inv = new double[3], interval = new double[2];
     private final Hit scratch = new Hit();
+    private final int[] lanes = new int[RayKernel.LANES];
+
+    /** The leaf kernel, chosen once per JVM ({@link org.kdtree.accel.Vectorization#kernel}). */
+    static final RayKernel KERNEL = Vectorization.kernel(RayKernel.class, "org.kdtree.kdtree.VectorRayKernel", new ScalarRayKernel());
 
     MeshTraversal(KdTree tree, Mailbox mailbox, int stackSize) {
+        this.mailbox = mailbox;
         if (tree.axisBits() != BITS) throw new IllegalArgumentException("a 3-D tree's axis field is " + BITS + " bits");
         nodes = tree.nodes;
         refs = tree.refs;
@@ -39,7 +45,6 @@ final class MeshTraversal {
         if (corners == null) throw new IllegalArgumentException("a tree over a triangle mesh has a tracing layout; this one holds other primitives");
         Box b = tree.bounds();
         scene = new double[] {b.min(0), b.min(1), b.min(2), b.max(0), b.max(1), b.max(2)};
-        this.mailbox = mailbox;
         stackNode = new int[stackSize];
         stackMin = new double[stackSize];
         stackMax = new double[stackSize];
@@ -76,8 +81,10 @@ final class MeshTraversal {
         double sz = ray.inverseDirection(kz), sx = ray.direction(kx) * sz, sy = ray.direction(ky) * sz; // = 1 / dkz
         double okx = o[kx], oky = o[ky], okz = o[kz];
 
+        RayKernel kernel = KERNEL;
         int stamp = mailbox.next();
         int[] box = mailbox.stamp;
+        int[] lanes = this.lanes;
         int[] nodes = this.nodes;
         int[] refs = this.refs;
         double[] c = corners;
@@ -113,11 +120,8 @@ final class MeshTraversal {
                 }
                 w = Nodes.word(nodes, node);
             }
-            for (int r = Nodes.leafStart(nodes, node), end = r + Nodes.leafSize(w, BITS); r < end; r++) {
-                int p = refs[r];
-                if (box[p] == stamp) continue;
-                box[p] = stamp;
-                if (!TriangleIntersector.test(c, 9 * p, p, okx, oky, okz, kx, ky, kz, sx, sy, sz, tMin, tMax, hit)) continue;
+            int start = Nodes.leafStart(nodes, node), end = start + Nodes.leafSize(w, BITS);
+            if (start < end && kernel.hit(refs, start, end, c, lanes, box, stamp, okx, oky, okz, kx, ky, kz, sx, sy, sz, tMin, tMax, hit, any)) {
                 if (any) return true;
                 found = true;
             }
