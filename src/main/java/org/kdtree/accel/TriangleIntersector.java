@@ -89,9 +89,9 @@ public final class TriangleIntersector implements Intersector {
      * {@code tMin <= t <= tMax} and {@code t < hit.t} in {@code hit} (or {@code t == hit.t} and
      * {@code prim < hit.primitive}: of two hits equally close the lower index wins, in any order). At 342 bytes of
      * bytecode it is above HotSpot's limit for inlining a hot callee ({@code FreqInlineSize}, 325), so the JIT calls it
-     * (JDK 17 and 25, {@code -XX:+PrintInlining}: "hot method too big"): the kd-tree's fast loop ({@code
-     * MeshTraversal}) writes a copy out in its loop; the BVH's single-ray and packet loops call this; the vector
-     * path's leaf tests repeat its operations lane by lane.
+     * (JDK 17 and 25, {@code -XX:+PrintInlining}: "hot method too big"): the kd-tree's and the BVH's single-ray and packet
+     * loops call it (a copy written out in a loop measured no faster); the vector path's leaf tests repeat its
+     * operations lane by lane.
      *
      * @param c    corner coordinates, 9 per triangle
      * @param b    where this triangle's 9 start

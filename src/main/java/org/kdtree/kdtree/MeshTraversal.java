@@ -3,16 +3,15 @@ package org.kdtree.kdtree;
 import org.kdtree.accel.Hit;
 import org.kdtree.accel.SlabClip;
 import org.kdtree.accel.TriangleIntersector;
-import org.kdtree.accel.Vectorization;
 import org.kdtree.geom.Box;
 import org.kdtree.geom.Ray;
 
 /**
  * The specialised 3-D path of {@link Traverser} for triangle meshes: the same algorithm and the
  * same robustness rules as the generic loop, on the flat arrays, with the ray in locals, the
- * per-ray shear of the watertight test computed once, and {@link TriangleIntersector#test} over
- * the tree's tracing layout (the mesh's corners, {@link KdTree#corners}, from a reference's
- * primitive). Not thread safe: owned by one traverser.
+ * per-ray shear of the watertight test computed once, and a leaf's triangles through the leaf
+ * kernel ({@link RayKernel}) over the tree's tracing layout (the mesh's corners, {@link
+ * KdTree#corners}, from a reference's primitive). Not thread safe: owned by one traverser.
  */
 final class MeshTraversal {
     /** A 3-D tree's {@link KdTree#axisBits()}, a constant the JIT folds into the node decoding. */
@@ -31,10 +30,9 @@ final class MeshTraversal {
     private final double[] stackMin, stackMax;
     private final double[] org = new double[3], inv = new double[3], interval = new double[2];
     private final Hit scratch = new Hit();
-    private final int[] lanes = new int[RayKernel.LANES];
 
-    /** The leaf kernel, chosen once per JVM ({@link org.kdtree.accel.Vectorization#kernel}). */
-    static final RayKernel KERNEL = Vectorization.kernel(RayKernel.class, "org.kdtree.kdtree.VectorRayKernel", new ScalarRayKernel());
+    /** The leaf kernel (one for every JVM: {@link RayKernel}). */
+    static final RayKernel KERNEL = new ScalarRayKernel();
 
     MeshTraversal(KdTree tree, Mailbox mailbox, int stackSize) {
         this.mailbox = mailbox;
@@ -84,7 +82,6 @@ final class MeshTraversal {
         RayKernel kernel = KERNEL;
         int stamp = mailbox.next();
         int[] box = mailbox.stamp;
-        int[] lanes = this.lanes;
         int[] nodes = this.nodes;
         int[] refs = this.refs;
         double[] c = corners;
@@ -121,7 +118,7 @@ final class MeshTraversal {
                 w = Nodes.word(nodes, node);
             }
             int start = Nodes.leafStart(nodes, node), end = start + Nodes.leafSize(w, BITS);
-            if (start < end && kernel.hit(refs, start, end, c, lanes, box, stamp, okx, oky, okz, kx, ky, kz, sx, sy, sz, tMin, tMax, hit, any)) {
+            if (start < end && kernel.hit(refs, start, end, c, box, stamp, okx, oky, okz, kx, ky, kz, sx, sy, sz, tMin, tMax, hit, any)) {
                 if (any) return true;
                 found = true;
             }

@@ -5,7 +5,7 @@ import org.kdtree.accel.TriangleIntersector;
 
 /** The single-ray loop's leaf kernel on Java 17: a leaf's triangles one after the other. Stateless. */
 final class ScalarRayKernel implements RayKernel {
-    @Override public boolean hit(int[] refs, int start, int end, double[] c, int[] lanes, int[] box, int stamp, double okx, double oky, double okz, int kx,
+    @Override public boolean hit(int[] refs, int start, int end, double[] c, int[] box, int stamp, double okx, double oky, double okz, int kx,
                                  int ky, int kz, double sx, double sy, double sz, double tMin, double tMax, Hit hit, boolean any) {
         boolean found = false;
         for (int r = start; r < end; r++) {
