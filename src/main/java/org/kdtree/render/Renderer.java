@@ -15,9 +15,10 @@ import org.kdtree.accel.RayQuery;
 import org.kdtree.scene.Scene;
 
 /**
- * Renders a scene in square tiles over a pool of threads. Each thread takes the next tile
- * until none is left, with its own {@link Tracer} and so its own {@link RayQuery}. Every pixel
- * is seeded on its own, so the image does not depend on the number of threads.
+ * Renders a scene in square tiles over a pool of threads. Each thread takes the next tile, in
+ * an order spread over the image ({@link TileOrder}), until none is left, with its own {@link
+ * Tracer} and so its own {@link RayQuery}. Every pixel is seeded on its own, so the image
+ * depends neither on the number of threads nor on the order of the tiles.
  */
 public final class Renderer {
     /**
@@ -115,6 +116,7 @@ public final class Renderer {
         TileListener progress = options.progress() != null ? options.progress() : (d, t, i) -> { };
         BooleanSupplier stop = options.stop() != null ? options.stop() : () -> false;
         AtomicInteger next = new AtomicInteger(), done = new AtomicInteger();
+        TileOrder order = new TileOrder(tiles);
         int threads = Math.max(1, options.threads());
         ExecutorService pool = Executors.newFixedThreadPool(threads, r -> {
             Thread t = new Thread(r, "render");
@@ -127,7 +129,8 @@ public final class Renderer {
             for (int i = 0; i < threads; i++) {
                 workers.add(pool.submit(() -> {
                     Tracer tracer = tracers.get();
-                    for (int tile; !stop.getAsBoolean() && (tile = next.getAndIncrement()) < tiles; ) {
+                    for (int k; !stop.getAsBoolean() && (k = next.getAndIncrement()) < tiles; ) {
+                        int tile = order.tile(k);
                         int x0 = (tile % tilesX) * ts, y0 = (tile / tilesX) * ts;
                         renderTile(tracer, image, pixelRays, x0, y0, Math.min(w, x0 + ts), Math.min(h, y0 + ts));
                         progress.tilesDone(done.incrementAndGet(), tiles, image);
