@@ -28,9 +28,8 @@ final class BvhTraverser implements RayQuery {
     private final int[] prim;
     private final TraversalStack stack;
     private final Hit scratch = new Hit();
-    /** The interval of the last {@link #enters} test. */
-    private double enter, exit;
-    private final double[] interval = new double[2];
+    /** The intervals of the last box tests: the root's or a left child's, and a right child's. */
+    private final double[] ia = new double[2], ib = new double[2];
 
     /** A traversal of {@code bvh} over the primitives it was built over, telling {@code listener} each step. */
     BvhTraverser(Bvh bvh, TraversalListener listener) {
@@ -40,8 +39,7 @@ final class BvhTraverser implements RayQuery {
         this.k = bvh.dimension();
         this.box = bvh.boxArray();
         this.prim = bvh.primitiveArray();
-        int depth = bvh.maxDepth() + 2;
-        stack = new TraversalStack(depth);
+        this.stack = new TraversalStack(bvh.maxDepth() + 2);
     }
 
     @Override public boolean closestHit(Ray ray, double tMin, double tMax, Hit hit) {
@@ -60,42 +58,30 @@ final class BvhTraverser implements RayQuery {
     private boolean trace(Ray ray, double tMin, double tMax, Hit hit, boolean any) {
         ray.requireTraceable(k, "hierarchy");
         TraversalListener l = listener;
-        if (bvh.primitiveCount() == 0 || !enters(ray, 0, tMin, tMax)) {
+        if (bvh.primitiveCount() == 0 || !SlabClip.clip(ray, box, 0, tMin, tMax, ia)) {
             l.missedScene();
             return false;
         }
-        l.begin(enter, exit);
+        l.begin(ia[0], ia[1]);
         boolean found = false;
         stack.clear();
         int node = 0;
-        double curMin = enter, curMax = exit;
+        double curMin = ia[0], curMax = ia[1];
         while (true) {
-            while (!bvh.isLeaf(node)) {
+            while (node >= 0 && !bvh.isLeaf(node)) {
                 l.boxNode(node, curMin, curMax);
                 int a = bvh.left(node), b = bvh.right(node);
                 double limit = Math.min(tMax, hit.t);
-                boolean inA = enters(ray, a, tMin, limit);
-                double aMin = enter, aMax = exit;
-                l.boxTest(a, inA, aMin, aMax);
-                boolean inB = enters(ray, b, tMin, limit);
-                double bMin = enter, bMax = exit;
-                l.boxTest(b, inB, bMin, bMax);
-                if (inA && inB) {
-                    boolean aFirst = aMin <= bMin;
-                    int far = aFirst ? b : a;
-                    double farMin = aFirst ? bMin : aMin, farMax = aFirst ? bMax : aMax;
-                    stack.push(far, farMin, farMax, l);
-                    node = aFirst ? a : b;
-                    curMin = aFirst ? aMin : bMin;
-                    curMax = aFirst ? aMax : bMax;
-                } else if (inA || inB) {
-                    node = inA ? a : b;
-                    curMin = inA ? aMin : bMin;
-                    curMax = inA ? aMax : bMax;
-                } else {
-                    node = -1;
-                    break;
+                boolean inA = enters(ray, a, tMin, limit, ia), inB = enters(ray, b, tMin, limit, ib);
+                if (inA && inB) {   // the nearer first, the other saved
+                    inA = ia[0] <= ib[0];
+                    double[] far = inA ? ib : ia;
+                    stack.push(inA ? b : a, far[0], far[1], l);
                 }
+                double[] in = inA ? ia : ib;
+                node = inA ? a : inB ? b : -1;
+                curMin = in[0];
+                curMax = in[1];
             }
             if (node >= 0) {
                 int count = bvh.leafSize(node), first = bvh.leafStart(node);
@@ -115,11 +101,10 @@ final class BvhTraverser implements RayQuery {
         }
     }
 
-    /** Whether the ray meets {@code node}'s box within {@code [tMin, tMax]}, the interval met left in {@link #enter} and {@link #exit}. */
-    private boolean enters(Ray ray, int node, double tMin, double tMax) {
+    /** Whether the ray meets {@code node}'s box within {@code [tMin, tMax]}, the interval met left in {@code interval}; tells the listener. */
+    private boolean enters(Ray ray, int node, double tMin, double tMax, double[] interval) {
         boolean in = SlabClip.clip(ray, box, 2 * k * node, tMin, tMax, interval);
-        enter = interval[0];
-        exit = interval[1];
+        listener.boxTest(node, in, interval[0], interval[1]);
         return in;
     }
 }

@@ -24,22 +24,21 @@ final class LeafBlocks {
     /** The blocks of {@code bvh}'s leaves from its corners in leaf order ({@link Bvh#leafCorners}), kept as they are at width 1. */
     LeafBlocks(Bvh bvh, double[] corners, int width) {
         this.width = width;
-        int refs = corners.length / 9, blocks = 0;
-        firstBlock = new int[Math.max(1, refs)];
-        for (int n = 0; n < bvh.nodeCount(); n++)
-            if (bvh.isLeaf(n) && bvh.leafSize(n) > 0) blocks += (bvh.leafSize(n) + width - 1) / width;
-        coordinates = width == 1 ? corners : new double[9 * width * blocks];
-        if (width > 1) Arrays.fill(coordinates, Double.NaN);
-        int next = 0;
+        firstBlock = new int[Math.max(1, corners.length / 9)];
+        int blocks = 0;
         for (int n = 0; n < bvh.nodeCount(); n++) {
             if (!bvh.isLeaf(n) || bvh.leafSize(n) == 0) continue;
-            int start = bvh.leafStart(n), count = bvh.leafSize(n);
-            firstBlock[start] = width == 1 ? start : next;   // at width 1, the corners' own positions
-            for (int i = 0; i < count && width > 1; i++) {
-                int block = next + i / width, lane = i % width, r = start + i;
-                for (int k = 0; k < 9; k++) coordinates[9 * width * block + width * k + lane] = corners[9 * r + k];
+            firstBlock[bvh.leafStart(n)] = width == 1 ? bvh.leafStart(n) : blocks;   // at width 1, the corners' own positions
+            blocks += (bvh.leafSize(n) + width - 1) / width;
+        }
+        coordinates = width == 1 ? corners : new double[9 * width * blocks];
+        if (width > 1) Arrays.fill(coordinates, Double.NaN);
+        for (int n = 0; n < bvh.nodeCount() && width > 1; n++) {
+            if (!bvh.isLeaf(n)) continue;
+            for (int i = 0, start = bvh.leafStart(n); i < bvh.leafSize(n); i++) {
+                int block = firstBlock[start] + i / width, lane = i % width;
+                for (int k = 0; k < 9; k++) coordinates[9 * width * block + width * k + lane] = corners[9 * (start + i) + k];
             }
-            next += (count + width - 1) / width;
         }
     }
 

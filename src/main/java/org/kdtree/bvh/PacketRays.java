@@ -7,27 +7,16 @@ import org.kdtree.geom.Tolerance;
 
 /**
  * What the packet loop ({@link PacketTraversal}) derives from a coherent {@link RayPacket} before
- * its first node, and each ray's state while it runs; its kernels ({@link PacketKernel}) read and
- * update it:
- * <ul>
- * <li>the watertight test's sheared frame, one for the whole packet (a packet whose rays'
- * largest direction components lie on different axes is not coherent), and at the packet's first
- * leaf ({@link #frame}) each ray's shear, as the single-ray loop computes it;</li>
- * <li>the near and far plane of each axis within a child's box, the same for every ray;</li>
- * <li>the packet's ranges of origins and inverse directions, for a test of a box against the
- * whole packet at once ({@link #packetEnters}: Wald, Boulos and Shirley's interval test);</li>
- * <li>for an any-hit packet whose rays all end, the boxes of their origins and of their ends, for
- * skipping a leaf's triangles that no ray's segment can reach ({@link #sidedTriangles});</li>
- * <li>per ray, where its box intervals start, its closest hit so far and its limit.</li>
- * </ul>
- * Not thread safe: one per traversal.
+ * its first node (the sheared frame, the planes, the ranges for a box test of the whole packet,
+ * the plane-culling boxes), and each ray's state while it runs (interval start, closest hit so
+ * far, limit); its kernels ({@link PacketKernel}) read and update it. Not thread safe: one per traversal.
  */
 final class PacketRays {
     private static final double SLACK = Tolerance.TRAVERSAL_SLACK;
     private static final double SHRINK = 1 - SLACK, GROW = 1 + SLACK;
     private static final int N = RayPacket.CAPACITY;
 
-    /** The packet's sheared frame: its axes, one for every ray. */
+    /** The watertight test's sheared frame: its axes, one for every ray (else the packet is not coherent). */
     int kx, ky, kz;
     /**
      * Per ray, once {@link #frame} is called: the shear's factors and the origin in its frame;
@@ -52,22 +41,17 @@ final class PacketRays {
     private boolean framed;
     /** From a child's first word in a node of {@link Bvh#pairs} ({@link WideNodes} at width 2): the near and far plane of each axis. */
     int nx, ny, nz, fx, fy, fz;
-    /** The packet's ranges of origins and inverse directions, and the least start of an interval. */
+    /** The packet's ranges of origins and inverse directions, and the least start of an interval ({@link #packetEnters}). */
     private double oxLo, oxHi, oyLo, oyHi, ozLo, ozHi, ixLo, ixHi, iyLo, iyHi, izLo, izHi, startLo;
-    /** The boxes of the rays' origins and of their ends (min x, y, z, max x, y, z), when {@link #planeCull}. */
+    /** The boxes of the rays' origins and of their ends (min x, y, z, max x, y, z), when {@link #planeCull} ({@link #sidedTriangles}). */
     private final double[] origins = new double[6], ends = new double[6];
     /** Whether {@link #sidedTriangles} may skip triangles: an any-hit packet whose rays all end. */
     boolean planeCull;
 
     /**
-     * Derives the packet's bounds, frame, planes and plane-culling boxes from its rays, and sets
-     * each ray's state, if they suit the packet loop: one sign per axis, no zero or non-finite
-     * component, finite origins, {@code 0 <= tMin <= tMax}, one sheared frame. Others are traced
-     * one ray at a time.
-     *
-     * @param p   the rays, at least one
-     * @param any whether the packet asks for any hit (plane culling is tried only then)
-     * @return whether the packet is coherent (if not, nothing else holds)
+     * Whether the packet suits the packet loop (one sign per axis, no zero or non-finite component,
+     * finite origins, {@code 0 <= tMin <= tMax}, one sheared frame); if so, derives its bounds,
+     * frame, planes and (for {@code any}) plane-culling boxes, and sets each ray's state.
      */
     boolean load(RayPacket p, boolean any) {
         int n = p.size();
@@ -108,12 +92,8 @@ final class PacketRays {
         ky = kx == 2 ? 0 : kx + 1;
         if (axis(p.dx, p.dy, p.dz, z)[0] < 0) { int t = kx; kx = ky; ky = t; }
         // Per axis a the two minima at 4 a, the two maxima at 4 a + 2.
-        nx = xs ? 2 : 0;
-        ny = ys ? 6 : 4;
-        nz = zs ? 10 : 8;
-        fx = 2 - nx;
-        fy = 10 - ny;
-        fz = 18 - nz;
+        nx = xs ? 2 : 0; ny = ys ? 6 : 4; nz = zs ? 10 : 8;
+        fx = 2 - nx; fy = 10 - ny; fz = 18 - nz;
         planeCull = any && segmentBoxes(p, n);
         return true;
     }
@@ -149,15 +129,11 @@ final class PacketRays {
     }
 
     /**
-     * Whether some ray of the packet may enter the box at {@code b} of {@code nd}: the smallest
+     * Whether some ray of the packet may enter the box at word {@code b} of {@code nd}, its
+     * intervals ending by {@code limitHi} (Wald, Boulos and Shirley's interval test): the smallest
      * near-plane distance and the largest far-plane distance over the ranges of origins and inverse
      * directions (the four corners of each product), compared as one ray's would be. Rounding is
      * monotonic, so a bound is never inside any ray's own value: false means no ray enters.
-     *
-     * @param nd      the nodes of {@link Bvh#pairs}
-     * @param b       where the child's box starts
-     * @param limitHi the largest end of a ray's interval, slack included
-     * @return whether the box may hold a hit of some ray
      */
     boolean packetEnters(int[] nd, int b, double limitHi) {
         double t0 = Math.max(startLo, low(Float.intBitsToFloat(nd[b + nx]), oxLo, oxHi, ixLo, ixHi));
@@ -169,14 +145,7 @@ final class PacketRays {
         return t0 * SHRINK <= t1 * GROW;
     }
 
-    /**
-     * {@return ray {@code i}'s entry distance into the box at {@code b} of {@code nd}}, for ordering
-     * a node's children
-     * @param p  the packet
-     * @param nd the nodes of {@link Bvh#pairs}
-     * @param b  where the child's box starts
-     * @param i  a ray's index
-     */
+    /** {@return ray {@code i}'s entry distance into the box at word {@code b} of {@code nd}}, for ordering a node's children */
     double entry(RayPacket p, int[] nd, int b, int i) {
         double t0 = (Float.intBitsToFloat(nd[b + nx]) - p.ox[i]) * p.ix[i];
         t0 = Math.max(t0, (Float.intBitsToFloat(nd[b + ny]) - p.oy[i]) * p.iy[i]);
@@ -223,12 +192,7 @@ final class PacketRays {
      * distances' size) far above the rounding of the plane's normal and of the watertight test.
      * Every ray's segment lies between its origin and its end, so none reaches the plane, and the
      * single ray's test of that triangle fails too: skipping it changes no answer. Only when
-     * {@link #planeCull}.
-     *
-     * @param c    the corners in leaf order
-     * @param from the leaf's first position
-     * @param end  one past its last
-     * @return bit {@code r - from} set for each triangle {@code r} that may be skipped
+     * {@link #planeCull}. Bit {@code r - from} is set for each triangle {@code r} that may be skipped.
      */
     long sidedTriangles(double[] c, int from, int end) {
         long bits = 0;
@@ -255,13 +219,7 @@ final class PacketRays {
         return lo > margin ? 1 : hi < -margin ? -1 : 0;
     }
 
-    /**
-     * Whether all of a leaf's triangles may be skipped ({@link #sidedTriangles}'s bits cover every one).
-     *
-     * @param skip the bits
-     * @param count the leaf's triangles
-     * @return whether no ray of the packet can hit any of them
-     */
+    /** {@return whether {@link #sidedTriangles}'s bits {@code skip} cover every one of a leaf's {@code count} triangles} */
     static boolean skipsAll(long skip, int count) {
         return count <= 64 && skip == -1L >>> (64 - count);
     }

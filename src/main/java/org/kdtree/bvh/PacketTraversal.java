@@ -10,21 +10,16 @@ import org.kdtree.geom.Ray;
 import org.kdtree.geom.Tolerance;
 
 /**
- * Packets of coherent rays through a 3-D {@link Bvh}'s binary tree in its wide layout at width 2 ({@link Bvh#pairs}: one 64-byte node with both children's boxes),
- * the one packet loop on both paths, after Overbeck, Ramamoorthi and Mark's ranged traversal
- * (2008) with an interval test for the whole packet (Wald, Boulos and Shirley 2007). The rays
- * still in play are a mask, one bit per ray; the packet kernel ({@link #KERNEL}) takes them a
- * group at a time (one ray in Java 17, a vector's lanes with the Vector API):
- * <ol>
- * <li>At each node, a child box is first tested for the whole packet at once
- * ({@link PacketRays#packetEnters}); if some ray may enter it, the groups are tested from each end
- * of the mask ({@link PacketKernel#enter}): the child gets the rays from the first group with a
- * ray that enters it to the last, the groups between kept whole, untested (a superset of the rays
- * that enter, never fewer).</li>
- * <li>The nearer child (by its first ray's entry distance) is taken next, the other saved with
- * its mask.</li>
- * <li>At a leaf, every group's rays test its box, then its triangles ({@link PacketKernel#hit}).</li>
- * </ol>
+ * Packets of coherent rays through a 3-D {@link Bvh}'s binary tree in its wide layout at width 2
+ * ({@link Bvh#pairs}: one 64-byte node with both children's boxes), the one packet loop on both
+ * paths, after Overbeck, Ramamoorthi and Mark's ranged traversal (2008) with an interval test for
+ * the whole packet (Wald, Boulos and Shirley 2007). The rays still in play are a mask, one bit per
+ * ray; the packet kernel ({@link #KERNEL}) takes them a group at a time (one ray in Java 17, a
+ * vector's lanes with the Vector API). At each node a child's box is tested for the whole packet
+ * ({@link PacketRays#packetEnters}), then, if some ray may enter it, a group at a time from each
+ * end of the mask ({@link PacketKernel#enter}); the nearer child (by its first ray's entry
+ * distance) is taken next, the other saved with its mask. At a leaf every group's rays test its
+ * box, then its triangles ({@link PacketKernel#hit}).
  * A ray enters every box it enters alone (bar those its closest hit so far rules out) and tests
  * their triangles with the same arithmetic, and of two hits equally close the lower leaf position
  * wins either way: each ray's hit is its single-ray hit, bit for bit. An any-hit ray leaves the
@@ -58,10 +53,7 @@ final class PacketTraversal implements PacketQuery {
     private final Ray ray = new Ray(3);
     private final OctantSplit split;
 
-    /**
-     * @param bvh    a hierarchy over a triangle mesh
-     * @param single its single-ray query
-     */
+    /** The packet loop of {@code bvh}, over a triangle mesh, with {@code single} for single rays. */
     PacketTraversal(Bvh bvh, RayQuery single) {
         if (N % KERNEL.lanes() != 0 || KERNEL.lanes() > 32) throw new IllegalStateException(KERNEL.lanes() + " lanes do not divide a packet of " + N);
         this.single = single;
@@ -69,9 +61,8 @@ final class PacketTraversal implements PacketQuery {
         prim = bvh.primitiveArray();
         corners = bvh.leafCorners();
         empty = bvh.primitiveCount() == 0;
-        int depth = bvh.maxDepth() + 2;
-        stackEntry = new int[depth];
-        stackMask = new long[depth];
+        stackEntry = new int[bvh.maxDepth() + 2];
+        stackMask = new long[stackEntry.length];
         split = new OctantSplit(this::traceOctant, single);
     }
 
@@ -88,11 +79,8 @@ final class PacketTraversal implements PacketQuery {
 
     /**
      * {@return false: renders stay one pixel at a time}, on both paths, as the kd-tree's do: the
-     * Cornell box through the block tracer and this loop took 1.26 times (Java 17) and 1.25 times
-     * (JDK 25's vector path) the render time of the recursive tracer over the single-ray loop at 4
-     * samples a pixel, 1.04 and 1.29 times at 32 (medians of 3 alternating rounds, quiet machine;
-     * docs/rendering.md). Set P, whose rays are all camera rays of whole tiles, is still traced in
-     * packets.
+     * Cornell box through the block tracer and this loop took 1.04 to 1.29 times the render time of
+     * the recursive tracer over the single-ray loop (docs/rendering.md). Set P is still traced in packets.
      */
     @Override public boolean repaysBlocks() { return false; }
 

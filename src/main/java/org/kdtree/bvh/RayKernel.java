@@ -15,20 +15,16 @@ interface RayKernel {
     /**
      * The node kernel: the children of the wide node at {@code base} in {@code words} ({@link
      * WideNodes}, {@code width} children, in three dimensions) that the ray enters within {@code
-     * [start, limit]}, with the traversal's slack ({@code t0 (1 - slack) <= t1 (1 + slack)}),
-     * appended in slot order: to {@code entries} what the loop goes on with (the child's wide node,
-     * or {@code -1 - word} for a leaf child: the word of its reference), to {@code t} where the ray
-     * enters it. The loop then reads only the children entered, with no second pass over the slots.
+     * [start, limit]} ({@code start >= 0}, {@code limit} with the slack), with the traversal's slack
+     * ({@code t0 (1 - slack) <= t1 (1 + slack)}), appended in slot order: to {@code entries} what the
+     * loop goes on with (the child's wide node, or {@code -1 - word} for a leaf child: the word of
+     * its reference), to {@code t} where the ray enters it (and up to {@link #SPARE} entries past the
+     * last may be written). The loop then reads only the children entered, with no second pass
+     * over the slots. {@code nx} is where a node's near planes on x lie within it: its minima (0) if
+     * the ray runs up x, else its maxima ({@code width}); {@code fx} its far planes, the others; the
+     * same on y from {@code 2 width} and on z from {@code 4 width}. The ray's inverse direction
+     * ({@code ix, iy, iz}) is finite: no zero component.
      *
-     * @param nx    where a node's near planes on x lie within it: its minima (0) if the ray runs up x, else its maxima ({@code width})
-     * @param fx    where its far planes on x lie: the others
-     * @param ny    likewise on y ({@code 2 width} or {@code 3 width})
-     * @param nz    and on z ({@code 4 width} or {@code 5 width})
-     * @param ox    the ray's origin, x
-     * @param ix    its inverse direction, x (finite: no zero component)
-     * @param start where intervals start (at least 0)
-     * @param limit where they end, slack included
-     * @param t     receives the entry distances; up to {@link #SPARE} entries past the last may be written too
      * @return how many children the ray enters
      */
     int enter(int[] words, int base, int width, int nx, int fx, int ny, int fy, int nz, int fz, double ox, double oy, double oz,

@@ -54,17 +54,11 @@ final class WideNodes {
                 words[base + 2 * width * a + i] = Float.floatToRawIntBits(unused ? Float.POSITIVE_INFINITY : down(bvh.min(kids[i], a)));
                 words[base + 2 * width * a + width + i] = Float.floatToRawIntBits(unused ? Float.NEGATIVE_INFINITY : up(bvh.max(kids[i], a)));
             }
-            int ref = base + refs + i, count = ref + width;
-            if (unused) {
-                words[count] = -1;
-            } else if (bvh.isLeaf(kids[i])) {
-                words[ref] = bvh.leafStart(kids[i]);
-                words[count] = bvh.leafSize(kids[i]);
-            } else {
-                int child = add(kids[i]);     // first: it may grow the array, which words[ref] = add(..) would have read before
-                words[ref] = child;
-                words[count] = 0;
-            }
+            boolean leaf = unused || bvh.isLeaf(kids[i]);
+            int child = leaf ? 0 : add(kids[i]);     // first: it may grow the array, which words[ref] = add(..) would have read before
+            int ref = base + refs + i;
+            words[ref] = unused ? 0 : leaf ? bvh.leafStart(kids[i]) : child;
+            words[ref + width] = unused ? -1 : leaf ? bvh.leafSize(kids[i]) : 0;
         }
         return id;
     }
@@ -116,7 +110,5 @@ final class WideNodes {
 
     int nodeCount() { return nodes; }
 
-    long memoryBytes() {
-        return 4L * words.length;
-    }
+    long memoryBytes() { return 4L * words.length; }
 }

@@ -14,10 +14,9 @@ import org.kdtree.geom.Tolerance;
  * children's boxes with the ray's near and far planes chosen once per ray; the children entered
  * are pushed farthest first so that the nearest is taken next; a saved entry is dropped when it
  * starts beyond the closest hit; per leaf the leaf kernel ({@link RayKernel#hit}) runs the
- * watertight triangle test. The kernels are the Java 17 ones or the Vector API ones, chosen once
- * ({@link #KERNEL}); they give the same hits, bit for bit. Box intervals are widened by
- * {@link Tolerance#TRAVERSAL_SLACK}, as in every traversal of the project, here as factors on a
- * non-negative interval. Allocation-free per ray; not thread safe: one per thread.
+ * watertight triangle test. Box intervals are widened by {@link Tolerance#TRAVERSAL_SLACK}, as in
+ * every traversal of the project, here as factors on a non-negative interval. Allocation-free per
+ * ray; not thread safe: one per thread.
  */
 final class WideTraversal implements RayQuery {
     private static final double SLACK = Tolerance.TRAVERSAL_SLACK;
