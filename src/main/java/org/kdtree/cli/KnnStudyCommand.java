@@ -75,11 +75,8 @@ final class KnnStudyCommand implements Callable<Integer> {
             description = "Sweep: the exact search against brute force on generated data (uniform unless --generate says) at each dimension.")
     List<Integer> dimensions;
 
-    @Option(paramLabel = "FILE", names = "--csv", description = "CSV output file (default: knn-study-DATA.csv).")
-    Path csv;
-
-    @Option(paramLabel = "FILE", names = "--chart", description = "Chart file, .png or .svg (default: knn-study-DATA.png).")
-    Path chart;
+    @Mixin
+    StudyOutputs outputs = new StudyOutputs("DATA");
 
     @Mixin
     ProgressOption progress;
@@ -117,17 +114,7 @@ final class KnnStudyCommand implements Callable<Integer> {
             throw new IllegalArgumentException("give POINTS and --queries, or --generate, not both");
         if (dimensions == null && generate == null && (pointsFile == null || queriesFile == null))
             throw new IllegalArgumentException("give POINTS and --queries FILE, or --generate uniform|clustered");
-        CommandFiles.requireWritable("--csv", csvFile());
-        CommandFiles.requireWritable("--chart", chartFile());
-        requireNotInput("--csv", csvFile());
-        requireNotInput("--chart", chartFile());
-        ChartFile.requireFormat("--chart", chartFile());
-    }
-
-    /** Refuses an output that is one of the study's input files. */
-    private void requireNotInput(String option, Path out) {
-        CommandFiles.requireNotInput(option, out, "POINTS", pointsFile);
-        CommandFiles.requireNotInput(option, out, "--queries", queriesFile);
+        outputs.check(dataName(), "POINTS", pointsFile, "--queries", queriesFile);
     }
 
     /** The generated set's name ({@link Points#named}), lower case; uniform unless {@code --generate} says. */
@@ -145,11 +132,11 @@ final class KnnStudyCommand implements Callable<Integer> {
     }
 
     private Path csvFile() {
-        return csv != null ? csv : Path.of("knn-study-" + dataName() + ".csv");
+        return outputs.csv(dataName());
     }
 
     private Path chartFile() {
-        return chart != null ? chart : Path.of("knn-study-" + dataName() + ".png");
+        return outputs.chart(dataName());
     }
 
     private int study(PointTree tree, PointsKd queries, KdTreeBuilder b) throws Exception {
