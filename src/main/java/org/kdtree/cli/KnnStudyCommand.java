@@ -6,7 +6,6 @@ import java.util.List;
 import java.util.Locale;
 import java.util.concurrent.Callable;
 import org.kdtree.generate.Points;
-import org.kdtree.io.PrimitivesReader;
 import org.kdtree.kdtree.KdTreeBuilder;
 import org.kdtree.limits.Limits;
 import org.kdtree.points.PointTree;
@@ -85,13 +84,9 @@ final class KnnStudyCommand implements Callable<Integer> {
         checkOptions();
         KdTreeBuilder b = options.spec().create();
         if (dimensions != null) return sweep(b);
-        PointsKd points = generate != null ? Points.named(kind(), n, dimension, seed)
-                : PrimitivesReader.readPoints(CommandFiles.requireNotFolder("POINTS", pointsFile));
-        PointsKd queries = generate != null ? Points.namedQueries(kind(), queryCount, dimension, seed)
-                : PrimitivesReader.readPoints(CommandFiles.requireNotFolder("--queries", queriesFile));
-        if (queries.dimension() != points.dimension())
-            throw new IllegalArgumentException(queriesFile + ": the queries are " + queries.dimension() + "-D, the points "
-                    + points.dimension() + "-D (" + pointsFile + ")");
+        PointsKd points = generate != null ? Points.named(kind(), n, dimension, seed) : CommandFiles.readPoints(pointsFile);
+        PointsKd queries = generate != null ? Points.namedQueries(kind(), queryCount, dimension, seed)   // of the points' dimension
+                : CommandFiles.readQueries(queriesFile, points, pointsFile);
         Limits.DIMENSION.check("the points' dimension", points.dimension());
         return study(PointTree.build(points, b), queries, b);
     }
