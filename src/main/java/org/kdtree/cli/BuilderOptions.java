@@ -6,7 +6,6 @@ import java.util.LinkedHashMap;
 import java.util.List;
 import java.util.Map;
 import java.util.stream.Collectors;
-import java.util.stream.Stream;
 import org.kdtree.accel.Setting;
 import org.kdtree.accel.SharedSettings;
 import org.kdtree.bvh.BvhBuilder;
@@ -14,9 +13,7 @@ import org.kdtree.limits.Limit;
 import org.kdtree.spec.BuilderSpec;
 import org.kdtree.spec.Builders;
 import picocli.CommandLine.Command;
-import picocli.CommandLine.IModelTransformer;
 import picocli.CommandLine.Model.CommandSpec;
-import picocli.CommandLine.Model.ISetter;
 import picocli.CommandLine.Model.OptionSpec;
 
 /**
@@ -30,8 +27,8 @@ import picocli.CommandLine.Model.OptionSpec;
  * <p>A command declares {@code @Mixin BuilderOptions options = new BuilderOptions("sah")} with
  * its own default builder; picocli's model transformer adds the options to the command.
  */
-@Command(modelTransformer = BuilderOptions.AddOptions.class)
-final class BuilderOptions {
+@Command(modelTransformer = AddedOptions.Transformer.class)
+final class BuilderOptions implements AddedOptions {
     private final String defaultBuilder;
     private final String role;
     private boolean kdTreesOnly;
@@ -150,77 +147,58 @@ final class BuilderOptions {
     }
 
     /** Adds {@code -b} and one option per setting to the command that mixes these options in. */
-    public static final class AddOptions implements IModelTransformer {
-        @Override public CommandSpec transform(CommandSpec command) {
-            BuilderOptions o = mixedIn(command).filter(BuilderOptions.class::isInstance).map(BuilderOptions.class::cast)
-                    .findFirst().orElseThrow();
-            String which = o.kdTreesOnly ? "Builder: sah, median-plane, object-median, sliding-midpoint or a registered name "
-                    + "(a kd-tree builder: this command does not take bvh) "
-                    : "Builder: sah, median-plane, object-median, sliding-midpoint, a registered name, or bvh "
-                    + "(a bounding volume hierarchy: ray queries and the workbench) ";
-            command.addOption(OptionSpec.builder("-b", "--builder").type(String.class).paramLabel("NAME")
-                    .description(which + (o.role != null ? "(" + o.role + ")." : "(default: " + o.defaultBuilder + ")."))
-                    .setter(setter(v -> o.builder = (String) v)).build());
-            for (Setting<?> s : BuilderSpec.allSettingRows())
-                if (!o.kdTreesOnly || BuilderSpec.takenByKdTrees(s)) command.addOption(option(s, o));
-            return command;
-        }
+    @Override public void addTo(CommandSpec command) {
+        String which = kdTreesOnly ? "Builder: sah, median-plane, object-median, sliding-midpoint or a registered name "
+                + "(a kd-tree builder: this command does not take bvh) "
+                : "Builder: sah, median-plane, object-median, sliding-midpoint, a registered name, or bvh "
+                + "(a bounding volume hierarchy: ray queries and the workbench) ";
+        command.addOption(OptionSpec.builder("-b", "--builder").type(String.class).paramLabel("NAME")
+                .description(which + (role != null ? "(" + role + ")." : "(default: " + defaultBuilder + ")."))
+                .setter(AddedOptions.setter(v -> builder = (String) v)).build());
+        for (Setting<?> s : BuilderSpec.allSettingRows())
+            if (!kdTreesOnly || BuilderSpec.takenByKdTrees(s)) command.addOption(option(s));
+    }
 
-        /** The mixins of {@code spec} and theirs: a command may take these options through a mixin of mixins. */
-        private static Stream<Object> mixedIn(CommandSpec spec) {
-            return spec.mixins().values().stream().flatMap(m -> Stream.concat(Stream.of(m.userObject()), mixedIn(m)));
-        }
+    /** The option of one setting: a switch for a boolean (it turns the default over), else an option with a value. */
+    private OptionSpec option(Setting<?> s) {
+        boolean flag = s.type() == Boolean.class;
+        String help = s == SharedSettings.THREADS && threadsHelp != null ? description(s, threadsHelp) : description(s);
+        OptionSpec.Builder b = OptionSpec.builder(s.option()).description(help);
+        if (flag) b.type(boolean.class).arity("0");
+        else b.type(s.type()).paramLabel(label(s));
+        return b.setter(AddedOptions.setter(v -> {
+            if (v == null || Boolean.FALSE.equals(v) && flag) given.remove(s);
+            else given.put(s, flag ? !(Boolean) s.defaultValue() : v);
+        })).build();
+    }
 
-        /** The option of one setting: a switch for a boolean (it turns the default over), else an option with a value. */
-        private static OptionSpec option(Setting<?> s, BuilderOptions o) {
-            boolean flag = s.type() == Boolean.class;
-            String help = s == SharedSettings.THREADS && o.threadsHelp != null ? description(s, o.threadsHelp) : description(s);
-            OptionSpec.Builder b = OptionSpec.builder(s.option()).description(help);
-            if (flag) b.type(boolean.class).arity("0");
-            else b.type(s.type()).paramLabel(label(s));
-            return b.setter(setter(v -> {
-                if (v == null || Boolean.FALSE.equals(v) && flag) o.given.remove(s);
-                else o.given.put(s, flag ? !(Boolean) s.defaultValue() : v);
-            })).build();
-        }
+    /** "lambda: the SAH's weight of ... (1 = no bonus). 0.01..1, default 0.8; the sah builder only." */
+    static String description(Setting<?> s) {
+        return description(s, s.help());
+    }
 
-        /** "lambda: the SAH's weight of ... (1 = no bonus). 0.01..1, default 0.8; the sah builder only." */
-        static String description(Setting<?> s) {
-            return description(s, s.help());
-        }
+    /** The description of {@code s} with {@code help} for its first part. */
+    static String description(Setting<?> s, String help) {
+        String only = BuilderSpec.appliesToEvery(s) ? "." : "; " + BuilderSpec.ownerName(s) + " only.";
+        if (s.type() == Boolean.class)
+            return "Turn " + s.name() + " " + s.format(!(Boolean) s.defaultValue()) + " (default " + s.format(s.defaultValue())
+                    + "): " + help + only;
+        List<String> facts = new ArrayList<>();
+        if (s.limit() != null) facts.add(range(s.limit()));
+        if (s.type().isEnum()) facts.add("one of " + Arrays.stream(s.type().getEnumConstants()).map(Object::toString)
+                .collect(Collectors.joining(", ")));
+        facts.add("default " + s.format(s.defaultValue()));
+        String f = String.join(", ", facts);
+        return s.name() + ": " + help + ". " + Character.toUpperCase(f.charAt(0)) + f.substring(1) + only;
+    }
 
-        /** The description of {@code s} with {@code help} for its first part. */
-        static String description(Setting<?> s, String help) {
-            String only = BuilderSpec.appliesToEvery(s) ? "." : "; " + BuilderSpec.ownerName(s) + " only.";
-            if (s.type() == Boolean.class)
-                return "Turn " + s.name() + " " + s.format(!(Boolean) s.defaultValue()) + " (default " + s.format(s.defaultValue())
-                        + "): " + help + only;
-            List<String> facts = new ArrayList<>();
-            if (s.limit() != null) facts.add(range(s.limit()));
-            if (s.type().isEnum()) facts.add("one of " + Arrays.stream(s.type().getEnumConstants()).map(Object::toString)
-                    .collect(Collectors.joining(", ")));
-            facts.add("default " + s.format(s.defaultValue()));
-            String f = String.join(", ", facts);
-            return s.name() + ": " + help + ". " + Character.toUpperCase(f.charAt(0)) + f.substring(1) + only;
-        }
+    /** "1 to 256", not 1..256, which picocli may break after the dots. */
+    private static String range(Limit l) {
+        return Limit.format(l.min()) + " to " + Limit.format(l.max()) + (l.note().isEmpty() ? "" : " (" + l.note() + ")");
+    }
 
-        /** "1 to 256", not 1..256, which picocli may break after the dots. */
-        private static String range(Limit l) {
-            return Limit.format(l.min()) + " to " + Limit.format(l.max()) + (l.note().isEmpty() ? "" : " (" + l.note() + ")");
-        }
-
-        /** The option's value as the usage line shows it: N, a whole number; X, a real; NAME, a choice. */
-        private static String label(Setting<?> s) {
-            return s.type() == Integer.class ? "N" : s.type() == Double.class ? "X" : "NAME";
-        }
-
-        private static ISetter setter(java.util.function.Consumer<Object> set) {
-            return new ISetter() {
-                @Override public <T> T set(T value) {
-                    set.accept(value);
-                    return null;
-                }
-            };
-        }
+    /** The option's value as the usage line shows it: N, a whole number; X, a real; NAME, a choice. */
+    private static String label(Setting<?> s) {
+        return s.type() == Integer.class ? "N" : s.type() == Double.class ? "X" : "NAME";
     }
 }

@@ -7,6 +7,7 @@ import org.kdtree.files.AtomicFile;
 import org.kdtree.io.BundledScenes;
 import org.kdtree.io.FileKind;
 import org.kdtree.io.PrimitivesReader;
+import org.kdtree.shape.PointsKd;
 import org.kdtree.shape.TriangleMesh;
 
 /** The files the commands read and write, checked before any work so that a mistake costs one line, not a run. */
@@ -46,6 +47,20 @@ final class CommandFiles {
         TriangleMesh m = PrimitivesReader.readMesh(mesh);
         if (m.size() == 0) throw new IllegalArgumentException(mesh + ": the mesh has no triangles (no 'f' lines)");
         return m;
+    }
+
+    /** The points of a k-NN command's POINTS file (CSV). */
+    static PointsKd readPoints(Path pointsFile) throws IOException {
+        return PrimitivesReader.readPoints(requireNotFolder("POINTS", pointsFile));
+    }
+
+    /** The query points of its {@code --queries} file (CSV), refused unless of the points' dimension. */
+    static PointsKd readQueries(Path queriesFile, PointsKd points, Path pointsFile) throws IOException {
+        PointsKd queries = PrimitivesReader.readPoints(requireNotFolder("--queries", queriesFile));
+        if (queries.dimension() != points.dimension())
+            throw new IllegalArgumentException(queriesFile + ": the queries are " + queries.dimension() + "-D, the points "
+                    + points.dimension() + "-D (" + pointsFile + ")");
+        return queries;
     }
 
     /**

@@ -5,7 +5,6 @@ import java.nio.file.Path;
 import java.util.Locale;
 import java.util.concurrent.Callable;
 import org.kdtree.files.AtomicFile;
-import org.kdtree.io.PrimitivesReader;
 import org.kdtree.kdtree.KdTree;
 import org.kdtree.kdtree.KdTreeBuilder;
 import org.kdtree.spec.Structures;
@@ -65,11 +64,7 @@ final class KnnCommand implements Callable<Integer> {
         CommandFiles.requireWritable("--out", outFile);
         CommandFiles.requireNotInput("--out", outFile, "POINTS", pointsFile);
         CommandFiles.requireNotInput("--out", outFile, "--queries", queriesFile);
-        PointsKd points = PrimitivesReader.readPoints(CommandFiles.requireNotFolder("POINTS", pointsFile));
-        PointsKd queries = PrimitivesReader.readPoints(CommandFiles.requireNotFolder("--queries", queriesFile));
-        if (queries.dimension() != points.dimension())
-            throw new IllegalArgumentException(queriesFile + ": the queries are " + queries.dimension() + "-D, the points "
-                    + points.dimension() + "-D (" + pointsFile + ")");
+        PointsKd points = CommandFiles.readPoints(pointsFile), queries = CommandFiles.readQueries(queriesFile, points, pointsFile);
         long t0 = System.nanoTime();
         TreeOptions.Obtained made = trees.obtain(options, points, () -> PointTree.build(points, b).tree());
         KdTree kd = Structures.match(made.structure(), t -> t, h -> {

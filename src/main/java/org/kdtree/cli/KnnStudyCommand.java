@@ -6,7 +6,6 @@ import java.util.List;
 import java.util.Locale;
 import java.util.concurrent.Callable;
 import org.kdtree.generate.Points;
-import org.kdtree.io.PrimitivesReader;
 import org.kdtree.kdtree.KdTreeBuilder;
 import org.kdtree.limits.Limits;
 import org.kdtree.points.PointTree;
@@ -75,11 +74,8 @@ final class KnnStudyCommand implements Callable<Integer> {
             description = "Sweep: the exact search against brute force on generated data (uniform unless --generate says) at each dimension.")
     List<Integer> dimensions;
 
-    @Option(paramLabel = "FILE", names = "--csv", description = "CSV output file (default: knn-study-DATA.csv).")
-    Path csv;
-
-    @Option(paramLabel = "FILE", names = "--chart", description = "Chart file, .png or .svg (default: knn-study-DATA.png).")
-    Path chart;
+    @Mixin
+    StudyOutputs outputs = new StudyOutputs("DATA");
 
     @Mixin
     ProgressOption progress;
@@ -88,13 +84,9 @@ final class KnnStudyCommand implements Callable<Integer> {
         checkOptions();
         KdTreeBuilder b = options.spec().create();
         if (dimensions != null) return sweep(b);
-        PointsKd points = generate != null ? Points.named(kind(), n, dimension, seed)
-                : PrimitivesReader.readPoints(CommandFiles.requireNotFolder("POINTS", pointsFile));
-        PointsKd queries = generate != null ? Points.namedQueries(kind(), queryCount, dimension, seed)
-                : PrimitivesReader.readPoints(CommandFiles.requireNotFolder("--queries", queriesFile));
-        if (queries.dimension() != points.dimension())
-            throw new IllegalArgumentException(queriesFile + ": the queries are " + queries.dimension() + "-D, the points "
-                    + points.dimension() + "-D (" + pointsFile + ")");
+        PointsKd points = generate != null ? Points.named(kind(), n, dimension, seed) : CommandFiles.readPoints(pointsFile);
+        PointsKd queries = generate != null ? Points.namedQueries(kind(), queryCount, dimension, seed)   // of the points' dimension
+                : CommandFiles.readQueries(queriesFile, points, pointsFile);
         Limits.DIMENSION.check("the points' dimension", points.dimension());
         return study(PointTree.build(points, b), queries, b);
     }
@@ -117,17 +109,7 @@ final class KnnStudyCommand implements Callable<Integer> {
             throw new IllegalArgumentException("give POINTS and --queries, or --generate, not both");
         if (dimensions == null && generate == null && (pointsFile == null || queriesFile == null))
             throw new IllegalArgumentException("give POINTS and --queries FILE, or --generate uniform|clustered");
-        CommandFiles.requireWritable("--csv", csvFile());
-        CommandFiles.requireWritable("--chart", chartFile());
-        requireNotInput("--csv", csvFile());
-        requireNotInput("--chart", chartFile());
-        ChartFile.requireFormat("--chart", chartFile());
-    }
-
-    /** Refuses an output that is one of the study's input files. */
-    private void requireNotInput(String option, Path out) {
-        CommandFiles.requireNotInput(option, out, "POINTS", pointsFile);
-        CommandFiles.requireNotInput(option, out, "--queries", queriesFile);
+        outputs.check(dataName(), "POINTS", pointsFile, "--queries", queriesFile);
     }
 
     /** The generated set's name ({@link Points#named}), lower case; uniform unless {@code --generate} says. */
@@ -145,11 +127,11 @@ final class KnnStudyCommand implements Callable<Integer> {
     }
 
     private Path csvFile() {
-        return csv != null ? csv : Path.of("knn-study-" + dataName() + ".csv");
+        return outputs.csv(dataName());
     }
 
     private Path chartFile() {
-        return chart != null ? chart : Path.of("knn-study-" + dataName() + ".png");
+        return outputs.chart(dataName());
     }
 
     private int study(PointTree tree, PointsKd queries, KdTreeBuilder b) throws Exception {

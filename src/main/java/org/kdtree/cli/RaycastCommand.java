@@ -13,8 +13,6 @@ import org.kdtree.accel.RayQuery;
 import org.kdtree.accel.TreeStats;
 import org.kdtree.accel.TriangleIntersector;
 import org.kdtree.files.AtomicFile;
-import org.kdtree.generate.MeshGrid;
-import org.kdtree.limits.Limits;
 import org.kdtree.measure.RayBatch;
 import org.kdtree.measure.RaySet;
 import org.kdtree.measure.Timing;
@@ -51,9 +49,8 @@ final class RaycastCommand implements Callable<Integer> {
     @Mixin
     BuilderOptions options = new BuilderOptions("sah").threadsHelp("threads building the tree and tracing each ray set (the same tree and hits at any count)");
 
-    @Option(names = "--grid", defaultValue = "1", paramLabel = "N",
-            description = "Repeat the mesh in an N x N grid on the x-z plane first (the SPEC's scaling scene uses 4).")
-    int grid;
+    @Mixin
+    GridOption grid = new GridOption("Repeat the mesh in an N x N grid on the x-z plane first (the SPEC's scaling scene uses 4).");
 
     /** The builder's threads (--threads), which trace each ray set too. */
     private int threads;
@@ -78,7 +75,7 @@ final class RaycastCommand implements Callable<Integer> {
         if ((raysFile == null) != (hitsFile == null))
             throw new IllegalArgumentException("--rays and --hits go together");
         timed.check();
-        Limits.GRID.check("--grid", grid);
+        grid.check();
         BuilderSpec spec = options.spec();
         if (hitsFile != null && !hitsFile.toString().equals("-")) {
             CommandFiles.requireNotInput("--hits", hitsFile, "MESH", CommandFiles.meshFile(mesh));
@@ -89,7 +86,7 @@ final class RaycastCommand implements Callable<Integer> {
             throw new java.io.IOException("--rays " + raysFile + (Files.isDirectory(raysFile) ? ": is a folder, not a file" : ": no such file"));
         treeJob.trees.check("MESH", CommandFiles.meshFile(mesh), "--rays", raysFile, "--hits", hitsFile);
         if (!treeJob.trees.loads()) spec.describe();        // refuses settings the builder does not take, before the mesh is read
-        TriangleMesh scene = MeshGrid.grid(CommandFiles.readMesh(mesh, "raycast"), grid);
+        TriangleMesh scene = grid.of(CommandFiles.readMesh(mesh, "raycast"));
         threads = spec.value(org.kdtree.accel.SharedSettings.THREADS);
         if (raysFile != null) return traceFile(scene, spec);
         return benchmark(scene, spec);
@@ -133,7 +130,7 @@ final class RaycastCommand implements Callable<Integer> {
         treeJob.trees.save(tree, builtWith, scene);
         TreeStats st = tree.stats();
         String meshName = CommandFiles.meshFile(mesh).getFileName().toString().replaceFirst("\\.[oO][bB][jJ]$", "")
-                + (grid > 1 ? "-grid" + grid : "");
+                + grid.suffix();
         System.err.println(COLUMNS);   // the SPEC line stays alone on stdout, for scripts; its columns named beside it
         System.out.println(String.format(Locale.ROOT, "kdtree-%s %s %d %.1f %d %d %d %d %.6f %.3f %d %.6f %.3f",
                 builtWith.builder(), meshName, scene.size(), build.millis(), st.nodes(), st.leaves(), st.maxDepth(),

@@ -5,18 +5,14 @@ import java.util.Locale;
 import java.util.concurrent.Callable;
 import java.util.function.Supplier;
 import org.kdtree.accel.AccelerationStructure;
-import org.kdtree.generate.MeshGrid;
 import org.kdtree.io.BundledScenes;
 import org.kdtree.io.PrimitivesReader;
-import org.kdtree.limits.Limits;
 import org.kdtree.measure.Timing;
 import org.kdtree.render.RenderJob;
 import org.kdtree.shape.Primitives;
-import org.kdtree.shape.TriangleMesh;
 import org.kdtree.spec.BuilderSpec;
 import picocli.CommandLine.Command;
 import picocli.CommandLine.Mixin;
-import picocli.CommandLine.Option;
 import picocli.CommandLine.Parameters;
 
 /** {@code stats SCENE}: build a kd-tree or a bounding volume hierarchy and print its statistics and build time. */
@@ -34,24 +30,19 @@ final class StatsCommand implements Callable<Integer> {
     @Mixin
     TimedRunsOptions timed = new TimedRunsOptions(1, 0);
 
-    @Option(names = "--grid", defaultValue = "1", paramLabel = "N",
-            description = "OBJ only: repeat the mesh in an N x N grid on the x-z plane first (the SPEC's scaling scene uses 4).")
-    int grid;
+    @Mixin
+    GridOption grid = new GridOption("OBJ only: repeat the mesh in an N x N grid on the x-z plane first (the SPEC's scaling scene uses 4).");
 
     @Mixin
     TreeJob treeJob = new TreeJob();
 
     @Override public Integer call() throws Exception {
         timed.check();
-        Limits.GRID.check("--grid", grid);
+        grid.check();
         BuilderSpec spec = options.spec();
         Path sceneFile = CommandFiles.requireNotFolder("SCENE", BundledScenes.resolve(scene));
         treeJob.trees.check("SCENE", sceneFile);
-        Primitives prims = PrimitivesReader.read(sceneFile);
-        if (grid != 1) {
-            if (!(prims instanceof TriangleMesh mesh)) throw new IllegalArgumentException("--grid applies to OBJ meshes only");
-            prims = MeshGrid.grid(mesh, grid);
-        }
+        Primitives prims = grid.of(PrimitivesReader.read(sceneFile));
         if (!treeJob.trees.loads()) spec.describe();       // refuses settings the builder does not take, before building
         Supplier<TreeOptions.Obtained> obtain = treeJob.obtaining(options, spec, prims);
         Timing.Timed<TreeOptions.Obtained> build;

@@ -6,7 +6,6 @@ import java.util.List;
 import java.util.Locale;
 import java.util.concurrent.Callable;
 import org.kdtree.accel.SharedSettings;
-import org.kdtree.generate.MeshGrid;
 import org.kdtree.kdtree.BuilderFault;
 import org.kdtree.limits.Limits;
 import org.kdtree.measure.RaySet;
@@ -32,8 +31,8 @@ final class TradeoffCommand implements Callable<Integer> {
     @Parameters(paramLabel = "MESH", description = "An OBJ mesh, or the bundled one: scenes:clustered-spheres.")
     Path mesh;
 
-    @Option(paramLabel = "N", names = "--grid", defaultValue = "1", description = "Repeat the mesh in a G x G grid (4: the spec's scaling scene).")
-    int grid;
+    @Mixin
+    GridOption grid = new GridOption("Repeat the mesh in a G x G grid (4: the spec's scaling scene).");
 
     @Option(paramLabel = "P|R", names = "--rays", defaultValue = "R", description = "Ray workload: P (primary, spec), R (random, spec) (default: ${DEFAULT-VALUE}).")
     String rays;
@@ -58,11 +57,8 @@ final class TradeoffCommand implements Callable<Integer> {
     @Option(paramLabel = "NAME,...", names = "--variants", split = ",", description = "Only these variants (names as listed by the full run).")
     List<String> only;
 
-    @Option(paramLabel = "FILE", names = "--csv", description = "CSV output file (default: tradeoff-MESHNAME.csv).")
-    Path csv;
-
-    @Option(paramLabel = "FILE", names = "--chart", description = "Chart file, .png or .svg (default: tradeoff-MESHNAME.png).")
-    Path chart;
+    @Mixin
+    StudyOutputs outputs = new StudyOutputs("MESHNAME");
 
     @Option(paramLabel = "X", names = "--chart-rpt", defaultValue = "10", description = "Rays per triangle for the chart's trace time (default: ${DEFAULT-VALUE}).")
     double chartRaysPerTriangle;
@@ -95,22 +91,16 @@ final class TradeoffCommand implements Callable<Integer> {
     }
 
     @Override public Integer call() throws Exception {
-        Limits.GRID.check("--grid", grid);
+        grid.check();
         Limits.RAY_COUNT.check("--ray-count", rayCount);
         Limits.RAY_COUNT.check("--counted-rays", countedRays);
         Limits.RUNS.check("--runs", runs);
         Limits.RAYS_PER_TRIANGLE.check("--chart-rpt", chartRaysPerTriangle);
-        String base = CommandFiles.meshFile(mesh).getFileName().toString().replaceFirst("\\.[^.]*$", "") + (grid > 1 ? "-grid" + grid : "");
-        Path csvOut = csv != null ? csv : Path.of("tradeoff-" + base + ".csv");
-        Path pngOut = chart != null ? chart : Path.of("tradeoff-" + base + ".png");
-        CommandFiles.requireWritable("--csv", csvOut);
-        CommandFiles.requireWritable("--chart", pngOut);
-        CommandFiles.requireNotInput("--csv", csvOut, "MESH", CommandFiles.meshFile(mesh));
-        CommandFiles.requireNotInput("--chart", pngOut, "MESH", CommandFiles.meshFile(mesh));
-        ChartFile.requireFormat("--chart", pngOut);
+        String base = CommandFiles.meshFile(mesh).getFileName().toString().replaceFirst("\\.[^.]*$", "") + grid.suffix();
+        outputs.check(base, "MESH", CommandFiles.meshFile(mesh));
+        Path csvOut = outputs.csv(base), pngOut = outputs.chart(base);
         List<Variant> variants = variants();   // a name mistyped, or a setting no variant takes: before the mesh is read
-        TriangleMesh m = CommandFiles.readMesh(mesh, "tradeoff");
-        if (grid > 1) m = MeshGrid.grid(m, grid);
+        TriangleMesh m = grid.of(CommandFiles.readMesh(mesh, "tradeoff"));
         RaySet set = switch (rays.toUpperCase(Locale.ROOT)) {
             case "P" -> RaySet.primary(m, Math.max(1, (int) Math.round(Math.sqrt(rayCount))));
             case "R" -> RaySet.random(m, rayCount);

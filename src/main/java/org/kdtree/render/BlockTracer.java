@@ -1,7 +1,5 @@
 package org.kdtree.render;
 
-import static org.kdtree.scene.Vectors.set;
-
 import java.util.Arrays;
 import org.kdtree.accel.Hit;
 import org.kdtree.accel.PacketQuery;
@@ -33,7 +31,7 @@ final class BlockTracer {
     private final WhittedTracer depthFirst;
     private final RayCounts counts;
     private final PixelSampler sampler;
-    private final double[] eye, cameraDir = new double[3], dir = new double[3], colour = new double[3];
+    private final double[] cameraDir = new double[3], dir = new double[3], colour = new double[3];
     private final Hit hit = new Hit();
     private final Shading shading = new Shading(new LightSamples());
     private final RayTree tree = new RayTree();
@@ -68,8 +66,7 @@ final class BlockTracer {
         this.shader = shader;
         this.depthFirst = depthFirst;
         this.counts = counts;
-        this.sampler = new PixelSampler(scene.seed());
-        this.eye = set(scene.camera().eye(), new double[3]);
+        this.sampler = new PixelSampler(scene);
         int slots = shader.slots();
         this.maxNodes = Math.max(SIZE, shadowBudget / Math.max(1, slots));
         shadows = new Shadows(query, slots);
@@ -97,8 +94,8 @@ final class BlockTracer {
             tree.clear();
             for (int j = 0; j < pixels; j++) {
                 int i = order[j];
-                sampler.startCameraSample(scene.camera(), x0 + i % w, y0 + i / w, si, n, cameraDir);
-                add(i, 1, 1, eye, cameraDir);
+                sampler.startCameraSample(x0 + i % w, y0 + i / w, si, n, cameraDir);
+                add(i, 1, 1, sampler.eye(), cameraDir);
             }
             for (int from = 0, to; from < tree.size(); from = to) {      // level by level: each level's rays as packets, then its hits shaded
                 to = tree.size();

@@ -1,6 +1,9 @@
 package org.kdtree.render;
 
+import static org.kdtree.scene.Vectors.set;
+
 import org.kdtree.scene.Camera;
+import org.kdtree.scene.Scene;
 
 /**
  * Random numbers in streams of their own, one per pixel, camera sample and point of the ray tree,
@@ -12,24 +15,35 @@ import org.kdtree.scene.Camera;
  * seed, the pixel, the sample's index and the node of the ray tree) and then steps a 64-bit counter through a bijective mixer
  * (Steele, Lea and Flood's SplitMix64, the generator behind {@link java.util.SplittableRandom}).
  * Two longs of state: nothing is allocated per pixel or per stream.
+ *
+ * <p>It starts each camera sample's ray too ({@link #startCameraSample}, {@link #eye}): its
+ * direction is drawn from the sample's stream, so both tracers take their camera rays from here.
  */
 final class PixelSampler {
     /** The odd step of the counter (the golden ratio's 64-bit fraction). */
     private static final long GOLDEN = 0x9E3779B97F4A7C15L;
     private final long seed;
+    private final Camera camera;
+    /** Where every camera ray starts: the camera's eye, as an array of the sampler's own. */
+    private final double[] eye;
     /** The hash of the current camera sample ({@link #startSample}) and the state of the current stream. */
     private long pixelSample, state;
     /** A camera sample's jitter over its pixel. */
     private final double[] st = new double[2];
 
     /**
-     * A sampler whose streams derive from {@code seed}.
+     * A sampler of {@code scene}'s camera whose streams derive from the scene's seed.
      *
-     * @param seed the scene's base seed
+     * @param scene the scene
      */
-    PixelSampler(long seed) {
-        this.seed = seed;
+    PixelSampler(Scene scene) {
+        this.seed = scene.seed();
+        this.camera = scene.camera();
+        this.eye = set(camera.eye(), new double[3]);
     }
+
+    /** {@return the origin of every camera ray, the camera's eye} (read, never written) */
+    double[] eye() { return eye; }
 
     /**
      * Starts the streams of pixel (x, y)'s camera sample {@code sample}: each point of its ray tree
@@ -60,14 +74,13 @@ final class PixelSampler {
      * direction of its camera ray to {@code dir}: through the pixel's centre for one sample, else
      * jittered ({@link #square}) by the numbers of the ray tree's point 0.
      *
-     * @param camera the scene's camera
      * @param x      the pixel's column
      * @param y      the pixel's row
      * @param i      the camera sample's index in the pixel
      * @param n      the camera samples per pixel
      * @param dir    receives the unit direction of the camera ray
      */
-    void startCameraSample(Camera camera, int x, int y, int i, int n, double[] dir) {
+    void startCameraSample(int x, int y, int i, int n, double[] dir) {
         startSample(x, y, i);
         startPoint(0);
         square(i, n, st);

@@ -1,7 +1,5 @@
 package org.kdtree.render;
 
-import static org.kdtree.scene.Vectors.set;
-
 import org.kdtree.accel.Hit;
 import org.kdtree.accel.RayQuery;
 import org.kdtree.geom.Ray;
@@ -25,7 +23,7 @@ final class WhittedTracer {
     private final PixelSampler sampler;
     private final Ray ray = new Ray(3);
     private final Hit hit = new Hit();
-    private final double[] eye, cameraDir = new double[3], light = new double[3], sample = new double[3];
+    private final double[] cameraDir = new double[3], light = new double[3], sample = new double[3];
     /** Per depth of the ray tree: the records of its hit and its colour, kept while the rays below it are traced. */
     private final Shading[] shading;
     private final double[][] colour;
@@ -44,8 +42,7 @@ final class WhittedTracer {
         this.shader = shader;
         this.query = query;
         this.counts = counts;
-        this.sampler = new PixelSampler(scene.seed());
-        this.eye = set(scene.camera().eye(), new double[3]);
+        this.sampler = new PixelSampler(scene);
         LightSamples lights = new LightSamples();      // read before the secondary rays are traced: one serves every level
         shading = new Shading[depth + 1];
         colour = new double[depth + 1][3];
@@ -63,8 +60,8 @@ final class WhittedTracer {
         int n = scene.samplesPerPixel();
         double r = 0, g = 0, b = 0;
         for (int i = 0; i < n; i++) {
-            sampler.startCameraSample(scene.camera(), x, y, i, n, cameraDir);
-            double[] c = trace(eye, cameraDir, 1, 1, RayKind.CAMERA);
+            sampler.startCameraSample(x, y, i, n, cameraDir);
+            double[] c = trace(sampler.eye(), cameraDir, 1, 1, RayKind.CAMERA);
             r = r + c[0];
             g = g + c[1];
             b = b + c[2];

@@ -80,6 +80,19 @@ class HelpTextTest {
         assertThat(unknown.err().strip()).startsWith("error: unknown builder 'nosuch' (known: sah, ").endsWith(", bvh)");
     }
 
+    /**
+     * The mixins whose options are made in code (builder settings, --grid, the studies' --csv and
+     * --chart) each give their options to a command that has several of them: picocli keeps one
+     * model transformer per command, and that one must add them all.
+     */
+    @Test void aCommandShowsTheOptionsOfEveryMixinMadeInCode() {
+        for (String c : List.of("stats", "raycast", "tradeoff"))
+            assertThat(CliRun.of(c, "--help").out()).as(c).contains("-b, --builder=NAME", "--lambda=X", "--grid=N");
+        for (String c : List.of("tradeoff", "knn-study"))
+            assertThat(CliRun.of(c, "--help").out()).as(c).contains("-b, --builder=NAME", "--csv=FILE", "--chart=FILE",
+                    "(default: " + c + "-");
+    }
+
     @Test void theVersionIsThePoms() throws Exception {
         String pom = java.nio.file.Files.readString(java.nio.file.Path.of("pom.xml"));
         String version = pom.replaceFirst("(?s).*?<artifactId>kdtree</artifactId>\\s*<version>([^<]+)</version>.*", "$1");

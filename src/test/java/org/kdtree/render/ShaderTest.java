@@ -43,7 +43,7 @@ class ShaderTest {
         Hit hit = new Hit();
         boolean found = new BruteForce(new TriangleIntersector(s.mesh())).closestHit(ray, 0, Double.POSITIVE_INFINITY, hit);
         assertThat(found).isTrue();
-        PixelSampler sampler = new PixelSampler(s.seed());
+        PixelSampler sampler = new PixelSampler(s);
         sampler.startSample(0, 0, 0);
         Shading out = new Shading(new LightSamples());
         shader = new Shader(s, new EffectPlan(s));
@@ -130,7 +130,7 @@ class ShaderTest {
         Shading out = new Shading(new LightSamples());
         out.lights.add(0, new double[] {0, 1, 0}, new double[] {1, 1, 1}, 1);                                                     // what the last hit left
         out.reflection.followed = true;
-        PixelSampler sampler = new PixelSampler(s.seed());
+        PixelSampler sampler = new PixelSampler(s);
         sampler.startSample(0, 0, 0);
         new Shader(s, new EffectPlan(s)).shade(false, new Hit(), new double[] {0, 1, 0}, 1, 1, sampler, out);
         assertThat(out.base).containsExactly(0.2, 0.2, 0.2);
