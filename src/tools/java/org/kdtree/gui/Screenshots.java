@@ -127,8 +127,8 @@ public final class Screenshots {
             v.choose("cornell-box.json", 400);
             b.tabs().setSelectedIndex(2);   // opening the tab starts the render
         });
-        Thread.sleep(2500);
-        shot(out, "view3d-progress.png");
+        awaitTiles(v, 0.4);                 // the image part done, the tiles spread over it as they are taken
+        shot(out, "view3d-progress.png", 100);
         boolean[] busy = {true};
         for (int i = 0; i < 1200 && busy[0]; i++) {
             Thread.sleep(100);
@@ -207,7 +207,12 @@ public final class Screenshots {
     }
 
     private static void shot(Path dir, String name) throws Exception {
-        Thread.sleep(1200);
+        shot(dir, name, 1200);
+    }
+
+    /** Grabs the screen after {@code settleMillis} (a render in progress: briefly, or it has ended). */
+    private static void shot(Path dir, String name, long settleMillis) throws Exception {
+        Thread.sleep(settleMillis);
         Process p;
         try {
             p = new ProcessBuilder("import", "-window", "root", "-crop", "1280x880+0+0", dir.resolve(name).toString())
@@ -218,5 +223,28 @@ public final class Screenshots {
             return;
         }
         if (p.waitFor() != 0) throw new IllegalStateException("import failed for " + name);
+    }
+
+    /** Waits until the 3-D view's status says at least {@code share} of the tiles are rendered (or 30 s pass). */
+    private static void awaitTiles(View3D v, double share) throws Exception {
+        java.util.regex.Pattern p = java.util.regex.Pattern.compile("rendering: (\\d+) / (\\d+) tiles");
+        String[] text = {""};
+        for (int i = 0; i < 3000; i++) {
+            on(() -> { String t = statusOf(v); text[0] = t == null ? "" : t; });
+            java.util.regex.Matcher m = p.matcher(text[0]);
+            if (m.find() && Integer.parseInt(m.group(1)) >= share * Integer.parseInt(m.group(2))) return;
+            Thread.sleep(10);
+        }
+    }
+
+    private static String statusOf(java.awt.Container c) {
+        for (java.awt.Component k : c.getComponents()) {
+            if (k instanceof javax.swing.JLabel l && "view3d.status".equals(l.getName())) return l.getText();
+            if (k instanceof java.awt.Container sub) {
+                String t = statusOf(sub);
+                if (t != null) return t;
+            }
+        }
+        return null;
     }
 }
