@@ -108,7 +108,7 @@ public final class Renderer {
         return render(scene, plan, () -> new Tracer(scene, plan, structure.query(), structure.packetQuery(), Tracer.SHADOW_BUDGET, options.blocks()), options);
     }
 
-    static RenderResult render(Scene scene, EffectPlan plan, Supplier<Tracer> tracers, Options options) {
+    private static RenderResult render(Scene scene, EffectPlan plan, Supplier<Tracer> tracers, Options options) {
         int w = scene.camera().width(), h = scene.camera().height(), ts = options.tileSize();
         int tilesX = (w + ts - 1) / ts, tilesY = (h + ts - 1) / ts, tiles = tilesX * tilesY;
         Image image = new Image(w, h);

@@ -41,21 +41,7 @@ final class Tracer {
      * @param query this thread's ray queries against the structure
      */
     Tracer(Scene scene, EffectPlan plan, RayQuery query) {
-        this(scene, plan, query, null, SHADOW_BUDGET);
-    }
-
-    /**
-     * A tracer for one thread, in blocks of pixels when {@code packets} traces a packet's rays
-     * together and repays it (else one pixel at a time).
-     *
-     * @param scene        the scene
-     * @param plan         which rays to cast
-     * @param query        this thread's ray queries against the structure
-     * @param packets      this thread's packet queries against it, or null
-     * @param shadowBudget the block's budget of light samples kept aside ({@link #SHADOW_BUDGET}; tests make it small)
-     */
-    Tracer(Scene scene, EffectPlan plan, RayQuery query, PacketQuery packets, int shadowBudget) {
-        this(scene, plan, query, packets, shadowBudget, false);
+        this(scene, plan, query, null, SHADOW_BUDGET, false);
     }
 
     /**

@@ -24,9 +24,7 @@ class PacketRenderTest {
                 Scene s = TestRenders.scene(file, 61, 45, spp);
                 AccelerationStructure bvh = new BvhBuilder().build(s.mesh());
                 assertThat(bvh.packetQuery().tracesTogether()).isTrue();
-                EffectPlan plan = new EffectPlan(s);
-                RenderResult packets = Renderer.render(s, plan, () -> new Tracer(s, plan, bvh.query(), TestRenders.repaid(bvh.packetQuery()),
-                        Tracer.SHADOW_BUDGET), Renderer.Options.defaults().withThreads(2).recordingPixelRays());
+                RenderResult packets = Renderer.render(s, bvh, Renderer.Options.defaults().withThreads(2).recordingPixelRays().inBlocks());
                 assertThat(packets.tracer()).startsWith("blocks of 8 x 8 pixels");
                 RenderResult single = Renderer.render(s, () -> alone(bvh.query()), Renderer.Options.defaults().withThreads(2).recordingPixelRays());
                 String what = file + ", " + spp + " spp, pixel ";
@@ -55,7 +53,7 @@ class PacketRenderTest {
             EffectPlan plan = new EffectPlan(s);
             Tracer single = new Tracer(s, plan, alone(bvh.query()));
             for (int budget : new int[] {1, 66 * 16, 72 * 16})
-                sameBlocks(new Tracer(s, plan, bvh.query(), TestRenders.repaid(bvh.packetQuery()), budget), single, file + ", budget " + budget);
+                sameBlocks(new Tracer(s, plan, bvh.query(), bvh.packetQuery(), budget, true), single, file + ", budget " + budget);
         }
     }
 
@@ -71,7 +69,7 @@ class PacketRenderTest {
             assertThat(kd.packetQuery().tracesTogether()).isTrue();
             EffectPlan plan = new EffectPlan(s);
             Tracer single = new Tracer(s, plan, alone(kd.query()));
-            sameBlocks(new Tracer(s, plan, kd.query(), TestRenders.repaid(kd.packetQuery()), Tracer.SHADOW_BUDGET), single, file);
+            sameBlocks(new Tracer(s, plan, kd.query(), kd.packetQuery(), Tracer.SHADOW_BUDGET, true), single, file);
         }
     }
 

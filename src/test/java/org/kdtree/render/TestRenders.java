@@ -4,9 +4,7 @@ import java.io.IOException;
 import java.nio.file.Files;
 import java.nio.file.Path;
 import org.kdtree.accel.BruteForce;
-import org.kdtree.accel.Hit;
 import org.kdtree.accel.TriangleIntersector;
-import org.kdtree.geom.Ray;
 import org.kdtree.io.PrimitivesReader;
 import org.kdtree.scene.Scene;
 
@@ -34,22 +32,5 @@ final class TestRenders {
     static RenderResult bruteForce(Scene s, int threads) {
         TriangleIntersector in = new TriangleIntersector(s.mesh());
         return Renderer.render(s, () -> new BruteForce(in), Renderer.Options.defaults().withThreads(threads).recordingPixelRays());
-    }
-
-    /** The same packet query, said to repay the block tracer. */
-    static org.kdtree.accel.PacketQuery repaid(org.kdtree.accel.PacketQuery q) {
-        return new org.kdtree.accel.PacketQuery() {
-            @Override public boolean closestHit(Ray ray, double tMin, double tMax, Hit hit) { return q.closestHit(ray, tMin, tMax, hit); }
-
-            @Override public boolean anyHit(Ray ray, double tMin, double tMax) { return q.anyHit(ray, tMin, tMax); }
-
-            @Override public boolean tracesTogether() { return true; }
-
-            @Override public boolean repaysBlocks() { return true; }
-
-            @Override public void closestHits(org.kdtree.accel.RayPacket packet) { q.closestHits(packet); }
-
-            @Override public void anyHits(org.kdtree.accel.RayPacket packet) { q.anyHits(packet); }
-        };
     }
 }

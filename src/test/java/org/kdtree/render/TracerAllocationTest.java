@@ -31,7 +31,7 @@ class TracerAllocationTest {
     @Test void blocksWithPacketsAllocateNothingPerPixel() throws Exception {
         Scene scene = TestRenders.scene("cornell-box.json", 32, 32, 4);
         var bvh = new BvhBuilder().build(scene.mesh());
-        Tracer tracer = new Tracer(scene, new EffectPlan(scene), bvh.query(), TestRenders.repaid(bvh.packetQuery()), Tracer.SHADOW_BUDGET);
+        Tracer tracer = new Tracer(scene, new EffectPlan(scene), bvh.query(), bvh.packetQuery(), Tracer.SHADOW_BUDGET, true);
         assertThat(tracer.tracesPackets()).isTrue();
         double[] rgb = new double[3];
         assertAllocatesLittle(tracer, () -> {
